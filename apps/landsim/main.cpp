@@ -1,0 +1,52 @@
+// landsim: ray-traced offline landscape renderer. This file only parses the command line
+// and maps outcomes to exit codes: 0 success, 2 bad input (one message), 1 internal error.
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+
+#include "core/input_error.h"
+#include "render_command.h"
+
+namespace {
+
+constexpr int kBadInput = 2;
+
+// Logs and progress go to stderr, so stdout stays clean for --json.
+void log_to_stderr() {
+  auto logger = spdlog::stderr_color_mt("landsim");
+  logger->set_pattern("landsim: %^%l%$: %v");
+  spdlog::set_default_logger(logger);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  log_to_stderr();
+  CLI::App app{"landsim: ray-traced landscape renderer for scene simulation"};
+  app.set_version_flag("--version", std::string("landsim ") + LANDSIM_VERSION);
+  app.require_subcommand(1);
+  landsim::app::RenderArgs render_args;
+  CLI::App* render = landsim::app::add_render_command(app, render_args);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kBadInput;
+  }
+
+  try {
+    if (render->parsed()) return landsim::app::run_render(render_args);
+  } catch (const landsim::InputError& e) {
+    std::cerr << "landsim: error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "landsim: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,108 @@
+#include "renderer/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace landsim::renderer {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// Random dimensions: 0-1 pixel jitter, then kDimsPerBounce per bounce.
+constexpr std::uint32_t kFirstBounceDim = 2;
+constexpr std::uint32_t kDimsPerBounce = 5;
+constexpr int kRouletteAfter = 2;
+
+// Cosine-weighted direction about n (pdf cos / pi), Malley's method.
+Vec3f sample_cosine(const Vec3f& n, float u1, float u2) {
+  const float r = std::sqrt(u1);
+  const float phi = 2.0f * kPi * u2;
+  const float x = r * std::cos(phi);
+  const float y = r * std::sin(phi);
+  const float z = std::sqrt(std::max(0.0f, 1.0f - u1));
+  Vec3f t, b;
+  orthonormal_basis(n, t, b);
+  return normalize(t * x + b * y + n * z);
+}
+
+// Uniform direction in the cone of half-angle `radius` about axis (the sun's disc).
+Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2) {
+  const float cos_max = std::cos(radius);
+  const float cos_theta = 1.0f - u1 * (1.0f - cos_max);
+  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+  const float phi = 2.0f * kPi * u2;
+  Vec3f t, b;
+  orthonormal_basis(axis, t, b);
+  return normalize(t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)) +
+                   axis * cos_theta);
+}
+
+// Pushes a hit point off its surface so that rays leaving it do not hit it again; the
+// offset grows with distance from the origin because float spacing does.
+Vec3f offset_point(const Vec3f& p, const Vec3f& ng) {
+  const float scale = 1e-4f * std::max(1.0f, max_component(Vec3f{std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+  return p + ng * scale;
+}
+
+}  // namespace
+
+PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
+    : scene_(scene),
+      embree_(embree),
+      sky_(scene.sky, scene.sun, scene.ground.albedo),
+      sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
+
+Vec3f PathTracer::sun_light(const Vec3f& p, const Vec3f& n, const Vec3f& ng, float u1, float u2,
+                            std::uint32_t& rays) const {
+  const Vec3f l = sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
+  const float cos_n = dot(n, l);
+  if (cos_n <= 0.0f || dot(ng, l) <= 0.0f) return {};
+  ++rays;
+  if (embree_.occluded({p, l}, 0.0f, kInfinity)) return {};
+  // The disc is small: its irradiance arrives at the sampled direction's cosine.
+  return scene_.sun.irradiance * cos_n;
+}
+
+PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const {
+  PathSample out;
+  out.first.depth = kInfinity;
+  Ray ray = camera_ray;
+  Vec3f throughput{1.0f, 1.0f, 1.0f};
+  const Vec3f albedo = scene_.ground.albedo;
+
+  for (int bounce = 0; bounce <= scene_.settings.max_bounces; ++bounce) {
+    ++out.rays;
+    const auto hit = embree_.intersect(ray, 0.0f, kInfinity);
+    if (!hit) {
+      out.radiance += throughput * sky_.radiance(ray.direction);
+      break;
+    }
+    // Face both normals toward where the ray came from.
+    Vec3f ng = hit->geometric_normal;
+    Vec3f n = hit->shading_normal;
+    if (dot(ng, ray.direction) > 0.0f) ng = -ng;
+    if (dot(n, ng) < 0.0f) n = -n;
+    const Vec3f p = offset_point(ray.origin + ray.direction * hit->t, ng);
+    if (bounce == 0) out.first = {hit->t, n, albedo, hit->object};
+
+    const std::uint32_t dim = kFirstBounceDim + kDimsPerBounce * static_cast<std::uint32_t>(bounce);
+    const Vec3f e_sun = sun_light(p, n, ng, rng.uniform(dim), rng.uniform(dim + 1), out.rays);
+    out.radiance += throughput * albedo * e_sun * (1.0f / kPi);
+
+    // Lambertian bounce: cosine sampling makes the weight exactly the albedo.
+    Vec3f next = sample_cosine(n, rng.uniform(dim + 2), rng.uniform(dim + 3));
+    if (dot(next, ng) <= 0.0f) break;  // shading normal pointed the sample into the surface
+    throughput = throughput * albedo;
+    if (bounce >= kRouletteAfter) {
+      const float survive = std::clamp(max_component(throughput), 0.05f, 1.0f);
+      if (rng.uniform(dim + 4) >= survive) break;
+      throughput = throughput / survive;
+    }
+    ray = {p, next};
+  }
+  return out;
+}
+
+}  // namespace landsim::renderer

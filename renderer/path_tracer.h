@@ -1,0 +1,44 @@
+#pragma once
+// Unidirectional path tracer: Lambertian surfaces, next-event estimation to the sun disc,
+// the sky reached by cosine-sampled bounces, Russian roulette.
+#include <cstdint>
+
+#include "core/counter_rng.h"
+#include "renderer/camera.h"
+#include "renderer/embree_scene.h"
+#include "renderer/sky.h"
+
+namespace landsim::renderer {
+
+// What the first hit of a camera ray saw (the film's AOVs).
+struct FirstHit {
+  float depth = 0.0f;  // distance along the ray; infinity for the sky
+  Vec3f normal;        // shading normal, facing the camera; zero for the sky
+  Vec3f albedo;
+  ObjectClass object = ObjectClass::sky;
+};
+
+struct PathSample {
+  Vec3f radiance;
+  FirstHit first;
+  std::uint32_t rays = 0;  // rays traced for this sample (camera, bounce and shadow rays)
+};
+
+class PathTracer {
+ public:
+  PathTracer(const Scene& scene, const EmbreeScene& embree);
+
+  // Random dimensions 0 and 1 of `rng` are left to the caller (pixel jitter).
+  PathSample trace(const Ray& camera_ray, const CounterRng& rng) const;
+
+ private:
+  Vec3f sun_light(const Vec3f& p, const Vec3f& n, const Vec3f& ng, float u1, float u2,
+                  std::uint32_t& rays) const;
+
+  const Scene& scene_;
+  const EmbreeScene& embree_;
+  SkyModel sky_;
+  Vec3f sun_direction_;
+};
+
+}  // namespace landsim::renderer

@@ -1,0 +1,59 @@
+#pragma once
+// Scene: everything the renderer needs to know, as plain data. Built by scenes/ from a
+// scenario, read by the Embree build and (later) by the POV-Ray export, so that a difference
+// between two renders is a renderer difference, never a scene difference.
+//
+// Frame: x east, y north, z up, metres, relative to `origin` (a point in the terrain's own
+// coordinates, kept in double precision). Directions are unit vectors.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/vec3.h"
+#include "terrain/ground_mesh.h"
+
+namespace landsim::renderer {
+
+struct Ground {
+  terrain::GroundMesh mesh;
+  Vec3f albedo{0.18f, 0.17f, 0.12f};  // Lambertian reflectance, linear RGB
+};
+
+struct Sun {
+  Vec3 direction{0.0, 0.0, 1.0};        // toward the sun
+  Vec3f irradiance{3.0f, 2.9f, 2.7f};  // on a surface facing the sun, linear RGB
+  double angular_radius = 0.00465;      // radians; the real sun's 0.266 degrees
+};
+
+// First sky: a smooth gradient from horizon to zenith (issue 6 brings a physical model).
+struct Sky {
+  Vec3f zenith_radiance{0.10f, 0.20f, 0.45f};
+  Vec3f horizon_radiance{0.45f, 0.55f, 0.70f};
+};
+
+struct View {
+  std::string name;
+  Vec3 position;  // scene frame
+  Vec3 target;    // scene frame
+  double fov_y_deg = 40.0;
+  int width = 640;
+  int height = 360;
+};
+
+struct RenderSettings {
+  int spp = 16;
+  std::uint64_t seed = 1;
+  int max_bounces = 4;
+  double exposure_ev = 0.0;  // applied to the preview PNG only; the EXR stays linear
+};
+
+struct Scene {
+  Vec3 origin;  // terrain coordinates of the scene frame's (0, 0, 0)
+  Ground ground;
+  Sun sun;
+  Sky sky;
+  std::vector<View> views;
+  RenderSettings settings;
+};
+
+}  // namespace landsim::renderer

@@ -1,0 +1,13 @@
+#pragma once
+// The embedded default scenario (scenes/examples/default.toml and the Maunga Whau grid,
+// both compiled into the program), so that `landsim render` works without any file.
+#include "scenes/scenario.h"
+
+namespace landsim::scenes {
+
+// Source name used in messages and metadata for the embedded scenario.
+inline constexpr const char* kDefaultScenarioName = "<default scenario>";
+
+Scenario default_scenario();
+
+}  // namespace landsim::scenes

@@ -1,0 +1,184 @@
+#include "scenes/detail/toml_fields.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/input_error.h"
+
+namespace landsim::scenes::detail {
+namespace {
+
+std::string format_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+bool Range::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  const bool above = lo_open ? v > lo : v >= lo;
+  const bool below = hi_open ? v < hi : v <= hi;
+  return above && below;
+}
+
+std::string Range::describe() const {
+  if (lo_open && hi >= 1e12) return "greater than " + format_number(lo);
+  if (hi >= 1e12) return "at least " + format_number(lo);
+  std::string s = "from " + format_number(lo) + (lo_open ? " (exclusive)" : "") + " to " + format_number(hi);
+  if (hi_open) s += " (exclusive)";
+  return s;
+}
+
+std::string type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a float";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    default: return "nothing";
+  }
+}
+
+std::string parse_error_message(const toml::parse_error& e, const std::string& file) {
+  const auto& where = e.source().begin;
+  return file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+         ": not valid TOML: " + std::string(e.description());
+}
+
+TableReader::TableReader(const toml::table& table, std::string path, std::string file)
+    : table_(table), path_(std::move(path)), file_(std::move(file)) {}
+
+std::string TableReader::location(const toml::node* node) const {
+  const toml::source_region& src = node != nullptr ? node->source() : table_.source();
+  if (src.begin.line == 0) return file_;
+  return file_ + ":" + std::to_string(src.begin.line) + ":" + std::to_string(src.begin.column);
+}
+
+void TableReader::fail(std::string_view key, const std::string& message) const {
+  const toml::node* n = table_.get(key);
+  throw InputError(location(n) + ": [" + path_ + "] " + std::string(key) + ": " + message);
+}
+
+void TableReader::missing(std::string_view key) const {
+  throw InputError(location(nullptr) + ": [" + path_ + "] " + std::string(key) +
+                   ": required key is missing");
+}
+
+const toml::node* TableReader::node(std::string_view key) {
+  read_.emplace(key);
+  return table_.get(key);
+}
+
+double TableReader::number(std::string_view key, Range range, std::optional<double> fallback) {
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (!fallback) missing(key);
+    return *fallback;
+  }
+  if (!n->is_number()) fail(key, "expected a number " + range.describe() + ", got " + type_name(*n));
+  const double v = n->value<double>().value();
+  if (!range.contains(v)) {
+    fail(key, "expected a number " + range.describe() + ", got " + format_number(v));
+  }
+  return v;
+}
+
+std::optional<double> TableReader::optional_number(std::string_view key, Range range) {
+  if (!has(key)) {
+    read_.emplace(key);
+    return std::nullopt;
+  }
+  return number(key, range);
+}
+
+std::int64_t TableReader::integer(std::string_view key, std::int64_t lo, std::int64_t hi,
+                                  std::optional<std::int64_t> fallback) {
+  const toml::node* n = node(key);
+  const std::string expected = "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+  if (n == nullptr) {
+    if (!fallback) missing(key);
+    return *fallback;
+  }
+  if (!n->is_integer()) fail(key, expected + ", got " + type_name(*n));
+  const std::int64_t v = n->value<std::int64_t>().value();
+  if (v < lo || v > hi) fail(key, expected + ", got " + std::to_string(v));
+  return v;
+}
+
+std::string TableReader::string(std::string_view key, std::optional<std::string> fallback) {
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (!fallback) missing(key);
+    return *fallback;
+  }
+  if (!n->is_string()) fail(key, "expected a string, got " + type_name(*n));
+  return std::string(*n->value<std::string_view>());
+}
+
+std::string TableReader::choice(std::string_view key, const std::vector<std::string>& choices,
+                                std::string fallback) {
+  const std::string v = string(key, fallback);
+  for (const std::string& c : choices) {
+    if (c == v) return v;
+  }
+  std::string list;
+  for (const std::string& c : choices) list += (list.empty() ? "\"" : ", \"") + c + "\"";
+  fail(key, "expected one of " + list + ", got \"" + v + "\"");
+}
+
+std::vector<double> TableReader::numbers(std::string_view key, std::size_t count, Range range,
+                                         std::optional<std::vector<double>> fallback) {
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (!fallback) missing(key);
+    return *fallback;
+  }
+  const std::string expected = "expected an array of " + std::to_string(count) + " numbers, each " + range.describe();
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->size() != count) {
+    fail(key, expected + ", got " + (a ? "an array of " + std::to_string(a->size()) : type_name(*n)));
+  }
+  std::vector<double> out;
+  for (const toml::node& item : *a) {
+    if (!item.is_number()) fail(key, expected + ", got an element that is " + type_name(item));
+    const double v = item.value<double>().value();
+    if (!range.contains(v)) fail(key, expected + ", got " + format_number(v));
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::optional<std::vector<double>> TableReader::optional_numbers(std::string_view key,
+                                                                std::size_t n, Range range) {
+  if (!has(key)) {
+    read_.emplace(key);
+    return std::nullopt;
+  }
+  return numbers(key, n, range);
+}
+
+Vec3 TableReader::vec3(std::string_view key, Range range, std::optional<Vec3> fallback) {
+  std::optional<std::vector<double>> fb;
+  if (fallback) fb = std::vector<double>{fallback->x, fallback->y, fallback->z};
+  const std::vector<double> v = numbers(key, 3, range, fb);
+  return {v[0], v[1], v[2]};
+}
+
+void TableReader::finish() const {
+  for (auto&& [key, value] : table_) {
+    if (read_.count(key.str()) != 0) continue;
+    std::string known;
+    for (const std::string& k : read_) known += (known.empty() ? "" : ", ") + k;
+    throw InputError(location(&value) + ": [" + path_ + "] unknown key '" + std::string(key.str()) +
+                     "' (expected one of: " + known + ")");
+  }
+}
+
+}  // namespace landsim::scenes::detail

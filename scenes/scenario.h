@@ -1,0 +1,65 @@
+#pragma once
+// A scenario: what to render, as read (and validated) from a TOML file. docs/SCENARIO.md
+// documents every key. Positions are in the terrain's own coordinates.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/vec3.h"
+#include "terrain/dem_loader.h"
+
+namespace landsim::scenes {
+
+struct TerrainSettings {
+  std::string elevation;  // resolved path: a file, or a GDAL /vsimem/ path for embedded data
+  terrain::DemOptions dem;
+  Vec3f albedo{0.18f, 0.17f, 0.12f};
+};
+
+struct SunSettings {
+  double elevation_deg = 35.0;
+  double azimuth_deg = 135.0;  // clockwise from north
+  Vec3f irradiance{3.0f, 2.9f, 2.7f};
+};
+
+struct ViewSettings {
+  std::string name;
+  Vec3 position;  // terrain coordinates
+  Vec3 target;    // terrain coordinates
+  double fov_y_deg = 40.0;
+  int width = 640;
+  int height = 360;
+};
+
+struct RenderSection {
+  int spp = 16;
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0: every core
+  int max_bounces = 4;
+  double exposure_ev = 0.0;
+};
+
+struct Scenario {
+  std::string source;  // the file it came from, for messages
+  TerrainSettings terrain;
+  SunSettings sun;
+  std::vector<ViewSettings> views;
+  RenderSection render;
+};
+
+// Limits that keep a scenario from exhausting memory (see docs/SCENARIO.md).
+inline constexpr int kMaxImageSide = 65536;
+inline constexpr double kMaxImagePixels = 100e6;
+inline constexpr int kMaxSpp = 1 << 20;
+
+// Throws InputError naming file:line:column, the key and what was expected.
+Scenario load_scenario(const std::filesystem::path& file);
+// `source` names the text in messages; relative paths resolve against `base_dir`.
+Scenario parse_scenario(std::string_view text, const std::string& source, const std::string& base_dir);
+
+// Checks an image size (also used for command-line overrides); throws InputError.
+void check_image_size(int width, int height, const std::string& where);
+
+}  // namespace landsim::scenes

@@ -1,0 +1,189 @@
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "scenes/detail/toml_fields.h"
+#include "scenes/scenario.h"
+#include "terrain/raster_files.h"
+
+namespace landsim::scenes {
+namespace {
+
+using detail::Range;
+using detail::TableReader;
+
+constexpr Range kUnit{0.0, 1.0};
+constexpr Range kPositive{0.0, 1e12, true};
+
+std::string resolve(const std::string& base_dir, const std::string& path) {
+  const std::filesystem::path p(path);
+  if (p.is_absolute() || base_dir.empty()) return p.lexically_normal().string();
+  return (std::filesystem::path(base_dir) / p).lexically_normal().string();
+}
+
+Vec3f to_vec3f(const Vec3& v) { return Vec3f(v); }
+
+// Returns the sub-table `name`, or an empty one when absent; refuses a non-table.
+const toml::table& sub_table(const toml::table& root, std::string_view name, const std::string& file,
+                             bool required) {
+  static const toml::table kEmpty;
+  const toml::node* n = root.get(name);
+  if (n == nullptr) {
+    if (required) throw InputError(file + ": required table [" + std::string(name) + "] is missing");
+    return kEmpty;
+  }
+  if (!n->is_table()) {
+    const auto& b = n->source().begin;
+    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": " +
+                     std::string(name) + ": expected a table, got " + detail::type_name(*n));
+  }
+  return *n->as_table();
+}
+
+TerrainSettings read_terrain(const toml::table& t, const std::string& file, const std::string& base_dir) {
+  TableReader r(t, "terrain", file);
+  TerrainSettings s;
+  s.elevation = resolve(base_dir, r.string("elevation"));
+  if (!terrain::raster_file_exists(s.elevation)) {
+    r.fail("elevation", "file not found: " + s.elevation);
+  }
+  s.dem.cell_size = r.optional_number("cell_size", kPositive);
+  if (const auto o = r.optional_numbers("origin", 2, Range{-1e12, 1e12})) {
+    s.dem.origin = std::array<double, 2>{(*o)[0], (*o)[1]};
+  }
+  s.dem.height_scale = r.number("height_scale", Range{-1e6, 1e6}, 1.0);
+  if (s.dem.height_scale == 0.0) r.fail("height_scale", "expected a non-zero number, got 0");
+  s.dem.height_offset = r.number("height_offset", Range{-1e6, 1e6}, 0.0);
+  const std::string nodata = r.choice("nodata", {"hole", "fill"}, "hole");
+  s.dem.nodata = nodata == "fill" ? terrain::NodataPolicy::fill : terrain::NodataPolicy::hole;
+  s.albedo = to_vec3f(r.vec3("albedo", kUnit, Vec3{0.18, 0.17, 0.12}));
+  r.finish();
+  return s;
+}
+
+SunSettings read_sun(const toml::table& t, const std::string& file) {
+  TableReader r(t, "sun", file);
+  SunSettings s;
+  s.elevation_deg = r.number("elevation", Range{0.0, 90.0, true});
+  s.azimuth_deg = r.number("azimuth", Range{0.0, 360.0});
+  s.irradiance = to_vec3f(r.vec3("irradiance", Range{0.0, 1e6}, Vec3{3.0, 2.9, 2.7}));
+  r.finish();
+  return s;
+}
+
+ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file) {
+  TableReader r(t, path, file);
+  ViewSettings v;
+  v.name = r.string("name");
+  static const std::regex kName("[A-Za-z0-9_.-]+");
+  if (!std::regex_match(v.name, kName) || v.name[0] == '.') {
+    r.fail("name", "expected letters, digits, '_', '-' or '.' (it names the output files), got \"" + v.name + "\"");
+  }
+  v.position = r.vec3("position");
+  v.target = r.vec3("target");
+  const Vec3 d = v.target - v.position;
+  if (length(d) < 1e-6) r.fail("target", "must differ from position");
+  if (std::abs(d.z) / length(d) > 0.9999) {
+    r.fail("target", "the view looks straight up or down; the camera needs a horizontal component");
+  }
+  v.fov_y_deg = r.number("fov", Range{0.0, 180.0, true, true}, 40.0);
+  v.width = static_cast<int>(r.integer("width", 1, kMaxImageSide, 640));
+  v.height = static_cast<int>(r.integer("height", 1, kMaxImageSide, 360));
+  try {
+    check_image_size(v.width, v.height, "");
+  } catch (const InputError& e) {
+    r.fail("width", e.what());
+  }
+  r.finish();
+  return v;
+}
+
+std::vector<ViewSettings> read_views(const toml::table& root, const std::string& file) {
+  const toml::node* n = root.get("views");
+  if (n == nullptr) throw InputError(file + ": at least one [[views]] table is required");
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->empty() || !a->is_array_of_tables()) {
+    const auto& b = n->source().begin;
+    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": views: expected one or more [[views]] tables");
+  }
+  std::vector<ViewSettings> views;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const std::string path = "views[" + std::to_string(i) + "]";
+    views.push_back(read_view(*a->get(i)->as_table(), path, file));
+    if (!names.insert(views.back().name).second) {
+      TableReader(*a->get(i)->as_table(), path, file).fail("name", "duplicate view name \"" + views.back().name + "\"");
+    }
+  }
+  return views;
+}
+
+RenderSection read_render(const toml::table& t, const std::string& file) {
+  TableReader r(t, "render", file);
+  RenderSection s;
+  s.spp = static_cast<int>(r.integer("spp", 1, kMaxSpp, 16));
+  s.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT64_MAX, 1));
+  s.threads = static_cast<int>(r.integer("threads", 0, 1024, 0));
+  s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, 4));
+  s.exposure_ev = r.number("exposure", Range{-20.0, 20.0}, 0.0);
+  r.finish();
+  return s;
+}
+
+void refuse_unknown_tables(const toml::table& root, const std::string& file) {
+  static const std::set<std::string, std::less<>> kKnown{"terrain", "sun", "views", "render"};
+  for (auto&& [key, value] : root) {
+    if (kKnown.count(key.str()) != 0) continue;
+    const auto& b = key.source().begin;
+    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": unknown table or key '" + std::string(key.str()) +
+                     "' (expected terrain, sun, views, render)");
+  }
+}
+
+}  // namespace
+
+void check_image_size(int width, int height, const std::string& where) {
+  const std::string prefix = where.empty() ? "" : where + ": ";
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
+    throw InputError(prefix + "image size " + std::to_string(width) + " x " + std::to_string(height) +
+                     ": each side must be from 1 to " + std::to_string(kMaxImageSide));
+  }
+  if (double(width) * double(height) > kMaxImagePixels) {
+    throw InputError(prefix + "image of " + std::to_string(width) + " x " + std::to_string(height) +
+                     " pixels exceeds the limit of 100 million pixels");
+  }
+}
+
+Scenario parse_scenario(std::string_view text, const std::string& source, const std::string& base_dir) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(detail::parse_error_message(e, source));
+  }
+  refuse_unknown_tables(root, source);
+  Scenario s;
+  s.source = source;
+  s.terrain = read_terrain(sub_table(root, "terrain", source, true), source, base_dir);
+  s.sun = read_sun(sub_table(root, "sun", source, true), source);
+  s.views = read_views(root, source);
+  s.render = read_render(sub_table(root, "render", source, false), source);
+  return s;
+}
+
+Scenario load_scenario(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file)) {
+    throw InputError(file.string() + ": cannot open scenario file");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scenario(text.str(), file.string(), file.parent_path().string());
+}
+
+}  // namespace landsim::scenes

@@ -1,0 +1,14 @@
+#pragma once
+// Scenario -> renderer::Scene: loads the terrain, picks the scene origin, and converts every
+// position from terrain coordinates (double) into the scene frame.
+#include "renderer/scene.h"
+#include "scenes/scenario.h"
+
+namespace landsim::scenes {
+
+renderer::Scene build_scene(const Scenario& scenario);
+
+// Unit vector toward the sun from elevation and azimuth (clockwise from north), in degrees.
+Vec3 sun_direction(double elevation_deg, double azimuth_deg);
+
+}  // namespace landsim::scenes

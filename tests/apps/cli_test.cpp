@@ -1,0 +1,139 @@
+// End-to-end tests of the landsim program: exit codes, messages, files written or not.
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <cstdio>
+
+#include "tests/support/temp_dir.h"
+
+namespace landsim {
+namespace {
+
+using testing::TempDir;
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+Result run(const std::string& args, const TempDir& dir) {
+  const auto err_file = dir / "stderr.txt";
+  const std::string cmd = std::string(LANDSIM_BINARY) + " " + args + " 2>" + err_file.string();
+  Result r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
+  const int status = ::pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = testing::read_file(err_file);
+  std::filesystem::remove(err_file);
+  return r;
+}
+
+std::string volcano() { return testing::source_file("data/terrain/volcano.asc").string(); }
+
+std::string scenario(const std::string& terrain_extra, const std::string& view_extra,
+                     const std::string& render) {
+  return "[terrain]\nelevation = \"" + volcano() + "\"\n" + terrain_extra +
+         "\n[sun]\nelevation = 30\nazimuth = 300\n"
+         "[[views]]\nname = \"v\"\nposition = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, 130.0]\n"
+         "width = 32\nheight = 18\n" + view_extra + "\n[render]\n" + render + "\n";
+}
+
+bool has_files(const std::filesystem::path& dir) {
+  return std::filesystem::exists(dir) && !std::filesystem::is_empty(dir);
+}
+
+struct BadScenario {
+  const char* name;
+  std::string text;
+  const char* key;  // what the message must name
+};
+
+TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
+  const std::vector<BadScenario> cases = {
+      {"unknown key", scenario("shade = 1", "", "spp = 2"), "unknown key 'shade'"},
+      {"wrong type", scenario("", "fov = \"wide\"", "spp = 2"), "fov"},
+      {"missing DEM", "[terrain]\nelevation = \"missing.asc\"\n" + scenario("", "", "").substr(scenario("", "", "").find("[sun]")), "elevation"},
+      {"zero-sized image", scenario("", "", "spp = 2").replace(scenario("", "", "spp = 2").find("width = 32"), 10, "width = 0"), "width"},
+      {"negative spp", scenario("", "", "spp = -1"), "spp"},
+  };
+  for (const BadScenario& c : cases) {
+    TempDir dir;
+    const auto file = dir.write("bad.toml", c.text);
+    const auto out = dir / "out";
+    const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.name << ": one message: " << r.err;
+    EXPECT_FALSE(has_files(out)) << c.name;
+    EXPECT_TRUE(r.out.empty()) << c.name;
+  }
+}
+
+TEST(Cli, BadCommandLineValuesExitTwo) {
+  TempDir dir;
+  EXPECT_EQ(run("render --spp -3", dir).exit_code, 2);
+  EXPECT_EQ(run("render --width 0", dir).exit_code, 2);
+  EXPECT_EQ(run("render --no-such-flag", dir).exit_code, 2);
+  const Result r = run("render --view nowhere --out " + (dir / "o").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("nowhere"), std::string::npos) << r.err;
+  EXPECT_FALSE(has_files(dir / "o"));
+}
+
+TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
+  TempDir dir;
+  const auto file = dir.write("ok.toml", scenario("", "", "spp = 2"));
+  const auto out = dir / "out";
+  const Result r = run("render " + file.string() + " --out " + out.string() + " --json --threads 2", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  ASSERT_EQ(json["images"].size(), 1u);
+  const auto& image = json["images"][0];
+  EXPECT_EQ(image["view"], "v");
+  EXPECT_EQ(image["path"], (out / "v.exr").string());
+  EXPECT_EQ(image["frame"], 0.0);
+  EXPECT_GT(image["seconds"].get<double>(), 0.0);
+  EXPECT_GT(image["rays_per_second"].get<double>(), 0.0);
+  EXPECT_TRUE(std::filesystem::exists(out / "v.png"));
+  Imf::InputFile exr((out / "v.exr").c_str());
+  EXPECT_EQ(exr.header().dataWindow().max.x, 31);
+  EXPECT_EQ(exr.header().dataWindow().max.y, 17);
+  // Only the two images: no temporary files left.
+  int files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(out)) ++files;
+  EXPECT_EQ(files, 2);
+  EXPECT_NE(r.err.find("100%"), std::string::npos) << "progress goes to stderr";
+}
+
+TEST(Cli, DefaultSceneWithSizeOverridesKeepsTheAspect) {
+  TempDir dir;
+  const auto out = dir / "out";
+  const Result r = run("render --out " + out.string() + " --width 64 --spp 1 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Imf::InputFile exr((out / "crater.exr").c_str());
+  EXPECT_EQ(exr.header().dataWindow().max.x, 63);
+  EXPECT_EQ(exr.header().dataWindow().max.y, 35);  // 640 x 360 -> 64 x 36
+}
+
+TEST(Cli, HelpAndVersion) {
+  TempDir dir;
+  const Result help = run("--help", dir);
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("render"), std::string::npos);
+  const Result version = run("--version", dir);
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_NE(version.out.find("landsim "), std::string::npos);
+  const Result none = run("", dir);
+  EXPECT_EQ(none.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace landsim

@@ -1,0 +1,30 @@
+#pragma once
+// Small synthetic scenes for renderer tests.
+#include "renderer/scene.h"
+#include "terrain/elevation_grid.h"
+#include "terrain/ground_mesh.h"
+
+namespace landsim::renderer::testing {
+
+// A north-south ridge 200 m square: an east-facing slope (x > 100) and a west-facing one,
+// both 26.6 degrees, lit by a sun in the east at 30 degrees, seen from the south.
+inline Scene ridge_scene() {
+  std::vector<float> h;
+  for (int r = 0; r < 41; ++r) {
+    for (int c = 0; c < 41; ++c) {
+      const double x = (c + 0.5) * 5.0;
+      h.push_back(static_cast<float>(60.0 - 0.5 * std::abs(x - 102.5)));
+    }
+  }
+  const terrain::ElevationGrid grid(41, 41, terrain::GeoTransform{0.0, 205.0, 5.0, 5.0}, h);
+  Scene scene;
+  scene.origin = Vec3{};
+  scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
+  scene.sun.direction = normalize(Vec3{std::cos(0.5236), 0.0, std::sin(0.5236)});
+  scene.views.push_back({"ridge", {102.5, -120.0, 160.0}, {102.5, 100.0, 30.0}, 50.0, 64, 48});
+  scene.settings.spp = 4;
+  scene.settings.seed = 9;
+  return scene;
+}
+
+}  // namespace landsim::renderer::testing

@@ -1,0 +1,37 @@
+#include "scenes/scene_builder.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+TEST(SunDirection, AzimuthIsClockwiseFromNorth) {
+  const Vec3 north = sun_direction(0.0, 0.0);
+  EXPECT_NEAR(north.y, 1.0, 1e-12);
+  const Vec3 east = sun_direction(0.0, 90.0);
+  EXPECT_NEAR(east.x, 1.0, 1e-12);
+  const Vec3 high_south = sun_direction(60.0, 180.0);
+  EXPECT_NEAR(high_south.z, std::sqrt(3.0) / 2.0, 1e-12);
+  EXPECT_NEAR(high_south.y, -0.5, 1e-12);
+}
+
+TEST(SceneBuilder, ShiftsGeoreferencedCoordinatesToALocalOrigin) {
+  landsim::testing::TempDir dir;
+  const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc").string();
+  const auto file = dir.write("g.toml",
+                              "[terrain]\nelevation = \"" + dem + "\"\n"
+                              "[sun]\nelevation = 40\nazimuth = 90\n"
+                              "[[views]]\nname = \"v\"\nposition = [582000.0, 675000.0, 2500.0]\n"
+                              "target = [583000.0, 676000.0, 1600.0]\n");
+  const renderer::Scene scene = build_scene(load_scenario(file));
+  // The origin is the grid centre, so float geometry stays small.
+  EXPECT_GT(scene.origin.x, 580000.0);
+  EXPECT_LT(std::abs(scene.views[0].position.x), 10000.0);
+  EXPECT_NEAR(scene.views[0].position.x + scene.origin.x, 582000.0, 1e-6);
+  for (const Vec3f& v : scene.ground.mesh.vertices) ASSERT_LT(std::abs(v.x), 5000.0f);
+}
+
+}  // namespace
+}  // namespace landsim::scenes

@@ -1,0 +1,31 @@
+#pragma once
+// Test helpers: a fresh temporary directory per test, removed afterwards, and file I/O.
+#include <filesystem>
+#include <string>
+
+namespace landsim::testing {
+
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  // Writes `text` to `name` inside the directory and returns the full path.
+  std::filesystem::path write(const std::string& name, const std::string& text) const;
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string read_file(const std::filesystem::path& path);
+
+// A file in the repository (tests never read outside it).
+inline std::filesystem::path source_file(const std::string& relative) {
+  return std::filesystem::path(LANDSIM_SOURCE_DIR) / relative;
+}
+
+}  // namespace landsim::testing
