@@ -25,7 +25,8 @@ void BM_RenderDefaultScene(benchmark::State& state) {
     benchmark::DoNotOptimize(renderer.render(scene.views[0], options, &stats));
     rays += stats.rays;
   }
-  state.counters["rays_per_second"] = benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
+  state.counters["rays_per_second"] =
+      benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RenderDefaultScene)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 

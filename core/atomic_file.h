@@ -1,11 +1,11 @@
 #pragma once
 // Outputs are written under a temporary sibling name and renamed into place only when
 // complete, so an interrupted or failed run never leaves a half-written file behind.
+#include <unistd.h>
 #include <atomic>
 #include <filesystem>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 namespace landsim {
 

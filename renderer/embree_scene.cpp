@@ -21,12 +21,13 @@ RTCGeometry make_ground(RTCDevice device, const terrain::GroundMesh& mesh) {
       geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3f), mesh.vertices.size()));
   std::memcpy(vertices, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vec3f));
   rtcSetGeometryVertexAttributeCount(geom, 1);
-  auto* normals = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3,
+  auto* normals = static_cast<float*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3,
                               sizeof(Vec3f), mesh.normals.size()));
   std::memcpy(normals, mesh.normals.data(), mesh.normals.size() * sizeof(Vec3f));
-  auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
-      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t),
-      mesh.triangle_count()));
+  auto* indices = static_cast<std::uint32_t*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(std::uint32_t), mesh.triangle_count()));
   std::memcpy(indices, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
   rtcCommitGeometry(geom);
   return geom;

@@ -21,7 +21,8 @@ void add_slice(Imf::FrameBuffer& fb, const char* name, const std::vector<float>&
   // OpenEXR's Slice takes a non-const pointer even for writing.
   char* base = reinterpret_cast<char*>(const_cast<float*>(plane.data() + offset));
   fb.insert(name, Imf::Slice(Imf::FLOAT, base, sizeof(float) * static_cast<std::size_t>(stride),
-                             sizeof(float) * static_cast<std::size_t>(stride) * static_cast<std::size_t>(width)));
+                             sizeof(float) * static_cast<std::size_t>(stride) *
+                                 static_cast<std::size_t>(width)));
 }
 
 }  // namespace
@@ -60,7 +61,8 @@ void write_preview_png(const Film& film, const std::filesystem::path& path, doub
   const float gain = static_cast<float>(std::exp2(exposure_ev));
   OIIO::ImageBuf exposed = OIIO::ImageBufAlgo::mul(linear, gain);
   OIIO::ImageBuf display = OIIO::ImageBufAlgo::colorconvert(exposed, "linear", "sRGB");
-  if (display.has_error() || !display.write(out.temp_path().string(), OIIO::TypeDesc::UINT8, "png")) {
+  if (display.has_error() ||
+      !display.write(out.temp_path().string(), OIIO::TypeDesc::UINT8, "png")) {
     throw std::runtime_error("writing " + path.string() + " failed: " + display.geterror());
   }
   out.commit();

@@ -42,7 +42,8 @@ Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2) {
 // Pushes a hit point off its surface so that rays leaving it do not hit it again; the
 // offset grows with distance from the origin because float spacing does.
 Vec3f offset_point(const Vec3f& p, const Vec3f& ng) {
-  const float scale = 1e-4f * std::max(1.0f, max_component(Vec3f{std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+  const float scale =
+      1e-4f * std::max(1.0f, max_component(Vec3f{std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
   return p + ng * scale;
 }
 
@@ -56,7 +57,8 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
 
 Vec3f PathTracer::sun_light(const Vec3f& p, const Vec3f& n, const Vec3f& ng, float u1, float u2,
                             std::uint32_t& rays) const {
-  const Vec3f l = sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
+  const Vec3f l =
+      sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
   const float cos_n = dot(n, l);
   if (cos_n <= 0.0f || dot(ng, l) <= 0.0f) return {};
   ++rays;

@@ -35,12 +35,14 @@ std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const 
   std::uint64_t rays = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
-      const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(view.width) + static_cast<std::uint64_t>(x);
+      const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(view.width) +
+                         static_cast<std::uint64_t>(x);
       Vec3f sum{};
       FirstHit first;
       for (int s = 0; s < settings.spp; ++s) {
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
-        const Ray ray = camera.ray(static_cast<float>(x) + rng.uniform(0), static_cast<float>(y) + rng.uniform(1));
+        const Ray ray = camera.ray(static_cast<float>(x) + rng.uniform(0),
+                                   static_cast<float>(y) + rng.uniform(1));
         const PathSample sample = tracer.trace(ray, rng);
         sum += sample.radiance;
         rays += sample.rays;
@@ -55,7 +57,8 @@ std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const 
 
 }  // namespace
 
-Renderer::Renderer(const Scene& scene) : scene_(scene), embree_(std::make_unique<EmbreeScene>(scene)) {}
+Renderer::Renderer(const Scene& scene)
+    : scene_(scene), embree_(std::make_unique<EmbreeScene>(scene)) {}
 
 Renderer::~Renderer() = default;
 
@@ -64,7 +67,8 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   Film film(view.width, view.height);
   const Camera camera(view);
   const PathTracer tracer(scene_, *embree_);
-  const TileGrid grid{(view.width + kTileSize - 1) / kTileSize, (view.height + kTileSize - 1) / kTileSize};
+  const TileGrid grid{(view.width + kTileSize - 1) / kTileSize,
+                      (view.height + kTileSize - 1) / kTileSize};
 
   std::atomic<std::uint64_t> rays{0};
   std::atomic<int> tiles_done{0};
@@ -72,20 +76,22 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
   tbb::task_arena arena(threads);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, grid.count(), 1), [&](const tbb::blocked_range<int>& r) {
-      for (int tile = r.begin(); tile != r.end(); ++tile) {
-        rays += render_tile(tracer, camera, view, scene_.settings, tile, grid, film);
-        const int done = ++tiles_done;
-        if (options.progress && (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {
-          const std::lock_guard lock(progress_mutex);
-          options.progress(static_cast<double>(done) / grid.count());
-        }
-      }
-    });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, grid.count(), 1), [&](const tbb::blocked_range<int>& r) {
+          for (int tile = r.begin(); tile != r.end(); ++tile) {
+            rays += render_tile(tracer, camera, view, scene_.settings, tile, grid, film);
+            const int done = ++tiles_done;
+            if (options.progress && (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {
+              const std::lock_guard lock(progress_mutex);
+              options.progress(static_cast<double>(done) / grid.count());
+            }
+          }
+        });
   });
 
   if (stats != nullptr) {
-    stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats->rays = rays.load();
   }
   return film;

@@ -20,7 +20,9 @@ struct RenderOptions {
 struct RenderStats {
   double seconds = 0.0;
   std::uint64_t rays = 0;
-  double rays_per_second() const { return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0; }
+  double rays_per_second() const {
+    return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0;
+  }
 };
 
 class EmbreeScene;

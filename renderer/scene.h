@@ -20,9 +20,9 @@ struct Ground {
 };
 
 struct Sun {
-  Vec3 direction{0.0, 0.0, 1.0};        // toward the sun
+  Vec3 direction{0.0, 0.0, 1.0};       // toward the sun
   Vec3f irradiance{3.0f, 2.9f, 2.7f};  // on a surface facing the sun, linear RGB
-  double angular_radius = 0.00465;      // radians; the real sun's 0.266 degrees
+  double angular_radius = 0.00465;     // radians; the real sun's 0.266 degrees
 };
 
 // First sky: a smooth gradient from horizon to zenith (issue 6 brings a physical model).

@@ -57,7 +57,8 @@ inline constexpr int kMaxSpp = 1 << 20;
 // Throws InputError naming file:line:column, the key and what was expected.
 Scenario load_scenario(const std::filesystem::path& file);
 // `source` names the text in messages; relative paths resolve against `base_dir`.
-Scenario parse_scenario(std::string_view text, const std::string& source, const std::string& base_dir);
+Scenario parse_scenario(std::string_view text, const std::string& source,
+                        const std::string& base_dir);
 
 // Checks an image size (also used for command-line overrides); throws InputError.
 void check_image_size(int width, int height, const std::string& where);

@@ -27,12 +27,13 @@ std::string resolve(const std::string& base_dir, const std::string& path) {
 Vec3f to_vec3f(const Vec3& v) { return Vec3f(v); }
 
 // Returns the sub-table `name`, or an empty one when absent; refuses a non-table.
-const toml::table& sub_table(const toml::table& root, std::string_view name, const std::string& file,
-                             bool required) {
+const toml::table& sub_table(const toml::table& root, std::string_view name,
+                             const std::string& file, bool required) {
   static const toml::table kEmpty;
   const toml::node* n = root.get(name);
   if (n == nullptr) {
-    if (required) throw InputError(file + ": required table [" + std::string(name) + "] is missing");
+    if (required)
+      throw InputError(file + ": required table [" + std::string(name) + "] is missing");
     return kEmpty;
   }
   if (!n->is_table()) {
@@ -43,7 +44,8 @@ const toml::table& sub_table(const toml::table& root, std::string_view name, con
   return *n->as_table();
 }
 
-TerrainSettings read_terrain(const toml::table& t, const std::string& file, const std::string& base_dir) {
+TerrainSettings read_terrain(const toml::table& t, const std::string& file,
+                             const std::string& base_dir) {
   TableReader r(t, "terrain", file);
   TerrainSettings s;
   s.elevation = resolve(base_dir, r.string("elevation"));
@@ -80,7 +82,8 @@ ViewSettings read_view(const toml::table& t, const std::string& path, const std:
   v.name = r.string("name");
   static const std::regex kName("[A-Za-z0-9_.-]+");
   if (!std::regex_match(v.name, kName) || v.name[0] == '.') {
-    r.fail("name", "expected letters, digits, '_', '-' or '.' (it names the output files), got \"" + v.name + "\"");
+    r.fail("name", "expected letters, digits, '_', '-' or '.' (it names the output files), got \"" +
+                       v.name + "\"");
   }
   v.position = r.vec3("position");
   v.target = r.vec3("target");
@@ -116,7 +119,8 @@ std::vector<ViewSettings> read_views(const toml::table& root, const std::string&
     const std::string path = "views[" + std::to_string(i) + "]";
     views.push_back(read_view(*a->get(i)->as_table(), path, file));
     if (!names.insert(views.back().name).second) {
-      TableReader(*a->get(i)->as_table(), path, file).fail("name", "duplicate view name \"" + views.back().name + "\"");
+      TableReader(*a->get(i)->as_table(), path, file)
+          .fail("name", "duplicate view name \"" + views.back().name + "\"");
     }
   }
   return views;
@@ -150,8 +154,9 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
 void check_image_size(int width, int height, const std::string& where) {
   const std::string prefix = where.empty() ? "" : where + ": ";
   if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
-    throw InputError(prefix + "image size " + std::to_string(width) + " x " + std::to_string(height) +
-                     ": each side must be from 1 to " + std::to_string(kMaxImageSide));
+    throw InputError(prefix + "image size " + std::to_string(width) + " x " +
+                     std::to_string(height) + ": each side must be from 1 to " +
+                     std::to_string(kMaxImageSide));
   }
   if (double(width) * double(height) > kMaxImagePixels) {
     throw InputError(prefix + "image of " + std::to_string(width) + " x " + std::to_string(height) +
@@ -159,7 +164,8 @@ void check_image_size(int width, int height, const std::string& where) {
   }
 }
 
-Scenario parse_scenario(std::string_view text, const std::string& source, const std::string& base_dir) {
+Scenario parse_scenario(std::string_view text, const std::string& source,
+                        const std::string& base_dir) {
   toml::table root;
   try {
     root = toml::parse(text, source);

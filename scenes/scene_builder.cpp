@@ -14,7 +14,8 @@ Vec3 sun_direction(double elevation_deg, double azimuth_deg) {
 }
 
 renderer::Scene build_scene(const Scenario& scenario) {
-  const terrain::ElevationGrid grid = terrain::load_elevation(scenario.terrain.elevation, scenario.terrain.dem);
+  const terrain::ElevationGrid grid =
+      terrain::load_elevation(scenario.terrain.elevation, scenario.terrain.dem);
   renderer::Scene scene;
   scene.origin = grid.centre();
   scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);

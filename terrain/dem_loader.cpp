@@ -41,7 +41,8 @@ using Dataset = std::unique_ptr<void, DatasetCloser>;
 
 Dataset open_raster(const std::string& path) {
   if (!raster_file_exists(path)) fail(path, "elevation file not found");
-  Dataset ds(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  Dataset ds(
+      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!ds) fail(path, "not a raster format GDAL can read");
   if (GDALGetRasterCount(ds.get()) < 1) fail(path, "raster has no bands");
   const double cells = double(GDALGetRasterXSize(ds.get())) * GDALGetRasterYSize(ds.get());
@@ -64,11 +65,13 @@ std::optional<GeoTransform> read_geotransform(GDALDatasetH ds, const std::string
     return std::nullopt;
   }
   if (gt[2] != 0.0 || gt[4] != 0.0) fail(path, "rotated geotransforms are not supported");
-  if (!(gt[1] > 0.0) || !(gt[5] < 0.0)) fail(path, "raster is not north-up (expected a positive cell width and negative cell height)");
+  if (!(gt[1] > 0.0) || !(gt[5] < 0.0))
+    fail(path, "raster is not north-up (expected a positive cell width and negative cell height)");
   return GeoTransform{gt[0], gt[3], gt[1], -gt[5]};
 }
 
-GeoTransform placement(GDALDatasetH ds, const std::string& path, const DemOptions& options, int rows) {
+GeoTransform placement(GDALDatasetH ds, const std::string& path, const DemOptions& options,
+                       int rows) {
   std::optional<GeoTransform> gt = read_geotransform(ds, path);
   if (!gt && !options.cell_size) {
     fail(path, "raster has no georeferencing (a PNG?): set [terrain] cell_size");
@@ -89,7 +92,8 @@ GeoTransform placement(GDALDatasetH ds, const std::string& path, const DemOption
 std::vector<float> read_heights(GDALDatasetH ds, const std::string& path, int cols, int rows) {
   std::vector<float> heights(static_cast<std::size_t>(cols) * rows);
   GDALRasterBandH band = GDALGetRasterBand(ds, 1);
-  if (GDALRasterIO(band, GF_Read, 0, 0, cols, rows, heights.data(), cols, rows, GDT_Float32, 0, 0) != CE_None) {
+  if (GDALRasterIO(band, GF_Read, 0, 0, cols, rows, heights.data(), cols, rows, GDT_Float32, 0,
+                   0) != CE_None) {
     fail(path, "could not read the elevation values (truncated or corrupt file?)");
   }
   int has_nodata = 0;
@@ -107,14 +111,20 @@ void fill_nodata(std::vector<float>& heights, int cols, int rows, const std::str
   Dataset mem(GDALCreate(GDALGetDriverByName("MEM"), "", cols, rows, 1, GDT_Float32, nullptr));
   if (!mem) fail(path, "could not create the in-memory raster for nodata filling");
   GDALRasterBandH band = GDALGetRasterBand(mem.get(), 1);
-  for (float& h : heights) if (std::isnan(h)) h = kSentinel;
+  for (float& h : heights)
+    if (std::isnan(h)) h = kSentinel;
   GDALSetRasterNoDataValue(band, kSentinel);
-  CPLErr err = GDALRasterIO(band, GF_Write, 0, 0, cols, rows, heights.data(), cols, rows, GDT_Float32, 0, 0);
+  CPLErr err =
+      GDALRasterIO(band, GF_Write, 0, 0, cols, rows, heights.data(), cols, rows, GDT_Float32, 0, 0);
   const double search_distance = double(cols) + double(rows);  // reach every hole
-  if (err == CE_None) err = GDALFillNodata(band, nullptr, search_distance, 0, 0, nullptr, nullptr, nullptr);
-  if (err == CE_None) err = GDALRasterIO(band, GF_Read, 0, 0, cols, rows, heights.data(), cols, rows, GDT_Float32, 0, 0);
+  if (err == CE_None)
+    err = GDALFillNodata(band, nullptr, search_distance, 0, 0, nullptr, nullptr, nullptr);
+  if (err == CE_None)
+    err = GDALRasterIO(band, GF_Read, 0, 0, cols, rows, heights.data(), cols, rows, GDT_Float32, 0,
+                       0);
   if (err != CE_None) fail(path, "filling nodata cells failed");
-  for (float& h : heights) if (h == kSentinel) h = NAN;
+  for (float& h : heights)
+    if (h == kSentinel) h = NAN;
 }
 
 }  // namespace
@@ -128,8 +138,8 @@ ElevationGrid load_elevation(const std::string& path, const DemOptions& options)
   const GeoTransform transform = placement(ds.get(), path, options, rows);
   std::vector<float> heights = read_heights(ds.get(), path, cols, rows);
 
-  const auto missing = static_cast<std::size_t>(std::count_if(
-      heights.begin(), heights.end(), [](float h) { return std::isnan(h); }));
+  const auto missing = static_cast<std::size_t>(
+      std::count_if(heights.begin(), heights.end(), [](float h) { return std::isnan(h); }));
   if (missing == heights.size()) fail(path, "every cell is nodata");
   if (missing > 0 && options.nodata == NodataPolicy::fill) {
     spdlog::warn("{}: filling {} nodata cells from their neighbours", path, missing);

@@ -42,8 +42,12 @@ class ElevationGrid {
   float max_height() const { return max_height_; }
 
   // Position of a cell centre.
-  double x_of_col(double col) const { return transform_.origin_x + (col + 0.5) * transform_.cell_size_x; }
-  double y_of_row(double row) const { return transform_.origin_y - (row + 0.5) * transform_.cell_size_y; }
+  double x_of_col(double col) const {
+    return transform_.origin_x + (col + 0.5) * transform_.cell_size_x;
+  }
+  double y_of_row(double row) const {
+    return transform_.origin_y - (row + 0.5) * transform_.cell_size_y;
+  }
   // Centre of the grid's extent, a good local origin for float geometry.
   Vec3 centre() const;
 

@@ -8,9 +8,7 @@ namespace {
 
 // Adds the triangles of the quad whose north-west corner is cell (c, r).
 void add_quad(const ElevationGrid& g, int c, int r, std::vector<std::uint32_t>& out) {
-  const auto id = [&](int cc, int rr) {
-    return static_cast<std::uint32_t>(rr * g.cols() + cc);
-  };
+  const auto id = [&](int cc, int rr) { return static_cast<std::uint32_t>(rr * g.cols() + cc); };
   // Corners counter-clockwise seen from above (x east, y north): SW, SE, NE, NW.
   const std::array<std::uint32_t, 4> v{id(c, r + 1), id(c + 1, r + 1), id(c + 1, r), id(c, r)};
   const std::array<bool, 4> ok{g.valid(c, r + 1), g.valid(c + 1, r + 1), g.valid(c + 1, r),

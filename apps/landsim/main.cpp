@@ -1,8 +1,8 @@
 // landsim: ray-traced offline landscape renderer. This file only parses the command line
 // and maps outcomes to exit codes: 0 success, 2 bad input (one message), 1 internal error.
-#include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include <iostream>
 

@@ -1,8 +1,8 @@
 #include "render_command.h"
 
+#include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <filesystem>
@@ -27,8 +27,10 @@ void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
     const double aspect = static_cast<double>(v.width) / v.height;
     if (args.width) v.width = *args.width;
     if (args.height) v.height = *args.height;
-    if (args.width && !args.height) v.height = std::max(1, static_cast<int>(std::lround(v.width / aspect)));
-    if (args.height && !args.width) v.width = std::max(1, static_cast<int>(std::lround(v.height * aspect)));
+    if (args.width && !args.height)
+      v.height = std::max(1, static_cast<int>(std::lround(v.width / aspect)));
+    if (args.height && !args.width)
+      v.width = std::max(1, static_cast<int>(std::lround(v.height * aspect)));
     scenes::check_image_size(v.width, v.height, "--width/--height");
   }
   if (!args.view.empty()) {
@@ -41,7 +43,8 @@ void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
       }
       names += (names.empty() ? "" : ", ") + v.name;
     }
-    throw InputError("--view: no view named \"" + args.view + "\" in " + s.source + " (views: " + names + ")");
+    throw InputError("--view: no view named \"" + args.view + "\" in " + s.source +
+                     " (views: " + names + ")");
   }
 }
 
@@ -66,15 +69,19 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--out", args.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--view", args.view, "Render only the view with this name");
   cmd->add_option("--spp", args.spp, "Samples per pixel")->check(CLI::Range(1, scenes::kMaxSpp));
-  cmd->add_option("--threads", args.threads, "Worker threads (0: every core)")->check(CLI::Range(0, 1024));
-  cmd->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, scenes::kMaxImageSide));
-  cmd->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, scenes::kMaxImageSide));
+  cmd->add_option("--threads", args.threads, "Worker threads (0: every core)")
+      ->check(CLI::Range(0, 1024));
+  cmd->add_option("--width", args.width, "Image width in pixels")
+      ->check(CLI::Range(1, scenes::kMaxImageSide));
+  cmd->add_option("--height", args.height, "Image height in pixels")
+      ->check(CLI::Range(1, scenes::kMaxImageSide));
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
   return cmd;
 }
 
 int run_render(const RenderArgs& args) {
-  scenes::Scenario scenario = args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
+  scenes::Scenario scenario =
+      args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
   apply_overrides(scenario, args);
   const renderer::Scene scene = scenes::build_scene(scenario);
   const renderer::Renderer renderer(scene);
@@ -92,11 +99,15 @@ int run_render(const RenderArgs& args) {
     const auto exr = out_dir / (view.name + ".exr");
     renderer::write_exr(film, exr, metadata(scenario, scenario.views[i]));
     renderer::write_preview_png(film, out_dir / (view.name + ".png"), scene.settings.exposure_ev);
-    images.push_back({{"path", exr.string()}, {"view", view.name}, {"frame", 0.0},
-                      {"seconds", stats.seconds}, {"rays_per_second", stats.rays_per_second()}});
+    images.push_back({{"path", exr.string()},
+                      {"view", view.name},
+                      {"frame", 0.0},
+                      {"seconds", stats.seconds},
+                      {"rays_per_second", stats.rays_per_second()}});
     if (!args.json) {
-      std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(), view.width,
-                               view.height, scene.settings.spp, stats.seconds, stats.rays_per_second() / 1e6);
+      std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(),
+                               view.width, view.height, scene.settings.spp, stats.seconds,
+                               stats.rays_per_second() / 1e6);
     }
   }
   if (args.json) std::cout << nlohmann::json{{"images", images}}.dump() << "\n";

@@ -13,7 +13,7 @@ namespace landsim::app {
 struct RenderArgs {
   std::string scenario;  // empty: the embedded default scene
   std::string out_dir = "out";
-  std::string view;      // empty: every view
+  std::string view;  // empty: every view
   std::optional<int> spp;
   std::optional<int> threads;
   std::optional<int> width;

@@ -26,23 +26,34 @@ bool Range::contains(double v) const {
 std::string Range::describe() const {
   if (lo_open && hi >= 1e12) return "greater than " + format_number(lo);
   if (hi >= 1e12) return "at least " + format_number(lo);
-  std::string s = "from " + format_number(lo) + (lo_open ? " (exclusive)" : "") + " to " + format_number(hi);
+  std::string s =
+      "from " + format_number(lo) + (lo_open ? " (exclusive)" : "") + " to " + format_number(hi);
   if (hi_open) s += " (exclusive)";
   return s;
 }
 
 std::string type_name(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a float";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    default: return "nothing";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    default:
+      return "nothing";
   }
 }
 
@@ -82,7 +93,8 @@ double TableReader::number(std::string_view key, Range range, std::optional<doub
     if (!fallback) missing(key);
     return *fallback;
   }
-  if (!n->is_number()) fail(key, "expected a number " + range.describe() + ", got " + type_name(*n));
+  if (!n->is_number())
+    fail(key, "expected a number " + range.describe() + ", got " + type_name(*n));
   const double v = n->value<double>().value();
   if (!range.contains(v)) {
     fail(key, "expected a number " + range.describe() + ", got " + format_number(v));
@@ -101,7 +113,8 @@ std::optional<double> TableReader::optional_number(std::string_view key, Range r
 std::int64_t TableReader::integer(std::string_view key, std::int64_t lo, std::int64_t hi,
                                   std::optional<std::int64_t> fallback) {
   const toml::node* n = node(key);
-  const std::string expected = "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+  const std::string expected =
+      "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
   if (n == nullptr) {
     if (!fallback) missing(key);
     return *fallback;
@@ -140,10 +153,12 @@ std::vector<double> TableReader::numbers(std::string_view key, std::size_t count
     if (!fallback) missing(key);
     return *fallback;
   }
-  const std::string expected = "expected an array of " + std::to_string(count) + " numbers, each " + range.describe();
+  const std::string expected =
+      "expected an array of " + std::to_string(count) + " numbers, each " + range.describe();
   const toml::array* a = n->as_array();
   if (a == nullptr || a->size() != count) {
-    fail(key, expected + ", got " + (a ? "an array of " + std::to_string(a->size()) : type_name(*n)));
+    fail(key,
+         expected + ", got " + (a ? "an array of " + std::to_string(a->size()) : type_name(*n)));
   }
   std::vector<double> out;
   for (const toml::node& item : *a) {
@@ -156,7 +171,7 @@ std::vector<double> TableReader::numbers(std::string_view key, std::size_t count
 }
 
 std::optional<std::vector<double>> TableReader::optional_numbers(std::string_view key,
-                                                                std::size_t n, Range range) {
+                                                                 std::size_t n, Range range) {
   if (!has(key)) {
     read_.emplace(key);
     return std::nullopt;

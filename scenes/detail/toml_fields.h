@@ -36,11 +36,13 @@ class TableReader {
                        std::optional<std::int64_t> fallback = std::nullopt);
   std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt);
   // One of `choices`.
-  std::string choice(std::string_view key, const std::vector<std::string>& choices, std::string fallback);
+  std::string choice(std::string_view key, const std::vector<std::string>& choices,
+                     std::string fallback);
   // An array of `N` numbers, each in `range`.
   std::vector<double> numbers(std::string_view key, std::size_t n, Range range,
                               std::optional<std::vector<double>> fallback = std::nullopt);
-  std::optional<std::vector<double>> optional_numbers(std::string_view key, std::size_t n, Range range);
+  std::optional<std::vector<double>> optional_numbers(std::string_view key, std::size_t n,
+                                                      Range range);
   Vec3 vec3(std::string_view key, Range range = {-1e12, 1e12},
             std::optional<Vec3> fallback = std::nullopt);
 

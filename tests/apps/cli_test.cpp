@@ -2,8 +2,8 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 
@@ -41,8 +41,10 @@ std::string scenario(const std::string& terrain_extra, const std::string& view_e
                      const std::string& render) {
   return "[terrain]\nelevation = \"" + volcano() + "\"\n" + terrain_extra +
          "\n[sun]\nelevation = 30\nazimuth = 300\n"
-         "[[views]]\nname = \"v\"\nposition = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, 130.0]\n"
-         "width = 32\nheight = 18\n" + view_extra + "\n[render]\n" + render + "\n";
+         "[[views]]\nname = \"v\"\nposition = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, "
+         "130.0]\n"
+         "width = 32\nheight = 18\n" +
+         view_extra + "\n[render]\n" + render + "\n";
 }
 
 bool has_files(const std::filesystem::path& dir) {
@@ -59,8 +61,14 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
   const std::vector<BadScenario> cases = {
       {"unknown key", scenario("shade = 1", "", "spp = 2"), "unknown key 'shade'"},
       {"wrong type", scenario("", "fov = \"wide\"", "spp = 2"), "fov"},
-      {"missing DEM", "[terrain]\nelevation = \"missing.asc\"\n" + scenario("", "", "").substr(scenario("", "", "").find("[sun]")), "elevation"},
-      {"zero-sized image", scenario("", "", "spp = 2").replace(scenario("", "", "spp = 2").find("width = 32"), 10, "width = 0"), "width"},
+      {"missing DEM",
+       "[terrain]\nelevation = \"missing.asc\"\n" +
+           scenario("", "", "").substr(scenario("", "", "").find("[sun]")),
+       "elevation"},
+      {"zero-sized image",
+       scenario("", "", "spp = 2")
+           .replace(scenario("", "", "spp = 2").find("width = 32"), 10, "width = 0"),
+       "width"},
       {"negative spp", scenario("", "", "spp = -1"), "spp"},
   };
   for (const BadScenario& c : cases) {
@@ -71,7 +79,8 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
     EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": " << r.err;
     EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << c.name << ": " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.name << ": one message: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1)
+        << c.name << ": one message: " << r.err;
     EXPECT_FALSE(has_files(out)) << c.name;
     EXPECT_TRUE(r.out.empty()) << c.name;
   }
@@ -92,7 +101,8 @@ TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
   TempDir dir;
   const auto file = dir.write("ok.toml", scenario("", "", "spp = 2"));
   const auto out = dir / "out";
-  const Result r = run("render " + file.string() + " --out " + out.string() + " --json --threads 2", dir);
+  const Result r =
+      run("render " + file.string() + " --out " + out.string() + " --json --threads 2", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto json = nlohmann::json::parse(r.out);
   ASSERT_EQ(json["images"].size(), 1u);

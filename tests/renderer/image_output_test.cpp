@@ -17,7 +17,8 @@ Film test_film() {
   Film film(5, 3);
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 5; ++x)
-      film.set(x, y, {0.1f * static_cast<float>(x), 0.2f * static_cast<float>(y), 0.5f}, 10.0f + static_cast<float>(x), {0.0f, 0.0f, 1.0f}, 1);
+      film.set(x, y, {0.1f * static_cast<float>(x), 0.2f * static_cast<float>(y), 0.5f},
+               10.0f + static_cast<float>(x), {0.0f, 0.0f, 1.0f}, 1);
   return film;
 }
 
@@ -46,8 +47,10 @@ TEST(ImageOutput, ExrRoundTripsRadianceDepthAndMetadata) {
 
   std::vector<float> r(15), z(15);
   Imf::FrameBuffer fb;
-  fb.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(r.data()), sizeof(float), 5 * sizeof(float)));
-  fb.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float), 5 * sizeof(float)));
+  fb.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(r.data()), sizeof(float),
+                            5 * sizeof(float)));
+  fb.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float),
+                            5 * sizeof(float)));
   in.setFrameBuffer(fb);
   in.readPixels(dw.min.y, dw.max.y);
   EXPECT_FLOAT_EQ(r[2 * 5 + 4], 0.4f);

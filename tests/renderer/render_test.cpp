@@ -54,8 +54,12 @@ TEST(Renderer, BitIdenticalForAnyThreadCount) {
   const Film a = renderer.render(scene.views[0], one);
   const Film b = renderer.render(scene.views[0], two);
   ASSERT_EQ(a.rgb_data().size(), b.rgb_data().size());
-  EXPECT_EQ(std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)), 0);
-  EXPECT_EQ(std::memcmp(a.depth_data().data(), b.depth_data().data(), a.depth_data().size() * sizeof(float)), 0);
+  EXPECT_EQ(
+      std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
+      0);
+  EXPECT_EQ(std::memcmp(a.depth_data().data(), b.depth_data().data(),
+                        a.depth_data().size() * sizeof(float)),
+            0);
 }
 
 TEST(Renderer, SeedChangesTheNoiseNotTheMean) {
@@ -63,7 +67,9 @@ TEST(Renderer, SeedChangesTheNoiseNotTheMean) {
   const Film a = Renderer(scene).render(scene.views[0], {});
   scene.settings.seed = 10;
   const Film b = Renderer(scene).render(scene.views[0], {});
-  EXPECT_NE(std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)), 0);
+  EXPECT_NE(
+      std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
+      0);
   double sa = 0, sb = 0;
   for (std::size_t i = 0; i < a.rgb_data().size(); ++i) {
     sa += a.rgb_data()[i];

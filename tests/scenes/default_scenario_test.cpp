@@ -25,7 +25,8 @@ renderer::Scene small_default_scene() {
 
 TEST(DefaultScenario, IsTheRepositoryExampleWithTheRealVolcanoGrid) {
   const Scenario embedded = default_scenario();
-  const Scenario file = load_scenario(landsim::testing::source_file("scenes/examples/default.toml"));
+  const Scenario file =
+      load_scenario(landsim::testing::source_file("scenes/examples/default.toml"));
   ASSERT_EQ(embedded.views.size(), file.views.size());
   EXPECT_EQ(embedded.views[0].position, file.views[0].position);
   EXPECT_EQ(embedded.sun.azimuth_deg, file.sun.azimuth_deg);
@@ -90,7 +91,9 @@ TEST(DefaultScenario, BitIdenticalWithOneAndTwoThreads) {
   two.threads = 2;
   const renderer::Film a = renderer.render(scene.views[0], one);
   const renderer::Film b = renderer.render(scene.views[0], two);
-  EXPECT_EQ(std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)), 0);
+  EXPECT_EQ(
+      std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
+      0);
 }
 
 }  // namespace

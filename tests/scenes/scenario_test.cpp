@@ -16,7 +16,9 @@ std::string volcano() { return landsim::testing::source_file("data/terrain/volca
 std::string scenario_text(const std::string& terrain_extra = "", const std::string& view_extra = "",
                           const std::string& render = "spp = 8") {
   return "[terrain]\n"
-         "elevation = \"" + volcano() + "\"\n" + terrain_extra + "\n"
+         "elevation = \"" +
+         volcano() + "\"\n" + terrain_extra +
+         "\n"
          "[sun]\n"
          "elevation = 30.0\n"
          "azimuth = 200\n"
@@ -24,8 +26,11 @@ std::string scenario_text(const std::string& terrain_extra = "", const std::stri
          "[[views]]\n"
          "name = \"a\"\n"
          "position = [0.0, 0.0, 300.0]\n"
-         "target = [300.0, 400.0, 150.0]\n" + view_extra + "\n"
-         "[render]\n" + render + "\n";
+         "target = [300.0, 400.0, 150.0]\n" +
+         view_extra +
+         "\n"
+         "[render]\n" +
+         render + "\n";
 }
 
 // Loads `text` and returns the error message (empty if it loaded).
@@ -43,9 +48,11 @@ std::string error_of(const std::string& text, std::string* file_out = nullptr) {
 
 TEST(Scenario, LoadsEveryKey) {
   TempDir dir;
-  const auto file = dir.write("scene.toml", scenario_text("height_scale = 2.0\nnodata = \"fill\"\ncell_size = 5",
-                                                          "fov = 30\nwidth = 320\nheight = 200",
-                                                          "spp = 8\nseed = 42\nthreads = 2\nmax_bounces = 3\nexposure = 1.5"));
+  const auto file =
+      dir.write("scene.toml",
+                scenario_text("height_scale = 2.0\nnodata = \"fill\"\ncell_size = 5",
+                              "fov = 30\nwidth = 320\nheight = 200",
+                              "spp = 8\nseed = 42\nthreads = 2\nmax_bounces = 3\nexposure = 1.5"));
   const Scenario s = load_scenario(file);
   EXPECT_EQ(s.terrain.elevation, volcano());
   EXPECT_DOUBLE_EQ(s.terrain.dem.height_scale, 2.0);
@@ -127,14 +134,17 @@ TEST(Scenario, OutOfRangeNumbersAreRefused) {
   std::string sun_below = scenario_text();
   sun_below.replace(sun_below.find("elevation = 30.0"), 16, "elevation = -5.0");
   EXPECT_NE(error_of(sun_below).find("[sun] elevation"), std::string::npos);
-  EXPECT_NE(error_of(scenario_text("nodata = \"zero\"")).find("\"hole\", \"fill\""), std::string::npos);
+  EXPECT_NE(error_of(scenario_text("nodata = \"zero\"")).find("\"hole\", \"fill\""),
+            std::string::npos);
 }
 
 TEST(Scenario, MissingRequiredKeyAndTable) {
   std::string no_target = scenario_text();
   no_target.replace(no_target.find("target"), 6, "#arget");
-  EXPECT_NE(error_of(no_target).find("[views[0]] target: required key is missing"), std::string::npos);
-  EXPECT_NE(error_of("[terrain]\nelevation = \"" + volcano() + "\"\n").find("[sun]"), std::string::npos);
+  EXPECT_NE(error_of(no_target).find("[views[0]] target: required key is missing"),
+            std::string::npos);
+  EXPECT_NE(error_of("[terrain]\nelevation = \"" + volcano() + "\"\n").find("[sun]"),
+            std::string::npos);
 }
 
 TEST(Scenario, VerticalViewAndDuplicateNamesAreRefused) {
@@ -142,7 +152,8 @@ TEST(Scenario, VerticalViewAndDuplicateNamesAreRefused) {
   vertical.replace(vertical.find("[300.0, 400.0, 150.0]"), 21, "[0.0, 0.0, 100.0]");
   EXPECT_NE(error_of(vertical).find("straight up or down"), std::string::npos);
   std::string twice = scenario_text();
-  const std::string view = twice.substr(twice.find("[[views]]"), twice.find("[render]") - twice.find("[[views]]"));
+  const std::string view =
+      twice.substr(twice.find("[[views]]"), twice.find("[render]") - twice.find("[[views]]"));
   twice.insert(twice.find("[render]"), view);
   EXPECT_NE(error_of(twice).find("duplicate view name"), std::string::npos);
 }

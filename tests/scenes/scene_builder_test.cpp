@@ -19,9 +19,11 @@ TEST(SunDirection, AzimuthIsClockwiseFromNorth) {
 
 TEST(SceneBuilder, ShiftsGeoreferencedCoordinatesToALocalOrigin) {
   landsim::testing::TempDir dir;
-  const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc").string();
-  const auto file = dir.write("g.toml",
-                              "[terrain]\nelevation = \"" + dem + "\"\n"
+  const std::string dem =
+      landsim::testing::source_file("data/terrain/gorillas_elevation.asc").string();
+  const auto file =
+      dir.write("g.toml", "[terrain]\nelevation = \"" + dem +
+                              "\"\n"
                               "[sun]\nelevation = 40\nazimuth = 90\n"
                               "[[views]]\nname = \"v\"\nposition = [582000.0, 675000.0, 2500.0]\n"
                               "target = [583000.0, 676000.0, 1600.0]\n");

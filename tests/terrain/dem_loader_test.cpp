@@ -1,9 +1,9 @@
 #include "terrain/dem_loader.h"
 
-#include <gdal.h>
 #include <cpl_conv.h>
-#include <ogr_srs_api.h>
+#include <gdal.h>
 #include <gtest/gtest.h>
+#include <ogr_srs_api.h>
 
 #include <fstream>
 
@@ -20,19 +20,20 @@ using landsim::testing::TempDir;
 std::string data(const std::string& name) { return source_file("data/terrain/" + name).string(); }
 
 // Writes a raster with GDAL: `driver` GTiff directly, PNG through an in-memory copy.
-void write_raster(const std::string& path, const char* driver, GDALDataType type, int cols, int rows,
-                  const std::vector<double>& values, const double* geotransform, const char* wkt,
-                  const double* nodata) {
+void write_raster(const std::string& path, const char* driver, GDALDataType type, int cols,
+                  int rows, const std::vector<double>& values, const double* geotransform,
+                  const char* wkt, const double* nodata) {
   ensure_gdal_registered();
   GDALDatasetH mem = GDALCreate(GDALGetDriverByName("MEM"), "", cols, rows, 1, type, nullptr);
   std::vector<double> copy = values;
-  ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(mem, 1), GF_Write, 0, 0, cols, rows, copy.data(), cols, rows,
-                         GDT_Float64, 0, 0),
+  ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(mem, 1), GF_Write, 0, 0, cols, rows, copy.data(), cols,
+                         rows, GDT_Float64, 0, 0),
             CE_None);
   if (geotransform != nullptr) GDALSetGeoTransform(mem, const_cast<double*>(geotransform));
   if (wkt != nullptr) GDALSetProjection(mem, wkt);
   if (nodata != nullptr) GDALSetRasterNoDataValue(GDALGetRasterBand(mem, 1), *nodata);
-  GDALDatasetH out = GDALCreateCopy(GDALGetDriverByName(driver), path.c_str(), mem, FALSE, nullptr, nullptr, nullptr);
+  GDALDatasetH out = GDALCreateCopy(GDALGetDriverByName(driver), path.c_str(), mem, FALSE, nullptr,
+                                    nullptr, nullptr);
   ASSERT_NE(out, nullptr);
   GDALClose(out);
   GDALClose(mem);
@@ -125,7 +126,8 @@ TEST(DemLoader, GeoTiffKeepsGeotransformCrsAndNodata) {
 TEST(DemLoader, SixteenBitPngNeedsCellSizeAndAppliesHeightScale) {
   TempDir dir;
   const std::string path = (dir / "dem.png").string();
-  write_raster(path, "PNG", GDT_UInt16, 3, 2, {0, 1000, 65535, 20, 30, 40}, nullptr, nullptr, nullptr);
+  write_raster(path, "PNG", GDT_UInt16, 3, 2, {0, 1000, 65535, 20, 30, 40}, nullptr, nullptr,
+               nullptr);
   try {
     load_elevation(path);
     FAIL() << "a PNG without cell_size must be refused";

@@ -64,7 +64,7 @@ TEST(ElevationGrid, NodataMakesNeighbouringPatchesEmptyNotSpikes) {
   EXPECT_FALSE(g.valid(1, 1));
   EXPECT_FALSE(g.height(12.0, 28.0).has_value());  // patch touching (1, 1)
   EXPECT_FALSE(g.height(18.0, 22.0).has_value());
-  ASSERT_TRUE(g.height(32.0, 8.0).has_value());     // patch far from it
+  ASSERT_TRUE(g.height(32.0, 8.0).has_value());  // patch far from it
   EXPECT_FLOAT_EQ(static_cast<float>(*g.height(32.0, 8.0)), 50.0f);
   EXPECT_FLOAT_EQ(g.min_height(), 50.0f);
   EXPECT_FLOAT_EQ(g.max_height(), 50.0f);

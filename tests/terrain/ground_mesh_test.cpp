@@ -38,11 +38,13 @@ TEST(GroundMesh, NodataCornerDropsOnlyItsTriangle) {
   const GroundMesh centre = build_ground_mesh(flat_grid(3, {4}), Vec3{});
   EXPECT_EQ(centre.triangle_count(), 4u);  // every quad keeps the triangle of its 3 valid corners
   for (std::uint32_t i : centre.indices) EXPECT_NE(i, 4u);
-  for (std::size_t t = 0; t < centre.triangle_count(); ++t) EXPECT_GT(triangle_normal(centre, t).z, 0.0f);
+  for (std::size_t t = 0; t < centre.triangle_count(); ++t)
+    EXPECT_GT(triangle_normal(centre, t).z, 0.0f);
 }
 
 TEST(GroundMesh, RealNodataLeavesHolesNotSpikes) {
-  const ElevationGrid g = load_elevation(testing::source_file("data/terrain/gorillas_elevation.asc").string());
+  const ElevationGrid g =
+      load_elevation(testing::source_file("data/terrain/gorillas_elevation.asc").string());
   const Vec3 origin = g.centre();
   const GroundMesh m = build_ground_mesh(g, origin);
   ASSERT_GT(m.triangle_count(), 0u);
@@ -57,7 +59,8 @@ TEST(GroundMesh, RealNodataLeavesHolesNotSpikes) {
 }
 
 TEST(GroundMesh, GeoreferencedGridKeepsMillimetrePrecision) {
-  const ElevationGrid g = load_elevation(testing::source_file("data/terrain/gorillas_elevation.asc").string());
+  const ElevationGrid g =
+      load_elevation(testing::source_file("data/terrain/gorillas_elevation.asc").string());
   const Vec3 origin = g.centre();
   const GroundMesh m = build_ground_mesh(g, origin);
   const std::size_t i = 148u * 181u + 180u;  // the south-east cell
@@ -70,7 +73,8 @@ TEST(GroundMesh, VertexNormalsFollowTheSlope) {
   std::vector<float> h;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) h.push_back(static_cast<float>(c));
-  const GroundMesh m = build_ground_mesh(ElevationGrid(3, 3, GeoTransform{0, 30, 10, 10}, h), Vec3{});
+  const GroundMesh m =
+      build_ground_mesh(ElevationGrid(3, 3, GeoTransform{0, 30, 10, 10}, h), Vec3{});
   const Vec3f expected = normalize(Vec3f{-0.1f, 0.0f, 1.0f});
   EXPECT_NEAR(m.normals[4].x, expected.x, 1e-6);
   EXPECT_NEAR(m.normals[4].y, 0.0f, 1e-6);
