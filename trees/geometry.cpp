@@ -4,10 +4,28 @@
 #include <limits>
 
 namespace landsim::trees {
+namespace {
+
+std::uint32_t prefix(const std::vector<std::uint32_t>& ends, std::size_t items) {
+  if (items == 0 || ends.empty()) return 0;
+  return ends[std::min(items, ends.size()) - 1];
+}
+
+}  // namespace
+
+std::uint32_t GroupGeometry::triangles_in_prefix(std::size_t items) const {
+  return prefix(item_triangle_end, items);
+}
+std::uint32_t GroupGeometry::lines_in_prefix(std::size_t items) const {
+  return prefix(item_line_end, items);
+}
+std::uint32_t GroupGeometry::points_in_prefix(std::size_t items) const {
+  return prefix(item_point_end, items);
+}
 
 std::size_t TreeGeometry::triangle_count() const {
   std::size_t n = 0;
-  for (const TriangleSet& set : triangles) n += set.indices.size() / 3;
+  for (const GroupGeometry& g : groups) n += g.triangles.triangle_count();
   return n;
 }
 
@@ -16,8 +34,8 @@ std::array<Vec3f, 2> TreeGeometry::bounds() const {
   Vec3f lo{kInf, kInf, kInf};
   Vec3f hi{-kInf, -kInf, -kInf};
   bool any = false;
-  for (const TriangleSet& set : triangles) {
-    for (const Vec3f& v : set.vertices) {
+  for (const GroupGeometry& g : groups) {
+    for (const Vec3f& v : g.triangles.vertices) {
       any = true;
       lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
       hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
@@ -25,6 +43,19 @@ std::array<Vec3f, 2> TreeGeometry::bounds() const {
   }
   if (!any) return {Vec3f{}, Vec3f{}};
   return {lo, hi};
+}
+
+std::size_t rank_major_position(std::size_t index, std::size_t count, int mass_size) {
+  const auto size = static_cast<std::size_t>(mass_size);
+  const std::size_t masses = (count + size - 1) / size;
+  const std::size_t mass = index / size;
+  const std::size_t rank = index % size;
+  // Ranks below `rank` hold every mass that is big enough to have them; only the last mass
+  // may be short (it holds count % size items).
+  const std::size_t last_mass_items = count - (masses - 1) * size;
+  std::size_t before = 0;
+  for (std::size_t r = 0; r < rank; ++r) before += (r < last_mass_items) ? masses : masses - 1;
+  return before + mass;
 }
 
 }  // namespace landsim::trees

@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "render_command.h"
+#include "tree_command.h"
 
 namespace {
 
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   landsim::app::RenderArgs render_args;
   CLI::App* render = landsim::app::add_render_command(app, render_args);
+  landsim::app::TreeArgs tree_args;
+  CLI::App* tree = landsim::app::add_tree_command(app, tree_args);
 
   try {
     app.parse(argc, argv);
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
 
   try {
     if (render->parsed()) return landsim::app::run_render(render_args);
+    if (tree->parsed()) return landsim::app::run_tree(tree_args);
   } catch (const landsim::InputError& e) {
     std::cerr << "landsim: error: " << e.what() << "\n";
     return kBadInput;

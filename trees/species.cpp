@@ -1,0 +1,204 @@
+#include "trees/species.h"
+
+#include <toml++/toml.h>
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "trees/mesher.h"
+#include "trees/weber_penn/generator.h"
+
+namespace landsim::trees {
+namespace {
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file))
+    throw InputError(file.string() + ": cannot open species file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::optional<double> to_number(const std::string& text) {
+  std::istringstream in(text);
+  double v = 0.0;
+  in >> v;
+  if (in.fail() || !in.eof()) {
+    // Allow trailing blanks, nothing else.
+    std::string rest;
+    if (in.fail() || (in >> rest, !rest.empty())) return std::nullopt;
+  }
+  return v;
+}
+
+std::string where(const std::string& source, const toml::source_region& r) {
+  return source + ":" + std::to_string(r.begin.line) + ":" + std::to_string(r.begin.column);
+}
+
+Vec3f read_colour(const toml::node& node, const std::string& source, const std::string& key) {
+  const toml::array* a = node.as_array();
+  const std::string msg =
+      where(source, node.source()) + ": colours." + key + ": expected [r, g, b], each 0 to 1";
+  if (a == nullptr || a->size() != 3) throw InputError(msg);
+  std::array<float, 3> c{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto v = a->get(i)->value<double>();
+    if (!v || *v < 0.0 || *v > 1.0) throw InputError(msg);
+    c[i] = static_cast<float>(*v);
+  }
+  return {c[0], c[1], c[2]};
+}
+
+void read_colours(const toml::node& node, const std::string& source, TreeColours& colours) {
+  const toml::table* t = node.as_table();
+  if (t == nullptr) throw InputError(where(source, node.source()) + ": colours: expected a table");
+  for (auto&& [key, value] : *t) {
+    if (key.str() == "bark") {
+      colours.bark = read_colour(value, source, "bark");
+    } else if (key.str() == "leaf") {
+      colours.leaf = read_colour(value, source, "leaf");
+    } else {
+      throw InputError(where(source, key.source()) + ": colours: unknown key '" +
+                       std::string(key.str()) + "' (expected bark, leaf)");
+    }
+  }
+}
+
+std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
+  const auto end = text.begin() +
+                   std::clamp<std::ptrdiff_t>(offset, 0, static_cast<std::ptrdiff_t>(text.size()));
+  return 1 + static_cast<std::size_t>(std::count(text.begin(), end, '\n'));
+}
+
+}  // namespace
+
+std::string core_name(CoreKind core) {
+  switch (core) {
+    case CoreKind::weber_penn:
+      return "weber_penn";
+  }
+  return "unknown";
+}
+
+Species parse_species_toml(std::string_view text, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(where(source, e.source()) +
+                     ": not valid TOML: " + std::string(e.description()));
+  }
+  Species s;
+  s.source = source;
+  s.name = std::filesystem::path(source).stem().string();
+  ParamTable params;
+  bool has_core = false;
+  for (auto&& [key, value] : root) {
+    const std::string k(key.str());
+    if (k == "core") {
+      if (value.value<std::string>() != "weber_penn") {
+        throw InputError(where(source, value.source()) +
+                         ": core: expected \"weber_penn\" (the cores available)");
+      }
+      has_core = true;
+    } else if (k == "name") {
+      const auto name = value.value<std::string>();
+      if (!name) throw InputError(where(source, value.source()) + ": name: expected a string");
+      s.name = *name;
+    } else if (k == "colours") {
+      read_colours(value, source, s.colours);
+    } else {
+      RawParam raw;
+      raw.where = where(source, value.source());
+      if (value.is_number()) {
+        raw.number = value.value<double>();
+        std::ostringstream t;
+        t << *raw.number;
+        raw.text = t.str();
+      } else if (value.is_string()) {
+        raw.text = *value.value<std::string>();
+        raw.number = to_number(raw.text);
+      } else {
+        throw InputError(raw.where + ": parameter " + k +
+                         ": expected a number or a string, got another type");
+      }
+      params.emplace(k, raw);
+    }
+  }
+  if (!has_core)
+    throw InputError(source + ": required key 'core' is missing (e.g. core = \"weber_penn\")");
+  s.parameters = weber_penn::parse_parameters(params, source);
+  return s;
+}
+
+Species parse_arbaro_xml(std::string_view text, const std::string& source) {
+  pugi::xml_document doc;
+  const pugi::xml_parse_result ok = doc.load_buffer(text.data(), text.size());
+  if (!ok) {
+    throw InputError(source + ":" + std::to_string(line_of(text, ok.offset)) +
+                     ": not valid XML: " + ok.description());
+  }
+  const pugi::xml_node species = doc.child("arbaro").child("species");
+  if (!species)
+    throw InputError(source + ": expected <arbaro><species ...> (an Arbaro species file)");
+  Species s;
+  s.source = source;
+  s.name =
+      species.attribute("name").as_string(std::filesystem::path(source).stem().string().c_str());
+  ParamTable params;
+  for (const pugi::xml_node node : species.children("param")) {
+    const std::string name = node.attribute("name").as_string();
+    RawParam raw;
+    raw.where = source + ":" + std::to_string(line_of(text, node.offset_debug()));
+    raw.text = node.attribute("value").as_string();
+    raw.number = to_number(raw.text);
+    if (name.empty()) throw InputError(raw.where + ": <param> without a name");
+    params.emplace(name, raw);
+  }
+  s.parameters = weber_penn::parse_parameters(params, source);
+  return s;
+}
+
+Species load_species(const std::filesystem::path& file) {
+  const std::string text = read_text(file);
+  const std::string ext = file.extension().string();
+  if (ext == ".toml") return parse_species_toml(text, file.string());
+  if (ext == ".xml") return parse_arbaro_xml(text, file.string());
+  throw InputError(file.string() +
+                   ": unknown species file type (expected .toml, or .xml for Arbaro)");
+}
+
+Tree generate(const Species& species, const TreeOptions& options) {
+  const auto& params = std::get<weber_penn::Parameters>(species.parameters);
+  weber_penn::GenerateOptions o;
+  o.seed = options.seed;
+  o.wind = {options.time, options.wind_speed, options.wind_gust};
+  o.quality = options.quality;
+  TreeSkeleton skeleton = weber_penn::generate_skeleton(params, o);
+  skeleton.colours = species.colours;
+
+  Tree tree;
+  tree.stats.stems_per_level.assign(static_cast<std::size_t>(params.levels), 0);
+  for (const StemSkeleton& stem : skeleton.stems) {
+    if (stem.sections.size() < 2) continue;
+    ++tree.stats.stems_per_level[static_cast<std::size_t>(stem.level)];
+    tree.stats.clones += stem.clone ? 1 : 0;
+  }
+  tree.stats.leaves = static_cast<int>(skeleton.leaves.size());
+  tree.geometry = mesh_tree(skeleton, weber_penn::mesh_resolution(params));
+  for (const GroupGeometry& g : tree.geometry.groups) {
+    for (const Vec3f& v : g.triangles.vertices) {
+      tree.stats.height = std::max(tree.stats.height, static_cast<double>(v.z));
+      tree.stats.crown_radius = std::max(
+          tree.stats.crown_radius, std::hypot(static_cast<double>(v.x), static_cast<double>(v.y)));
+    }
+  }
+  return tree;
+}
+
+}  // namespace landsim::trees

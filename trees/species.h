@@ -1,0 +1,56 @@
+#pragma once
+// Species: a tree core and its parameters, loaded from a species file (TOML, or Arbaro XML
+// for Weber & Penn). A variant is a species plus a seed; `generate` turns one into geometry.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "trees/geometry.h"
+#include "trees/weber_penn/parameters.h"
+
+namespace landsim::trees {
+
+enum class CoreKind { weber_penn };
+std::string core_name(CoreKind core);
+
+struct Species {
+  std::string name;
+  std::string source;  // the file, for messages
+  CoreKind core = CoreKind::weber_penn;
+  TreeColours colours;
+  std::variant<weber_penn::Parameters> parameters;
+};
+
+// By extension: .toml (any core) or .xml (Arbaro's Weber & Penn format). Throws InputError
+// naming the file, the line and the parameter.
+Species load_species(const std::filesystem::path& file);
+Species parse_species_toml(std::string_view text, const std::string& source);
+Species parse_arbaro_xml(std::string_view text, const std::string& source);
+
+struct TreeOptions {
+  std::uint64_t seed = 1;
+  double time = 0.0;  // seconds, for wind sway
+  double wind_speed = 0.0;
+  double wind_gust = 0.0;
+  double quality = 1.0;  // leaf quality factor, (0, 1]
+};
+
+struct TreeStats {
+  std::vector<int> stems_per_level;  // clones included
+  int clones = 0;
+  int leaves = 0;
+  double height = 0.0;        // metres, highest point above the base
+  double crown_radius = 0.0;  // metres, farthest point from the vertical through the base
+};
+
+struct Tree {
+  TreeGeometry geometry;
+  TreeStats stats;
+};
+
+Tree generate(const Species& species, const TreeOptions& options);
+
+}  // namespace landsim::trees
