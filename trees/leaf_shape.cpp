@@ -123,14 +123,34 @@ void normalise(LeafTemplate& t) {
   for (Vec3f& v : t.vertices) v = {(v.x - cx) * sx, (v.y - lo_y) * sy, v.z * sx};
 }
 
-float face_area(const LeafTemplate& t) {
-  float area = 0.0f;
-  for (std::size_t i = 0; i + 2 < t.indices.size(); i += 3) {
-    const Vec3f a = t.vertices[t.indices[i]], b = t.vertices[t.indices[i + 1]],
-                c = t.vertices[t.indices[i + 2]];
-    area += 0.5f * std::abs(cross(b - a, c - a).z);  // projected on the blade plane
+bool inside_triangle(float px, float py, const Vec3f& a, const Vec3f& b, const Vec3f& c) {
+  const auto side = [&](const Vec3f& u, const Vec3f& v) {
+    return (v.x - u.x) * (py - u.y) - (v.y - u.y) * (px - u.x);
+  };
+  const float d1 = side(a, b), d2 = side(b, c), d3 = side(c, a);
+  const bool neg = d1 < 0 || d2 < 0 || d3<0, pos = d1> 0 || d2 > 0 || d3 > 0;
+  return !(neg && pos);
+}
+
+// Area the blade covers seen along its normal: sampled on a grid, so that overlapping parts
+// (leaflets) count once.
+float covered_area(const LeafTemplate& t) {
+  constexpr int kGrid = 64;
+  int hits = 0;
+  for (int j = 0; j < kGrid; ++j) {
+    for (int i = 0; i < kGrid; ++i) {
+      const float x = -0.5f + (static_cast<float>(i) + 0.5f) / kGrid;
+      const float y = (static_cast<float>(j) + 0.5f) / kGrid;
+      for (std::size_t k = 0; k + 2 < t.indices.size(); k += 3) {
+        if (inside_triangle(x, y, t.vertices[t.indices[k]], t.vertices[t.indices[k + 1]],
+                            t.vertices[t.indices[k + 2]])) {
+          ++hits;
+          break;
+        }
+      }
+    }
   }
-  return area;
+  return static_cast<float>(hits) / (kGrid * kGrid);
 }
 
 }  // namespace
@@ -191,7 +211,7 @@ LeafTemplate make_leaf_template(const LeafShape& shape) {
       break;
   }
   normalise(t);
-  t.area = shape.kind == LeafShapeKind::sphere ? 0.25f * kPi : face_area(t);
+  t.area = shape.kind == LeafShapeKind::sphere ? 0.25f * kPi : covered_area(t);
   return t;
 }
 

@@ -10,13 +10,6 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kApexRadius = 1e-6;  // below this a cross-section is a single point
 
-// Geometry of one item before it is placed in rank-major order.
-struct ItemGeometry {
-  TriangleSet triangles;
-  LineSet lines;
-  PointSet points;
-};
-
 void add_ring(const CrossSection& s, int points, const StemSkeleton& stem, TriangleSet& out) {
   const Vec3 y_axis = cross(s.axis, s.x_axis);
   if (s.radius <= kApexRadius) {
@@ -49,10 +42,12 @@ void join_rings(std::uint32_t ia, int na, std::uint32_t ib, int nb,
   }
 }
 
-ItemGeometry mesh_stem(const StemSkeleton& stem, const MeshResolution& res) {
-  ItemGeometry g;
+// Appends one stem's tube and line segments to its group.
+void mesh_stem(const StemSkeleton& stem, const MeshResolution& res, GroupGeometry& g) {
+  const auto vertex_base = static_cast<std::uint32_t>(g.triangles.vertices.size());
+  const auto point_base = static_cast<std::uint32_t>(g.lines.points.size());
   const int points = res.ring_points[static_cast<std::size_t>(std::min(stem.level, 3))];
-  std::uint32_t prev_start = 0;
+  std::uint32_t prev_start = vertex_base;
   int prev_count = 0;
   for (std::size_t i = 0; i < stem.sections.size(); ++i) {
     const auto start = static_cast<std::uint32_t>(g.triangles.vertices.size());
@@ -64,9 +59,8 @@ ItemGeometry mesh_stem(const StemSkeleton& stem, const MeshResolution& res) {
 
     g.lines.points.push_back(Vec3f(stem.sections[i].position));
     g.lines.radii.push_back(static_cast<float>(stem.sections[i].radius));
-    if (i > 0) g.lines.first.push_back(static_cast<std::uint32_t>(i - 1));
+    if (i > 0) g.lines.first.push_back(point_base + static_cast<std::uint32_t>(i - 1));
   }
-  return g;
 }
 
 struct LeafMesh {
@@ -88,8 +82,9 @@ LeafMesh prepare_leaf(const LeafShape& shape) {
   return m;
 }
 
-ItemGeometry mesh_leaf(const LeafSkeleton& leaf, const LeafMesh& m) {
-  ItemGeometry g;
+// Appends one leaf's polygon and disc point to the leaf group.
+void mesh_leaf(const LeafSkeleton& leaf, const LeafMesh& m, GroupGeometry& g) {
+  const auto vertex_base = static_cast<std::uint32_t>(g.triangles.vertices.size());
   const Vec3 side = normalize(cross(leaf.direction, leaf.normal));
   const auto place = [&](const Vec3f& t) {
     return leaf.base + side * (t.x * leaf.width) + leaf.direction * (t.y * leaf.length) +
@@ -101,48 +96,30 @@ ItemGeometry mesh_leaf(const LeafSkeleton& leaf, const LeafMesh& m) {
     g.triangles.normals.push_back(
         Vec3f(normalize(side * n.x + leaf.direction * n.y + leaf.normal * n.z)));
   }
-  g.triangles.indices = m.shape.indices;
+  for (std::uint32_t i : m.shape.indices) g.triangles.indices.push_back(vertex_base + i);
   g.points.centres.push_back(Vec3f(leaf.base + leaf.direction * (0.5 * leaf.length)));
   // A disc of the blade's area, so a distant leaf covers what the polygon covered.
   const double area = m.shape.area * leaf.length * leaf.width;
   g.points.radii.push_back(static_cast<float>(std::sqrt(area / std::numbers::pi)));
   g.points.normals.push_back(Vec3f(leaf.normal));
-  return g;
 }
 
-void append(TriangleSet& to, const TriangleSet& from) {
-  const auto offset = static_cast<std::uint32_t>(to.vertices.size());
-  to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
-  to.normals.insert(to.normals.end(), from.normals.begin(), from.normals.end());
-  for (std::uint32_t i : from.indices) to.indices.push_back(offset + i);
-}
-
-void append(LineSet& to, const LineSet& from) {
-  const auto offset = static_cast<std::uint32_t>(to.points.size());
-  to.points.insert(to.points.end(), from.points.begin(), from.points.end());
-  to.radii.insert(to.radii.end(), from.radii.begin(), from.radii.end());
-  for (std::uint32_t i : from.first) to.first.push_back(offset + i);
-}
-
-void append(PointSet& to, const PointSet& from) {
-  to.centres.insert(to.centres.end(), from.centres.begin(), from.centres.end());
-  to.radii.insert(to.radii.end(), from.radii.begin(), from.radii.end());
-  to.normals.insert(to.normals.end(), from.normals.begin(), from.normals.end());
-}
-
-// Stores items (given in generation order) rank-major, recording where each item ends.
-GroupGeometry assemble(std::vector<ItemGeometry>& items, int mass_size) {
+// Meshes items (given in generation order) straight into rank-major storage, recording
+// where each stored item ends.
+template <typename Item, typename MeshOne>
+GroupGeometry assemble(const std::vector<const Item*>& items, int mass_size, MeshOne mesh_one) {
   GroupGeometry group;
   group.mass_size = mass_size;
   group.item_count = items.size();
-  std::vector<const ItemGeometry*> stored(items.size());
+  std::vector<const Item*> stored(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {
-    stored[rank_major_position(i, items.size(), mass_size)] = &items[i];
+    stored[rank_major_position(i, items.size(), mass_size)] = items[i];
   }
-  for (const ItemGeometry* item : stored) {
-    append(group.triangles, item->triangles);
-    append(group.lines, item->lines);
-    append(group.points, item->points);
+  group.item_triangle_end.reserve(items.size());
+  group.item_line_end.reserve(items.size());
+  group.item_point_end.reserve(items.size());
+  for (const Item* item : stored) {
+    mesh_one(*item, group);
     group.item_triangle_end.push_back(static_cast<std::uint32_t>(group.triangles.triangle_count()));
     group.item_line_end.push_back(static_cast<std::uint32_t>(group.lines.segment_count()));
     group.item_point_end.push_back(static_cast<std::uint32_t>(group.points.point_count()));
@@ -155,20 +132,25 @@ GroupGeometry assemble(std::vector<ItemGeometry>& items, int mass_size) {
 Group stem_group(int level) { return static_cast<Group>(std::clamp(level, 0, 3)); }
 
 TreeGeometry mesh_tree(const TreeSkeleton& skeleton, const MeshResolution& resolution) {
-  std::array<std::vector<ItemGeometry>, 4> stems;
+  std::array<std::vector<const StemSkeleton*>, 4> stems;
   for (const StemSkeleton& stem : skeleton.stems) {
     if (stem.sections.size() < 2) continue;
-    stems[static_cast<std::size_t>(stem_group(stem.level))].push_back(mesh_stem(stem, resolution));
+    stems[static_cast<std::size_t>(stem_group(stem.level))].push_back(&stem);
   }
   TreeGeometry geometry;
-  for (std::size_t g = 0; g < stems.size(); ++g)
-    geometry.groups[g] = assemble(stems[g], kStemMassSize);
-
+  for (std::size_t g = 0; g < stems.size(); ++g) {
+    geometry.groups[g] =
+        assemble(stems[g], kStemMassSize,
+                 [&](const StemSkeleton& s, GroupGeometry& out) { mesh_stem(s, resolution, out); });
+  }
   const LeafMesh leaf_mesh = prepare_leaf(skeleton.leaf_shape);
-  std::vector<ItemGeometry> leaves;
+  std::vector<const LeafSkeleton*> leaves;
   leaves.reserve(skeleton.leaves.size());
-  for (const LeafSkeleton& leaf : skeleton.leaves) leaves.push_back(mesh_leaf(leaf, leaf_mesh));
-  geometry.group(Group::leaves) = assemble(leaves, kLeafMassSize);
+  for (const LeafSkeleton& leaf : skeleton.leaves) leaves.push_back(&leaf);
+  GroupGeometry& leaf_group = geometry.group(Group::leaves);
+  leaf_group = assemble(leaves, kLeafMassSize, [&](const LeafSkeleton& l, GroupGeometry& out) {
+    mesh_leaf(l, leaf_mesh, out);
+  });
   geometry.colours = skeleton.colours;
   return geometry;
 }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <sstream>
 
 #include "tests/support/temp_dir.h"
 
@@ -143,6 +144,75 @@ TEST(Cli, HelpAndVersion) {
   EXPECT_NE(version.out.find("landsim "), std::string::npos);
   const Result none = run("", dir);
   EXPECT_EQ(none.exit_code, 2);
+}
+
+TEST(CliTree, PrintsTheJsonContract) {
+  TempDir dir;
+  const auto species = testing::source_file("data/species/quaking_aspen.toml").string();
+  const Result r = run("tree " + species + " --seed 13 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["species"], "quaking_aspen");
+  EXPECT_EQ(j["core"], "weber_penn");
+  EXPECT_EQ(j["seed"], 13);
+  const auto& per_level = j["stems"]["per_level"];
+  ASSERT_EQ(per_level.size(), 3u);
+  EXPECT_EQ(j["stems"]["total"].get<int>(),
+            per_level[0].get<int>() + per_level[1].get<int>() + per_level[2].get<int>());
+  EXPECT_GE(j["stems"]["clones"].get<int>(), 0);
+  EXPECT_GT(j["leaves"].get<int>(), 10000);
+  EXPECT_GT(j["triangles"].get<int>(), 0);
+  EXPECT_GT(j["height_m"].get<double>(), 5.0);
+  EXPECT_GT(j["crown_radius_m"].get<double>(), 1.0);
+  EXPECT_GE(j["generate_ms"].get<double>(), 0.0);
+}
+
+TEST(CliTree, WritesAValidObj) {
+  TempDir dir;
+  const auto species = testing::source_file("data/species/palm.xml").string();
+  const auto obj = dir / "palm.obj";
+  const Result r = run("tree " + species + " --obj " + obj.string() + " --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  std::istringstream in(testing::read_file(obj));
+  std::string line;
+  long vertices = 0, normals = 0, faces = 0;
+  bool indices_ok = true;
+  while (std::getline(in, line)) {
+    if (line.rfind("v ", 0) == 0) ++vertices;
+    if (line.rfind("vn ", 0) == 0) ++normals;
+    if (line.rfind("f ", 0) == 0) {
+      ++faces;
+      std::istringstream f(line.substr(2));
+      std::string corner;
+      while (f >> corner) {
+        const long index = std::stol(corner.substr(0, corner.find('/')));
+        indices_ok = indices_ok && index >= 1 && index <= vertices;
+      }
+    }
+  }
+  EXPECT_EQ(faces, j["triangles"].get<long>());
+  EXPECT_EQ(vertices, normals);
+  EXPECT_TRUE(indices_ok);
+}
+
+TEST(CliTree, BadSpeciesFilesExitTwoNamingTheParameter) {
+  TempDir dir;
+  const auto bad = dir.write("bad.toml", "core = \"weber_penn\"\nLevels = 3\n2CurveRes = 500\n");
+  const Result r = run("tree " + bad.string() + " --obj " + (dir / "t.obj").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("2CurveRes"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bad.toml:3"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "t.obj"));
+  const auto boom =
+      dir.write("boom.xml",
+                "<arbaro><species name='boom'><param name='Levels' value='4'/>"
+                "<param name='1Branches' value='900'/><param name='2Branches' value='900'/>"
+                "</species></arbaro>");
+  const Result b = run("tree " + boom.string(), dir);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("limit"), std::string::npos) << b.err;
+  EXPECT_EQ(run("tree /no/such/species.toml", dir).exit_code, 2);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "core/counter_rng.h"
 #include "core/input_error.h"
+#include "trees/weber_penn/branching.h"
 #include "trees/weber_penn/frame.h"
 #include "trees/weber_penn/leaf_orientation.h"
 #include "trees/weber_penn/random.h"
@@ -57,7 +58,13 @@ struct Stem {
 
 class Builder {
  public:
-  Builder(const Parameters& p, const GenerateOptions& o) : p_(p), o_(o) {
+  // Pruned stem lengths by stem serial: recorded on a calm pass and replayed under wind, so
+  // that pruning (which tests positions) never sees the sway and the structure is the same.
+  using PrunedLengths = std::vector<double>;
+
+  Builder(const Parameters& p, const GenerateOptions& o, PrunedLengths* record,
+          const PrunedLengths* replay)
+      : p_(p), o_(o), record_(record), replay_(replay) {
     for (std::size_t i = 0; i < level_rng_.size(); ++i) level_rng_[i] = Random(o.seed, i);
     leaf_rng_ = Random(o.seed, kLeafStream);
     tree_rng_ = Random(o.seed, kTreeStream);
@@ -94,17 +101,6 @@ class Builder {
     }
   }
 
-  // nRotate >= 0: each child turns further by nRotate; negative: alternate sides.
-  static double next_rotation(double& state, const LevelParameters& lp, Random& r) {
-    if (lp.rotate >= 0.0) {
-      state = std::fmod(state + lp.rotate + r.var(lp.rotate_v) + 360.0, 360.0);
-      return state;
-    }
-    if (std::abs(state) != 1.0) state = 1.0;
-    state = -state;
-    return state * (180.0 + lp.rotate + r.var(lp.rotate_v));
-  }
-
   void make_stem(Stem& stem, const Frame& base) {
     const LevelParameters& lp = p_.at(stem.level);
     stem.segments = lp.curve_res;
@@ -112,7 +108,17 @@ class Builder {
     stem.flare = stem.level == 0 ? p_.flare : 0.0;
     set_length(stem, stem_length(stem));
     assign_sway_phases(stem);
-    if (stem.level > 0 && p_.prune_ratio > 0.0) prune(stem, base);
+    if (stem.level > 0 && p_.prune_ratio > 0.0) {
+      if (replay_ != nullptr) {
+        set_length(stem, replay_->at(static_cast<std::size_t>(serial_ - 1)));
+      } else {
+        prune(stem, base);
+      }
+      if (record_ != nullptr) {
+        record_->resize(static_cast<std::size_t>(serial_), 0.0);
+        (*record_)[static_cast<std::size_t>(serial_ - 1)] = stem.length;
+      }
+    }
     if (stem.length <= kMinStemLength || stem.base_radius <= kMinStemRadius) return;
     prepare_children(stem);
     const int sink = new_skeleton(stem.level, false);
@@ -157,17 +163,14 @@ class Builder {
     if (stem.level < p_.levels - 1) {
       const LevelParameters& next = p_.at(stem.level + 1);
       stem.length_child_max = next.length + rng(stem.level + 1).var(next.length_v);
-      const double max = next.branches;
-      if (stem.level == 0) {
-        stem.substems_per_segment = max / stem.segments / std::max(1e-9, 1.0 - p_.base_size);
-      } else if (stem.level == 1) {
-        const double rel = stem.parent->length_child_max > 0.0
-                               ? stem.length / stem.parent->length / stem.parent->length_child_max
-                               : 0.0;
-        stem.substems_per_segment = max * (0.2 + 0.8 * rel) / stem.segments;
-      } else {
-        stem.substems_per_segment = max * (1.0 - 0.5 * stem.offset_ratio()) / stem.segments;
-      }
+      const double count =
+          stem.parent == nullptr
+              ? child_count(0, next.branches, stem.length, 0.0, 0.0, 0.0)
+              : child_count(stem.level, next.branches, stem.length, stem.parent->length,
+                            stem.parent->length_child_max, stem.offset);
+      // The trunk's children share only the part above its bare base.
+      const double share = stem.level == 0 ? std::max(1e-9, 1.0 - p_.base_size) : 1.0;
+      stem.substems_per_segment = count / stem.segments / share;
     }
     if (stem.level == p_.levels - 1 && p_.leaves != 0) {
       const double where = stem.parent != nullptr ? stem.offset_ratio() : 1.0;
@@ -265,8 +268,7 @@ class Builder {
     if (stem.level == 0 && s == 0 && p_.base_splits > 0) {
       count = p_.base_splits;
     } else {
-      count = static_cast<int>(lp.seg_splits + split_error_[lvl] + 0.5);
-      split_error_[lvl] -= count - lp.seg_splits;
+      count = split_error_[lvl].next(lp.seg_splits);
     }
     if (count < 1) return -1;
     const double spread_step = 360.0 / (count + 1);
@@ -362,15 +364,8 @@ class Builder {
   Frame child_frame(Stem& stem, const Frame& segment, double offset, double where, Random& r) {
     const LevelParameters& next = p_.at(stem.level + 1);
     const double rotate = next_rotation(stem.substem_rotate, next, r);
-    double down = 0.0;
-    if (next.down_angle_v >= 0.0) {
-      down = next.down_angle + r.var(next.down_angle_v);
-    } else {
-      // Negative nDownAngleV sweeps the angle along the parent, lowest children most.
-      const double span = stem.level == 0 ? stem.length * (1.0 - p_.base_size) : stem.length;
-      const double ratio = span > 0.0 ? (stem.length - offset) / span : 0.0;
-      down = next.down_angle + next.down_angle_v * (1.0 - 2.0 * ratio);
-    }
+    const double span = stem.level == 0 ? stem.length * (1.0 - p_.base_size) : stem.length;
+    const double down = down_angle(next, span > 0.0 ? (stem.length - offset) / span : 0.0, r);
     Frame f = segment.rot_xz(down, rotate);
     f.position = segment_point(stem, segment, where * stem.segment_length);
     return f;
@@ -391,8 +386,7 @@ class Builder {
     } else if (s == 0) {
       start = std::min(1.0, stem.parent->radius_at(stem.offset) / stem.segment_length);
     }
-    const int count = static_cast<int>(per_segment + substem_error_[lvl] + 0.5);
-    substem_error_[lvl] -= count - per_segment;
+    const int count = substem_error_[lvl].next(per_segment);
     if (count <= 0) return;
     Random& r = rng(stem.level + 1);
     const double dist = (1.0 - start) / count * next.branch_dist;
@@ -410,8 +404,7 @@ class Builder {
 
   void make_leaves(Stem& stem, const Frame& segment, int s) {
     if (p_.leaves > 0) {
-      const int count = static_cast<int>(stem.leaves_per_segment + leaf_error_ + 0.5);
-      leaf_error_ -= count - stem.leaves_per_segment;
+      const int count = leaf_error_.next(stem.leaves_per_segment);
       if (count <= 0) return;
       double start = 0.0;
       if (s == 0 && stem.parent != nullptr)
@@ -469,7 +462,7 @@ class Builder {
   void prune(Stem& stem, const Frame& base) {
     const std::size_t lvl = level_index(stem.level);
     const Random saved_rng = level_rng_[lvl];
-    const double saved_split_error = split_error_[lvl];
+    const ErrorDiffusion saved_split_error = split_error_[lvl];
     const double original = stem.length;
     const auto restore = [&] {
       level_rng_[lvl] = saved_rng;
@@ -509,15 +502,18 @@ class Builder {
 
   const Parameters& p_;
   GenerateOptions o_;
+  PrunedLengths* record_;
+  const PrunedLengths* replay_;
   std::array<Random, kMaxLevels> level_rng_;
   Random leaf_rng_, tree_rng_;
   Envelope envelope_;
   double leaf_quality_ = 1.0;
   double scale_tree_ = 1.0;
   double trunk_scale_ = 1.0;
-  std::array<double, kMaxLevels> split_error_{};
-  std::array<double, kMaxLevels> substem_error_{};
-  double leaf_error_ = 0.0;
+  // One error value per level (section 4.2), for splits and for children; one for leaves.
+  std::array<ErrorDiffusion, kMaxLevels> split_error_{};
+  std::array<ErrorDiffusion, kMaxLevels> substem_error_{};
+  ErrorDiffusion leaf_error_;
   std::uint64_t serial_ = 0;
   std::size_t stems_made_ = 0;
   TreeSkeleton out_;
@@ -526,7 +522,13 @@ class Builder {
 }  // namespace
 
 TreeSkeleton generate_skeleton(const Parameters& params, const GenerateOptions& options) {
-  return Builder(params, options).build();
+  if (!options.wind.active() || params.prune_ratio <= 0.0)
+    return Builder(params, options, nullptr, nullptr).build();
+  GenerateOptions calm = options;
+  calm.wind = {};
+  Builder::PrunedLengths lengths;
+  Builder(params, calm, &lengths, nullptr).build();
+  return Builder(params, options, nullptr, &lengths).build();
 }
 
 MeshResolution mesh_resolution(const Parameters& p) {

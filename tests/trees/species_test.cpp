@@ -1,0 +1,137 @@
+#include "trees/species.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/input_error.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::trees {
+namespace {
+
+using landsim::testing::source_file;
+
+const std::vector<std::string> kArbaroSpecies = {
+    "barley",         "black_tupelo", "ca_black_oak",    "desert_bush", "eastern_cottonwood",
+    "european_larch", "fanpalm",      "lombardy_poplar", "palm",        "quaking_aspen",
+    "rush",           "sassafras",    "shave-grass",     "tamarack",    "weeping_willow",
+    "wheat"};
+
+std::string error_of(const std::string& name, const std::string& text) {
+  landsim::testing::TempDir dir;
+  const auto file = dir.write(name, text);
+  try {
+    load_species(file);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+double trunk_top(const Tree&, const Species& species, std::uint64_t seed) {
+  // The trunk's highest cross-section, from the skeleton-level statistics: regenerate with
+  // leaves and branches irrelevant; the trunk group holds level 0 only.
+  const Tree t = generate(species, {seed});
+  double top = 0.0;
+  for (const Vec3f& v : t.geometry.group(Group::trunk).lines.points)
+    top = std::max(top, static_cast<double>(v.z));
+  return top;
+}
+
+TEST(Species, AllSixteenArbaroFilesLoadAndGenerate) {
+  for (const std::string& name : kArbaroSpecies) {
+    const Species s = load_species(source_file("data/species/" + name + ".xml"));
+    const auto& p = std::get<weber_penn::Parameters>(s.parameters);
+    for (std::uint64_t seed : {1u, 2u}) {
+      const Tree t = generate(s, {seed});
+      EXPECT_GT(t.geometry.triangle_count(), 0u) << name;
+      ASSERT_EQ(t.stats.stems_per_level.size(), static_cast<std::size_t>(p.levels)) << name;
+      EXPECT_GE(t.stats.stems_per_level[0], 1) << name;
+      // The trunk reaches the tree's scale: (Scale +- ScaleV) x 0Length x ZScale, less the
+      // height its curvature costs; the crown may rise above it (upper branches point up).
+      const double top = trunk_top(t, s, seed);
+      const double high = (p.scale + p.scale_v) * (p.level[0].length + p.level[0].length_v) *
+                          (p.z_scale + p.z_scale_v);
+      EXPECT_LE(top, high * 1.0001) << name;
+      EXPECT_GE(top, 0.3 * std::max(1e-3, p.scale - p.scale_v) * p.level[0].length) << name;
+      EXPECT_LE(t.stats.height, 1.5 * high + p.leaf_scale) << name;
+    }
+  }
+}
+
+TEST(Species, QuakingAspenIsOfTheOrderOfArbaros) {
+  // Arbaro: 1 + 50 + 1171 stems, 21,988 leaves, 14.8 m for seed 13 (another random stream).
+  const Tree t = generate(load_species(source_file("data/species/quaking_aspen.xml")), {13});
+  EXPECT_EQ(t.stats.stems_per_level[0], 1);
+  EXPECT_NEAR(t.stats.stems_per_level[1], 50, 1);
+  EXPECT_NEAR(t.stats.stems_per_level[2], 1171, 200);
+  EXPECT_NEAR(t.stats.leaves, 21988, 4000);
+  EXPECT_NEAR(t.stats.height, 14.8, 3.0);
+}
+
+TEST(Species, TomlAppendixSpeciesMatchTheirXmlOrigin) {
+  for (const std::string name :
+       {"quaking_aspen", "black_tupelo", "weeping_willow", "ca_black_oak"}) {
+    const Species toml = load_species(source_file("data/species/" + name + ".toml"));
+    const Species xml = load_species(source_file("data/species/" + name + ".xml"));
+    EXPECT_EQ(toml.name, name);
+    EXPECT_EQ(toml.core, CoreKind::weber_penn);
+    const Tree a = generate(toml, {9}), b = generate(xml, {9});
+    EXPECT_EQ(a.stats.leaves, b.stats.leaves) << name;
+    EXPECT_EQ(a.geometry.triangle_count(), b.geometry.triangle_count()) << name;
+    EXPECT_NE(toml.colours.leaf, TreeColours{}.leaf) << name << " has its own colours";
+  }
+}
+
+TEST(Species, ArbaroLeafShapeNamesMapToTemplates) {
+  const Species s = load_species(source_file("data/species/european_larch.xml"));  // disc1 needles
+  const Tree t = generate(s, {1});
+  const GroupGeometry& leaves = t.geometry.group(Group::leaves);
+  ASSERT_GT(leaves.item_count, 0u);
+  EXPECT_EQ(leaves.triangles.triangle_count(), leaves.item_count);  // one triangle each
+}
+
+TEST(Species, BadParametersNameTheParameterAndTheLimit) {
+  const std::string header = "core = \"weber_penn\"\n";
+  std::string msg = error_of("a.toml", header + "Levels = 3\n1CurveRes = 0\n");
+  EXPECT_NE(msg.find("a.toml:3:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("1CurveRes"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("from 1 to 64"), std::string::npos) << msg;
+  msg = error_of("b.toml", header + "Branchez = 3\n");
+  EXPECT_NE(msg.find("Branchez"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unknown"), std::string::npos) << msg;
+  msg = error_of("c.toml", header + "LeafShape = \"fern\"\n");
+  EXPECT_NE(msg.find("LeafShape"), std::string::npos) << msg;
+  msg = error_of("d.toml", "Levels = 2\n");
+  EXPECT_NE(msg.find("'core'"), std::string::npos) << msg;
+  msg = error_of(
+      "e.xml",
+      "<arbaro><species name='x'>\n<param name='Ratio' value='big'/>\n</species></arbaro>\n");
+  EXPECT_NE(msg.find("e.xml:2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Ratio"), std::string::npos) << msg;
+  msg = error_of("f.xml", "<arbaro><species>\n<param name='Ratio' value='0.1'>\n</arbaro>");
+  EXPECT_NE(msg.find("not valid XML"), std::string::npos) << msg;
+  msg = error_of("g.txt", "Levels = 2\n");
+  EXPECT_NE(msg.find("unknown species file type"), std::string::npos) << msg;
+}
+
+TEST(Species, ExplosiveParametersAreRefusedBeforeGenerating) {
+  const std::string msg =
+      error_of("boom.toml",
+               "core = \"weber_penn\"\nLevels = 4\n1Branches = 200\n2Branches = 200\n"
+               "3Branches = 200\n1SegSplits = 2\n1CurveRes = 10\n");
+  EXPECT_NE(msg.find("stems (limit"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("reduce 1SegSplits"), std::string::npos) << msg;  // the biggest factor
+  const std::string leaves = error_of(
+      "leafy.toml",
+      "core = \"weber_penn\"\nLevels = 3\n1Branches = 300\n2Branches = 300\nLeaves = 1000\n");
+  EXPECT_NE(leaves.find("leaves (limit"), std::string::npos) << leaves;
+}
+
+TEST(Species, MissingFileIsAnInputError) {
+  EXPECT_THROW(load_species("/nonexistent/tree.toml"), InputError);
+}
+
+}  // namespace
+}  // namespace landsim::trees
