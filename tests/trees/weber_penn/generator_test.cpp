@@ -63,6 +63,25 @@ TEST(Generator, CurveBackMakesAnSShape) {
   EXPECT_NEAR(angle_deg(segment_direction(trunk, 3), {0, 0, 1}), 20.0, 1e-9);
 }
 
+TEST(Generator, RandomCurvatureBendsInEveryDirection) {
+  // nCurveV turns each segment about a random axis across the stem, so trunks lean every
+  // way, not only in the plane of nCurve.
+  Parameters p = bare_trunk(5);
+  p.level[0].curve_v = 80.0;
+  int east = 0, west = 0, north = 0, south = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const Vec3 tip = generate_skeleton(p, seeded(seed)).stems[0].sections.back().position;
+    east += tip.x > 0.2;
+    west += tip.x < -0.2;
+    north += tip.y > 0.2;
+    south += tip.y < -0.2;
+  }
+  EXPECT_GT(east, 3);
+  EXPECT_GT(west, 3);
+  EXPECT_GT(north, 3);
+  EXPECT_GT(south, 3);
+}
+
 TEST(Generator, HelixModeWindsAroundTheAxis) {
   Parameters p = bare_trunk(2);
   p.level[0].curve_v = -30.0;
