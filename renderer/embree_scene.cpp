@@ -3,9 +3,11 @@
 #include <embree3/rtcore.h>
 #include <spdlog/spdlog.h>
 
+#include <array>
+#include <cmath>
 #include <cstring>
-#include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace landsim::renderer {
 namespace {
@@ -14,21 +16,22 @@ void report_embree_error(void*, RTCError code, const char* message) {
   spdlog::error("Embree error {}: {}", static_cast<int>(code), message ? message : "");
 }
 
-// Copies the ground mesh into a new Embree triangle geometry, vertex normals as attribute 0.
-RTCGeometry make_ground(RTCDevice device, const terrain::GroundMesh& mesh) {
+// A triangle mesh with per-vertex normals (attribute 0), copied into Embree's own buffers
+// (Embree pads them for its vector loads).
+RTCGeometry make_mesh(RTCDevice device, const std::vector<Vec3f>& vertices,
+                      const std::vector<Vec3f>& normals,
+                      const std::vector<std::uint32_t>& indices) {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3f), mesh.vertices.size()));
-  std::memcpy(vertices, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vec3f));
+  auto* v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    sizeof(Vec3f), vertices.size());
+  std::memcpy(v, vertices.data(), vertices.size() * sizeof(Vec3f));
   rtcSetGeometryVertexAttributeCount(geom, 1);
-  auto* normals = static_cast<float*>(
-      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3,
-                              sizeof(Vec3f), mesh.normals.size()));
-  std::memcpy(normals, mesh.normals.data(), mesh.normals.size() * sizeof(Vec3f));
-  auto* indices = static_cast<std::uint32_t*>(
-      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                              3 * sizeof(std::uint32_t), mesh.triangle_count()));
-  std::memcpy(indices, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+  auto* n = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3,
+                                    sizeof(Vec3f), normals.size());
+  std::memcpy(n, normals.data(), normals.size() * sizeof(Vec3f));
+  auto* i = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(std::uint32_t), indices.size() / 3);
+  std::memcpy(i, indices.data(), indices.size() * sizeof(std::uint32_t));
   rtcCommitGeometry(geom);
   return geom;
 }
@@ -44,9 +47,31 @@ RTCRay to_rtc(const Ray& ray, float t_near, float t_far) {
   r.tnear = t_near;
   r.tfar = t_far;
   r.mask = 0xffffffffu;
-  r.flags = 0;
-  r.time = 0.0f;
   return r;
+}
+
+// Column-major 3x4: rotation about z by `angle`, uniform `scale`, then translation.
+std::array<float, 12> instance_matrix(const TreeInstance& inst) {
+  const auto c = static_cast<float>(std::cos(inst.rotation) * inst.scale);
+  const auto s = static_cast<float>(std::sin(inst.rotation) * inst.scale);
+  const auto k = static_cast<float>(inst.scale);
+  return {c,
+          s,
+          0.0f,
+          -s,
+          c,
+          0.0f,
+          0.0f,
+          0.0f,
+          k,
+          static_cast<float>(inst.position.x),
+          static_cast<float>(inst.position.y),
+          static_cast<float>(inst.position.z)};
+}
+
+Vec3f rotate_z(const Vec3f& v, double angle) {
+  const auto c = static_cast<float>(std::cos(angle)), s = static_cast<float>(std::sin(angle));
+  return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
 }  // namespace
@@ -54,26 +79,71 @@ RTCRay to_rtc(const Ray& ray, float t_near, float t_far) {
 struct EmbreeScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  unsigned ground_id = RTC_INVALID_GEOMETRY_ID;
+  std::vector<RTCScene> prototypes;
+  // For each prototype, the object class of each of its geometries (by geometry ID).
+  std::vector<std::vector<ObjectClass>> prototype_classes;
+  // Top-level geometry ID -> tree instance index (-1 for the ground).
+  std::vector<std::int32_t> instance_of;
+  const Scene* source = nullptr;
+
+  ~Impl() {
+    for (RTCScene s : prototypes) rtcReleaseScene(s);
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+
+  void add_prototype(const TreePrototype& proto) {
+    RTCScene s = rtcNewScene(device);
+    std::vector<ObjectClass> classes;
+    for (int g = 0; g < trees::kGroupCount; ++g) {
+      const trees::TriangleSet& t = proto.geometry.groups[static_cast<std::size_t>(g)].triangles;
+      if (t.indices.empty()) continue;
+      RTCGeometry geom = make_mesh(device, t.vertices, t.normals, t.indices);
+      const unsigned id = rtcAttachGeometry(s, geom);
+      rtcReleaseGeometry(geom);
+      classes.resize(id + 1);
+      classes[id] =
+          g == static_cast<int>(trees::Group::leaves) ? ObjectClass::leaf : ObjectClass::bark;
+    }
+    rtcCommitScene(s);
+    prototypes.push_back(s);
+    prototype_classes.push_back(std::move(classes));
+  }
+
+  void add_instance(const TreeInstance& inst, std::int32_t index) {
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geom, prototypes.at(inst.prototype));
+    const std::array<float, 12> m = instance_matrix(inst);
+    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m.data());
+    rtcCommitGeometry(geom);
+    const unsigned id = rtcAttachGeometry(scene, geom);
+    rtcReleaseGeometry(geom);
+    instance_of.resize(id + 1, -1);
+    instance_of[id] = index;
+  }
 };
 
 EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+  impl_->source = &scene;
   impl_->device = rtcNewDevice(nullptr);
   if (impl_->device == nullptr) throw std::runtime_error("Embree: could not create a device");
   rtcSetDeviceErrorFunction(impl_->device, report_embree_error, nullptr);
   impl_->scene = rtcNewScene(impl_->device);
   if (scene.ground.mesh.triangle_count() > 0) {
-    RTCGeometry ground = make_ground(impl_->device, scene.ground.mesh);
-    impl_->ground_id = rtcAttachGeometry(impl_->scene, ground);
+    RTCGeometry ground = make_mesh(impl_->device, scene.ground.mesh.vertices,
+                                   scene.ground.mesh.normals, scene.ground.mesh.indices);
+    const unsigned id = rtcAttachGeometry(impl_->scene, ground);
     rtcReleaseGeometry(ground);
+    impl_->instance_of.resize(id + 1, -1);
+  }
+  for (const TreePrototype& p : scene.prototypes) impl_->add_prototype(p);
+  for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+    impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i));
   }
   rtcCommitScene(impl_->scene);
 }
 
-EmbreeScene::~EmbreeScene() {
-  if (impl_->scene) rtcReleaseScene(impl_->scene);
-  if (impl_->device) rtcReleaseDevice(impl_->device);
-}
+EmbreeScene::~EmbreeScene() = default;
 
 std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_far) const {
   RTCIntersectContext context;
@@ -87,13 +157,26 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
 
   Hit hit;
   hit.t = rh.ray.tfar;
-  hit.geometric_normal = normalize(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
-  hit.object = ObjectClass::ground;
+  RTCScene owner = impl_->scene;
+  double rotation = 0.0;
+  if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+    hit.instance = impl_->instance_of[rh.hit.instID[0]];
+    const TreeInstance& inst = impl_->source->instances[static_cast<std::size_t>(hit.instance)];
+    hit.prototype = static_cast<std::int32_t>(inst.prototype);
+    owner = impl_->prototypes[inst.prototype];
+    hit.object = impl_->prototype_classes[inst.prototype][rh.hit.geomID];
+    rotation = inst.rotation;
+  } else {
+    hit.object = ObjectClass::ground;
+  }
+  // Instanced hits report normals in the prototype's space: turn them into the world's
+  // (the instance transform is a rotation about z and a uniform scale).
+  hit.geometric_normal =
+      normalize(rotate_z(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z}, rotation));
   float n[3];
-  RTCGeometry geom = rtcGetGeometry(impl_->scene, rh.hit.geomID);
-  rtcInterpolate0(geom, rh.hit.primID, rh.hit.u, rh.hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, n,
-                  3);
-  const Vec3f shading{n[0], n[1], n[2]};
+  rtcInterpolate0(rtcGetGeometry(owner, rh.hit.geomID), rh.hit.primID, rh.hit.u, rh.hit.v,
+                  RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, n, 3);
+  const Vec3f shading = rotate_z(Vec3f{n[0], n[1], n[2]}, rotation);
   const float len = length(shading);
   hit.shading_normal = len > 0.0f ? shading / len : hit.geometric_normal;
   return hit;

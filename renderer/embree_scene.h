@@ -1,5 +1,7 @@
 #pragma once
-// The scene's geometry inside Embree: built once, then traced from many threads.
+// The scene's geometry inside Embree: the ground as a triangle mesh, every tree prototype
+// once as a scene of its own, and every tree as an instance of its prototype. Built once,
+// then traced from many threads.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -10,13 +12,16 @@
 
 namespace landsim::renderer {
 
-enum class ObjectClass : std::uint8_t { sky = 0, ground = 1 };
+// Object classes, as stored in the film's object AOV.
+enum class ObjectClass : std::uint8_t { sky = 0, ground = 1, bark = 2, leaf = 3, grass = 4 };
 
 struct Hit {
   float t = 0.0f;
-  Vec3f geometric_normal;  // unit, as Embree orients it (not flipped toward the ray)
-  Vec3f shading_normal;    // unit, interpolated vertex normal
+  Vec3f geometric_normal;  // unit, world space, as the surface is wound (not flipped)
+  Vec3f shading_normal;    // unit, world space, interpolated
   ObjectClass object = ObjectClass::sky;
+  std::int32_t instance = -1;   // tree instance, or -1
+  std::int32_t prototype = -1;  // its prototype, or -1
 };
 
 class EmbreeScene {

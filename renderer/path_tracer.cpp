@@ -55,16 +55,27 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       sky_(scene.sky, scene.sun, scene.ground.albedo),
       sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
 
-Vec3f PathTracer::sun_light(const Vec3f& p, const Vec3f& n, const Vec3f& ng, float u1, float u2,
+SurfaceMaterial PathTracer::material(const Hit& hit) const {
+  if (hit.prototype < 0) return {scene_.ground.albedo, {}};
+  const TreePrototype& proto = scene_.prototypes[static_cast<std::size_t>(hit.prototype)];
+  if (hit.object == ObjectClass::leaf) return {proto.leaf_reflectance, proto.leaf_transmittance};
+  return {proto.bark_albedo, {}};
+}
+
+Vec3f PathTracer::sun_light(const Vec3f& p, const Vec3f& n, const Vec3f& ng,
+                            const SurfaceMaterial& m, float u1, float u2,
                             std::uint32_t& rays) const {
   const Vec3f l =
       sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
   const float cos_n = dot(n, l);
-  if (cos_n <= 0.0f || dot(ng, l) <= 0.0f) return {};
+  const bool front = cos_n > 0.0f && dot(ng, l) > 0.0f;
+  const bool back = m.two_sided() && cos_n < 0.0f && dot(ng, l) < 0.0f;
+  if (!front && !back) return {};
   ++rays;
-  if (embree_.occluded({p, l}, 0.0f, kInfinity)) return {};
+  if (embree_.occluded({offset_point(p, front ? ng : -ng), l}, 0.0f, kInfinity)) return {};
   // The disc is small: its irradiance arrives at the sampled direction's cosine.
-  return scene_.sun.irradiance * cos_n;
+  const Vec3f f = front ? m.reflectance : m.transmittance;
+  return f * scene_.sun.irradiance * (std::abs(cos_n) / kPi);
 }
 
 PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const {
@@ -72,7 +83,6 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
   out.first.depth = kInfinity;
   Ray ray = camera_ray;
   Vec3f throughput{1.0f, 1.0f, 1.0f};
-  const Vec3f albedo = scene_.ground.albedo;
 
   for (int bounce = 0; bounce <= scene_.settings.max_bounces; ++bounce) {
     ++out.rays;
@@ -86,23 +96,36 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
     Vec3f n = hit->shading_normal;
     if (dot(ng, ray.direction) > 0.0f) ng = -ng;
     if (dot(n, ng) < 0.0f) n = -n;
-    const Vec3f p = offset_point(ray.origin + ray.direction * hit->t, ng);
-    if (bounce == 0) out.first = {hit->t, n, albedo, hit->object};
+    const Vec3f p = ray.origin + ray.direction * hit->t;
+    const SurfaceMaterial m = material(*hit);
+    if (bounce == 0) {
+      out.first = {hit->t, n, m.reflectance + m.transmittance, hit->object, hit->instance};
+    }
 
     const std::uint32_t dim = kFirstBounceDim + kDimsPerBounce * static_cast<std::uint32_t>(bounce);
-    const Vec3f e_sun = sun_light(p, n, ng, rng.uniform(dim), rng.uniform(dim + 1), out.rays);
-    out.radiance += throughput * albedo * e_sun * (1.0f / kPi);
+    out.radiance +=
+        throughput * sun_light(p, n, ng, m, rng.uniform(dim), rng.uniform(dim + 1), out.rays);
 
-    // Lambertian bounce: cosine sampling makes the weight exactly the albedo.
-    Vec3f next = sample_cosine(n, rng.uniform(dim + 2), rng.uniform(dim + 3));
-    if (dot(next, ng) <= 0.0f) break;  // shading normal pointed the sample into the surface
-    throughput = throughput * albedo;
+    // Lambertian reflection or (two-sided surfaces) transmission, chosen in proportion to
+    // their strength; cosine sampling makes the weight the chosen coefficient / probability.
+    const float r = max_component(m.reflectance), t = max_component(m.transmittance);
+    if (r + t <= 0.0f) break;
+    const float p_reflect = r / (r + t);
+    const bool reflect = rng.uniform(dim + 2) < p_reflect;
+    // Reuse of dim + 2 for the direction is avoided: the choice rescales it into [0, 1).
+    const float u = reflect ? rng.uniform(dim + 2) / p_reflect
+                            : (rng.uniform(dim + 2) - p_reflect) / (1.0f - p_reflect);
+    const Vec3f side = reflect ? n : -n;
+    const Vec3f next = sample_cosine(side, std::min(u, 0.99999994f), rng.uniform(dim + 3));
+    if (dot(next, reflect ? ng : -ng) <= 0.0f) break;  // shading normal pointed it into the surface
+    throughput =
+        throughput * (reflect ? m.reflectance / p_reflect : m.transmittance / (1.0f - p_reflect));
     if (bounce >= kRouletteAfter) {
       const float survive = std::clamp(max_component(throughput), 0.05f, 1.0f);
       if (rng.uniform(dim + 4) >= survive) break;
       throughput = throughput / survive;
     }
-    ray = {p, next};
+    ray = {offset_point(p, reflect ? ng : -ng), next};
   }
   return out;
 }

@@ -16,12 +16,21 @@ struct FirstHit {
   Vec3f normal;        // shading normal, facing the camera; zero for the sky
   Vec3f albedo;
   ObjectClass object = ObjectClass::sky;
+  std::int32_t instance = -1;  // tree instance, or -1
 };
 
 struct PathSample {
   Vec3f radiance;
   FirstHit first;
   std::uint32_t rays = 0;  // rays traced for this sample (camera, bounce and shadow rays)
+};
+
+// What a surface does with light: Lambertian reflection, plus (leaves) Lambertian
+// transmission to the other side.
+struct SurfaceMaterial {
+  Vec3f reflectance;
+  Vec3f transmittance;  // zero for opaque surfaces
+  bool two_sided() const { return max_component(transmittance) > 0.0f; }
 };
 
 class PathTracer {
@@ -32,8 +41,11 @@ class PathTracer {
   PathSample trace(const Ray& camera_ray, const CounterRng& rng) const;
 
  private:
-  Vec3f sun_light(const Vec3f& p, const Vec3f& n, const Vec3f& ng, float u1, float u2,
-                  std::uint32_t& rays) const;
+  SurfaceMaterial material(const Hit& hit) const;
+  // Irradiance-weighted BSDF value for the sun (already multiplied by the cosine), with the
+  // shadow test; n and ng face the viewer.
+  Vec3f sun_light(const Vec3f& p, const Vec3f& n, const Vec3f& ng, const SurfaceMaterial& m,
+                  float u1, float u2, std::uint32_t& rays) const;
 
   const Scene& scene_;
   const EmbreeScene& embree_;

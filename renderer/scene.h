@@ -11,6 +11,7 @@
 
 #include "core/vec3.h"
 #include "terrain/ground_mesh.h"
+#include "trees/geometry.h"
 
 namespace landsim::renderer {
 
@@ -47,9 +48,27 @@ struct RenderSettings {
   double exposure_ev = 0.0;  // applied to the preview PNG only; the EXR stays linear
 };
 
+// One unique tree (a species variant), stored once and instanced many times.
+struct TreePrototype {
+  trees::TreeGeometry geometry;  // tree base at the origin, z up, metres
+  Vec3f bark_albedo{0.30f, 0.24f, 0.18f};
+  Vec3f leaf_reflectance{0.10f, 0.20f, 0.05f};
+  Vec3f leaf_transmittance{0.05f, 0.12f, 0.02f};
+  std::uint16_t species = 0;  // index in the scenario's species table
+};
+
+struct TreeInstance {
+  std::uint32_t prototype = 0;
+  Vec3 position;          // trunk base, scene frame
+  double rotation = 0.0;  // about z, radians
+  double scale = 1.0;
+};
+
 struct Scene {
   Vec3 origin;  // terrain coordinates of the scene frame's (0, 0, 0)
   Ground ground;
+  std::vector<TreePrototype> prototypes;
+  std::vector<TreeInstance> instances;
   Sun sun;
   Sky sky;
   std::vector<View> views;

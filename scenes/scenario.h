@@ -3,12 +3,15 @@
 // documents every key. Positions are in the terrain's own coordinates.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/vec3.h"
+#include "featuremaps/vegetation_map.h"
 #include "terrain/dem_loader.h"
+#include "trees/species.h"
 
 namespace landsim::scenes {
 
@@ -41,9 +44,31 @@ struct RenderSection {
   double exposure_ev = 0.0;
 };
 
+// Where vegetation grows: a 16-bit vegetation map, or a land-cover class raster with a
+// mapping from classes to species bits and grass.
+struct FeatureMapSettings {
+  std::string vegetation;  // resolved path, or empty
+  featuremaps::RasterPlacement placement;
+  std::string classes;    // resolved path, or empty
+  std::string class_map;  // resolved path, required with classes
+};
+
+struct SpeciesSettings {
+  int bit = 0;
+  std::string file;  // resolved path
+  trees::Species species;
+  int variants = 4;
+  double density_per_ha = 200.0;
+  double scale_variation = 0.1;
+  double colour_variation = 0.0;
+  double min_spacing = 0.0;
+};
+
 struct Scenario {
   std::string source;  // the file it came from, for messages
   TerrainSettings terrain;
+  std::optional<FeatureMapSettings> featuremaps;
+  std::vector<SpeciesSettings> species;
   SunSettings sun;
   std::vector<ViewSettings> views;
   RenderSection render;

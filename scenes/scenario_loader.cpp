@@ -138,14 +138,76 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   return s;
 }
 
+std::optional<FeatureMapSettings> read_featuremaps(const toml::table& root, const std::string& file,
+                                                   const std::string& base_dir) {
+  if (!root.contains("featuremaps")) return std::nullopt;
+  TableReader r(sub_table(root, "featuremaps", file, true), "featuremaps", file);
+  FeatureMapSettings f;
+  const auto path = [&](std::string_view key) {
+    const std::string p = resolve(base_dir, r.string(key));
+    if (!terrain::raster_file_exists(p)) r.fail(key, "file not found: " + p);
+    return p;
+  };
+  if (r.has("vegetation")) f.vegetation = path("vegetation");
+  if (r.has("classes")) f.classes = path("classes");
+  if (r.has("class_map")) f.class_map = path("class_map");
+  r.string("vegetation", "");
+  r.string("classes", "");
+  r.string("class_map", "");
+  f.placement.cell_size = r.optional_number("cell_size", kPositive);
+  if (const auto o = r.optional_numbers("origin", 2, Range{-1e12, 1e12})) {
+    f.placement.origin = std::array<double, 2>{(*o)[0], (*o)[1]};
+  }
+  if (f.vegetation.empty() == f.classes.empty()) {
+    r.fail("vegetation", "give either vegetation (a 16-bit map) or classes with class_map");
+  }
+  if (!f.classes.empty() && f.class_map.empty()) r.fail("class_map", "required with classes");
+  r.finish();
+  return f;
+}
+
+std::vector<SpeciesSettings> read_species(const toml::table& root, const std::string& file,
+                                          const std::string& base_dir) {
+  std::vector<SpeciesSettings> out;
+  const toml::node* n = root.get("species");
+  if (n == nullptr) return out;
+  const toml::array* a = n->as_array();
+  if (a == nullptr || !a->is_array_of_tables()) {
+    const auto& b = n->source().begin;
+    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": species: expected [[species]] tables");
+  }
+  std::set<int> bits;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    TableReader r(*a->get(i)->as_table(), "species[" + std::to_string(i) + "]", file);
+    SpeciesSettings s;
+    s.bit = static_cast<int>(r.integer("bit", 0, featuremaps::kTreeBits - 1));
+    if (!bits.insert(s.bit).second)
+      r.fail("bit", "species bit " + std::to_string(s.bit) + " is used twice");
+    s.file = resolve(base_dir, r.string("file"));
+    const std::optional<std::string> text = terrain::read_text_file(s.file);
+    if (!text) r.fail("file", "species file not found: " + s.file);
+    s.species = trees::parse_species(*text, s.file);
+    s.variants = static_cast<int>(r.integer("variants", 1, 256, 4));
+    s.density_per_ha = r.number("density_per_ha", Range{0.0, 100000.0, true}, 200.0);
+    s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, 0.1);
+    s.colour_variation = r.number("colour_variation", Range{0.0, 0.9}, 0.0);
+    s.min_spacing = r.number("min_spacing", Range{0.0, 1000.0}, 0.0);
+    r.finish();
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
-  static const std::set<std::string, std::less<>> kKnown{"terrain", "sun", "views", "render"};
+  static const std::set<std::string, std::less<>> kKnown{"terrain", "sun",         "views",
+                                                         "render",  "featuremaps", "species"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
     throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
                      ": unknown table or key '" + std::string(key.str()) +
-                     "' (expected terrain, sun, views, render)");
+                     "' (expected terrain, featuremaps, species, sun, views, render)");
   }
 }
 
@@ -177,6 +239,13 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.source = source;
   s.terrain = read_terrain(sub_table(root, "terrain", source, true), source, base_dir);
   s.sun = read_sun(sub_table(root, "sun", source, true), source);
+  s.featuremaps = read_featuremaps(root, source, base_dir);
+  s.species = read_species(root, source, base_dir);
+  if (!s.species.empty() && !s.featuremaps) {
+    throw InputError(source +
+                     ": [[species]] need [featuremaps] (vegetation, or classes with class_map) to "
+                     "say where they grow");
+  }
   s.views = read_views(root, source);
   s.render = read_render(sub_table(root, "render", source, false), source);
   return s;

@@ -22,6 +22,18 @@ void mount_memory_file(const std::string& vsi_path, std::string_view bytes) {
   if (f != nullptr) VSIFCloseL(f);
 }
 
+std::optional<std::string> read_text_file(const std::string& path) {
+  if (!raster_file_exists(path)) return std::nullopt;
+  VSILFILE* f = VSIFOpenL(path.c_str(), "rb");
+  if (f == nullptr) return std::nullopt;
+  std::string text;
+  char buffer[65536];
+  std::size_t n = 0;
+  while ((n = VSIFReadL(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+  VSIFCloseL(f);
+  return text;
+}
+
 bool raster_file_exists(const std::string& path) {
   VSIStatBufL stat{};
   return VSIStatL(path.c_str(), &stat) == 0 && VSI_ISREG(stat.st_mode);

@@ -164,13 +164,19 @@ Species parse_arbaro_xml(std::string_view text, const std::string& source) {
   return s;
 }
 
+Species parse_species(std::string_view text, const std::string& source) {
+  const std::string ext = std::filesystem::path(source).extension().string();
+  if (ext == ".toml") return parse_species_toml(text, source);
+  if (ext == ".xml") return parse_arbaro_xml(text, source);
+  throw InputError(source + ": unknown species file type (expected .toml, or .xml for Arbaro)");
+}
+
 Species load_species(const std::filesystem::path& file) {
-  const std::string text = read_text(file);
-  const std::string ext = file.extension().string();
-  if (ext == ".toml") return parse_species_toml(text, file.string());
-  if (ext == ".xml") return parse_arbaro_xml(text, file.string());
-  throw InputError(file.string() +
-                   ": unknown species file type (expected .toml, or .xml for Arbaro)");
+  if (const std::string ext = file.extension().string(); ext != ".toml" && ext != ".xml") {
+    throw InputError(file.string() +
+                     ": unknown species file type (expected .toml, or .xml for Arbaro)");
+  }
+  return parse_species(read_text(file), file.string());
 }
 
 Tree generate(const Species& species, const TreeOptions& options) {

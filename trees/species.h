@@ -27,6 +27,8 @@ struct Species {
 // By extension: .toml (any core) or .xml (Arbaro's Weber & Penn format). Throws InputError
 // naming the file, the line and the parameter.
 Species load_species(const std::filesystem::path& file);
+// Parses `text` as the format `source`'s extension names.
+Species parse_species(std::string_view text, const std::string& source);
 Species parse_species_toml(std::string_view text, const std::string& source);
 Species parse_arbaro_xml(std::string_view text, const std::string& source);
 
