@@ -1,5 +1,7 @@
 #include "renderer/embree_scene.h"
 
+#include "renderer/grass_patch.h"
+
 #include <embree3/rtcore.h>
 #include <spdlog/spdlog.h>
 
@@ -76,10 +78,22 @@ Vec3f rotate_z(const Vec3f& v, double angle) {
 
 }  // namespace
 
+// A 3x4 column-major transform placing a grass patch on its tile: z along the terrain
+// normal, x kept as close to east as the tilt allows.
+std::array<float, 12> patch_matrix(const Vec3f& centre, const Vec3f& normal) {
+  const Vec3f z = normalize(normal);
+  const Vec3f x = normalize(cross(Vec3f{0.0f, 1.0f, 0.0f}, z));
+  const Vec3f y = cross(z, x);
+  return {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, centre.x, centre.y, centre.z};
+}
+
 struct EmbreeScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<RTCScene> prototypes;
+  std::vector<RTCScene> grass_patches;  // type (0-2) x level
+  // Top-level geometry ID -> grass type (1-3) for grass instances, else 0.
+  std::vector<std::uint8_t> grass_of;
   // For each prototype, the object class of each of its geometries (by geometry ID).
   std::vector<std::vector<ObjectClass>> prototype_classes;
   // Top-level geometry ID -> tree instance index (-1 for the ground).
@@ -88,6 +102,8 @@ struct EmbreeScene::Impl {
 
   ~Impl() {
     for (RTCScene s : prototypes) rtcReleaseScene(s);
+    for (RTCScene s : grass_patches)
+      if (s) rtcReleaseScene(s);
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
   }
@@ -110,6 +126,62 @@ struct EmbreeScene::Impl {
     prototype_classes.push_back(std::move(classes));
   }
 
+  void add_grass_patches(const GrassCover& cover) {
+    grass_patches.assign(3 * kGrassLevels, nullptr);
+    for (int t = 0; t < 3; ++t) {
+      for (int level = 0; level < kGrassLevels; ++level) {
+        const GrassBlades blades =
+            make_grass_patch(cover.types[static_cast<std::size_t>(t)], cover.tile, level,
+                             0x6772617373ULL + static_cast<std::uint64_t>(t));
+        if (blades.first.empty()) continue;
+        RTCScene s = rtcNewScene(device);
+        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+        auto* v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                          4 * sizeof(float), blades.points.size() / 4);
+        std::memcpy(v, blades.points.data(), blades.points.size() * sizeof(float));
+        auto* i = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
+                                          sizeof(std::uint32_t), blades.first.size());
+        std::memcpy(i, blades.first.data(), blades.first.size() * sizeof(std::uint32_t));
+        rtcCommitGeometry(geom);
+        rtcAttachGeometry(s, geom);
+        rtcReleaseGeometry(geom);
+        rtcCommitScene(s);
+        grass_patches[static_cast<std::size_t>(t * kGrassLevels + level)] = s;
+      }
+    }
+  }
+
+  // Patches within the grass range of `view`, at the level its distance asks for.
+  void add_grass(const GrassCover& cover, const View& view) {
+    if (cover.cols == 0) return;
+    add_grass_patches(cover);
+    for (int r = 0; r < cover.rows; ++r) {
+      for (int c = 0; c < cover.cols; ++c) {
+        const std::size_t k = static_cast<std::size_t>(r) * cover.cols + c;
+        const int type = cover.type[k];
+        if (type == 0) continue;
+        const Vec3f centre{static_cast<float>(cover.corner.x + (c + 0.5) * cover.tile),
+                           static_cast<float>(cover.corner.y + (r + 0.5) * cover.tile),
+                           cover.height[k]};
+        const int level =
+            grass_level(length(Vec3(centre) - view.position), view.height, view.fov_y_deg);
+        if (level < 0) continue;
+        RTCScene patch = grass_patches[static_cast<std::size_t>((type - 1) * kGrassLevels + level)];
+        if (patch == nullptr) continue;
+        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(geom, patch);
+        const std::array<float, 12> m = patch_matrix(centre, cover.normal[k]);
+        rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m.data());
+        rtcCommitGeometry(geom);
+        const unsigned id = rtcAttachGeometry(scene, geom);
+        rtcReleaseGeometry(geom);
+        instance_of.resize(id + 1, -1);
+        grass_of.resize(id + 1, 0);
+        grass_of[id] = static_cast<std::uint8_t>(type);
+      }
+    }
+  }
+
   void add_instance(const TreeInstance& inst, std::int32_t index) {
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geom, prototypes.at(inst.prototype));
@@ -123,7 +195,7 @@ struct EmbreeScene::Impl {
   }
 };
 
-EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make_unique<Impl>()) {
   impl_->source = &scene;
   impl_->device = rtcNewDevice(nullptr);
   if (impl_->device == nullptr) throw std::runtime_error("Embree: could not create a device");
@@ -140,6 +212,8 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i));
   }
+  if (view != nullptr) impl_->add_grass(scene.grass, *view);
+  impl_->grass_of.resize(impl_->instance_of.size(), 0);
   rtcCommitScene(impl_->scene);
 }
 
@@ -157,8 +231,18 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
 
   Hit hit;
   hit.t = rh.ray.tfar;
+  hit.primitive = rh.hit.primID;
   RTCScene owner = impl_->scene;
   double rotation = 0.0;
+  if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID && impl_->grass_of[rh.hit.instID[0]] != 0) {
+    // Grass: Embree's curve normal is in the patch's space; the patch is tilted only
+    // slightly, so the object-space normal serves for shading.
+    hit.object = ObjectClass::grass;
+    hit.grass_type = impl_->grass_of[rh.hit.instID[0]];
+    hit.geometric_normal = normalize(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
+    hit.shading_normal = hit.geometric_normal;
+    return hit;
+  }
   if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
     hit.instance = impl_->instance_of[rh.hit.instID[0]];
     const TreeInstance& inst = impl_->source->instances[static_cast<std::size_t>(hit.instance)];

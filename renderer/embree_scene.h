@@ -22,11 +22,14 @@ struct Hit {
   ObjectClass object = ObjectClass::sky;
   std::int32_t instance = -1;   // tree instance, or -1
   std::int32_t prototype = -1;  // its prototype, or -1
+  std::uint32_t primitive = 0;  // triangle of the ground, for its material
+  std::uint8_t grass_type = 0;  // 1-3 for grass
 };
 
 class EmbreeScene {
  public:
-  explicit EmbreeScene(const Scene& scene);
+  // `view`, when given, chooses range-dependent detail (grass patches) for that camera.
+  explicit EmbreeScene(const Scene& scene, const View* view = nullptr);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;

@@ -56,7 +56,21 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
 
 SurfaceMaterial PathTracer::material(const Hit& hit) const {
-  if (hit.prototype < 0) return {scene_.ground.albedo, {}};
+  if (hit.object == ObjectClass::grass) {
+    const GrassType& g = scene_.grass.types[static_cast<std::size_t>(hit.grass_type - 1)];
+    return {g.reflectance, g.transmittance};
+  }
+  if (hit.prototype < 0) {
+    const Ground& ground = scene_.ground;
+    if (hit.primitive < ground.triangle_material.size()) {
+      const std::uint8_t id = ground.triangle_material[hit.primitive];
+      if (id > 0) {
+        const GroundMaterial& m = ground.materials[id - 1u];
+        return {m.albedo, {}, m.water};
+      }
+    }
+    return {ground.albedo, {}};
+  }
   const TreePrototype& proto = scene_.prototypes[static_cast<std::size_t>(hit.prototype)];
   if (hit.object == ObjectClass::leaf) return {proto.leaf_reflectance, proto.leaf_transmittance};
   return {proto.bark_albedo, {}};

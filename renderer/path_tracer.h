@@ -30,6 +30,7 @@ struct PathSample {
 struct SurfaceMaterial {
   Vec3f reflectance;
   Vec3f transmittance;  // zero for opaque surfaces
+  bool water = false;   // adds a Fresnel mirror (Schlick, F0 = 0.02) over the diffuse part
   bool two_sided() const { return max_component(transmittance) > 0.0f; }
 };
 

@@ -66,7 +66,9 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   const auto start = std::chrono::steady_clock::now();
   Film film(view.width, view.height);
   const Camera camera(view);
-  const PathTracer tracer(scene_, *embree_);
+  std::unique_ptr<EmbreeScene> per_view;
+  if (!embree_) per_view = std::make_unique<EmbreeScene>(scene_, &view);
+  const PathTracer tracer(scene_, embree_ ? *embree_ : *per_view);
   const TileGrid grid{(view.width + kTileSize - 1) / kTileSize,
                       (view.height + kTileSize - 1) / kTileSize};
 

@@ -5,6 +5,7 @@
 //
 // Frame: x east, y north, z up, metres, relative to `origin` (a point in the terrain's own
 // coordinates, kept in double precision). Directions are unit vectors.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,9 +16,38 @@
 
 namespace landsim::renderer {
 
+// A ground material from the ground feature maps (soil, rock, water, road, grass cover).
+struct GroundMaterial {
+  Vec3f albedo{0.18f, 0.17f, 0.12f};  // Lambertian reflectance, linear RGB
+  bool water = false;                 // a Fresnel mirror over a dark diffuse body
+};
+
 struct Ground {
   terrain::GroundMesh mesh;
-  Vec3f albedo{0.18f, 0.17f, 0.12f};  // Lambertian reflectance, linear RGB
+  Vec3f albedo{0.18f, 0.17f, 0.12f};            // material 0: the terrain's own
+  std::vector<GroundMaterial> materials;        // further materials, 1-based in the ids below
+  std::vector<std::uint8_t> triangle_material;  // per triangle, 0 = `albedo`; may be empty
+};
+
+// Grass (Weber & Penn's feature-map grass types): blades as curves in square patches laid
+// over the tiles whose vegetation cell selects a grass type.
+struct GrassType {
+  Vec3f reflectance{0.10f, 0.22f, 0.05f};
+  Vec3f transmittance{0.06f, 0.14f, 0.03f};
+  double density_per_m2 = 150.0;
+  double blade_length = 0.3;   // metres
+  double blade_width = 0.004;  // metres
+  double curvature = 0.3;      // lean of the blade tip, fraction of its length
+};
+
+struct GrassCover {
+  double tile = 4.0;  // patch side, metres
+  Vec3 corner;        // south-west corner of tile (0, 0), scene frame
+  int cols = 0, rows = 0;
+  std::vector<std::uint8_t> type;  // per tile, row 0 southernmost: 0 none, else 1-3
+  std::vector<float> height;       // terrain height at the tile centre, scene frame
+  std::vector<Vec3f> normal;       // terrain normal there
+  std::array<GrassType, 3> types;
 };
 
 struct Sun {
@@ -69,6 +99,7 @@ struct Scene {
   Ground ground;
   std::vector<TreePrototype> prototypes;
   std::vector<TreeInstance> instances;
+  GrassCover grass;
   Sun sun;
   Sky sky;
   std::vector<View> views;

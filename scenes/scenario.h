@@ -51,6 +51,25 @@ struct FeatureMapSettings {
   featuremaps::RasterPlacement placement;
   std::string classes;    // resolved path, or empty
   std::string class_map;  // resolved path, required with classes
+  // Ground feature maps: rasters whose non-zero cells carry that material (resolved paths).
+  std::string soil, rock, water, road;
+};
+
+struct GrassSettings {
+  int type = 1;  // 1-3, the vegetation map's bits 14-15
+  double density_per_m2 = 150.0;
+  double blade_length = 0.3;
+  double blade_width = 0.004;
+  double curvature = 0.3;
+  Vec3f colour{0.10f, 0.22f, 0.05f};
+};
+
+// Albedo of each ground material (linear RGB).
+struct GroundMaterials {
+  Vec3f soil{0.20f, 0.15f, 0.10f};
+  Vec3f rock{0.35f, 0.33f, 0.30f};
+  Vec3f water{0.02f, 0.03f, 0.04f};
+  Vec3f road{0.12f, 0.12f, 0.12f};
 };
 
 struct SpeciesSettings {
@@ -69,6 +88,8 @@ struct Scenario {
   TerrainSettings terrain;
   std::optional<FeatureMapSettings> featuremaps;
   std::vector<SpeciesSettings> species;
+  std::vector<GrassSettings> grass;
+  GroundMaterials ground;
   SunSettings sun;
   std::vector<ViewSettings> views;
   RenderSection render;

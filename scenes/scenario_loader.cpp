@@ -151,6 +151,14 @@ std::optional<FeatureMapSettings> read_featuremaps(const toml::table& root, cons
   if (r.has("vegetation")) f.vegetation = path("vegetation");
   if (r.has("classes")) f.classes = path("classes");
   if (r.has("class_map")) f.class_map = path("class_map");
+  for (const char* key : {"soil", "rock", "water", "road"}) {
+    std::string& target = std::string_view(key) == "soil"    ? f.soil
+                          : std::string_view(key) == "rock"  ? f.rock
+                          : std::string_view(key) == "water" ? f.water
+                                                             : f.road;
+    if (r.has(key)) target = path(key);
+    r.string(key, "");
+  }
   r.string("vegetation", "");
   r.string("classes", "");
   r.string("class_map", "");
@@ -158,8 +166,9 @@ std::optional<FeatureMapSettings> read_featuremaps(const toml::table& root, cons
   if (const auto o = r.optional_numbers("origin", 2, Range{-1e12, 1e12})) {
     f.placement.origin = std::array<double, 2>{(*o)[0], (*o)[1]};
   }
-  if (f.vegetation.empty() == f.classes.empty()) {
-    r.fail("vegetation", "give either vegetation (a 16-bit map) or classes with class_map");
+  if (!f.vegetation.empty() && !f.classes.empty()) {
+    r.fail("vegetation",
+           "give either vegetation (a 16-bit map) or classes with class_map, not both");
   }
   if (!f.classes.empty() && f.class_map.empty()) r.fail("class_map", "required with classes");
   r.finish();
@@ -199,15 +208,55 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
   return out;
 }
 
+std::vector<GrassSettings> read_grass(const toml::table& root, const std::string& file) {
+  std::vector<GrassSettings> out;
+  const toml::node* n = root.get("grass");
+  if (n == nullptr) return out;
+  const toml::array* a = n->as_array();
+  if (a == nullptr || !a->is_array_of_tables()) {
+    const auto& b = n->source().begin;
+    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": grass: expected [[grass]] tables");
+  }
+  std::set<int> types;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    TableReader r(*a->get(i)->as_table(), "grass[" + std::to_string(i) + "]", file);
+    GrassSettings g;
+    g.type = static_cast<int>(r.integer("type", 1, 3));
+    if (!types.insert(g.type).second)
+      r.fail("type", "grass type " + std::to_string(g.type) + " is defined twice");
+    g.density_per_m2 = r.number("density_per_m2", Range{0.0, 2000.0, true}, 150.0);
+    g.blade_length = r.number("blade_length", Range{0.01, 3.0}, 0.3);
+    g.blade_width = r.number("blade_width", Range{0.0005, 0.05}, 0.004);
+    g.curvature = r.number("curvature", Range{0.0, 1.0}, 0.3);
+    g.colour = to_vec3f(r.vec3("colour", kUnit, Vec3{0.10, 0.22, 0.05}));
+    r.finish();
+    out.push_back(g);
+  }
+  return out;
+}
+
+GroundMaterials read_ground(const toml::table& root, const std::string& file) {
+  GroundMaterials g;
+  TableReader r(sub_table(root, "ground", file, false), "ground", file);
+  g.soil = to_vec3f(r.vec3("soil", kUnit, Vec3(g.soil)));
+  g.rock = to_vec3f(r.vec3("rock", kUnit, Vec3(g.rock)));
+  g.water = to_vec3f(r.vec3("water", kUnit, Vec3(g.water)));
+  g.road = to_vec3f(r.vec3("road", kUnit, Vec3(g.road)));
+  r.finish();
+  return g;
+}
+
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
-  static const std::set<std::string, std::less<>> kKnown{"terrain", "sun",         "views",
-                                                         "render",  "featuremaps", "species"};
+  static const std::set<std::string, std::less<>> kKnown{
+      "terrain", "sun", "views", "render", "featuremaps", "species", "grass", "ground"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
-    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                     ": unknown table or key '" + std::string(key.str()) +
-                     "' (expected terrain, featuremaps, species, sun, views, render)");
+    throw InputError(
+        file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+        ": unknown table or key '" + std::string(key.str()) +
+        "' (expected terrain, featuremaps, species, grass, ground, sun, views, render)");
   }
 }
 
@@ -241,6 +290,11 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.sun = read_sun(sub_table(root, "sun", source, true), source);
   s.featuremaps = read_featuremaps(root, source, base_dir);
   s.species = read_species(root, source, base_dir);
+  s.grass = read_grass(root, source);
+  s.ground = read_ground(root, source);
+  if (!s.grass.empty() && !s.featuremaps) {
+    throw InputError(source + ": [[grass]] needs [featuremaps] to say where it grows");
+  }
   if (!s.species.empty() && !s.featuremaps) {
     throw InputError(source +
                      ": [[species]] need [featuremaps] (vegetation, or classes with class_map) to "

@@ -1,5 +1,6 @@
 #include "scenes/scene_builder.h"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
 
@@ -8,6 +9,7 @@
 #include <numbers>
 
 #include "core/counter_rng.h"
+#include "core/input_error.h"
 #include "featuremaps/class_mapping.h"
 #include "featuremaps/placement.h"
 #include "terrain/ground_mesh.h"
@@ -51,12 +53,9 @@ renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t 
   return p;
 }
 
-void add_trees(const Scenario& s, const terrain::ElevationGrid& grid, renderer::Scene& scene) {
+void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
+               const terrain::ElevationGrid& grid, renderer::Scene& scene) {
   const std::uint64_t seed = s.render.seed;
-  const featuremaps::VegetationMap map = vegetation_map(*s.featuremaps, seed);
-  if (const std::size_t multi = map.multi_species_cells(); multi > 0) {
-    spdlog::warn("{} feature-map cells select several tree species; the lowest bit wins", multi);
-  }
   std::vector<featuremaps::SpeciesPlacement> placements;
   for (const SpeciesSettings& sp : s.species) {
     placements.push_back(
@@ -87,6 +86,125 @@ void add_trees(const Scenario& s, const terrain::ElevationGrid& grid, renderer::
   spdlog::info("{} trees of {} variants", scene.instances.size(), scene.prototypes.size());
 }
 
+// A feature map that misses the terrain entirely is almost certainly misplaced.
+void check_overlap(const featuremaps::VegetationMap& map, const terrain::ElevationGrid& grid,
+                   const std::string& path) {
+  const std::array<double, 4> b = map.bounds();
+  const double west = grid.transform().origin_x, north = grid.transform().origin_y;
+  const double east = west + grid.cols() * grid.transform().cell_size_x;
+  const double south = north - grid.rows() * grid.transform().cell_size_y;
+  if (b[2] <= west || b[0] >= east || b[3] <= south || b[1] >= north) {
+    throw InputError(fmt::format(
+        "{}: feature map ({:.1f}, {:.1f})-({:.1f}, {:.1f}) does not overlap the terrain "
+        "({:.1f}, {:.1f})-({:.1f}, {:.1f}); check its georeferencing or [featuremaps] origin",
+        path, b[0], b[1], b[2], b[3], west, south, east, north));
+  }
+}
+
+// Grass patches cover square tiles of this side (metres).
+constexpr double kGrassTile = 4.0;
+
+void add_grass(const Scenario& s, const featuremaps::VegetationMap& map,
+               const terrain::ElevationGrid& grid, renderer::Scene& scene) {
+  renderer::GrassCover& cover = scene.grass;
+  std::array<bool, 3> defined{};
+  for (const GrassSettings& g : s.grass) {
+    renderer::GrassType& t = cover.types[static_cast<std::size_t>(g.type - 1)];
+    t.reflectance = g.colour;
+    t.transmittance = g.colour * kLeafTransmittanceRatio;
+    t.density_per_m2 = g.density_per_m2;
+    t.blade_length = g.blade_length;
+    t.blade_width = g.blade_width;
+    t.curvature = g.curvature;
+    defined[static_cast<std::size_t>(g.type - 1)] = true;
+  }
+  const std::array<double, 4> b = map.bounds();
+  cover.tile = kGrassTile;
+  cover.corner = Vec3{b[0], b[1], 0.0} - Vec3{scene.origin.x, scene.origin.y, 0.0};
+  cover.cols = static_cast<int>(std::ceil((b[2] - b[0]) / kGrassTile));
+  cover.rows = static_cast<int>(std::ceil((b[3] - b[1]) / kGrassTile));
+  const auto tiles = static_cast<std::size_t>(cover.cols) * static_cast<std::size_t>(cover.rows);
+  cover.type.assign(tiles, 0);
+  cover.height.assign(tiles, 0.0f);
+  cover.normal.assign(tiles, Vec3f{0.0f, 0.0f, 1.0f});
+  tbb::parallel_for(0, cover.rows, [&](int r) {
+    for (int c = 0; c < cover.cols; ++c) {
+      const double x = b[0] + (c + 0.5) * kGrassTile, y = b[1] + (r + 0.5) * kGrassTile;
+      const auto cell = map.cell_at(x, y);
+      const auto z = grid.height(x, y);
+      if (!cell || !z || cell->grass_type() == 0 ||
+          !defined[static_cast<std::size_t>(cell->grass_type() - 1)])
+        continue;
+      const std::size_t k = static_cast<std::size_t>(r) * cover.cols + c;
+      cover.type[k] = static_cast<std::uint8_t>(cell->grass_type());
+      cover.height[k] = static_cast<float>(*z - scene.origin.z);
+      cover.normal[k] = Vec3f(*grid.normal(x, y));
+    }
+  });
+}
+
+// A ground feature map: a raster whose non-zero cells carry one material.
+struct MaterialRaster {
+  std::optional<terrain::ElevationGrid> grid;
+  bool covers(double x, double y) const {
+    if (!grid) return false;
+    const terrain::GeoTransform& t = grid->transform();
+    const double c = (x - t.origin_x) / t.cell_size_x, r = (t.origin_y - y) / t.cell_size_y;
+    if (!(c >= 0 && r >= 0 && c < grid->cols() && r < grid->rows())) return false;
+    const float v = grid->at(static_cast<int>(c), static_cast<int>(r));
+    return !std::isnan(v) && v != 0.0f;
+  }
+};
+
+MaterialRaster material_raster(const std::string& path) {
+  if (path.empty()) return {};
+  return {terrain::load_elevation(path)};
+}
+
+// Ground materials per triangle, by priority: road, water, rock, soil, then the grass tint.
+void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* map,
+                          const terrain::ElevationGrid& grid, renderer::Scene& scene) {
+  const FeatureMapSettings& f = *s.featuremaps;
+  const std::array<MaterialRaster, 4> rasters{material_raster(f.road), material_raster(f.water),
+                                              material_raster(f.rock), material_raster(f.soil)};
+  renderer::Ground& ground = scene.ground;
+  // Ids: 1 road, 2 water, 3 rock, 4 soil, 5-7 ground under grass types 1-3.
+  ground.materials = {{s.ground.road, false},
+                      {s.ground.water, true},
+                      {s.ground.rock, false},
+                      {s.ground.soil, false}};
+  for (int t = 0; t < 3; ++t) {
+    // Seen from afar grass is its colour; the ground under it takes a darker shade of it.
+    ground.materials.push_back(
+        {scene.grass.types[static_cast<std::size_t>(t)].reflectance * 0.9f, false});
+  }
+  const bool any_raster = !f.road.empty() || !f.water.empty() || !f.rock.empty() || !f.soil.empty();
+  if (!any_raster && (map == nullptr || s.grass.empty())) return;
+  const terrain::GroundMesh& mesh = ground.mesh;
+  ground.triangle_material.assign(mesh.triangle_count(), 0);
+  tbb::parallel_for(std::size_t{0}, mesh.triangle_count(), [&](std::size_t t) {
+    const Vec3f a = mesh.vertices[mesh.indices[3 * t]], b = mesh.vertices[mesh.indices[3 * t + 1]],
+                c = mesh.vertices[mesh.indices[3 * t + 2]];
+    const Vec3 centre = Vec3((a + b + c) / 3.0f) + scene.origin;
+    for (std::size_t m = 0; m < rasters.size(); ++m) {
+      if (rasters[m].covers(centre.x, centre.y)) {
+        ground.triangle_material[t] = static_cast<std::uint8_t>(m + 1);
+        return;
+      }
+    }
+    if (map != nullptr) {
+      const auto cell = map->cell_at(centre.x, centre.y);
+      if (cell && cell->grass_type() > 0) {
+        for (const GrassSettings& g : s.grass) {
+          if (g.type == cell->grass_type())
+            ground.triangle_material[t] = static_cast<std::uint8_t>(4 + g.type);
+        }
+      }
+    }
+  });
+  (void)grid;
+}
+
 }  // namespace
 
 Vec3 sun_direction(double elevation_deg, double azimuth_deg) {
@@ -112,7 +230,24 @@ renderer::Scene build_scene(const Scenario& scenario) {
   scene.settings.seed = scenario.render.seed;
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev = scenario.render.exposure_ev;
-  if (scenario.featuremaps && !scenario.species.empty()) add_trees(scenario, grid, scene);
+  if (scenario.featuremaps) {
+    const FeatureMapSettings& f = *scenario.featuremaps;
+    std::optional<featuremaps::VegetationMap> map;
+    if (!f.vegetation.empty() || !f.classes.empty()) {
+      map = vegetation_map(f, scenario.render.seed);
+      check_overlap(*map, grid, f.vegetation.empty() ? f.classes : f.vegetation);
+      if (const std::size_t multi = map->multi_species_cells(); multi > 0) {
+        spdlog::warn("{} feature-map cells select several tree species; the lowest bit wins",
+                     multi);
+      }
+    } else if (!scenario.species.empty() || !scenario.grass.empty()) {
+      throw InputError(scenario.source +
+                       ": [[species]] and [[grass]] need [featuremaps] vegetation or classes");
+    }
+    if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, scene);
+    if (map && !scenario.grass.empty()) add_grass(scenario, *map, grid, scene);
+    add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);
+  }
   return scene;
 }
 

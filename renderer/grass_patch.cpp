@@ -1,0 +1,52 @@
+#include "renderer/grass_patch.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/counter_rng.h"
+
+namespace landsim::renderer {
+namespace {
+
+constexpr int kPointsPerBlade = 4;
+// Calibrated ranges (metres at 1000 pixels and 60 degrees) where each level ends.
+constexpr double kLevelEnd[kGrassLevels] = {40.0, 160.0, 640.0};
+
+}  // namespace
+
+GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std::uint64_t seed) {
+  GrassBlades b;
+  const double keep = std::pow(4.0, -level);
+  const auto count = static_cast<std::size_t>(type.density_per_m2 * tile * tile * keep + 0.5);
+  const double width = type.blade_width * std::pow(2.0, level);
+  for (std::size_t i = 0; i < count; ++i) {
+    const CounterRng r(seed, static_cast<std::uint64_t>(level), i);
+    const double x = (r.uniform(0) - 0.5) * tile, y = (r.uniform(1) - 0.5) * tile;
+    const double h = type.blade_length * (0.7 + 0.6 * r.uniform(2));
+    const double lean = 2.0 * std::numbers::pi * r.uniform(3);
+    const double bend = type.curvature * h * (0.5 + r.uniform(4));
+    const auto base = static_cast<std::uint32_t>(b.points.size() / 4);
+    for (int k = 0; k < kPointsPerBlade; ++k) {
+      const double t = static_cast<double>(k) / (kPointsPerBlade - 1);
+      const double out = bend * t * t;  // the tip leans most
+      b.points.push_back(static_cast<float>(x + out * std::cos(lean)));
+      b.points.push_back(static_cast<float>(y + out * std::sin(lean)));
+      b.points.push_back(
+          static_cast<float>(h * t * std::sqrt(std::max(0.0, 1.0 - 0.5 * (out / h) * (out / h)))));
+      b.points.push_back(static_cast<float>(0.5 * width * (1.0 - 0.8 * t)));
+    }
+    for (int k = 0; k + 1 < kPointsPerBlade; ++k)
+      b.first.push_back(base + static_cast<std::uint32_t>(k));
+  }
+  return b;
+}
+
+int grass_level(double distance, int image_height, double fov_y_deg) {
+  const double r2 = distance * 1000.0 / image_height * fov_y_deg / 60.0;
+  for (int level = 0; level < kGrassLevels; ++level) {
+    if (r2 < kLevelEnd[level]) return level;
+  }
+  return -1;
+}
+
+}  // namespace landsim::renderer

@@ -1,0 +1,27 @@
+#pragma once
+// Grass patches: the blades of one square tile as round linear curves (Embree's
+// ROUND_LINEAR_CURVE layout: x, y, z, radius per point, a first-point index per segment).
+// Three levels of detail keep a patch's coverage while thinning blades with range.
+#include <cstdint>
+#include <vector>
+
+#include "renderer/scene.h"
+
+namespace landsim::renderer {
+
+struct GrassBlades {
+  std::vector<float> points;         // x, y, z, radius per point; patch centre at the origin
+  std::vector<std::uint32_t> first;  // first point of each segment
+};
+
+inline constexpr int kGrassLevels = 3;
+
+// Level 0 has every blade; level k keeps 1 / 4^k of them, each 2^k times as wide.
+GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std::uint64_t seed);
+
+// Which level a patch at `distance` gets, from the calibrated range r2 = distance x 1000 /
+// image_height x fov_y / 60 (the paper's section 5 calibration); -1: no blades (the ground's
+// grass tint stands in for them).
+int grass_level(double distance, int image_height, double fov_y_deg);
+
+}  // namespace landsim::renderer
