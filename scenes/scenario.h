@@ -42,6 +42,12 @@ struct RenderSection {
   int threads = 0;  // 0: every core
   int max_bounces = 4;
   double exposure_ev = 0.0;
+  std::vector<double> frames{0.0};  // seconds; wind sway is evaluated at each
+};
+
+struct WindSettings {
+  double speed = 0.0;
+  double gust = 0.0;
 };
 
 // Where vegetation grows: a 16-bit vegetation map, or a land-cover class raster with a
@@ -93,7 +99,11 @@ struct Scenario {
   SunSettings sun;
   std::vector<ViewSettings> views;
   RenderSection render;
+  WindSettings wind;
 };
+
+// Limit on frames per scenario (an image set is views x frames images).
+inline constexpr int kMaxFrames = 100000;
 
 // Limits that keep a scenario from exhausting memory (see docs/SCENARIO.md).
 inline constexpr int kMaxImageSide = 65536;

@@ -134,8 +134,28 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.threads = static_cast<int>(r.integer("threads", 0, 1024, 0));
   s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, 4));
   s.exposure_ev = r.number("exposure", Range{-20.0, 20.0}, 0.0);
+  if (r.has("frames")) {
+    const toml::node* n = t.get("frames");
+    const toml::array* a = n->as_array();
+    if (a == nullptr || a->empty() || a->size() > static_cast<std::size_t>(kMaxFrames)) {
+      r.fail("frames",
+             "expected an array of 1 to " + std::to_string(kMaxFrames) + " times in seconds");
+    }
+    s.frames = r.numbers("frames", a->size(), Range{0.0, 1e9});
+  } else {
+    r.numbers("frames", 1, Range{0.0, 1e9}, std::vector<double>{0.0});
+  }
   r.finish();
   return s;
+}
+
+WindSettings read_wind(const toml::table& t, const std::string& file) {
+  TableReader r(t, "wind", file);
+  WindSettings w;
+  w.speed = r.number("speed", Range{0.0, 100.0}, 0.0);
+  w.gust = r.number("gust", Range{0.0, 100.0}, 0.0);
+  r.finish();
+  return w;
 }
 
 std::optional<FeatureMapSettings> read_featuremaps(const toml::table& root, const std::string& file,
@@ -249,14 +269,14 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file) {
 
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
-      "terrain", "sun", "views", "render", "featuremaps", "species", "grass", "ground"};
+      "terrain", "sun", "views", "render", "featuremaps", "species", "grass", "ground", "wind"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
     throw InputError(
         file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
         ": unknown table or key '" + std::string(key.str()) +
-        "' (expected terrain, featuremaps, species, grass, ground, sun, views, render)");
+        "' (expected terrain, featuremaps, species, grass, ground, wind, sun, views, render)");
   }
 }
 
@@ -302,6 +322,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   }
   s.views = read_views(root, source);
   s.render = read_render(sub_table(root, "render", source, false), source);
+  s.wind = read_wind(sub_table(root, "wind", source, false), source);
   return s;
 }
 

@@ -35,10 +35,16 @@ std::uint64_t variant_seed(std::uint64_t seed, int bit, std::uint32_t variant) {
 }
 
 renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t species_index,
-                                       std::uint32_t variant, std::uint64_t seed) {
+                                       std::uint32_t variant, std::uint64_t seed, double time,
+                                       const WindSettings& wind) {
   renderer::TreePrototype p;
   const std::uint64_t vs = variant_seed(seed, sp.bit, variant);
-  p.geometry = trees::generate(sp.species, {vs}).geometry;
+  trees::TreeOptions options;
+  options.seed = vs;
+  options.time = time;
+  options.wind_speed = wind.speed;
+  options.wind_gust = wind.gust;
+  p.geometry = trees::generate(sp.species, options).geometry;
   p.species = static_cast<std::uint16_t>(species_index);
   p.bark_albedo = sp.species.colours.bark;
   // Per-variant colour variation: one brightness factor and a slight hue shift.
@@ -54,7 +60,7 @@ renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t 
 }
 
 void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
-               const terrain::ElevationGrid& grid, renderer::Scene& scene) {
+               const terrain::ElevationGrid& grid, double time, renderer::Scene& scene) {
   const std::uint64_t seed = s.render.seed;
   std::vector<featuremaps::SpeciesPlacement> placements;
   for (const SpeciesSettings& sp : s.species) {
@@ -76,7 +82,7 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   scene.prototypes.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     const auto [species, variant] = keys[i];
-    scene.prototypes[i] = make_prototype(s.species[species], species, variant, seed);
+    scene.prototypes[i] = make_prototype(s.species[species], species, variant, seed, time, s.wind);
   });
   scene.instances.reserve(placed.size());
   for (const featuremaps::PlacedTree& t : placed) {
@@ -213,7 +219,7 @@ Vec3 sun_direction(double elevation_deg, double azimuth_deg) {
   return {std::sin(az) * std::cos(el), std::cos(az) * std::cos(el), std::sin(el)};
 }
 
-renderer::Scene build_scene(const Scenario& scenario) {
+renderer::Scene build_scene(const Scenario& scenario, double time) {
   const terrain::ElevationGrid grid =
       terrain::load_elevation(scenario.terrain.elevation, scenario.terrain.dem);
   renderer::Scene scene;
@@ -244,7 +250,7 @@ renderer::Scene build_scene(const Scenario& scenario) {
       throw InputError(scenario.source +
                        ": [[species]] and [[grass]] need [featuremaps] vegetation or classes");
     }
-    if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, scene);
+    if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, time, scene);
     if (map && !scenario.grass.empty()) add_grass(scenario, *map, grid, scene);
     add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);
   }

@@ -6,7 +6,8 @@
 
 namespace landsim::scenes {
 
-renderer::Scene build_scene(const Scenario& scenario);
+// `time`: the frame time in seconds (wind sway); trees are generated for that moment.
+renderer::Scene build_scene(const Scenario& scenario, double time = 0.0);
 
 // Unit vector toward the sun from elevation and azimuth (clockwise from north), in degrees.
 Vec3 sun_direction(double elevation_deg, double azimuth_deg);

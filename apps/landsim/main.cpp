@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "core/input_error.h"
+#include "info_command.h"
 #include "render_command.h"
 #include "tree_command.h"
 
@@ -32,6 +33,10 @@ int main(int argc, char** argv) {
   CLI::App* render = landsim::app::add_render_command(app, render_args);
   landsim::app::TreeArgs tree_args;
   CLI::App* tree = landsim::app::add_tree_command(app, tree_args);
+  landsim::app::InfoArgs info_args;
+  CLI::App* info = landsim::app::add_info_command(app, info_args);
+  landsim::app::FeaturemapBuildArgs featuremap_args;
+  CLI::App* featuremap_build = landsim::app::add_featuremap_command(app, featuremap_args);
 
   try {
     app.parse(argc, argv);
@@ -45,6 +50,8 @@ int main(int argc, char** argv) {
   try {
     if (render->parsed()) return landsim::app::run_render(render_args);
     if (tree->parsed()) return landsim::app::run_tree(tree_args);
+    if (info->parsed()) return landsim::app::run_info(info_args);
+    if (featuremap_build->parsed()) return landsim::app::run_featuremap_build(featuremap_args);
   } catch (const landsim::InputError& e) {
     std::cerr << "landsim: error: " << e.what() << "\n";
     return kBadInput;

@@ -6,8 +6,11 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <optional>
 
+#include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
@@ -79,37 +82,88 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   return cmd;
 }
 
+namespace {
+
+// Stable image names: <view>.exr for a single frame, <view>_f<index>.exr for image sets.
+std::string image_stem(const std::string& view, std::size_t frame, std::size_t frames) {
+  return frames == 1 ? view : fmt::format("{}_f{:04d}", view, frame);
+}
+
+nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+void write_manifest(const std::filesystem::path& path, const scenes::Scenario& s,
+                    const nlohmann::json& images) {
+  const nlohmann::json manifest = {
+      {"scenario", s.source},
+      {"version", LANDSIM_VERSION},
+      {"spp", s.render.spp},
+      {"seed", s.render.seed},
+      {"sun", {{"elevation_deg", s.sun.elevation_deg}, {"azimuth_deg", s.sun.azimuth_deg}}},
+      {"wind", {{"speed", s.wind.speed}, {"gust", s.wind.gust}}},
+      {"images", images}};
+  AtomicFile out(path);
+  std::ofstream(out.temp_path()) << manifest.dump(2) << "\n";
+  out.commit();
+}
+
+}  // namespace
+
 int run_render(const RenderArgs& args) {
   scenes::Scenario scenario =
       args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
   apply_overrides(scenario, args);
-  const renderer::Scene scene = scenes::build_scene(scenario);
-  const renderer::Renderer renderer(scene);
+  const std::vector<double>& frames = scenario.render.frames;
+  // Without wind every frame shows the same geometry: build the scene once.
+  const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
+  std::optional<renderer::Scene> scene = scenes::build_scene(scenario, frames.front());
 
   const std::filesystem::path out_dir(args.out_dir);
   std::filesystem::create_directories(out_dir);
   nlohmann::json images = nlohmann::json::array();
-  for (std::size_t i = 0; i < scene.views.size(); ++i) {
-    const renderer::View& view = scene.views[i];
-    renderer::RenderOptions options;
-    options.threads = scenario.render.threads;
-    options.progress = [&](double f) { spdlog::info("{}: {:3.0f}%", view.name, 100.0 * f); };
-    renderer::RenderStats stats;
-    const renderer::Film film = renderer.render(view, options, &stats);
-    const auto exr = out_dir / (view.name + ".exr");
-    renderer::write_exr(film, exr, metadata(scenario, scenario.views[i]));
-    renderer::write_preview_png(film, out_dir / (view.name + ".png"), scene.settings.exposure_ev);
-    images.push_back({{"path", exr.string()},
-                      {"view", view.name},
-                      {"frame", 0.0},
-                      {"seconds", stats.seconds},
-                      {"rays_per_second", stats.rays_per_second()}});
-    if (!args.json) {
-      std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(),
-                               view.width, view.height, scene.settings.spp, stats.seconds,
-                               stats.rays_per_second() / 1e6);
+  nlohmann::json manifest_images = nlohmann::json::array();
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (f > 0 && sway) scene = scenes::build_scene(scenario, frames[f]);
+    const renderer::Renderer renderer(*scene);
+    for (std::size_t i = 0; i < scene->views.size(); ++i) {
+      const renderer::View& view = scene->views[i];
+      const scenes::ViewSettings& vs = scenario.views[i];
+      renderer::RenderOptions options;
+      options.threads = scenario.render.threads;
+      options.progress = [&](double p) {
+        spdlog::info("{} t={}s: {:3.0f}%", view.name, frames[f], 100.0 * p);
+      };
+      renderer::RenderStats stats;
+      const renderer::Film film = renderer.render(view, options, &stats);
+      const std::string stem = image_stem(view.name, f, frames.size());
+      const auto exr = out_dir / (stem + ".exr");
+      renderer::ImageMetadata meta = metadata(scenario, vs);
+      meta.emplace_back("time_s", fmt::format("{}", frames[f]));
+      renderer::write_exr(film, exr, meta);
+      renderer::write_preview_png(film, out_dir / (stem + ".png"), scene->settings.exposure_ev);
+      images.push_back({{"path", exr.string()},
+                        {"view", view.name},
+                        {"frame", frames[f]},
+                        {"seconds", stats.seconds},
+                        {"rays_per_second", stats.rays_per_second()}});
+      manifest_images.push_back({{"path", exr.filename().string()},
+                                 {"preview", stem + ".png"},
+                                 {"view", view.name},
+                                 {"frame_index", f},
+                                 {"time_s", frames[f]},
+                                 {"camera",
+                                  {{"position", vec_json(vs.position)},
+                                   {"target", vec_json(vs.target)},
+                                   {"fov_y_deg", vs.fov_y_deg},
+                                   {"width", vs.width},
+                                   {"height", vs.height}}}});
+      if (!args.json) {
+        std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(),
+                                 view.width, view.height, scene->settings.spp, stats.seconds,
+                                 stats.rays_per_second() / 1e6);
+      }
     }
   }
+  write_manifest(out_dir / "manifest.json", scenario, manifest_images);
   if (args.json) std::cout << nlohmann::json{{"images", images}}.dump() << "\n";
   return 0;
 }

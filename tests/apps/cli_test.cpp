@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 #include "tests/support/temp_dir.h"
@@ -117,10 +118,15 @@ TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
   Imf::InputFile exr((out / "v.exr").c_str());
   EXPECT_EQ(exr.header().dataWindow().max.x, 31);
   EXPECT_EQ(exr.header().dataWindow().max.y, 17);
-  // Only the two images: no temporary files left.
-  int files = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(out)) ++files;
-  EXPECT_EQ(files, 2);
+  // The two images and the manifest, no temporary files left.
+  std::set<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(out)) files.insert(e.path().filename().string());
+  EXPECT_EQ(files, (std::set<std::string>{"v.exr", "v.png", "manifest.json"}));
+  const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
+  ASSERT_EQ(manifest["images"].size(), 1u);
+  EXPECT_EQ(manifest["images"][0]["path"], "v.exr");
+  EXPECT_EQ(manifest["images"][0]["camera"]["width"], 32);
+  EXPECT_EQ(manifest["images"][0]["camera"]["position"][0], 500.0);
   EXPECT_NE(r.err.find("100%"), std::string::npos) << "progress goes to stderr";
 }
 

@@ -91,8 +91,8 @@ TEST(Scenario, UnknownKeyNamesFileLineColumnAndKey) {
 }
 
 TEST(Scenario, UnknownTableIsRefused) {
-  const std::string msg = error_of(scenario_text() + "[wind]\nspeed = 3\n");
-  EXPECT_NE(msg.find("'wind'"), std::string::npos) << msg;
+  const std::string msg = error_of(scenario_text() + "[weather]\nrain = 3\n");
+  EXPECT_NE(msg.find("'weather'"), std::string::npos) << msg;
 }
 
 TEST(Scenario, WrongTypeNamesTheKeyAndBothTypes) {

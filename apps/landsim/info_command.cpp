@@ -1,0 +1,80 @@
+#include "info_command.h"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+#include "featuremaps/class_mapping.h"
+#include "scenes/default_scenario.h"
+#include "scenes/scene_builder.h"
+#include "scenes/scene_summary.h"
+#include "terrain/dem_loader.h"
+
+namespace landsim::app {
+
+CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "info", "Build a scenario's scene and describe it (instances, triangles, memory)");
+  cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
+  cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
+  return cmd;
+}
+
+int run_info(const InfoArgs& args) {
+  const scenes::Scenario scenario =
+      args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
+  const renderer::Scene scene = scenes::build_scene(scenario);
+  const scenes::SceneSummary s = scenes::summarize(scenario, scene);
+  if (args.json) {
+    nlohmann::json per_species = nlohmann::json::object();
+    for (const auto& [name, n] : s.instances_per_species) per_species[name] = n;
+    std::cout << nlohmann::json{{"instances", s.instances},
+                                {"instances_per_species", per_species},
+                                {"unique_variants", s.unique_variants},
+                                {"triangles_stored", s.triangles_stored},
+                                {"triangles_instanced", s.triangles_instanced},
+                                {"grass_tiles", s.grass_tiles},
+                                {"memory_estimate_bytes", s.memory_estimate_bytes}}
+                     .dump()
+              << "\n";
+    return 0;
+  }
+  std::cout << fmt::format("{}\n  instances           {}\n", scenario.source, s.instances);
+  for (const auto& [name, n] : s.instances_per_species)
+    std::cout << fmt::format("    {:<18}{}\n", name, n);
+  std::cout << fmt::format(
+      "  unique variants     {}\n  triangles stored    {}\n  triangles instanced {}\n"
+      "  grass tiles         {}\n  memory estimate     {:.1f} MB\n",
+      s.unique_variants, s.triangles_stored, s.triangles_instanced, s.grass_tiles,
+      static_cast<double>(s.memory_estimate_bytes) / 1e6);
+  return 0;
+}
+
+CLI::App* add_featuremap_command(CLI::App& app, FeaturemapBuildArgs& args) {
+  CLI::App* fm = app.add_subcommand("featuremap", "Feature-map tools");
+  fm->require_subcommand(1);
+  CLI::App* build =
+      fm->add_subcommand("build", "Turn a land-cover class raster into a 16-bit vegetation map");
+  build->add_option("classes", args.classes, "Class raster (any format GDAL reads)")->required();
+  build->add_option("--map", args.map, "Class mapping TOML ([[class]] value, species, grass)")
+      ->required();
+  build->add_option("--out", args.out, "Output UInt16 GeoTIFF")->required();
+  build->add_option("--seed", args.seed, "Seed of the per-cell species choice")
+      ->capture_default_str();
+  return build;
+}
+
+int run_featuremap_build(const FeaturemapBuildArgs& args) {
+  const terrain::ElevationGrid classes = terrain::load_elevation(args.classes);
+  const featuremaps::ClassMapping mapping = featuremaps::load_class_mapping(args.map);
+  const featuremaps::VegetationMap map =
+      featuremaps::build_vegetation_map(classes, mapping, args.seed);
+  featuremaps::write_vegetation_map(map, args.out, classes.crs_wkt());
+  std::cout << fmt::format("{}: {} x {} cells, {} with multiple species bits\n", args.out,
+                           map.cols(), map.rows(), map.multi_species_cells());
+  return 0;
+}
+
+}  // namespace landsim::app

@@ -1,0 +1,30 @@
+#pragma once
+// `landsim info [SCENARIO] [--json]` and `landsim featuremap build CLASSES --map MAP --out VEG.tif`
+#include <cstdint>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace landsim::app {
+
+struct InfoArgs {
+  std::string scenario;  // empty: the embedded default scene
+  bool json = false;
+};
+
+struct FeaturemapBuildArgs {
+  std::string classes;
+  std::string map;
+  std::string out;
+  std::uint64_t seed = 1;
+};
+
+CLI::App* add_info_command(CLI::App& app, InfoArgs& args);
+int run_info(const InfoArgs& args);
+
+CLI::App* add_featuremap_command(CLI::App& app, FeaturemapBuildArgs& args);
+int run_featuremap_build(const FeaturemapBuildArgs& args);
+
+}  // namespace landsim::app
