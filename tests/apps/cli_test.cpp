@@ -120,7 +120,8 @@ TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
   EXPECT_EQ(exr.header().dataWindow().max.y, 17);
   // The two images and the manifest, no temporary files left.
   std::set<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(out)) files.insert(e.path().filename().string());
+  for (const auto& e : std::filesystem::directory_iterator(out))
+    files.insert(e.path().filename().string());
   EXPECT_EQ(files, (std::set<std::string>{"v.exr", "v.png", "manifest.json"}));
   const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
   ASSERT_EQ(manifest["images"].size(), 1u);
@@ -150,6 +151,75 @@ TEST(Cli, HelpAndVersion) {
   EXPECT_NE(version.out.find("landsim "), std::string::npos);
   const Result none = run("", dir);
   EXPECT_EQ(none.exit_code, 2);
+}
+
+TEST(Cli, ImageSetsNameEveryFrameAndListThemInTheManifest) {
+  TempDir dir;
+  // Two frames in wind: trees sway, so the two images differ.
+  const std::string scen =
+      scenario("", "", "spp = 1\nframes = [0.0, 3.0]") + "[wind]\nspeed = 12.0\ngust = 6.0\n";
+  std::string text = scen;
+  text.insert(text.find("[sun]"),
+              "[featuremaps]\nclasses = \"" +
+                  testing::source_file("data/featuremaps/volcano_landcover.asc").string() +
+                  "\"\nclass_map = \"" +
+                  testing::source_file("scenes/examples/volcano_classes.toml").string() +
+                  "\"\n[[species]]\nbit = 0\nfile = \"" +
+                  testing::source_file("data/species/quaking_aspen.toml").string() +
+                  "\"\nvariants = 1\ndensity_per_ha = 400\n");
+  text.replace(text.find("position = [500.0, 900.0, 330.0]"), 32,
+               "position = [300.0, 40.0, 150.0]");
+  text.replace(text.find("target = [280.0, 280.0, 130.0]"), 30, "target = [300.0, 120.0, 110.0]");
+  const auto file = dir.write("set.toml", text);
+  const auto out = dir / "out";
+  const Result r = run("render " + file.string() + " --out " + out.string() + " --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  ASSERT_EQ(json["images"].size(), 2u);
+  EXPECT_EQ(json["images"][1]["frame"], 3.0);
+  EXPECT_TRUE(std::filesystem::exists(out / "v_f0000.exr"));
+  EXPECT_TRUE(std::filesystem::exists(out / "v_f0001.png"));
+  const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
+  ASSERT_EQ(manifest["images"].size(), 2u);
+  EXPECT_EQ(manifest["images"][1]["path"], "v_f0001.exr");
+  EXPECT_EQ(manifest["images"][1]["time_s"], 3.0);
+  EXPECT_EQ(manifest["wind"]["speed"], 12.0);
+  EXPECT_NE(testing::read_file(out / "v_f0000.exr"), testing::read_file(out / "v_f0001.exr"));
+}
+
+TEST(Cli, InfoDescribesTheDefaultScene) {
+  TempDir dir;
+  const Result r = run("info --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto per_species = j["instances_per_species"];
+  ASSERT_EQ(per_species.size(), 2u);
+  EXPECT_EQ(j["instances"].get<long>(),
+            per_species["quaking_aspen"].get<long>() + per_species["ca_black_oak"].get<long>());
+  EXPECT_GT(j["instances"].get<long>(), 500);
+  EXPECT_LE(j["unique_variants"].get<long>(), 7);  // 4 aspen + 3 oak variants at most
+  EXPECT_GT(j["triangles_instanced"].get<long>(), 100 * j["triangles_stored"].get<long>());
+  EXPECT_GT(j["memory_estimate_bytes"].get<long>(), 0);
+}
+
+TEST(Cli, FeaturemapBuildWritesA16BitMap) {
+  TempDir dir;
+  const auto out = dir / "veg.tif";
+  const Result r = run(
+      "featuremap build " + testing::source_file("data/terrain/gorillas_vegetation.asc").string() +
+          " --map " + testing::source_file("scenes/examples/kagwene_classes.toml").string() +
+          " --out " + out.string(),
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  const Result bad = run(
+      "featuremap build " + testing::source_file("data/terrain/gorillas_vegetation.asc").string() +
+          " --map " + dir.write("bad.toml", "[[class]]\nvalue = 1\ngrass = 9\n").string() +
+          " --out " + (dir / "bad.tif").string(),
+      dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("grass"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.tif"));
 }
 
 TEST(CliTree, PrintsTheJsonContract) {

@@ -1,0 +1,217 @@
+// One scenario that sets every documented key: it must load with those values, every key
+// docs/SCENARIO.md documents must appear in it, and the scene built from it must carry the
+// vegetation, grass and ground materials it asks for.
+#include <gdal.h>
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <set>
+
+#include "core/input_error.h"
+#include "scenes/scenario.h"
+#include "scenes/scene_builder.h"
+#include "terrain/raster_files.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+using landsim::testing::source_file;
+using landsim::testing::TempDir;
+
+// A raster on the volcano grid (61 x 87 cells of 10 m, origin 0, 0) with `value` in the
+// given columns and 0 elsewhere.
+void write_grid(const std::string& path, GDALDataType type, int first_col, int last_col,
+                double value) {
+  terrain::ensure_gdal_registered();
+  GDALDatasetH ds =
+      GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), 61, 87, 1, type, nullptr);
+  double gt[6] = {0.0, 10.0, 0.0, 870.0, 0.0, -10.0};
+  GDALSetGeoTransform(ds, gt);
+  std::vector<double> v(61 * 87, 0.0);
+  for (int r = 0; r < 87; ++r)
+    for (int c = first_col; c <= last_col; ++c) v[static_cast<std::size_t>(r) * 61 + c] = value;
+  ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 61, 87, v.data(), 61, 87,
+                         GDT_Float64, 0, 0),
+            CE_None);
+  GDALClose(ds);
+}
+
+std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
+  const std::string data = source_file("data").string();
+  return "[terrain]\n"
+         "elevation = \"" +
+         data +
+         "/terrain/volcano.asc\"\n"
+         "cell_size = 10.0\norigin = [0.0, 0.0]\nheight_scale = 1.0\nheight_offset = 0.0\n"
+         "nodata = \"hole\"\nalbedo = [0.2, 0.2, 0.1]\n\n"
+         "[featuremaps]\n" +
+         vegetation_keys + "soil = \"" + (dir / "soil.tif").string() + "\"\nrock = \"" +
+         (dir / "rock.tif").string() +
+         "\"\n"
+         "water = \"" +
+         (dir / "water.tif").string() + "\"\nroad = \"" + (dir / "road.tif").string() +
+         "\"\n\n"
+         "[[species]]\nbit = 2\nfile = \"" +
+         data +
+         "/species/palm.xml\"\nvariants = 2\ndensity_per_ha = 80\n"
+         "scale_variation = 0.2\ncolour_variation = 0.1\nmin_spacing = 3.0\n\n"
+         "[[grass]]\ntype = 1\ndensity_per_m2 = 50\nblade_length = 0.2\nblade_width = "
+         "0.003\ncurvature = 0.5\n"
+         "colour = [0.1, 0.3, 0.05]\n\n"
+         "[ground]\nsoil = [0.3, 0.2, 0.1]\nrock = [0.4, 0.4, 0.4]\nwater = [0.01, 0.02, "
+         "0.03]\nroad = [0.1, 0.1, 0.1]\n\n"
+         "[wind]\nspeed = 4.0\ngust = 2.0\n\n"
+         "[sun]\nelevation = 40.0\nazimuth = 120.0\nirradiance = [3.0, 3.0, 3.0]\n\n"
+         "[[views]]\nname = \"all\"\nposition = [300.0, -100.0, 250.0]\ntarget = [300.0, 400.0, "
+         "120.0]\n"
+         "fov = 35.0\nwidth = 64\nheight = 32\n\n"
+         "[render]\nspp = 2\nseed = 5\nthreads = 1\nmax_bounces = 2\nexposure = 0.5\nframes = "
+         "[0.0, 1.5]\n";
+}
+
+struct Fixture {
+  TempDir dir;
+  std::string vegetation = (dir / "veg.tif").string();
+  Fixture() {
+    // Columns 0-19: species bit 2 with grass 1; 20-39: grass only; the rest bare.
+    terrain::ensure_gdal_registered();
+    GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), vegetation.c_str(), 61, 87, 1,
+                                 GDT_UInt16, nullptr);
+    double gt[6] = {0.0, 10.0, 0.0, 870.0, 0.0, -10.0};
+    GDALSetGeoTransform(ds, gt);
+    std::vector<std::uint16_t> v(61 * 87, 0);
+    for (int r = 0; r < 87; ++r) {
+      for (int c = 0; c < 40; ++c)
+        v[static_cast<std::size_t>(r) * 61 + c] =
+            static_cast<std::uint16_t>(c < 20 ? (4 | 16384) : 16384);
+    }
+    const CPLErr written = GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 61, 87, v.data(),
+                                        61, 87, GDT_UInt16, 0, 0);
+    GDALClose(ds);
+    if (written != CE_None) throw std::runtime_error("could not write the test vegetation map");
+    write_grid((dir / "soil.tif").string(), GDT_Byte, 40, 44, 1);
+    write_grid((dir / "rock.tif").string(), GDT_Byte, 45, 49, 1);
+    write_grid((dir / "water.tif").string(), GDT_Byte, 50, 54, 1);
+    write_grid((dir / "road.tif").string(), GDT_Byte, 55, 60, 1);
+  }
+  std::string text() const { return full_text(dir, "vegetation = \"" + vegetation + "\"\n"); }
+};
+
+TEST(FullScenario, LoadsEveryKey) {
+  Fixture f;
+  const Scenario s = load_scenario(f.dir.write("full.toml", f.text()));
+  ASSERT_TRUE(s.featuremaps.has_value());
+  EXPECT_EQ(s.featuremaps->vegetation, f.vegetation);
+  EXPECT_EQ(s.featuremaps->water, (f.dir / "water.tif").string());
+  ASSERT_EQ(s.species.size(), 1u);
+  EXPECT_EQ(s.species[0].bit, 2);
+  EXPECT_EQ(s.species[0].variants, 2);
+  EXPECT_DOUBLE_EQ(s.species[0].min_spacing, 3.0);
+  EXPECT_EQ(s.species[0].species.name, "palm");
+  ASSERT_EQ(s.grass.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.grass[0].curvature, 0.5);
+  EXPECT_FLOAT_EQ(s.ground.rock.x, 0.4f);
+  EXPECT_DOUBLE_EQ(s.wind.gust, 2.0);
+  EXPECT_EQ(s.render.frames, (std::vector<double>{0.0, 1.5}));
+}
+
+TEST(FullScenario, EveryDocumentedKeyIsExercised) {
+  const std::string doc = landsim::testing::read_file(source_file("docs/SCENARIO.md"));
+  std::set<std::string> documented;
+  const std::regex row(R"(^\| (`[^|]+`)[^|]*\|)");
+  const std::regex key("`([a-z_0-9]+)`");
+  std::istringstream lines(doc);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, row)) continue;
+    const std::string cell = m[1];
+    for (auto it = std::sregex_iterator(cell.begin(), cell.end(), key);
+         it != std::sregex_iterator(); ++it) {
+      documented.insert((*it)[1]);
+    }
+  }
+  ASSERT_GT(documented.size(), 40u);
+  Fixture f;
+  // The class-raster alternative to `vegetation` is set by the default scenario, which the
+  // DefaultScenario tests load and render.
+  const std::string text =
+      f.text() + landsim::testing::read_file(source_file("scenes/examples/default.toml"));
+  for (const std::string& k : documented) {
+    EXPECT_NE(text.find("\n" + k + " ="), std::string::npos)
+        << "documented key '" << k << "' is set by no test scenario";
+  }
+}
+
+TEST(FullScenario, SceneCarriesVegetationGrassAndGroundMaterials) {
+  Fixture f;
+  const Scenario s = load_scenario(f.dir.write("full.toml", f.text()));
+  const renderer::Scene scene = build_scene(s);
+  ASSERT_GT(scene.instances.size(), 10u);
+  for (const renderer::TreeInstance& t : scene.instances)
+    ASSERT_LT(t.position.x + scene.origin.x, 200.0);  // columns 0-19
+  // Grass exactly on the tiles whose cells have grass type 1 (columns 0-39, x < 400 m).
+  const renderer::GrassCover& g = scene.grass;
+  int grass = 0;
+  for (int r = 0; r < g.rows; ++r) {
+    for (int c = 0; c < g.cols; ++c) {
+      const double x = g.corner.x + scene.origin.x + (c + 0.5) * g.tile;
+      const double y = g.corner.y + scene.origin.y + (r + 0.5) * g.tile;
+      const bool inside =
+          x < 400.0 && x > 5.0 && x < 605.0 && y > 5.0 && y < 865.0;  // within the cell centres
+      const std::uint8_t type = g.type[static_cast<std::size_t>(r) * g.cols + c];
+      if (x >= 400.0) {
+        ASSERT_EQ(type, 0) << x;
+      }
+      if (inside) {
+        ASSERT_EQ(type, 1) << x << " " << y;
+      }
+      grass += type != 0;
+    }
+  }
+  EXPECT_GT(grass, 1000);
+  // Ground materials by column band: 1 road, 2 water, 3 rock, 4 soil, 5 under grass type 1.
+  const auto material_at = [&](double x) {
+    const terrain::GroundMesh& m = scene.ground.mesh;
+    for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+      const Vec3 c = Vec3((m.vertices[m.indices[3 * t]] + m.vertices[m.indices[3 * t + 1]] +
+                           m.vertices[m.indices[3 * t + 2]]) /
+                          3.0f) +
+                     scene.origin;
+      if (std::abs(c.x - x) < 4.0 && std::abs(c.y - 400.0) < 6.0)
+        return static_cast<int>(scene.ground.triangle_material[t]);
+    }
+    return -1;
+  };
+  EXPECT_EQ(material_at(100.0), 5);
+  EXPECT_EQ(material_at(423.0), 4);
+  EXPECT_EQ(material_at(473.0), 3);
+  EXPECT_EQ(material_at(523.0), 2);
+  EXPECT_EQ(material_at(573.0), 1);
+  EXPECT_TRUE(scene.ground.materials[1].water);
+}
+
+TEST(FullScenario, RefusesAMisplacedFeatureMapAndOrphanSpecies) {
+  Fixture f;
+  std::string shifted = f.text();
+  shifted.replace(shifted.find("soil = "), 0, "origin = [90000.0, 0.0]\n");
+  const Scenario s = load_scenario(f.dir.write("shifted.toml", shifted));
+  try {
+    build_scene(s);
+    FAIL() << "a feature map off the terrain must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not overlap"), std::string::npos) << e.what();
+  }
+  std::string orphan = f.text();
+  orphan.erase(orphan.find("[featuremaps]"),
+               orphan.find("[[species]]") - orphan.find("[featuremaps]"));
+  try {
+    load_scenario(f.dir.write("orphan.toml", orphan));
+    FAIL() << "species without feature maps must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("[featuremaps]"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace landsim::scenes
