@@ -69,6 +69,9 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   std::unique_ptr<EmbreeScene> per_view;
   if (!embree_) per_view = std::make_unique<EmbreeScene>(scene_, &view);
   const PathTracer tracer(scene_, embree_ ? *embree_ : *per_view);
+  const double setup =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.started) options.started();
   const TileGrid grid{(view.width + kTileSize - 1) / kTileSize,
                       (view.height + kTileSize - 1) / kTileSize};
 
@@ -95,6 +98,7 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
     stats->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats->rays = rays.load();
+    stats->setup_seconds = setup;
   }
   return film;
 }

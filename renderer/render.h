@@ -15,10 +15,13 @@ struct RenderOptions {
   int threads = 0;  // 0: every core
   // Called now and then with the fraction of tiles done, from one thread at a time.
   std::function<void(double)> progress;
+  // Called once when the scene is ready for this view and tracing begins.
+  std::function<void()> started;
 };
 
 struct RenderStats {
-  double seconds = 0.0;
+  double seconds = 0.0;        // the whole call, setup included
+  double setup_seconds = 0.0;  // building this view's Embree scene, before the first ray
   std::uint64_t rays = 0;
   double rays_per_second() const {
     return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0;

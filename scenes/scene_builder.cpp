@@ -89,7 +89,6 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
     scene.instances.push_back({prototype_of.at({t.species, t.variant}),
                                Vec3{t.x, t.y, t.z} - scene.origin, t.rotation, t.scale});
   }
-  spdlog::info("{} trees of {} variants", scene.instances.size(), scene.prototypes.size());
 }
 
 // A feature map that misses the terrain entirely is almost certainly misplaced.

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -89,6 +90,10 @@ std::string image_stem(const std::string& view, std::size_t frame, std::size_t f
   return frames == 1 ? view : fmt::format("{}_f{:04d}", view, frame);
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
 nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 void write_manifest(const std::filesystem::path& path, const scenes::Scenario& s,
@@ -115,7 +120,10 @@ int run_render(const RenderArgs& args) {
   const std::vector<double>& frames = scenario.render.frames;
   // Without wind every frame shows the same geometry: build the scene once.
   const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
+  const auto start = std::chrono::steady_clock::now();
   std::optional<renderer::Scene> scene = scenes::build_scene(scenario, frames.front());
+  spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(start),
+               scene->instances.size(), scene->prototypes.size());
 
   const std::filesystem::path out_dir(args.out_dir);
   std::filesystem::create_directories(out_dir);
@@ -129,6 +137,8 @@ int run_render(const RenderArgs& args) {
       const scenes::ViewSettings& vs = scenario.views[i];
       renderer::RenderOptions options;
       options.threads = scenario.render.threads;
+      if (f == 0 && i == 0)
+        options.started = [&] { spdlog::info("first pixel after {:.2f} s", seconds_since(start)); };
       options.progress = [&](double p) {
         spdlog::info("{} t={}s: {:3.0f}%", view.name, frames[f], 100.0 * p);
       };

@@ -1,0 +1,105 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "renderer/embree_scene.h"
+#include "renderer/render.h"
+
+namespace landsim::renderer {
+namespace {
+
+// A prototype that is a single vertical square (2 m wide, 4 m tall) in the x = 0 plane,
+// facing +x, in the given group.
+TreePrototype panel(trees::Group group) {
+  TreePrototype p;
+  trees::TriangleSet& t = p.geometry.group(group).triangles;
+  t.vertices = {{0, -1, 0}, {0, 1, 0}, {0, 1, 4}, {0, -1, 4}};
+  t.normals.assign(4, Vec3f{1, 0, 0});
+  t.indices = {0, 1, 2, 0, 2, 3};
+  p.bark_albedo = {0.5f, 0.5f, 0.5f};
+  p.leaf_reflectance = {0.2f, 0.2f, 0.2f};
+  p.leaf_transmittance = {0.0f, 0.0f, 0.0f};
+  return p;
+}
+
+Scene base_scene() {
+  Scene s;
+  s.sun.direction = normalize(Vec3{1.0, 0.0, 0.3});
+  s.settings.spp = 4;
+  s.settings.max_bounces = 0;  // direct light only: easy to compare
+  return s;
+}
+
+TEST(Instancing, InstancesAppearWhereTheirTransformPutsThem) {
+  Scene s = base_scene();
+  s.prototypes.push_back(panel(trees::Group::trunk));
+  s.instances.push_back({0, {20.0, 5.0, 0.0}, 0.0, 1.0});
+  s.instances.push_back({0, {40.0, -5.0, 0.0}, 0.0, 2.0});  // twice as big
+  const View view{"v", {0.0, 0.0, 2.0}, {1.0, 0.0, 2.0}, 60.0, 64, 64};
+  const Film film = Renderer(s).render(view, {});
+  // The near panel covers y in [4, 6] at x = 20: left of centre (the image's left is +y
+  // when looking along +x). The far one covers y in [-7, -3] at x = 40: right of centre.
+  int near = 0, far = 0;
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      if (film.object(x, y) != static_cast<std::uint8_t>(ObjectClass::bark)) continue;
+      const float d = film.depth(x, y);
+      if (x < 32) {
+        ++near;
+        EXPECT_NEAR(d, 20.0f, 1.0f);
+      } else {
+        ++far;
+        EXPECT_NEAR(d, 40.0f, 2.0f);
+      }
+    }
+  }
+  EXPECT_GT(near, 10);
+  EXPECT_GT(far, 10);
+}
+
+TEST(Instancing, RotationAboutTheVerticalTurnsThePrototype) {
+  Scene s = base_scene();
+  s.prototypes.push_back(panel(trees::Group::trunk));
+  s.instances.push_back(
+      {0, {20.0, 0.0, 0.0}, std::numbers::pi / 2.0, 1.0});  // now edge-on to the camera
+  const View view{"v", {0.0, 0.0, 2.0}, {1.0, 0.0, 2.0}, 30.0, 32, 32};
+  const Film film = Renderer(s).render(view, {});
+  int bark = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x)
+      bark += film.object(x, y) == static_cast<std::uint8_t>(ObjectClass::bark);
+  EXPECT_LT(bark, 8);  // a sliver at most
+}
+
+double mean_luminance_of(const Film& film, ObjectClass object) {
+  double sum = 0.0;
+  int n = 0;
+  for (int y = 0; y < film.height(); ++y) {
+    for (int x = 0; x < film.width(); ++x) {
+      if (film.object(x, y) != static_cast<std::uint8_t>(object)) continue;
+      sum += film.luminance(x, y);
+      ++n;
+    }
+  }
+  return n > 0 ? sum / n : 0.0;
+}
+
+TEST(Instancing, LeavesTransmitSunlightToTheirShadedSide) {
+  // The camera sees the leaf panel's side facing away from the sun.
+  Scene s = base_scene();
+  s.sun.direction = normalize(Vec3{1.0, 0.0, 0.2});  // behind the panel, seen from the camera at -x
+  TreePrototype opaque = panel(trees::Group::leaves);
+  TreePrototype translucent = panel(trees::Group::leaves);
+  translucent.leaf_transmittance = {0.15f, 0.15f, 0.15f};
+  const View view{"v", {0.0, 0.0, 2.0}, {1.0, 0.0, 2.0}, 20.0, 32, 32};
+  s.prototypes = {opaque};
+  s.instances = {{0, {20.0, 0.0, 0.0}, 0.0, 1.0}};
+  const double dark = mean_luminance_of(Renderer(s).render(view, {}), ObjectClass::leaf);
+  s.prototypes = {translucent};
+  const double lit = mean_luminance_of(Renderer(s).render(view, {}), ObjectClass::leaf);
+  EXPECT_GT(lit, dark + 0.05);
+}
+
+}  // namespace
+}  // namespace landsim::renderer
