@@ -56,10 +56,28 @@ struct Sun {
   double angular_radius = 0.00465;     // radians; the real sun's 0.266 degrees
 };
 
-// First sky: a smooth gradient from horizon to zenith (issue 6 brings a physical model).
+// Radiometric unit: irradiance 1.0 is 33.3 klux (so the sun overhead is about 3), radiance
+// 1.0 is that per steradian.
+inline constexpr double kKlxPerUnit = 100.0 / 3.0;
+
+// The sky: the Preetham clear-sky model (turbidity), or a gradient from horizon to zenith
+// (kept for tests: zenith = horizon is a uniform sky).
 struct Sky {
+  bool physical = true;
+  double turbidity = 3.0;
   Vec3f zenith_radiance{0.10f, 0.20f, 0.45f};
   Vec3f horizon_radiance{0.45f, 0.55f, 0.70f};
+};
+
+// Exponential height fog: extinction sigma(z) = 3.912 / visibility x exp(-(z - base) /
+// scale_height).
+struct Haze {
+  bool enabled = false;
+  double visibility = 20000.0;        // meteorological range at the base height, metres
+  double scale_height = 1200.0;       // metres
+  double base_height = 0.0;           // scene frame z where the visibility holds
+  Vec3f albedo{0.95f, 0.95f, 0.95f};  // single-scattering albedo (the haze's colour)
+  double asymmetry = 0.7;             // Henyey-Greenstein g
 };
 
 struct View {
@@ -102,6 +120,7 @@ struct Scene {
   GrassCover grass;
   Sun sun;
   Sky sky;
+  Haze haze;
   std::vector<View> views;
   RenderSettings settings;
 };

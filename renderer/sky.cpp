@@ -4,30 +4,141 @@
 #include <cmath>
 #include <numbers>
 
-namespace landsim::renderer {
+#include "renderer/preetham.h"
 
-SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo) : sky_(sky) {
-  // E = 2 pi * integral over mu in [0, 1] of L(mu) mu dmu (the gradient depends on mu only).
-  constexpr int kSteps = 256;
-  Vec3f sum{};
-  for (int i = 0; i < kSteps; ++i) {
-    const float mu = (static_cast<float>(i) + 0.5f) / kSteps;
-    sum += above_horizon(mu) * mu;
-  }
-  sky_irradiance_ = sum * (2.0f * std::numbers::pi_v<float> / kSteps);
-  const float sun_cos = static_cast<float>(std::max(sun.direction.z, 0.0));
-  const Vec3f plain_irradiance = sun.irradiance * sun_cos + sky_irradiance_;
-  below_horizon_ = ground_albedo * plain_irradiance * (1.0f / std::numbers::pi_v<float>);
+namespace landsim::renderer {
+namespace {
+
+constexpr int kRows = 64;   // theta from 0 to pi
+constexpr int kCols = 128;  // phi from 0 to 2 pi
+constexpr float kPi = std::numbers::pi_v<float>;
+// Preetham's luminance is in kcd/m^2: one kilocandela per square metre in our unit.
+constexpr double kKcdToUnits = 1.0 / kKlxPerUnit;
+
+Vec3f direction_of(float theta, float phi) {
+  const float s = std::sin(theta);
+  return {s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
 }
 
-Vec3f SkyModel::above_horizon(float cos_zenith) const {
+float luminance(const Vec3f& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+}  // namespace
+
+SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo) : sky_(sky) {
+  if (sky.physical) preetham_ = std::make_unique<PreethamSky>(sun.direction, sky.turbidity);
+  // E = integral over the upper hemisphere of L cos: midpoint rule on a fine grid.
+  constexpr int kSteps = 96;
+  Vec3f sum{};
+  for (int i = 0; i < kSteps; ++i) {
+    const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / kSteps;
+    for (int j = 0; j < 2 * kSteps; ++j) {
+      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / (2 * kSteps);
+      sum += above_horizon(direction_of(theta, phi)) * (std::cos(theta) * std::sin(theta));
+    }
+  }
+  sky_irradiance_ = sum * ((0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps)));
+  const float sun_cos = static_cast<float>(std::max(sun.direction.z, 0.0));
+  const Vec3f plain_irradiance = sun.irradiance * sun_cos + sky_irradiance_;
+  below_horizon_ = ground_albedo * plain_irradiance * (1.0f / kPi);
+  // Upper hemisphere: its mean radiance is the integral of L over 2 pi; lower: the plain.
+  Vec3f upper{};
+  for (int i = 0; i < kSteps; ++i) {
+    const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / kSteps;
+    for (int j = 0; j < 2 * kSteps; ++j) {
+      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / (2 * kSteps);
+      upper += above_horizon(direction_of(theta, phi)) * std::sin(theta);
+    }
+  }
+  upper = upper * ((0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps)) / (2.0f * kPi));
+  mean_radiance_ = (upper + below_horizon_) * 0.5f;
+  build_table();
+}
+
+SkyModel::~SkyModel() = default;
+SkyModel::SkyModel(SkyModel&&) noexcept = default;
+
+Vec3f SkyModel::above_horizon(const Vec3f& d) const {
+  if (preetham_) return Vec3f(preetham_->radiance_kcd(Vec3(d)) * kKcdToUnits);
   // The exponent keeps a bright band near the horizon, as haze-free skies show.
-  const float t = std::pow(std::clamp(cos_zenith, 0.0f, 1.0f), 0.4f);
+  const float t = std::pow(std::clamp(d.z, 0.0f, 1.0f), 0.4f);
   return sky_.horizon_radiance * (1.0f - t) + sky_.zenith_radiance * t;
 }
 
 Vec3f SkyModel::radiance(const Vec3f& direction) const {
-  return direction.z >= 0.0f ? above_horizon(direction.z) : below_horizon_;
+  return direction.z >= 0.0f ? above_horizon(direction) : below_horizon_;
+}
+
+void SkyModel::build_table() {
+  weights_.resize(kRows * kCols);
+  row_cdf_.assign(kRows + 1, 0.0f);
+  cell_cdf_.assign(kRows * (kCols + 1), 0.0f);
+  for (int i = 0; i < kRows; ++i) {
+    const float theta = kPi * (static_cast<float>(i) + 0.5f) / kRows;
+    float row = 0.0f;
+    for (int j = 0; j < kCols; ++j) {
+      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols;
+      // A floor keeps every direction sampleable, so MIS weights never divide by zero.
+      const float w = (luminance(radiance(direction_of(theta, phi))) + 1e-4f) * std::sin(theta);
+      weights_[static_cast<std::size_t>(i * kCols + j)] = w;
+      row += w;
+      cell_cdf_[static_cast<std::size_t>(i * (kCols + 1) + j + 1)] = row;
+    }
+    row_cdf_[static_cast<std::size_t>(i + 1)] = row_cdf_[static_cast<std::size_t>(i)] + row;
+  }
+  total_ = row_cdf_[kRows];
+}
+
+Vec3f SkyModel::sample(float u1, float u2, float& pdf) const {
+  const float target_row = u1 * total_;
+  const auto row_it = std::upper_bound(row_cdf_.begin() + 1, row_cdf_.end(), target_row);
+  const int i = std::clamp(static_cast<int>(row_it - row_cdf_.begin()) - 1, 0, kRows - 1);
+  const float row_start = row_cdf_[static_cast<std::size_t>(i)];
+  const float row_total = row_cdf_[static_cast<std::size_t>(i + 1)] - row_start;
+  const float fu =
+      row_total > 0.0f ? (target_row - row_start) / row_total : 0.5f;  // reused within the row
+  const float* cdf = &cell_cdf_[static_cast<std::size_t>(i * (kCols + 1))];
+  const float target_cell = u2 * row_total;
+  const int j = std::clamp(
+      static_cast<int>(std::upper_bound(cdf + 1, cdf + kCols + 1, target_cell) - cdf) - 1, 0,
+      kCols - 1);
+  const float w = weights_[static_cast<std::size_t>(i * kCols + j)];
+  const float fv = w > 0.0f ? (target_cell - cdf[j]) / w : 0.5f;
+  const float theta = kPi * (static_cast<float>(i) + std::clamp(fu, 0.0f, 1.0f)) / kRows;
+  const float phi = 2.0f * kPi * (static_cast<float>(j) + std::clamp(fv, 0.0f, 1.0f)) / kCols;
+  const Vec3f d = direction_of(theta, phi);
+  pdf = this->pdf(d);
+  return d;
+}
+
+float SkyModel::pdf(const Vec3f& d) const {
+  const float theta = std::acos(std::clamp(d.z, -1.0f, 1.0f));
+  float phi = std::atan2(d.y, d.x);
+  if (phi < 0.0f) phi += 2.0f * kPi;
+  const int i = std::clamp(static_cast<int>(theta / kPi * kRows), 0, kRows - 1);
+  const int j = std::clamp(static_cast<int>(phi / (2.0f * kPi) * kCols), 0, kCols - 1);
+  const float sin_theta = std::sin(kPi * (static_cast<float>(i) + 0.5f) / kRows);
+  const float pdf_uv = weights_[static_cast<std::size_t>(i * kCols + j)] / total_ * (kRows * kCols);
+  // Within a cell the table is uniform in (theta, phi): convert with the cell's sin(theta).
+  return pdf_uv / (2.0f * kPi * kPi * std::max(sin_theta, 1e-6f));
+}
+
+Vec3f sun_irradiance(double elevation_deg, double turbidity) {
+  if (elevation_deg <= 0.0) return {};
+  const double zenith = 90.0 - elevation_deg;
+  const double air_mass = 1.0 / (std::cos(zenith * std::numbers::pi / 180.0) +
+                                 0.50572 * std::pow(96.07995 - zenith, -1.6364));
+  // Rayleigh optical depth at 680, 550, 440 nm; aerosols by Angstrom's law with Preetham's beta(T).
+  const double rayleigh[3] = {0.043, 0.097, 0.235};
+  const double wavelength_um[3] = {0.68, 0.55, 0.44};
+  const double beta = std::max(0.0, 0.04608 * turbidity - 0.04586);
+  // Extraterrestrial illuminance 128 klx.
+  const double e0 = 128.0 / kKlxPerUnit;
+  double e[3];
+  for (int c = 0; c < 3; ++c) {
+    const double aerosol = beta * std::pow(wavelength_um[c], -1.3);
+    e[c] = e0 * std::exp(-air_mass * (rayleigh[c] + aerosol));
+  }
+  return {static_cast<float>(e[0]), static_cast<float>(e[1]), static_cast<float>(e[2])};
 }
 
 }  // namespace landsim::renderer

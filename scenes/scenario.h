@@ -24,7 +24,21 @@ struct TerrainSettings {
 struct SunSettings {
   double elevation_deg = 35.0;
   double azimuth_deg = 135.0;  // clockwise from north
-  Vec3f irradiance{3.0f, 2.9f, 2.7f};
+  // On a surface facing the sun; empty: from the sky model (or 3.0 for the gradient sky).
+  std::optional<Vec3f> irradiance;
+};
+
+struct SkySettings {
+  bool physical = true;  // "preetham" or "gradient"
+  double turbidity = 3.0;
+};
+
+struct HazeSettings {
+  bool enabled = false;
+  double visibility = 20000.0;
+  double scale_height = 1200.0;
+  Vec3f colour{0.95f, 0.95f, 0.95f};
+  double asymmetry = 0.7;
 };
 
 struct ViewSettings {
@@ -97,6 +111,8 @@ struct Scenario {
   std::vector<GrassSettings> grass;
   GroundMaterials ground;
   SunSettings sun;
+  SkySettings sky;
+  HazeSettings haze;
   std::vector<ViewSettings> views;
   RenderSection render;
   WindSettings wind;

@@ -7,6 +7,7 @@
 #include "core/input_error.h"
 #include "scenes/detail/toml_fields.h"
 #include "scenes/scenario.h"
+#include "scenes/solar_position.h"
 #include "terrain/raster_files.h"
 
 namespace landsim::scenes {
@@ -66,14 +67,69 @@ TerrainSettings read_terrain(const toml::table& t, const std::string& file,
   return s;
 }
 
+// The sun from date, time and place: TOML's own date and time values.
+void read_sun_by_date(TableReader& r, const toml::table& t, SunSettings& s) {
+  const toml::node* date = t.get("date");
+  const toml::node* time = t.get("time");
+  if (date == nullptr || !date->is_date())
+    r.fail("date", "expected a TOML date such as 2026-06-21");
+  if (time == nullptr || !time->is_time()) r.fail("time", "expected a TOML time such as 10:30:00");
+  r.allow("date");  // their types were checked above
+  r.allow("time");
+  const toml::date d = *date->value<toml::date>();
+  const toml::time tm = *time->value<toml::time>();
+  const double latitude = r.number("latitude", Range{-90.0, 90.0});
+  const double longitude = r.number("longitude", Range{-180.0, 180.0});
+  const double offset = r.number("utc_offset", Range{-14.0, 14.0}, 0.0);
+  const double hour = tm.hour + tm.minute / 60.0 + tm.second / 3600.0 - offset;
+  const SolarPosition p = solar_position(d.year, d.month, d.day, hour, latitude, longitude);
+  if (p.elevation_deg <= 0.0) {
+    r.fail("time", "the sun is below the horizon then (elevation " +
+                       std::to_string(p.elevation_deg) + " degrees)");
+  }
+  s.elevation_deg = p.elevation_deg;
+  s.azimuth_deg = p.azimuth_deg;
+}
+
 SunSettings read_sun(const toml::table& t, const std::string& file) {
   TableReader r(t, "sun", file);
   SunSettings s;
-  s.elevation_deg = r.number("elevation", Range{0.0, 90.0, true});
-  s.azimuth_deg = r.number("azimuth", Range{0.0, 360.0});
-  s.irradiance = to_vec3f(r.vec3("irradiance", Range{0.0, 1e6}, Vec3{3.0, 2.9, 2.7}));
+  if (r.has("date") || r.has("time")) {
+    if (r.has("elevation") || r.has("azimuth"))
+      r.fail("date", "give either elevation and azimuth, or date, time, latitude and longitude");
+    read_sun_by_date(r, t, s);
+  } else {
+    s.elevation_deg = r.number("elevation", Range{0.0, 90.0, true});
+    s.azimuth_deg = r.number("azimuth", Range{0.0, 360.0});
+    for (const char* k : {"latitude", "longitude", "utc_offset"}) {
+      if (r.has(k)) r.fail(k, "only used with date and time (instead of elevation and azimuth)");
+    }
+  }
+  if (r.has("irradiance")) s.irradiance = to_vec3f(r.vec3("irradiance", Range{0.0, 1e6}));
   r.finish();
   return s;
+}
+
+SkySettings read_sky(const toml::table& t, const std::string& file) {
+  TableReader r(t, "sky", file);
+  SkySettings s;
+  s.physical = r.choice("model", {"preetham", "gradient"}, "preetham") == "preetham";
+  s.turbidity = r.number("turbidity", Range{1.7, 10.0}, 3.0);
+  r.finish();
+  return s;
+}
+
+HazeSettings read_haze(const toml::table& root, const std::string& file) {
+  HazeSettings h;
+  if (!root.contains("haze")) return h;
+  TableReader r(sub_table(root, "haze", file, true), "haze", file);
+  h.enabled = true;
+  h.visibility = r.number("visibility", Range{10.0, 1e7});
+  h.scale_height = r.number("scale_height", Range{10.0, 1e5}, 1200.0);
+  h.colour = to_vec3f(r.vec3("colour", kUnit, Vec3{0.95, 0.95, 0.95}));
+  h.asymmetry = r.number("asymmetry", Range{-0.95, 0.95}, 0.7);
+  r.finish();
+  return h;
 }
 
 ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file) {
@@ -269,14 +325,15 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file) {
 
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
-      "terrain", "sun", "views", "render", "featuremaps", "species", "grass", "ground", "wind"};
+      "terrain", "sun",    "views", "render", "featuremaps", "species",
+      "grass",   "ground", "wind",  "sky",    "haze"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
-    throw InputError(
-        file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-        ": unknown table or key '" + std::string(key.str()) +
-        "' (expected terrain, featuremaps, species, grass, ground, wind, sun, views, render)");
+    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": unknown table or key '" + std::string(key.str()) +
+                     "' (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
+                     "haze, views, render)");
   }
 }
 
@@ -323,6 +380,8 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.views = read_views(root, source);
   s.render = read_render(sub_table(root, "render", source, false), source);
   s.wind = read_wind(sub_table(root, "wind", source, false), source);
+  s.sky = read_sky(sub_table(root, "sky", source, false), source);
+  s.haze = read_haze(root, source);
   return s;
 }
 

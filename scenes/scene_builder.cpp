@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "featuremaps/class_mapping.h"
 #include "featuremaps/placement.h"
+#include "renderer/sky.h"
 #include "terrain/ground_mesh.h"
 
 namespace landsim::scenes {
@@ -226,7 +227,21 @@ renderer::Scene build_scene(const Scenario& scenario, double time) {
   scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
   scene.ground.albedo = scenario.terrain.albedo;
   scene.sun.direction = sun_direction(scenario.sun.elevation_deg, scenario.sun.azimuth_deg);
-  scene.sun.irradiance = scenario.sun.irradiance;
+  scene.sky.physical = scenario.sky.physical;
+  scene.sky.turbidity = scenario.sky.turbidity;
+  if (scenario.sun.irradiance) {
+    scene.sun.irradiance = *scenario.sun.irradiance;
+  } else if (scenario.sky.physical) {
+    scene.sun.irradiance =
+        renderer::sun_irradiance(scenario.sun.elevation_deg, scenario.sky.turbidity);
+  }
+  scene.haze.enabled = scenario.haze.enabled;
+  scene.haze.visibility = scenario.haze.visibility;
+  scene.haze.scale_height = scenario.haze.scale_height;
+  scene.haze.albedo = scenario.haze.colour;
+  scene.haze.asymmetry = scenario.haze.asymmetry;
+  scene.haze.base_height =
+      grid.min_height() - scene.origin.z;  // the visibility holds at the lowest ground
   for (const ViewSettings& v : scenario.views) {
     scene.views.push_back({v.name, v.position - scene.origin, v.target - scene.origin, v.fov_y_deg,
                            v.width, v.height});

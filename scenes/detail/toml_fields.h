@@ -46,6 +46,9 @@ class TableReader {
   Vec3 vec3(std::string_view key, Range range = {-1e12, 1e12},
             std::optional<Vec3> fallback = std::nullopt);
 
+  // Marks a key as known without reading it (its value was checked another way).
+  void allow(std::string_view key) { read_.emplace(key); }
+
   // Refuses keys that were never asked for (typos must not pass silently).
   void finish() const;
 
