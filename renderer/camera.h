@@ -1,6 +1,7 @@
 #pragma once
 // Pinhole camera: turns a position on the image plane into a primary ray.
 #include "core/vec3.h"
+#include "renderer/image_output.h"
 #include "renderer/scene.h"
 
 namespace landsim::renderer {
@@ -15,6 +16,9 @@ class Camera {
   explicit Camera(const View& view);
   // (px, py) in pixels from the top-left corner of the image, fractional within a pixel.
   Ray ray(float px, float py) const;
+  // Scene frame -> camera (x right, y up, looking down -z) and -> normalised device
+  // coordinates (OpenGL-style perspective, near 0.1 m, far 100 km), row-major.
+  CameraMatrices matrices() const;
 
  private:
   Vec3f position_;

@@ -8,19 +8,24 @@ Film::Film(int width, int height)
       rgb_(3 * pixel_count()),
       depth_(pixel_count()),
       normal_(3 * pixel_count()),
-      object_(pixel_count()) {}
+      albedo_(3 * pixel_count()),
+      object_(pixel_count()),
+      species_(pixel_count(), kNoId),
+      instance_(pixel_count(), kNoId),
+      level_(pixel_count()) {}
 
-void Film::set(int x, int y, const Vec3f& rgb, float depth, const Vec3f& normal,
-               std::uint8_t object) {
+void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
   const std::size_t i = index(x, y);
-  rgb_[3 * i] = rgb.x;
-  rgb_[3 * i + 1] = rgb.y;
-  rgb_[3 * i + 2] = rgb.z;
-  depth_[i] = depth;
-  normal_[3 * i] = normal.x;
-  normal_[3 * i + 1] = normal.y;
-  normal_[3 * i + 2] = normal.z;
-  object_[i] = object;
+  for (int c = 0; c < 3; ++c) {
+    rgb_[3 * i + c] = rgb[c];
+    normal_[3 * i + c] = a.normal[c];
+    albedo_[3 * i + c] = a.albedo[c];
+  }
+  depth_[i] = a.depth;
+  object_[i] = a.object;
+  species_[i] = a.species;
+  instance_[i] = a.instance;
+  level_[i] = a.level;
 }
 
 Vec3f Film::rgb(int x, int y) const {
@@ -36,6 +41,11 @@ float Film::luminance(int x, int y) const {
 Vec3f Film::normal(int x, int y) const {
   const std::size_t i = 3 * index(x, y);
   return {normal_[i], normal_[i + 1], normal_[i + 2]};
+}
+
+Vec3f Film::albedo(int x, int y) const {
+  const std::size_t i = 3 * index(x, y);
+  return {albedo_[i], albedo_[i + 1], albedo_[i + 2]};
 }
 
 }  // namespace landsim::renderer

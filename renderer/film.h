@@ -1,5 +1,6 @@
 #pragma once
-// The rendered image and its first-hit AOVs, in linear RGB, row 0 at the top.
+// The rendered image and its first-hit AOVs (ground truth for detection studies), linear
+// RGB, row 0 at the top.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -7,6 +8,19 @@
 #include "core/vec3.h"
 
 namespace landsim::renderer {
+
+inline constexpr std::uint32_t kNoId = 0xffffffffu;
+
+// What the first hit of a pixel's first sample saw.
+struct PixelAovs {
+  float depth = 0.0f;              // distance from the camera, metres; infinity for the sky
+  Vec3f normal;                    // shading normal facing the camera; zero for the sky
+  Vec3f albedo;                    // reflectance + transmittance
+  std::uint32_t object = 0;        // ObjectClass
+  std::uint32_t species = kNoId;   // species index, trees only
+  std::uint32_t instance = kNoId;  // tree instance index
+  std::uint32_t level = 0;         // level of detail drawn (0 = full)
+};
 
 class Film {
  public:
@@ -16,18 +30,36 @@ class Film {
   int height() const { return height_; }
   std::size_t pixel_count() const { return static_cast<std::size_t>(width_) * height_; }
 
-  void set(int x, int y, const Vec3f& rgb, float depth, const Vec3f& normal, std::uint8_t object);
+  void set(int x, int y, const Vec3f& rgb, const PixelAovs& aovs);
   Vec3f rgb(int x, int y) const;
-  // Rec. 709 luminance of a pixel.
-  float luminance(int x, int y) const;
+  float luminance(int x, int y) const;  // Rec. 709
   float depth(int x, int y) const { return depth_[index(x, y)]; }
   Vec3f normal(int x, int y) const;
-  std::uint8_t object(int x, int y) const { return object_[index(x, y)]; }
+  Vec3f albedo(int x, int y) const;
+  std::uint8_t object(int x, int y) const {
+    return static_cast<std::uint8_t>(object_[index(x, y)]);
+  }
+  std::uint32_t species(int x, int y) const { return species_[index(x, y)]; }
+  std::uint32_t instance(int x, int y) const { return instance_[index(x, y)]; }
+  std::uint32_t level(int x, int y) const { return level_[index(x, y)]; }
 
-  // Interleaved planes, for writers.
+  // Planes, for writers and readers (checkpoints).
+  std::vector<float>& rgb_data() { return rgb_; }
   const std::vector<float>& rgb_data() const { return rgb_; }
+  std::vector<float>& depth_data() { return depth_; }
   const std::vector<float>& depth_data() const { return depth_; }
+  std::vector<float>& normal_data() { return normal_; }
   const std::vector<float>& normal_data() const { return normal_; }
+  std::vector<float>& albedo_data() { return albedo_; }
+  const std::vector<float>& albedo_data() const { return albedo_; }
+  std::vector<std::uint32_t>& object_data() { return object_; }
+  const std::vector<std::uint32_t>& object_data() const { return object_; }
+  std::vector<std::uint32_t>& species_data() { return species_; }
+  const std::vector<std::uint32_t>& species_data() const { return species_; }
+  std::vector<std::uint32_t>& instance_data() { return instance_; }
+  const std::vector<std::uint32_t>& instance_data() const { return instance_; }
+  std::vector<std::uint32_t>& level_data() { return level_; }
+  const std::vector<std::uint32_t>& level_data() const { return level_; }
 
  private:
   std::size_t index(int x, int y) const {
@@ -37,10 +69,8 @@ class Film {
 
   int width_;
   int height_;
-  std::vector<float> rgb_;
-  std::vector<float> depth_;
-  std::vector<float> normal_;
-  std::vector<std::uint8_t> object_;
+  std::vector<float> rgb_, depth_, normal_, albedo_;
+  std::vector<std::uint32_t> object_, species_, instance_, level_;
 };
 
 }  // namespace landsim::renderer

@@ -1,51 +1,125 @@
 #include "renderer/image_output.h"
 
+#include <OpenColorIO/OpenColorIO.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
 
+namespace OCIO = OCIO_NAMESPACE;
+
 namespace landsim::renderer {
 namespace {
 
-void add_slice(Imf::FrameBuffer& fb, const char* name, const std::vector<float>& plane, int stride,
-               int offset, int width) {
-  // OpenEXR's Slice takes a non-const pointer even for writing.
-  char* base = reinterpret_cast<char*>(const_cast<float*>(plane.data() + offset));
-  fb.insert(name, Imf::Slice(Imf::FLOAT, base, sizeof(float) * static_cast<std::size_t>(stride),
-                             sizeof(float) * static_cast<std::size_t>(stride) *
+// Scene-linear Rec.709 in, the sRGB display out (the sRGB curve: exponent 2.4, offset 0.055).
+constexpr const char* kOcioConfig = R"(ocio_profile_version: 2
+
+roles:
+  default: linear_rec709
+  scene_linear: linear_rec709
+  color_picking: srgb_display
+
+file_rules:
+  - !<Rule> {name: Default, colorspace: default}
+
+displays:
+  sRGB:
+    - !<View> {name: Standard, colorspace: srgb_display}
+
+active_displays: [sRGB]
+active_views: [Standard]
+
+colorspaces:
+  - !<ColorSpace>
+    name: linear_rec709
+    family: linear
+    description: landsim radiance, linear Rec.709 primaries, D65
+    isdata: false
+
+  - !<ColorSpace>
+    name: srgb_display
+    family: display
+    description: sRGB display (IEC 61966-2-1 transfer), Rec.709 primaries
+    isdata: false
+    from_scene_reference: !<ExponentWithLinearTransform> {gamma: 2.4, offset: 0.055, direction: inverse}
+)";
+
+template <typename T>
+void add_slice(Imf::FrameBuffer& fb, const char* name, Imf::PixelType type, std::vector<T>& plane,
+               int stride, int offset, int width) {
+  char* base = reinterpret_cast<char*>(plane.data() + offset);
+  fb.insert(name, Imf::Slice(type, base, sizeof(T) * static_cast<std::size_t>(stride),
+                             sizeof(T) * static_cast<std::size_t>(stride) *
                                  static_cast<std::size_t>(width)));
+}
+
+struct Channel {
+  const char* name;
+  bool id;  // UINT channel (else FLOAT)
+};
+constexpr Channel kChannels[] = {{"R", false},        {"G", false},        {"B", false},
+                                 {"Z", false},        {"N.X", false},      {"N.Y", false},
+                                 {"N.Z", false},      {"albedo.R", false}, {"albedo.G", false},
+                                 {"albedo.B", false}, {"object", true},    {"species", true},
+                                 {"instance", true},  {"lod", true}};
+
+// The frame buffer for every channel of `film` (const_cast: OpenEXR's Slice wants a
+// non-const pointer even for writing).
+Imf::FrameBuffer frame_buffer(Film& film) {
+  Imf::FrameBuffer fb;
+  const int w = film.width();
+  add_slice(fb, "R", Imf::FLOAT, film.rgb_data(), 3, 0, w);
+  add_slice(fb, "G", Imf::FLOAT, film.rgb_data(), 3, 1, w);
+  add_slice(fb, "B", Imf::FLOAT, film.rgb_data(), 3, 2, w);
+  add_slice(fb, "Z", Imf::FLOAT, film.depth_data(), 1, 0, w);
+  add_slice(fb, "N.X", Imf::FLOAT, film.normal_data(), 3, 0, w);
+  add_slice(fb, "N.Y", Imf::FLOAT, film.normal_data(), 3, 1, w);
+  add_slice(fb, "N.Z", Imf::FLOAT, film.normal_data(), 3, 2, w);
+  add_slice(fb, "albedo.R", Imf::FLOAT, film.albedo_data(), 3, 0, w);
+  add_slice(fb, "albedo.G", Imf::FLOAT, film.albedo_data(), 3, 1, w);
+  add_slice(fb, "albedo.B", Imf::FLOAT, film.albedo_data(), 3, 2, w);
+  add_slice(fb, "object", Imf::UINT, film.object_data(), 1, 0, w);
+  add_slice(fb, "species", Imf::UINT, film.species_data(), 1, 0, w);
+  add_slice(fb, "instance", Imf::UINT, film.instance_data(), 1, 0, w);
+  add_slice(fb, "lod", Imf::UINT, film.level_data(), 1, 0, w);
+  return fb;
+}
+
+Imath::M44f to_m44(const std::array<float, 16>& m) {
+  return Imath::M44f(m[0], m[4], m[8], m[12], m[1], m[5], m[9], m[13], m[2], m[6], m[10], m[14],
+                     m[3], m[7], m[11], m[15]);
 }
 
 }  // namespace
 
-void write_exr(const Film& film, const std::filesystem::path& path, const ImageMetadata& metadata) {
+const char* ocio_config_text() { return kOcioConfig; }
+
+void write_exr(const Film& film, const std::filesystem::path& path, const ImageMetadata& metadata,
+               const CameraMatrices* camera) {
   AtomicFile out(path);
   Imf::Header header(film.width(), film.height());
   header.compression() = Imf::ZIP_COMPRESSION;
-  for (const char* name : {"R", "G", "B", "Z", "N.X", "N.Y", "N.Z"}) {
-    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-  }
-  for (const auto& [key, value] : metadata) {
+  for (const Channel& c : kChannels)
+    header.channels().insert(c.name, Imf::Channel(c.id ? Imf::UINT : Imf::FLOAT));
+  for (const auto& [key, value] : metadata)
     header.insert("landsim/" + key, Imf::StringAttribute(value));
+  if (camera != nullptr) {
+    // Imath is column-vector-on-the-right transposed: OpenEXR stores row-vector matrices.
+    Imf::addWorldToCamera(header, to_m44(camera->world_to_camera));
+    Imf::addWorldToNDC(header, to_m44(camera->world_to_ndc));
   }
-  Imf::FrameBuffer fb;
-  const int w = film.width();
-  add_slice(fb, "R", film.rgb_data(), 3, 0, w);
-  add_slice(fb, "G", film.rgb_data(), 3, 1, w);
-  add_slice(fb, "B", film.rgb_data(), 3, 2, w);
-  add_slice(fb, "Z", film.depth_data(), 1, 0, w);
-  add_slice(fb, "N.X", film.normal_data(), 3, 0, w);
-  add_slice(fb, "N.Y", film.normal_data(), 3, 1, w);
-  add_slice(fb, "N.Z", film.normal_data(), 3, 2, w);
+  Film& writable = const_cast<Film&>(film);
+  const Imf::FrameBuffer fb = frame_buffer(writable);
   {
     Imf::OutputFile file(out.temp_path().c_str(), header);
     file.setFrameBuffer(fb);
@@ -54,15 +128,49 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
   out.commit();
 }
 
+Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata) {
+  Imf::InputFile in(path.c_str());
+  const Imath::Box2i dw = in.header().dataWindow();
+  Film film(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
+  for (const Channel& c : kChannels) {
+    if (in.header().channels().findChannel(c.name) == nullptr) {
+      throw std::runtime_error(path.string() + ": not a landsim image (no channel " + c.name + ")");
+    }
+  }
+  in.setFrameBuffer(frame_buffer(film));
+  in.readPixels(dw.min.y, dw.max.y);
+  if (metadata != nullptr) {
+    for (auto it = in.header().begin(); it != in.header().end(); ++it) {
+      const std::string name = it.name();
+      if (name.rfind("landsim/", 0) != 0) continue;
+      if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) {
+        metadata->emplace_back(name.substr(8), s->value());
+      }
+    }
+  }
+  return film;
+}
+
 void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev) {
   AtomicFile out(path);
+  std::istringstream config_text(kOcioConfig);
+  const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromStream(config_text);
+  const OCIO::DisplayViewTransformRcPtr transform = OCIO::DisplayViewTransform::Create();
+  transform->setSrc("scene_linear");
+  transform->setDisplay("sRGB");
+  transform->setView("Standard");
+  const OCIO::ConstCPUProcessorRcPtr cpu =
+      config->getProcessor(transform)->getDefaultCPUProcessor();
+
+  std::vector<float> pixels = film.rgb_data();
+  const auto gain = static_cast<float>(std::exp2(exposure_ev));
+  for (float& v : pixels) v = std::max(0.0f, v * gain);
+  OCIO::PackedImageDesc image(pixels.data(), film.width(), film.height(), 3);
+  cpu->apply(image);
+
   const OIIO::ImageSpec spec(film.width(), film.height(), 3, OIIO::TypeDesc::FLOAT);
-  const OIIO::ImageBuf linear(spec, const_cast<float*>(film.rgb_data().data()));
-  const float gain = static_cast<float>(std::exp2(exposure_ev));
-  OIIO::ImageBuf exposed = OIIO::ImageBufAlgo::mul(linear, gain);
-  OIIO::ImageBuf display = OIIO::ImageBufAlgo::colorconvert(exposed, "linear", "sRGB");
-  if (display.has_error() ||
-      !display.write(out.temp_path().string(), OIIO::TypeDesc::UINT8, "png")) {
+  const OIIO::ImageBuf display(spec, pixels.data());
+  if (!display.write(out.temp_path().string(), OIIO::TypeDesc::UINT8, "png")) {
     throw std::runtime_error("writing " + path.string() + " failed: " + display.geterror());
   }
   out.commit();

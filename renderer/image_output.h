@@ -1,7 +1,11 @@
 #pragma once
-// Writing films: a linear OpenEXR (RGB plus depth and normal layers, with metadata) and an
-// 8-bit sRGB preview PNG. Both are written under a temporary name and renamed when complete.
+// Writing films: one multi-layer OpenEXR per image (RGB radiance plus the AOVs, with
+// metadata and camera matrices) and an 8-bit preview PNG through an OpenColorIO display
+// transform from the project's own config. Both are written under a temporary name and
+// renamed when complete.
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,11 +16,28 @@ namespace landsim::renderer {
 
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
-// Channels: R, G, B (radiance), Z (depth, metres; infinity for sky), N.X, N.Y, N.Z (normal),
-// all 32-bit float; string attributes under "landsim/<key>".
-void write_exr(const Film& film, const std::filesystem::path& path, const ImageMetadata& metadata);
+// Row-major 4x4 matrices (scene frame; the scene origin goes in the string metadata).
+struct CameraMatrices {
+  std::array<float, 16> world_to_camera{};
+  std::array<float, 16> world_to_ndc{};
+};
 
-// Scales by 2^exposure_ev, converts linear to sRGB (OpenImageIO), writes 8-bit PNG.
+// Channels: R, G, B (radiance); Z (depth, metres, infinity for sky); N.X, N.Y, N.Z
+// (normal); albedo.R, albedo.G, albedo.B; object, species, instance, lod (32-bit unsigned;
+// 4294967295 = none). String attributes "landsim/<key>"; OpenEXR's standard
+// worldToCamera and worldToNDC when `camera` is given.
+void write_exr(const Film& film, const std::filesystem::path& path, const ImageMetadata& metadata,
+               const CameraMatrices* camera = nullptr);
+
+// Reads every channel write_exr writes back into a film of the file's size; returns the
+// string attributes. Throws std::runtime_error on a file that is not one of ours.
+Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata = nullptr);
+
+// Scales by 2^exposure_ev, then applies the OpenColorIO display transform (display sRGB,
+// view Standard) of the project's embedded config, and writes an 8-bit PNG.
 void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev);
+
+// The embedded OpenColorIO config (YAML), for users who want to reproduce the preview.
+const char* ocio_config_text();
 
 }  // namespace landsim::renderer

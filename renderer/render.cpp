@@ -48,8 +48,14 @@ std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const 
         rays += sample.rays;
         if (s == 0) first = sample.first;  // AOVs from the first sample: no blending of ids
       }
-      film.set(x, y, sum * (1.0f / static_cast<float>(settings.spp)), first.depth, first.normal,
-               static_cast<std::uint8_t>(first.object));
+      PixelAovs aovs;
+      aovs.depth = first.depth;
+      aovs.normal = first.normal;
+      aovs.albedo = first.albedo;
+      aovs.object = static_cast<std::uint32_t>(first.object);
+      if (first.instance >= 0) aovs.instance = static_cast<std::uint32_t>(first.instance);
+      if (first.species >= 0) aovs.species = static_cast<std::uint32_t>(first.species);
+      film.set(x, y, sum * (1.0f / static_cast<float>(settings.spp)), aovs);
     }
   }
   return rays;

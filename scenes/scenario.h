@@ -104,7 +104,8 @@ struct SpeciesSettings {
 };
 
 struct Scenario {
-  std::string source;  // the file it came from, for messages
+  std::string source;     // the file it came from, for messages
+  std::string text_hash;  // FNV-1a 64 of the scenario text, hex (image metadata)
   TerrainSettings terrain;
   std::optional<FeatureMapSettings> featuremaps;
   std::vector<SpeciesSettings> species;

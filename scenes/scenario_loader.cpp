@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <regex>
@@ -363,6 +365,9 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   refuse_unknown_tables(root, source);
   Scenario s;
   s.source = source;
+  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
+  for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+  s.text_hash = fmt::format("{:016x}", hash);
   s.terrain = read_terrain(sub_table(root, "terrain", source, true), source, base_dir);
   s.sun = read_sun(sub_table(root, "sun", source, true), source);
   s.featuremaps = read_featuremaps(root, source, base_dir);

@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "renderer/camera.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
 #include "scenes/default_scenario.h"
@@ -52,15 +53,25 @@ void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
   }
 }
 
-renderer::ImageMetadata metadata(const scenes::Scenario& s, const scenes::ViewSettings& v) {
+renderer::ImageMetadata metadata(const scenes::Scenario& s, const scenes::ViewSettings& v,
+                                 const renderer::Scene& scene) {
+  const Vec3& sun = scene.sun.direction;
   return {{"version", LANDSIM_VERSION},
           {"scenario", s.source},
+          {"scenario_hash", s.text_hash},
           {"view", v.name},
           {"camera_position", vec_text(v.position)},
           {"camera_target", vec_text(v.target)},
           {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
+          {"scene_origin", vec_text(scene.origin)},
           {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
           {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
+          {"sun_direction", vec_text(sun)},
+          {"sky", s.sky.physical ? fmt::format("preetham turbidity {}", s.sky.turbidity)
+                                 : std::string("gradient")},
+          {"haze", s.haze.enabled ? fmt::format("visibility {} m, scale height {} m",
+                                                s.haze.visibility, s.haze.scale_height)
+                                  : std::string("none")},
           {"spp", std::to_string(s.render.spp)},
           {"seed", std::to_string(s.render.seed)}};
 }
@@ -146,9 +157,10 @@ int run_render(const RenderArgs& args) {
       const renderer::Film film = renderer.render(view, options, &stats);
       const std::string stem = image_stem(view.name, f, frames.size());
       const auto exr = out_dir / (stem + ".exr");
-      renderer::ImageMetadata meta = metadata(scenario, vs);
+      renderer::ImageMetadata meta = metadata(scenario, vs, *scene);
       meta.emplace_back("time_s", fmt::format("{}", frames[f]));
-      renderer::write_exr(film, exr, meta);
+      const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
+      renderer::write_exr(film, exr, meta, &camera);
       renderer::write_preview_png(film, out_dir / (stem + ".png"), scene->settings.exposure_ev);
       images.push_back({{"path", exr.string()},
                         {"view", view.name},

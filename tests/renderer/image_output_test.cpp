@@ -18,7 +18,13 @@ Film test_film() {
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 5; ++x)
       film.set(x, y, {0.1f * static_cast<float>(x), 0.2f * static_cast<float>(y), 0.5f},
-               10.0f + static_cast<float>(x), {0.0f, 0.0f, 1.0f}, 1);
+               {10.0f + static_cast<float>(x),
+                {0.0f, 0.0f, 1.0f},
+                {0.3f, 0.3f, 0.3f},
+                1,
+                kNoId,
+                static_cast<std::uint32_t>(y),
+                0});
   return film;
 }
 
