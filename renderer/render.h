@@ -3,7 +3,10 @@
 // tiles on TBB worker threads. Every pixel's samples come from a counter-based generator
 // and are summed in sample order, so the image is bit-identical for any thread count.
 #include <cstdint>
+#include <filesystem>
 #include <functional>
+#include <stdexcept>
+#include <string>
 #include <memory>
 
 #include "renderer/film.h"
@@ -17,6 +20,22 @@ struct RenderOptions {
   std::function<void(double)> progress;
   // Called once when the scene is ready for this view and tracing begins.
   std::function<void()> started;
+  // Checkpoints: when `checkpoint` is set, the film so far is written there (an EXR holding
+  // every plane and the number of tiles done) every `checkpoint_seconds`, and removed when
+  // the render completes. With `resume`, a checkpoint whose `render_key` matches is
+  // continued; tiles are rendered in a fixed order, so the result equals an uninterrupted
+  // render bit for bit.
+  std::filesystem::path checkpoint;
+  double checkpoint_seconds = 60.0;
+  bool resume = false;
+  std::string render_key;
+  // For tests: stop as if killed (after writing a checkpoint) once this many tiles are done.
+  int stop_after_tiles = 0;
+};
+
+// Thrown when a render stops at `stop_after_tiles`.
+struct RenderInterrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 struct RenderStats {

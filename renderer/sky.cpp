@@ -72,13 +72,21 @@ void SkyModel::build_table() {
   weights_.resize(kRows * kCols);
   row_cdf_.assign(kRows + 1, 0.0f);
   cell_cdf_.assign(kRows * (kCols + 1), 0.0f);
+  // A floor keeps every direction sampleable, so MIS weights never divide by zero. It is
+  // relative to the sky's mean, so scaling the sky scales the table exactly and leaves the
+  // sampling decisions (and the image's linearity in light) untouched.
+  float mean = 0.0f;
+  for (int i = 0; i < kRows; ++i)
+    for (int j = 0; j < kCols; ++j)
+      mean += luminance(radiance(direction_of(kPi * (static_cast<float>(i) + 0.5f) / kRows,
+                                              2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols)));
+  const float floor = std::max(1e-3f * mean / (kRows * kCols), 1e-30f);
   for (int i = 0; i < kRows; ++i) {
     const float theta = kPi * (static_cast<float>(i) + 0.5f) / kRows;
     float row = 0.0f;
     for (int j = 0; j < kCols; ++j) {
       const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols;
-      // A floor keeps every direction sampleable, so MIS weights never divide by zero.
-      const float w = (luminance(radiance(direction_of(theta, phi))) + 1e-4f) * std::sin(theta);
+      const float w = (luminance(radiance(direction_of(theta, phi))) + floor) * std::sin(theta);
       weights_[static_cast<std::size_t>(i * kCols + j)] = w;
       row += w;
       cell_cdf_[static_cast<std::size_t>(i * (kCols + 1) + j + 1)] = row;

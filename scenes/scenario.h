@@ -57,6 +57,7 @@ struct RenderSection {
   int max_bounces = 4;
   double exposure_ev = 0.0;
   std::vector<double> frames{0.0};  // seconds; wind sway is evaluated at each
+  double checkpoint_seconds = 60.0;  // 0: no checkpoints
 };
 
 struct WindSettings {

@@ -192,6 +192,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.threads = static_cast<int>(r.integer("threads", 0, 1024, 0));
   s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, 4));
   s.exposure_ev = r.number("exposure", Range{-20.0, 20.0}, 0.0);
+  s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, 60.0);
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");
     const toml::array* a = n->as_array();

@@ -91,6 +91,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--height", args.height, "Image height in pixels")
       ->check(CLI::Range(1, scenes::kMaxImageSide));
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
+  cmd->add_flag("--resume", args.resume, "Continue from the checkpoints of an interrupted render in --out");
   return cmd;
 }
 

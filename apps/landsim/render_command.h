@@ -19,6 +19,7 @@ struct RenderArgs {
   std::optional<int> width;
   std::optional<int> height;
   bool json = false;
+  bool resume = false;  // continue from checkpoints left by a killed render
 };
 
 // Registers the subcommand; `args` is filled when it parses.
