@@ -77,7 +77,8 @@ int resume_from(const RenderOptions& options, Film& film, int tile_count) {
     if (k == "render_key") key = v;
     if (k == "tiles_done") done = v;
   }
-  if (key != options.render_key || done.empty() || saved.width() != film.width() || saved.height() != film.height()) {
+  if (key != options.render_key || done.empty() || saved.width() != film.width() ||
+      saved.height() != film.height()) {
     spdlog::warn("{}: checkpoint of another render, starting afresh", options.checkpoint.string());
     return 0;
   }
@@ -91,7 +92,8 @@ int resume_from(const RenderOptions& options, Film& film, int tile_count) {
 
 // Grass detail depends on the camera, so scenes with grass get an Embree scene per view.
 Renderer::Renderer(const Scene& scene)
-    : scene_(scene), embree_(scene.grass.cols == 0 ? std::make_unique<EmbreeScene>(scene) : nullptr) {}
+    : scene_(scene),
+      embree_(scene.grass.cols == 0 ? std::make_unique<EmbreeScene>(scene) : nullptr) {}
 
 Renderer::~Renderer() = default;
 
@@ -119,25 +121,31 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   for (int wave = first_tile; wave < grid.count(); wave += kTilesPerWave) {
     const int wave_end = std::min(wave + kTilesPerWave, grid.count());
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<int>(wave, wave_end, 1), [&](const tbb::blocked_range<int>& r) {
-        for (int tile = r.begin(); tile != r.end(); ++tile) {
-          rays += render_tile(tracer, camera, view, scene_.settings, tile, grid, film);
-          const int done = ++tiles_done;
-          if (options.progress && (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {
-            const std::lock_guard lock(progress_mutex);
-            options.progress(static_cast<double>(done) / grid.count());
-          }
-        }
-      });
+      tbb::parallel_for(
+          tbb::blocked_range<int>(wave, wave_end, 1), [&](const tbb::blocked_range<int>& r) {
+            for (int tile = r.begin(); tile != r.end(); ++tile) {
+              rays += render_tile(tracer, camera, view, scene_.settings, tile, grid, film);
+              const int done = ++tiles_done;
+              if (options.progress &&
+                  (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {
+                const std::lock_guard lock(progress_mutex);
+                options.progress(static_cast<double>(done) / grid.count());
+              }
+            }
+          });
     });
-    const bool stop = options.stop_after_tiles > 0 && wave_end >= options.stop_after_tiles && wave_end < grid.count();
+    const bool stop = options.stop_after_tiles > 0 && wave_end >= options.stop_after_tiles &&
+                      wave_end < grid.count();
     const auto now = std::chrono::steady_clock::now();
     if (!options.checkpoint.empty() && wave_end < grid.count() &&
-        (stop || std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_seconds)) {
-      write_exr(film, options.checkpoint, {{"render_key", options.render_key}, {"tiles_done", std::to_string(wave_end)}});
+        (stop || std::chrono::duration<double>(now - last_checkpoint).count() >=
+                     options.checkpoint_seconds)) {
+      write_exr(film, options.checkpoint,
+                {{"render_key", options.render_key}, {"tiles_done", std::to_string(wave_end)}});
       last_checkpoint = now;
     }
-    if (stop) throw RenderInterrupted("render stopped after " + std::to_string(wave_end) + " tiles");
+    if (stop)
+      throw RenderInterrupted("render stopped after " + std::to_string(wave_end) + " tiles");
   }
   if (!options.checkpoint.empty()) {
     std::error_code ignored;

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
-#include <memory>
 
 #include "renderer/film.h"
 #include "renderer/scene.h"

@@ -78,8 +78,9 @@ void SkyModel::build_table() {
   float mean = 0.0f;
   for (int i = 0; i < kRows; ++i)
     for (int j = 0; j < kCols; ++j)
-      mean += luminance(radiance(direction_of(kPi * (static_cast<float>(i) + 0.5f) / kRows,
-                                              2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols)));
+      mean +=
+          luminance(radiance(direction_of(kPi * (static_cast<float>(i) + 0.5f) / kRows,
+                                          2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols)));
   const float floor = std::max(1e-3f * mean / (kRows * kCols), 1e-30f);
   for (int i = 0; i < kRows; ++i) {
     const float theta = kPi * (static_cast<float>(i) + 0.5f) / kRows;

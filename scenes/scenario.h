@@ -56,8 +56,9 @@ struct RenderSection {
   int threads = 0;  // 0: every core
   int max_bounces = 4;
   double exposure_ev = 0.0;
-  std::vector<double> frames{0.0};  // seconds; wind sway is evaluated at each
+  std::vector<double> frames{0.0};   // seconds; wind sway is evaluated at each
   double checkpoint_seconds = 60.0;  // 0: no checkpoints
+  std::string season = "summer";     // spring, summer, autumn, winter (leafless)
 };
 
 struct WindSettings {
@@ -102,6 +103,7 @@ struct SpeciesSettings {
   double scale_variation = 0.1;
   double colour_variation = 0.0;
   double min_spacing = 0.0;
+  bool evergreen = false;  // keeps its leaves in winter and its colour in autumn
 };
 
 struct Scenario {

@@ -193,6 +193,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, 4));
   s.exposure_ev = r.number("exposure", Range{-20.0, 20.0}, 0.0);
   s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, 60.0);
+  s.season = r.choice("season", {"spring", "summer", "autumn", "winter"}, "summer");
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");
     const toml::array* a = n->as_array();
@@ -254,6 +255,15 @@ std::optional<FeatureMapSettings> read_featuremaps(const toml::table& root, cons
   return f;
 }
 
+// The optional boolean `evergreen` of a [[species]] table.
+const toml::node* t_evergreen(TableReader& r, const toml::table& t) {
+  r.allow("evergreen");
+  const toml::node* n = t.get("evergreen");
+  if (n != nullptr && !n->is_boolean())
+    r.fail("evergreen", "expected true or false, got " + detail::type_name(*n));
+  return n;
+}
+
 std::vector<SpeciesSettings> read_species(const toml::table& root, const std::string& file,
                                           const std::string& base_dir) {
   std::vector<SpeciesSettings> out;
@@ -281,6 +291,8 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, 0.1);
     s.colour_variation = r.number("colour_variation", Range{0.0, 0.9}, 0.0);
     s.min_spacing = r.number("min_spacing", Range{0.0, 1000.0}, 0.0);
+    if (const toml::node* e = t_evergreen(r, *a->get(i)->as_table()))
+      s.evergreen = *e->value<bool>();
     r.finish();
     out.push_back(std::move(s));
   }

@@ -37,7 +37,7 @@ std::uint64_t variant_seed(std::uint64_t seed, int bit, std::uint32_t variant) {
 
 renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t species_index,
                                        std::uint32_t variant, std::uint64_t seed, double time,
-                                       const WindSettings& wind) {
+                                       const WindSettings& wind, const std::string& season) {
   renderer::TreePrototype p;
   const std::uint64_t vs = variant_seed(seed, sp.bit, variant);
   trees::TreeOptions options;
@@ -56,6 +56,18 @@ renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t 
                      1.0f + v * (2.0f * r.uniform(2) - 1.0f)};
   const float brightness = 1.0f + v * (2.0f * r.uniform(3) - 1.0f);
   p.leaf_reflectance = sp.species.colours.leaf * factor * brightness;
+  if (!sp.evergreen) {
+    if (season == "spring") {
+      p.leaf_reflectance = p.leaf_reflectance * Vec3f{1.25f, 1.3f, 0.7f};  // young, yellower green
+    } else if (season == "autumn") {
+      // Each variant turns its own way between yellow, orange and red.
+      static constexpr Vec3f kAutumn[3] = {
+          {0.45f, 0.35f, 0.05f}, {0.45f, 0.18f, 0.03f}, {0.35f, 0.07f, 0.03f}};
+      p.leaf_reflectance = kAutumn[std::min(2, static_cast<int>(r.uniform(4) * 3.0f))] * brightness;
+    } else if (season == "winter") {
+      p.geometry.group(trees::Group::leaves) = trees::GroupGeometry{};  // leafless
+    }
+  }
   p.leaf_transmittance = p.leaf_reflectance * kLeafTransmittanceRatio;
   return p;
 }
@@ -83,7 +95,8 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   scene.prototypes.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     const auto [species, variant] = keys[i];
-    scene.prototypes[i] = make_prototype(s.species[species], species, variant, seed, time, s.wind);
+    scene.prototypes[i] =
+        make_prototype(s.species[species], species, variant, seed, time, s.wind, s.render.season);
   });
   scene.instances.reserve(placed.size());
   for (const featuremaps::PlacedTree& t : placed) {

@@ -91,7 +91,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--height", args.height, "Image height in pixels")
       ->check(CLI::Range(1, scenes::kMaxImageSide));
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
-  cmd->add_flag("--resume", args.resume, "Continue from the checkpoints of an interrupted render in --out");
+  cmd->add_flag("--resume", args.resume,
+                "Continue from the checkpoints of an interrupted render in --out");
   return cmd;
 }
 
@@ -151,9 +152,21 @@ int run_render(const RenderArgs& args) {
       options.threads = scenario.render.threads;
       if (f == 0 && i == 0)
         options.started = [&] { spdlog::info("first pixel after {:.2f} s", seconds_since(start)); };
+      const auto view_start = std::chrono::steady_clock::now();
       options.progress = [&](double p) {
-        spdlog::info("{} t={}s: {:3.0f}%", view.name, frames[f], 100.0 * p);
+        const double elapsed = seconds_since(view_start);
+        spdlog::info("{} t={}s: {:3.0f}%, {:.0f} s left", view.name, frames[f], 100.0 * p,
+                     elapsed / p * (1.0 - p));
       };
+      if (scenario.render.checkpoint_seconds > 0.0) {
+        options.checkpoint =
+            out_dir / (image_stem(view.name, f, frames.size()) + ".checkpoint.exr");
+        options.checkpoint_seconds = scenario.render.checkpoint_seconds;
+      }
+      options.resume = args.resume;
+      options.render_key =
+          fmt::format("{} {} {} {} {} {}x{}", scenario.text_hash, view.name, frames[f],
+                      scenario.render.spp, scenario.render.seed, view.width, view.height);
       renderer::RenderStats stats;
       const renderer::Film film = renderer.render(view, options, &stats);
       const std::string stem = image_stem(view.name, f, frames.size());

@@ -2,7 +2,9 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -185,6 +187,40 @@ TEST(Cli, ImageSetsNameEveryFrameAndListThemInTheManifest) {
   EXPECT_EQ(manifest["images"][1]["time_s"], 3.0);
   EXPECT_EQ(manifest["wind"]["speed"], 12.0);
   EXPECT_NE(testing::read_file(out / "v_f0000.exr"), testing::read_file(out / "v_f0001.exr"));
+}
+
+TEST(Cli, KilledRenderResumesToTheSameImage) {
+  TempDir dir;
+  std::string text =
+      scenario("", "width = 480\nheight = 270", "spp = 48\ncheckpoint_seconds = 0.0001");
+  text.replace(text.find("width = 32\nheight = 18\n"), 22, "");
+  const auto file = dir.write("long.toml", text);
+  const auto whole = dir / "whole";
+  ASSERT_EQ(
+      run("render " + file.string() + " --out " + whole.string() + " --threads 2", dir).exit_code,
+      0);
+  // Start the same render, kill it once its first checkpoint exists, then resume it.
+  const auto out = dir / "resumed";
+  std::filesystem::create_directories(out);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl(LANDSIM_BINARY, LANDSIM_BINARY, "render", file.c_str(), "--out", out.c_str(),
+            "--threads", "2", nullptr);
+    ::_exit(127);
+  }
+  const auto checkpoint = out / "v.checkpoint.exr";
+  for (int i = 0; i < 6000 && !std::filesystem::exists(checkpoint); ++i) ::usleep(1000);
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the render finished before it could be killed";
+  EXPECT_FALSE(std::filesystem::exists(out / "v.exr"));  // nothing half-written
+  const Result r =
+      run("render " + file.string() + " --out " + out.string() + " --threads 1 --resume", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("resuming"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(checkpoint));
+  EXPECT_EQ(testing::read_file(out / "v.exr"), testing::read_file(whole / "v.exr"));
 }
 
 TEST(Cli, InfoDescribesTheDefaultScene) {

@@ -22,7 +22,8 @@ terrain::GroundMesh flat_ground(double half) {
   const int n = 3;
   std::vector<float> h(n * n, 0.0f);
   const double cell = 2.0 * half / (n - 1);
-  const terrain::ElevationGrid g(n, n, terrain::GeoTransform{-half - cell / 2, half + cell / 2, cell, cell}, h);
+  const terrain::ElevationGrid g(
+      n, n, terrain::GeoTransform{-half - cell / 2, half + cell / 2, cell, cell}, h);
   return terrain::build_ground_mesh(g, Vec3{});
 }
 
@@ -64,7 +65,8 @@ TEST(Physics, HazeTransmittanceMatchesTheAnalyticFormula) {
   h.base_height = 100.0;
   const HazeModel haze(h);
   EXPECT_NEAR(haze.sigma(100.0), 3.912 / 5000.0, 1e-12);  // Koschmieder at the base
-  for (const Vec3& d : {normalize(Vec3{1.0, 0.0, 0.2}), normalize(Vec3{0.3, 1.0, -0.1}), Vec3{1.0, 0.0, 0.0}}) {
+  for (const Vec3& d :
+       {normalize(Vec3{1.0, 0.0, 0.2}), normalize(Vec3{0.3, 1.0, -0.1}), Vec3{1.0, 0.0, 0.0}}) {
     const Vec3 o{0.0, 0.0, 400.0};
     const double t = 3000.0;
     double tau = 0.0;  // midpoint rule over the exponential density
@@ -74,8 +76,10 @@ TEST(Physics, HazeTransmittanceMatchesTheAnalyticFormula) {
     EXPECT_NEAR(haze.transmittance(o, d, t), std::exp(-tau), 1e-6);
   }
   // Straight up to infinity: sigma(z0) x H.
-  EXPECT_NEAR(haze.optical_depth({0, 0, 100.0}, {0, 0, 1}, kInfiniteDistance), 3.912 / 5000.0 * 800.0, 1e-9);
-  EXPECT_EQ(haze.transmittance({0, 0, 100.0}, normalize(Vec3{1, 0, -0.01}), kInfiniteDistance), 0.0);
+  EXPECT_NEAR(haze.optical_depth({0, 0, 100.0}, {0, 0, 1}, kInfiniteDistance),
+              3.912 / 5000.0 * 800.0, 1e-9);
+  EXPECT_EQ(haze.transmittance({0, 0, 100.0}, normalize(Vec3{1, 0, -0.01}), kInfiniteDistance),
+            0.0);
 }
 
 TEST(Physics, HazeDistancesFollowExtinctionTimesTransmittance) {
@@ -85,10 +89,12 @@ TEST(Physics, HazeDistancesFollowExtinctionTimesTransmittance) {
   const HazeModel haze(h);
   const Vec3 o{0, 0, 50}, d = normalize(Vec3{1, 0, 0.05});
   const double t = 4000.0, s_mid = 1000.0;
-  const double expected = -std::expm1(-haze.optical_depth(o, d, s_mid)) / -std::expm1(-haze.optical_depth(o, d, t));
+  const double expected =
+      -std::expm1(-haze.optical_depth(o, d, s_mid)) / -std::expm1(-haze.optical_depth(o, d, t));
   int below = 0;
   const int n = 100000;
-  for (int i = 0; i < n; ++i) below += haze.sample_distance(o, d, t, CounterRng(1, i, 0).uniform(0)) < s_mid;
+  for (int i = 0; i < n; ++i)
+    below += haze.sample_distance(o, d, t, CounterRng(1, i, 0).uniform(0)) < s_mid;
   EXPECT_NEAR(below / static_cast<double>(n), expected, 0.005);
 }
 
@@ -111,7 +117,12 @@ TEST(Physics, SunShadowFallsWhereGeometryPutsIt) {
   s.prototypes.push_back(panel);
   s.instances.push_back({0, {}, 0.0, 1.0});
   // Straight down from 30 m over (2, 0), 20 m of ground in view.
-  const View down{"v", {2.0, 0.0, 30.0}, {2.0, 0.001, 0.0}, 2.0 * std::atan(10.0 / 30.0) * 180.0 / std::numbers::pi, 80, 80};
+  const View down{"v",
+                  {2.0, 0.0, 30.0},
+                  {2.0, 0.001, 0.0},
+                  2.0 * std::atan(10.0 / 30.0) * 180.0 / std::numbers::pi,
+                  80,
+                  80};
   const Film film = Renderer(s).render(down, {});
   const Camera cam(down);
   int checked_in = 0, checked_out = 0;
@@ -139,8 +150,10 @@ Scene lit_ridge() {
   Scene s;
   std::vector<float> h;
   for (int r = 0; r < 21; ++r)
-    for (int c = 0; c < 21; ++c) h.push_back(static_cast<float>(30.0 - 0.5 * std::abs(c - 10.0) * 5.0));
-  s.ground.mesh = terrain::build_ground_mesh(terrain::ElevationGrid(21, 21, terrain::GeoTransform{0, 105, 5, 5}, h), Vec3{});
+    for (int c = 0; c < 21; ++c)
+      h.push_back(static_cast<float>(30.0 - 0.5 * std::abs(c - 10.0) * 5.0));
+  s.ground.mesh = terrain::build_ground_mesh(
+      terrain::ElevationGrid(21, 21, terrain::GeoTransform{0, 105, 5, 5}, h), Vec3{});
   s.sky = uniform_sky(0.0f);
   s.sun.direction = normalize(Vec3{0.5, 0.2, 0.8});
   s.settings.spp = 2;
@@ -174,7 +187,8 @@ TEST(Physics, AovsAgreeWithTheScene) {
   t.indices = {0, 1, 2, 0, 2, 3};
   box.species = 7;
   s.prototypes = {box};
-  s.instances = {{0, {40.0, 50.0, 25.0}, std::numbers::pi / 2, 1.0}, {0, {65.0, 50.0, 25.0}, std::numbers::pi / 2, 1.0}};
+  s.instances = {{0, {40.0, 50.0, 25.0}, std::numbers::pi / 2, 1.0},
+                 {0, {65.0, 50.0, 25.0}, std::numbers::pi / 2, 1.0}};
   const View v{"v", {52.0, -30.0, 40.0}, {52.0, 50.0, 25.0}, 50.0, 96, 64};
   const Film film = Renderer(s).render(v, {});
   const Camera cam(v);
@@ -216,7 +230,9 @@ TEST(Physics, KilledAndResumedEqualsUninterrupted) {
   RenderStats stats;
   const Film resumed = Renderer(s).render(v, second, &stats);
   EXPECT_FALSE(std::filesystem::exists(first.checkpoint));  // removed when complete
-  EXPECT_EQ(std::memcmp(whole.rgb_data().data(), resumed.rgb_data().data(), whole.rgb_data().size() * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(whole.rgb_data().data(), resumed.rgb_data().data(),
+                        whole.rgb_data().size() * sizeof(float)),
+            0);
   EXPECT_EQ(whole.object_data(), resumed.object_data());
   EXPECT_EQ(whole.depth_data(), resumed.depth_data());
   // A checkpoint of another render is not used.

@@ -55,19 +55,23 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "[[species]]\nbit = 2\nfile = \"" +
          data +
          "/species/palm.xml\"\nvariants = 2\ndensity_per_ha = 80\n"
-         "scale_variation = 0.2\ncolour_variation = 0.1\nmin_spacing = 3.0\n\n"
+         "scale_variation = 0.2\ncolour_variation = 0.1\nmin_spacing = 3.0\nevergreen = true\n\n"
          "[[grass]]\ntype = 1\ndensity_per_m2 = 50\nblade_length = 0.2\nblade_width = "
          "0.003\ncurvature = 0.5\n"
          "colour = [0.1, 0.3, 0.05]\n\n"
          "[ground]\nsoil = [0.3, 0.2, 0.1]\nrock = [0.4, 0.4, 0.4]\nwater = [0.01, 0.02, "
          "0.03]\nroad = [0.1, 0.1, 0.1]\n\n"
          "[wind]\nspeed = 4.0\ngust = 2.0\n\n"
-         "[sun]\nelevation = 40.0\nazimuth = 120.0\nirradiance = [3.0, 3.0, 3.0]\n\n"
+         "[sun]\ndate = 2026-06-21\ntime = 13:00:00\nutc_offset = 12.0\nlatitude = "
+         "-36.88\nlongitude = 174.76\n"
+         "irradiance = [3.0, 3.0, 3.0]\n\n[sky]\nmodel = \"preetham\"\nturbidity = 2.5\n\n"
+         "[haze]\nvisibility = 9000.0\nscale_height = 900.0\ncolour = [0.9, 0.9, 0.9]\nasymmetry = "
+         "0.6\n\n"
          "[[views]]\nname = \"all\"\nposition = [300.0, -100.0, 250.0]\ntarget = [300.0, 400.0, "
          "120.0]\n"
          "fov = 35.0\nwidth = 64\nheight = 32\n\n"
          "[render]\nspp = 2\nseed = 5\nthreads = 1\nmax_bounces = 2\nexposure = 0.5\nframes = "
-         "[0.0, 1.5]\n";
+         "[0.0, 1.5]\nseason = \"autumn\"\ncheckpoint_seconds = 30.0\n";
 }
 
 struct Fixture {
@@ -114,6 +118,17 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_FLOAT_EQ(s.ground.rock.x, 0.4f);
   EXPECT_DOUBLE_EQ(s.wind.gust, 2.0);
   EXPECT_EQ(s.render.frames, (std::vector<double>{0.0, 1.5}));
+  EXPECT_EQ(s.render.season, "autumn");
+  EXPECT_DOUBLE_EQ(s.render.checkpoint_seconds, 30.0);
+  EXPECT_TRUE(s.species[0].evergreen);
+  EXPECT_DOUBLE_EQ(s.sky.turbidity, 2.5);
+  EXPECT_TRUE(s.haze.enabled);
+  EXPECT_DOUBLE_EQ(s.haze.visibility, 9000.0);
+  EXPECT_DOUBLE_EQ(s.haze.asymmetry, 0.6);
+  // Auckland at 13:00 NZST on the June solstice: the sun in the north, 29-30 degrees up
+  // (90 - 36.88 - 23.44 = 29.7 at solar noon, which falls about 12:40 there).
+  EXPECT_NEAR(s.sun.elevation_deg, 29.5, 1.0);
+  EXPECT_NEAR(std::remainder(s.sun.azimuth_deg, 360.0), 0.0, 10.0);
 }
 
 TEST(FullScenario, EveryDocumentedKeyIsExercised) {
