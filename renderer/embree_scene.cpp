@@ -3,7 +3,12 @@
 #include "renderer/grass_patch.h"
 
 #include <embree3/rtcore.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <spdlog/spdlog.h>
+#include <chrono>
 
 #include <array>
 #include <cmath>
@@ -219,7 +224,37 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
 
 EmbreeScene::~EmbreeScene() = default;
 
+void EmbreeScene::record(const Ray& ray, float t_far, bool occlusion) const {
+  const int index = tbb::this_task_arena::current_thread_index();
+  (*recorder_)[static_cast<std::size_t>(std::max(index, 0))].push_back({ray, t_far, occlusion});
+}
+
+double EmbreeScene::trace_raw(const std::vector<RecordedRay>& rays, int threads) const {
+  tbb::task_arena arena(threads);
+  const auto start = std::chrono::steady_clock::now();
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        RTCIntersectContext context;
+                        rtcInitIntersectContext(&context);
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          if (rays[i].occlusion) {
+                            RTCRay ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far);
+                            rtcOccluded1(impl_->scene, &context, &ray);
+                          } else {
+                            RTCRayHit rh{};
+                            rh.ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far);
+                            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                            rtcIntersect1(impl_->scene, &context, &rh);
+                          }
+                        }
+                      });
+  });
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_far) const {
+  if (recorder_ != nullptr) record(ray, t_far, false);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
@@ -267,6 +302,7 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
 }
 
 bool EmbreeScene::occluded(const Ray& ray, float t_near, float t_far) const {
+  if (recorder_ != nullptr) record(ray, t_far, true);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r = to_rtc(ray, t_near, t_far);

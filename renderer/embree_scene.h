@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/vec3.h"
 #include "renderer/camera.h"
@@ -26,6 +27,13 @@ struct Hit {
   std::uint8_t grass_type = 0;  // 1-3 for grass
 };
 
+// A ray as traced, for measuring Embree's raw rate on exactly the rays a render used.
+struct RecordedRay {
+  Ray ray;
+  float t_far;
+  bool occlusion;  // a shadow ray (rtcOccluded1) rather than a closest hit (rtcIntersect1)
+};
+
 class EmbreeScene {
  public:
   // `view`, when given, chooses range-dependent detail (grass patches) for that camera.
@@ -37,9 +45,18 @@ class EmbreeScene {
   std::optional<Hit> intersect(const Ray& ray, float t_near, float t_far) const;
   bool occluded(const Ray& ray, float t_near, float t_far) const;
 
+  // Benchmarks only: while set, every traced ray is appended to the list of the calling
+  // TBB worker (`lists` must hold one per possible worker index).
+  void record_rays(std::vector<std::vector<RecordedRay>>* lists) { recorder_ = lists; }
+  // Traces `rays` with Embree alone (no shading) on `threads` workers; returns seconds.
+  double trace_raw(const std::vector<RecordedRay>& rays, int threads) const;
+
  private:
+  void record(const Ray& ray, float t_far, bool occlusion) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  std::vector<std::vector<RecordedRay>>* recorder_ = nullptr;
 };
 
 }  // namespace landsim::renderer

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
@@ -32,6 +34,51 @@ void write_obj(const trees::TreeGeometry& geometry, const std::filesystem::path&
       base += t.vertices.size();
     }
   }  // closed (and flushed) before the rename
+  out.commit();
+}
+
+void write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& path,
+                     std::size_t max_trees, const Vec3& near) {
+  AtomicFile out(path);
+  {
+    auto file = fmt::output_file(out.temp_path().string());
+    file.print("# landsim scene: ground and {} nearest trees, scene frame, metres, z up\n",
+               max_trees);
+    std::size_t base = 1;
+    const auto mesh = [&](const char* name, const std::vector<Vec3f>& vertices,
+                          const std::vector<std::uint32_t>& indices, const auto& transform) {
+      if (indices.empty()) return;
+      file.print("g {}\n", name);
+      for (const Vec3f& v : vertices) {
+        const Vec3f w = transform(v);
+        file.print("v {} {} {}\n", w.x, w.y, w.z);
+      }
+      for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+        file.print("f {} {} {}\n", base + indices[i], base + indices[i + 1], base + indices[i + 2]);
+      }
+      base += vertices.size();
+    };
+    mesh("ground", scene.ground.mesh.vertices, scene.ground.mesh.indices,
+         [](const Vec3f& v) { return v; });
+    std::vector<std::size_t> order(scene.instances.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return length(scene.instances[a].position - near) <
+             length(scene.instances[b].position - near);
+    });
+    for (std::size_t k = 0; k < std::min(max_trees, order.size()); ++k) {
+      const renderer::TreeInstance& inst = scene.instances[order[k]];
+      const auto c = static_cast<float>(std::cos(inst.rotation) * inst.scale),
+                 s = static_cast<float>(std::sin(inst.rotation) * inst.scale);
+      const auto place = [&](const Vec3f& v) {
+        return Vec3f{c * v.x - s * v.y, s * v.x + c * v.y, static_cast<float>(inst.scale) * v.z} +
+               Vec3f(inst.position);
+      };
+      for (const trees::GroupGeometry& g : scene.prototypes[inst.prototype].geometry.groups) {
+        mesh("tree", g.triangles.vertices, g.triangles.indices, place);
+      }
+    }
+  }
   out.commit();
 }
 

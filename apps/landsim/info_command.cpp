@@ -8,6 +8,7 @@
 
 #include "featuremaps/class_mapping.h"
 #include "scenes/default_scenario.h"
+#include "scenes/obj_export.h"
 #include "scenes/scene_builder.h"
 #include "scenes/scene_summary.h"
 #include "terrain/dem_loader.h"
@@ -49,6 +50,31 @@ int run_info(const InfoArgs& args) {
       "  grass tiles         {}\n  memory estimate     {:.1f} MB\n",
       s.unique_variants, s.triangles_stored, s.triangles_instanced, s.grass_tiles,
       static_cast<double>(s.memory_estimate_bytes) / 1e6);
+  return 0;
+}
+
+CLI::App* add_export_obj_command(CLI::App& app, ExportObjArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "export-obj", "Write a scenario's scene (ground and nearest trees) as one OBJ");
+  cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
+  cmd->add_option("--out", args.out, "OBJ file")->required();
+  cmd->add_option("--max-trees", args.max_trees,
+                  "Trees nearest the first view to include, flattened")
+      ->capture_default_str();
+  return cmd;
+}
+
+int run_export_obj(const ExportObjArgs& args) {
+  const scenes::Scenario scenario =
+      args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
+  const renderer::Scene scene = scenes::build_scene(scenario);
+  const renderer::View& v = scene.views.front();
+  scenes::write_scene_obj(scene, args.out, args.max_trees, v.position);
+  // The same camera for Embree's pathtracer tutorial (scene frame).
+  std::cout << fmt::format(
+      "pathtracer -i {} --vp {} {} {} --vi {} {} {} --vu 0 0 1 --fov {} --size {} {}\n", args.out,
+      v.position.x, v.position.y, v.position.z, v.target.x, v.target.y, v.target.z, v.fov_y_deg,
+      v.width, v.height);
   return 0;
 }
 

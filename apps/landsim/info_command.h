@@ -24,6 +24,15 @@ struct FeaturemapBuildArgs {
 CLI::App* add_info_command(CLI::App& app, InfoArgs& args);
 int run_info(const InfoArgs& args);
 
+struct ExportObjArgs {
+  std::string scenario;
+  std::string out;
+  std::size_t max_trees = 0;
+};
+
+CLI::App* add_export_obj_command(CLI::App& app, ExportObjArgs& args);
+int run_export_obj(const ExportObjArgs& args);
+
 CLI::App* add_featuremap_command(CLI::App& app, FeaturemapBuildArgs& args);
 int run_featuremap_build(const FeaturemapBuildArgs& args);
 

@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
   CLI::App* tree = landsim::app::add_tree_command(app, tree_args);
   landsim::app::InfoArgs info_args;
   CLI::App* info = landsim::app::add_info_command(app, info_args);
+  landsim::app::ExportObjArgs export_obj_args;
+  CLI::App* export_obj = landsim::app::add_export_obj_command(app, export_obj_args);
   landsim::app::FeaturemapBuildArgs featuremap_args;
   CLI::App* featuremap_build = landsim::app::add_featuremap_command(app, featuremap_args);
 
@@ -51,6 +53,7 @@ int main(int argc, char** argv) {
     if (render->parsed()) return landsim::app::run_render(render_args);
     if (tree->parsed()) return landsim::app::run_tree(tree_args);
     if (info->parsed()) return landsim::app::run_info(info_args);
+    if (export_obj->parsed()) return landsim::app::run_export_obj(export_obj_args);
     if (featuremap_build->parsed()) return landsim::app::run_featuremap_build(featuremap_args);
   } catch (const landsim::InputError& e) {
     std::cerr << "landsim: error: " << e.what() << "\n";
