@@ -255,6 +255,19 @@ std::optional<FeatureMapSettings> read_featuremaps(const toml::table& root, cons
   return f;
 }
 
+// An optional array of tables ([[key]]): null when absent, refused when something else.
+const toml::array* tables(const toml::table& root, std::string_view key, const std::string& file) {
+  const toml::node* n = root.get(key);
+  if (n == nullptr) return nullptr;
+  const toml::array* a = n->as_array();
+  if (a == nullptr || !a->is_array_of_tables()) {
+    const auto& b = n->source().begin;
+    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": " +
+                     std::string(key) + ": expected [[" + std::string(key) + "]] tables");
+  }
+  return a;
+}
+
 // The optional boolean `evergreen` of a [[species]] table.
 const toml::node* t_evergreen(TableReader& r, const toml::table& t) {
   r.allow("evergreen");
@@ -267,14 +280,8 @@ const toml::node* t_evergreen(TableReader& r, const toml::table& t) {
 std::vector<SpeciesSettings> read_species(const toml::table& root, const std::string& file,
                                           const std::string& base_dir) {
   std::vector<SpeciesSettings> out;
-  const toml::node* n = root.get("species");
-  if (n == nullptr) return out;
-  const toml::array* a = n->as_array();
-  if (a == nullptr || !a->is_array_of_tables()) {
-    const auto& b = n->source().begin;
-    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                     ": species: expected [[species]] tables");
-  }
+  const toml::array* a = tables(root, "species", file);
+  if (a == nullptr) return out;
   std::set<int> bits;
   for (std::size_t i = 0; i < a->size(); ++i) {
     TableReader r(*a->get(i)->as_table(), "species[" + std::to_string(i) + "]", file);
@@ -301,14 +308,8 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
 
 std::vector<GrassSettings> read_grass(const toml::table& root, const std::string& file) {
   std::vector<GrassSettings> out;
-  const toml::node* n = root.get("grass");
-  if (n == nullptr) return out;
-  const toml::array* a = n->as_array();
-  if (a == nullptr || !a->is_array_of_tables()) {
-    const auto& b = n->source().begin;
-    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                     ": grass: expected [[grass]] tables");
-  }
+  const toml::array* a = tables(root, "grass", file);
+  if (a == nullptr) return out;
   std::set<int> types;
   for (std::size_t i = 0; i < a->size(); ++i) {
     TableReader r(*a->get(i)->as_table(), "grass[" + std::to_string(i) + "]", file);

@@ -5,28 +5,14 @@
 
 #include "core/input_error.h"
 #include "terrain/raster_files.h"
+#include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::featuremaps {
 namespace {
 
 using landsim::testing::TempDir;
-
-void write_raster(const std::string& path, const char* driver, GDALDataType type, int cols,
-                  int rows, const std::vector<double>& values, const double* gt) {
-  terrain::ensure_gdal_registered();
-  GDALDatasetH mem = GDALCreate(GDALGetDriverByName("MEM"), "", cols, rows, 1, type, nullptr);
-  std::vector<double> copy = values;
-  ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(mem, 1), GF_Write, 0, 0, cols, rows, copy.data(), cols,
-                         rows, GDT_Float64, 0, 0),
-            CE_None);
-  if (gt != nullptr) GDALSetGeoTransform(mem, const_cast<double*>(gt));
-  GDALDatasetH out = GDALCreateCopy(GDALGetDriverByName(driver), path.c_str(), mem, FALSE, nullptr,
-                                    nullptr, nullptr);
-  ASSERT_NE(out, nullptr);
-  GDALClose(out);
-  GDALClose(mem);
-}
+using landsim::testing::write_raster;
 
 std::string error_of(const std::string& path, const RasterPlacement& p = {}) {
   try {

@@ -9,6 +9,7 @@
 
 #include "core/input_error.h"
 #include "terrain/raster_files.h"
+#include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::terrain {
@@ -16,28 +17,11 @@ namespace {
 
 using landsim::testing::source_file;
 using landsim::testing::TempDir;
+using landsim::testing::write_raster;
 
 std::string data(const std::string& name) { return source_file("data/terrain/" + name).string(); }
 
 // Writes a raster with GDAL: `driver` GTiff directly, PNG through an in-memory copy.
-void write_raster(const std::string& path, const char* driver, GDALDataType type, int cols,
-                  int rows, const std::vector<double>& values, const double* geotransform,
-                  const char* wkt, const double* nodata) {
-  ensure_gdal_registered();
-  GDALDatasetH mem = GDALCreate(GDALGetDriverByName("MEM"), "", cols, rows, 1, type, nullptr);
-  std::vector<double> copy = values;
-  ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(mem, 1), GF_Write, 0, 0, cols, rows, copy.data(), cols,
-                         rows, GDT_Float64, 0, 0),
-            CE_None);
-  if (geotransform != nullptr) GDALSetGeoTransform(mem, const_cast<double*>(geotransform));
-  if (wkt != nullptr) GDALSetProjection(mem, wkt);
-  if (nodata != nullptr) GDALSetRasterNoDataValue(GDALGetRasterBand(mem, 1), *nodata);
-  GDALDatasetH out = GDALCreateCopy(GDALGetDriverByName(driver), path.c_str(), mem, FALSE, nullptr,
-                                    nullptr, nullptr);
-  ASSERT_NE(out, nullptr);
-  GDALClose(out);
-  GDALClose(mem);
-}
 
 std::string utm32n_wkt() {
   OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
