@@ -207,7 +207,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
     Vertex v{ray.origin + ray.direction * hit->t, hit->shading_normal, hit->geometric_normal};
     if (dot(v.ng, ray.direction) > 0.0f) v.ng = -v.ng;
     if (dot(v.n, v.ng) < 0.0f) v.n = -v.n;
-    const SurfaceMaterial m = material(*hit);
+    SurfaceMaterial m = material(*hit);
+    if (!options_.transmission) m.transmittance = {};
     if (bounce == 0) {
       const std::int32_t species =
           hit->prototype >= 0 ? scene_.prototypes[static_cast<std::size_t>(hit->prototype)].species

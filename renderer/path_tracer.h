@@ -5,6 +5,7 @@
 // with analytic transmittance and single scattering of sunlight along every ray segment;
 // Russian roulette.
 #include <cstdint>
+#include <optional>
 
 #include "core/counter_rng.h"
 #include "renderer/camera.h"
@@ -43,6 +44,11 @@ struct SurfaceMaterial {
 struct TraceOptions {
   bool sky_light = true;        // next-event estimation of the sky and sky seen by bounces
   bool interreflection = true;  // bounces beyond the first surface
+  bool transmission = true;     // light through leaves and grass
+  // POV-comparable light: an unoccluded ambient (albedo x irradiance / pi) and haze as a
+  // constant fog colour, as POV-Ray's ambient_light and fog do.
+  std::optional<Vec3f> ambient_irradiance;
+  std::optional<Vec3f> fog_colour;
 };
 
 class PathTracer {

@@ -30,7 +30,7 @@ struct TileGrid {
 // Renders one tile into the film; returns the rays it traced.
 std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const View& view,
                           const RenderSettings& settings, int tile, const TileGrid& grid,
-                          Film& film) {
+                          bool centre_first, Film& film) {
   const int x0 = (tile % grid.cols) * kTileSize;
   const int y0 = (tile / grid.cols) * kTileSize;
   const int x1 = std::min(x0 + kTileSize, view.width);
@@ -44,8 +44,9 @@ std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const 
       FirstHit first;
       for (int s = 0; s < settings.spp; ++s) {
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
-        const Ray ray = camera.ray(static_cast<float>(x) + rng.uniform(0),
-                                   static_cast<float>(y) + rng.uniform(1));
+        const bool centre = centre_first && s == 0;
+        const Ray ray = camera.ray(static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0)),
+                                   static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1)));
         const PathSample sample = tracer.trace(ray, rng);
         sum += sample.radiance;
         rays += sample.rays;
@@ -103,7 +104,7 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   const Camera camera(view);
   std::unique_ptr<EmbreeScene> per_view;
   if (!embree_) per_view = std::make_unique<EmbreeScene>(scene_, &view);
-  const PathTracer tracer(scene_, embree_ ? *embree_ : *per_view);
+  const PathTracer tracer(scene_, embree_ ? *embree_ : *per_view, options.trace);
   const double setup =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.started) options.started();
@@ -124,7 +125,7 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
       tbb::parallel_for(
           tbb::blocked_range<int>(wave, wave_end, 1), [&](const tbb::blocked_range<int>& r) {
             for (int tile = r.begin(); tile != r.end(); ++tile) {
-              rays += render_tile(tracer, camera, view, scene_.settings, tile, grid, film);
+              rays += render_tile(tracer, camera, view, scene_.settings, tile, grid, options.centre_first_sample, film);
               const int done = ++tiles_done;
               if (options.progress &&
                   (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "renderer/film.h"
+#include "renderer/path_tracer.h"
 #include "renderer/scene.h"
 
 namespace landsim::renderer {
@@ -29,6 +30,11 @@ struct RenderOptions {
   double checkpoint_seconds = 60.0;
   bool resume = false;
   std::string render_key;
+  // Light paths followed (TraceOptions{} is the full light transport).
+  TraceOptions trace;
+  // The first sample of each pixel at its centre (for comparisons with renderers that
+  // sample pixel centres), so the AOVs describe the centre.
+  bool centre_first_sample = false;
   // For tests: stop as if killed (after writing a checkpoint) once this many tiles are done.
   int stop_after_tiles = 0;
 };
