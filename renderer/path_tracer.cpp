@@ -116,8 +116,11 @@ Vec3f PathTracer::sun_light(const Vertex& v, const SurfaceMaterial& m, float u1,
   ++rays;
   const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
   if (embree_.occluded({origin, l}, 0.0f, kInfinity)) return {};
-  const auto t_haze =
-      static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
+  // POV-Ray's fog does not dim light sources: neither does the comparable mode.
+  const float t_haze =
+      options_.fog_colour
+          ? 1.0f
+          : static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
   return f * scene_.sun.irradiance * t_haze;
 }
 
@@ -192,9 +195,15 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
     // (the plain beyond the terrain); the sky model already holds the atmosphere above.
     if (hit || ray.direction.z <= 0.0f) {
       const double t = hit ? hit->t : kInfiniteDistance;
-      out.radiance += throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), out.rays);
-      throughput = throughput * static_cast<float>(
-                                    haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
+      const auto transmitted =
+          static_cast<float>(haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
+      if (options_.fog_colour) {
+        // POV-comparable: fog of one colour, as POV-Ray's.
+        out.radiance += throughput * *options_.fog_colour * (1.0f - transmitted);
+      } else {
+        out.radiance += throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), out.rays);
+      }
+      throughput = throughput * transmitted;
     }
     if (!hit) {
       if (options_.sky_light || bounce == 0) {
@@ -225,6 +234,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
     Vec3f direct = sun_light(v, m, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), out.rays);
     if (options_.sky_light)
       direct += sky_light(v, m, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), out.rays);
+    if (options_.ambient_irradiance)
+      direct += m.reflectance * *options_.ambient_irradiance * (1.0f / kPi);
     out.radiance += throughput * direct * (1.0f - fresnel);
     if (!options_.interreflection) break;
 

@@ -122,18 +122,19 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   for (int wave = first_tile; wave < grid.count(); wave += kTilesPerWave) {
     const int wave_end = std::min(wave + kTilesPerWave, grid.count());
     arena.execute([&] {
-      tbb::parallel_for(
-          tbb::blocked_range<int>(wave, wave_end, 1), [&](const tbb::blocked_range<int>& r) {
-            for (int tile = r.begin(); tile != r.end(); ++tile) {
-              rays += render_tile(tracer, camera, view, scene_.settings, tile, grid, options.centre_first_sample, film);
-              const int done = ++tiles_done;
-              if (options.progress &&
-                  (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {
-                const std::lock_guard lock(progress_mutex);
-                options.progress(static_cast<double>(done) / grid.count());
-              }
-            }
-          });
+      tbb::parallel_for(tbb::blocked_range<int>(wave, wave_end, 1),
+                        [&](const tbb::blocked_range<int>& r) {
+                          for (int tile = r.begin(); tile != r.end(); ++tile) {
+                            rays += render_tile(tracer, camera, view, scene_.settings, tile, grid,
+                                                options.centre_first_sample, film);
+                            const int done = ++tiles_done;
+                            if (options.progress &&
+                                (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {
+                              const std::lock_guard lock(progress_mutex);
+                              options.progress(static_cast<double>(done) / grid.count());
+                            }
+                          }
+                        });
     });
     const bool stop = options.stop_after_tiles > 0 && wave_end >= options.stop_after_tiles &&
                       wave_end < grid.count();

@@ -14,7 +14,12 @@ namespace {
 // landsim (x east, y north, z up) -> POV-Ray (x, y up, z).
 std::string pov(const Vec3& v) { return fmt::format("<{:.6f}, {:.6f}, {:.6f}>", v.x, v.z, v.y); }
 std::string pov(const Vec3f& v) { return fmt::format("<{:.6g}, {:.6g}, {:.6g}>", v.x, v.z, v.y); }
-std::string rgb(const Vec3f& c) { return fmt::format("rgb <{:.6g}, {:.6g}, {:.6g}>", c.x, c.y, c.z); }
+std::string rgb(const Vec3f& c) {
+  return fmt::format("rgb <{:.6g}, {:.6g}, {:.6g}>", c.x, c.y, c.z);
+}
+std::string colour_vector(const Vec3f& c) {
+  return fmt::format("<{:.6g}, {:.6g}, {:.6g}>", c.x, c.y, c.z);
+}
 
 void write_mesh2(fmt::ostream& out, const std::string& name, const std::vector<Vec3f>& vertices,
                  const std::vector<Vec3f>& normals, const std::vector<std::uint32_t>& indices) {
@@ -33,8 +38,9 @@ void write_mesh2(fmt::ostream& out, const std::string& name, const std::vector<V
 // translation; rows are where the x, y and z axes go, then the translation.
 std::string instance_matrix(const renderer::TreeInstance& t) {
   const double c = std::cos(t.rotation) * t.scale, s = std::sin(t.rotation) * t.scale, k = t.scale;
-  return fmt::format("matrix <{:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, {:.6f}, {:.6f}, {:.6f}>", c, s, k, -s,
-                     c, t.position.x, t.position.z, t.position.y);
+  return fmt::format(
+      "matrix <{:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, {:.6f}, {:.6f}, {:.6f}>", c, s,
+      k, -s, c, t.position.x, t.position.z, t.position.y);
 }
 
 }  // namespace
@@ -48,20 +54,22 @@ std::string sanitize_for_pov(const std::string& text) {
   return out;
 }
 
-void export_pov(const renderer::Scene& scene, const renderer::View& view, const std::filesystem::path& dir,
-                const PovExportOptions& o) {
+void export_pov(const renderer::Scene& scene, const renderer::View& view,
+                const std::filesystem::path& dir, const PovExportOptions& o) {
   std::filesystem::create_directories(dir);
   {
     AtomicFile inc(dir / "meshes.inc");
     {
       auto out = fmt::output_file(inc.temp_path().string());
       out.print("// landsim tree prototypes, POV-Ray axes (y up)\n");
-      write_mesh2(out, "LS_Ground", scene.ground.mesh.vertices, scene.ground.mesh.normals, scene.ground.mesh.indices);
+      write_mesh2(out, "LS_Ground", scene.ground.mesh.vertices, scene.ground.mesh.normals,
+                  scene.ground.mesh.indices);
       for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
         const trees::TreeGeometry& g = scene.prototypes[p].geometry;
         for (int k = 0; k < trees::kGroupCount; ++k) {
           const trees::TriangleSet& t = g.groups[static_cast<std::size_t>(k)].triangles;
-          if (!t.indices.empty()) write_mesh2(out, fmt::format("LS_Proto_{}_{}", p, k), t.vertices, t.normals, t.indices);
+          if (!t.indices.empty())
+            write_mesh2(out, fmt::format("LS_Proto_{}_{}", p, k), t.vertices, t.normals, t.indices);
         }
       }
     }
@@ -71,33 +79,45 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view, const 
   {
     auto out = fmt::output_file(file.temp_path().string());
     const double aspect = static_cast<double>(view.width) / view.height;
-    const double hfov = 2.0 * std::atan(std::tan(view.fov_y_deg * std::numbers::pi / 360.0) * aspect) * 180.0 / std::numbers::pi;
+    const double hfov = 2.0 *
+                        std::atan(std::tan(view.fov_y_deg * std::numbers::pi / 360.0) * aspect) *
+                        180.0 / std::numbers::pi;
     out.print("// landsim export: view {}\n#version 3.7;\n", sanitize_for_pov(view.name));
     out.print("#ifndef (LS_Mask) #declare LS_Mask = 0; #end\n");
     out.print("global_settings {{ assumed_gamma 1.0 max_trace_level 5\n");
-    out.print("  #if (LS_Mask) ambient_light rgb 1 #else ambient_light {} #end }}\n", rgb(o.ambient_irradiance / std::numbers::pi_v<float>));
+    out.print("  #if (LS_Mask) ambient_light rgb 1 #else ambient_light {} #end }}\n",
+              rgb(o.ambient_irradiance / std::numbers::pi_v<float>));
     out.print("#include \"meshes.inc\"\n");
-    out.print("#macro LS_Texture(Class, Albedo)\n  #if (LS_Mask) texture {{ pigment {{ rgb Class }} finish {{ ambient 1 diffuse 0 }} }}\n"
-              "  #else texture {{ pigment {{ rgb Albedo }} finish {{ ambient 1 diffuse 1 }} }} #end\n#end\n");
-    out.print("camera {{ perspective location {} look_at {} sky <0, 1, 0> right x*{:.9g} up y angle {:.9g} }}\n",
-              pov(view.position), pov(view.target), aspect, hfov);
+    out.print(
+        "#macro LS_Texture(Class, Albedo)\n  #if (LS_Mask) texture {{ pigment {{ rgb Class }} "
+        "finish {{ ambient 1 diffuse 0 }} }}\n"
+        "  #else texture {{ pigment {{ rgb Albedo }} finish {{ ambient 1 diffuse 1 }} }} "
+        "#end\n#end\n");
+    out.print(
+        "camera {{ perspective location {} look_at {} sky <0, 1, 0> right x*{:.9g} up y angle "
+        "{:.9g} }}\n",
+        pov(view.position), pov(view.target), aspect, hfov);
     const Vec3 sun = normalize(scene.sun.direction) * 1e7;
-    out.print("#if (!LS_Mask)\nlight_source {{ {} color {} parallel point_at <0, 0, 0> }}\n", pov(sun),
-              rgb(scene.sun.irradiance / std::numbers::pi_v<float>));
-    out.print("sky_sphere {{ pigment {{ gradient y color_map {{ [0 {}] [1 {}] }} }} }}\n", rgb(o.sky_horizon), rgb(o.sky_zenith));
+    out.print("#if (!LS_Mask)\nlight_source {{ {} color {} parallel point_at <0, 0, 0> }}\n",
+              pov(sun), rgb(scene.sun.irradiance / std::numbers::pi_v<float>));
+    out.print("sky_sphere {{ pigment {{ gradient y color_map {{ [0 {}] [1 {}] }} }} }}\n",
+              rgb(o.sky_horizon), rgb(o.sky_zenith));
     if (scene.haze.enabled) {
-      out.print("fog {{ fog_type 1 distance {:.6g} color {} }}\n", scene.haze.visibility / 3.912, rgb(o.fog_colour));
+      out.print("fog {{ fog_type 1 distance {:.6g} color {} }}\n", scene.haze.visibility / 3.912,
+                rgb(o.fog_colour));
     }
     out.print("#else\nbackground {{ rgb 0 }}\n#end\n");
-    out.print("object {{ LS_Ground LS_Texture(<1, 0, 0>, {}) }}\n", rgb(scene.ground.albedo));
+    out.print("object {{ LS_Ground LS_Texture(<1, 0, 0>, {}) }}\n",
+              colour_vector(scene.ground.albedo));
     for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
       const renderer::TreePrototype& proto = scene.prototypes[p];
       out.print("#declare LS_Tree_{} = union {{\n", p);
       for (int k = 0; k < trees::kGroupCount; ++k) {
         if (proto.geometry.groups[static_cast<std::size_t>(k)].triangles.indices.empty()) continue;
         const bool leaf = k == static_cast<int>(trees::Group::leaves);
-        out.print("  object {{ LS_Proto_{}_{} LS_Texture({}, {}) }}\n", p, k, leaf ? "<0, 0, 1>" : "<0, 1, 0>",
-                  rgb(leaf ? proto.leaf_reflectance : proto.bark_albedo));
+        out.print("  object {{ LS_Proto_{}_{} LS_Texture({}, {}) }}\n", p, k,
+                  leaf ? "<0, 0, 1>" : "<0, 1, 0>",
+                  colour_vector(leaf ? proto.leaf_reflectance : proto.bark_albedo));
       }
       out.print("}}\n");
     }

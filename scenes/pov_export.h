@@ -24,8 +24,8 @@ struct PovExportOptions {
 // Writes `dir`/scene.pov and `dir`/meshes.inc for `view`. Declaring LS_Mask=1 on the POV-Ray
 // command line renders flat class colours instead (ground red, bark green, leaves blue, sky
 // black) for coverage comparison.
-void export_pov(const renderer::Scene& scene, const renderer::View& view, const std::filesystem::path& dir,
-                const PovExportOptions& options);
+void export_pov(const renderer::Scene& scene, const renderer::View& view,
+                const std::filesystem::path& dir, const PovExportOptions& options);
 
 // Keeps letters, digits, space, '_', '-' and '.'; anything else (quotes, '#', newlines)
 // becomes '_'. For text written into POV-Ray comments.

@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "info_command.h"
+#include "pov_command.h"
 #include "render_command.h"
 #include "tree_command.h"
 
@@ -37,6 +38,9 @@ int main(int argc, char** argv) {
   CLI::App* info = landsim::app::add_info_command(app, info_args);
   landsim::app::ExportObjArgs export_obj_args;
   CLI::App* export_obj = landsim::app::add_export_obj_command(app, export_obj_args);
+  landsim::app::PovArgs export_pov_args, crosscheck_args;
+  CLI::App* export_pov = landsim::app::add_export_pov_command(app, export_pov_args);
+  CLI::App* crosscheck = landsim::app::add_crosscheck_command(app, crosscheck_args);
   landsim::app::FeaturemapBuildArgs featuremap_args;
   CLI::App* featuremap_build = landsim::app::add_featuremap_command(app, featuremap_args);
 
@@ -53,6 +57,8 @@ int main(int argc, char** argv) {
     if (render->parsed()) return landsim::app::run_render(render_args);
     if (tree->parsed()) return landsim::app::run_tree(tree_args);
     if (info->parsed()) return landsim::app::run_info(info_args);
+    if (export_pov->parsed()) return landsim::app::run_export_pov(export_pov_args);
+    if (crosscheck->parsed()) return landsim::app::run_crosscheck(crosscheck_args);
     if (export_obj->parsed()) return landsim::app::run_export_obj(export_obj_args);
     if (featuremap_build->parsed()) return landsim::app::run_featuremap_build(featuremap_args);
   } catch (const landsim::InputError& e) {

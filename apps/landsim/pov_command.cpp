@@ -1,0 +1,122 @@
+#include "pov_command.h"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+#include "core/input_error.h"
+#include "renderer/sky.h"
+#include "scenes/crosscheck.h"
+#include "scenes/default_scenario.h"
+#include "scenes/pov_export.h"
+#include "scenes/scene_builder.h"
+
+namespace landsim::app {
+namespace {
+
+void add_common(CLI::App* cmd, PovArgs& args) {
+  cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
+  cmd->add_option("--out", args.out, "Output directory")->required();
+  cmd->add_option("--view", args.view, "View name (default: the first)");
+}
+
+std::size_t view_index(const scenes::Scenario& s, const std::string& name) {
+  if (name.empty()) return 0;
+  for (std::size_t i = 0; i < s.views.size(); ++i) {
+    if (s.views[i].name == name) return i;
+  }
+  throw InputError("--view: no view named \"" + name + "\" in " + s.source);
+}
+
+scenes::Scenario load(const PovArgs& args) {
+  return args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
+}
+
+}  // namespace
+
+CLI::App* add_export_pov_command(CLI::App& app, PovArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "export-pov", "Write the scene as POV-Ray 3.7 files (scene.pov, meshes.inc)");
+  add_common(cmd, args);
+  cmd->add_option("--frame", args.frame, "Frame index (wind sway)")->check(CLI::NonNegativeNumber);
+  return cmd;
+}
+
+CLI::App* add_crosscheck_command(CLI::App& app, PovArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "crosscheck", "Render with landsim and POV-Ray and compare (docs/CROSSCHECK.md)");
+  add_common(cmd, args);
+  cmd->add_option("--spp", args.spp, "Samples per pixel for both")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  cmd->add_option("--threads", args.threads, "landsim worker threads (0: every core)")
+      ->check(CLI::Range(0, 1024));
+  cmd->add_option("--min-iou", args.min_iou, "Least object IoU that passes")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--max-mean-diff", args.max_mean_diff,
+                  "Largest mean relative luminance difference that passes")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--max-region-diff", args.max_region_diff,
+                  "Largest per-region relative luminance difference")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
+  return cmd;
+}
+
+int run_export_pov(const PovArgs& args) {
+  const scenes::Scenario s = load(args);
+  if (args.frame >= static_cast<int>(s.render.frames.size())) {
+    throw InputError(fmt::format("--frame: {} has {} frames", s.source, s.render.frames.size()));
+  }
+  const renderer::Scene scene =
+      scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]);
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.albedo);
+  scenes::PovExportOptions o;
+  o.ambient_irradiance = sky.horizontal_irradiance();
+  o.fog_colour = sky.radiance({1.0f, 0.0f, 0.02f});
+  o.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
+  o.sky_horizon = o.fog_colour;
+  scenes::export_pov(scene, scene.views[view_index(s, args.view)], args.out, o);
+  std::cout << fmt::format("{}/scene.pov: povray scene.pov +W{} +H{} (run in that directory)\n",
+                           args.out, scene.views[view_index(s, args.view)].width,
+                           scene.views[view_index(s, args.view)].height);
+  return 0;
+}
+
+int run_crosscheck(const PovArgs& args) {
+  const scenes::Scenario s = load(args);
+  const renderer::Scene scene = scenes::build_scene(s);
+  scenes::CrosscheckOptions o;
+  o.out_dir = args.out;
+  o.view = view_index(s, args.view);
+  o.spp = args.spp;
+  o.threads = args.threads;
+  o.min_iou = args.min_iou;
+  o.max_mean_diff = args.max_mean_diff;
+  o.max_region_diff = args.max_region_diff;
+  const scenes::CrosscheckReport r = scenes::crosscheck(s, scene, o);
+  if (args.json) {
+    std::cout << nlohmann::json{{"object_iou", r.object_iou},
+                                {"luminance_mean_rel_diff", r.luminance_mean_rel_diff},
+                                {"luminance_region_max_rel_diff", r.luminance_region_max_rel_diff},
+                                {"landsim_seconds", r.landsim_seconds},
+                                {"povray_seconds", r.povray_seconds},
+                                {"pass", r.pass}}
+                     .dump()
+              << "\n";
+  } else {
+    std::cout << fmt::format(
+        "{}: object IoU {:.4f}, mean luminance difference {:.2f}%, worst region {:.2f}%; "
+        "landsim {:.2f} s, POV-Ray {:.2f} s; report in {}/report.html\n",
+        r.pass ? "pass" : "FAIL", r.object_iou, 100 * r.luminance_mean_rel_diff,
+        100 * r.luminance_region_max_rel_diff, r.landsim_seconds, r.povray_seconds, args.out);
+  }
+  return r.pass ? 0 : kCrosscheckFailed;
+}
+
+}  // namespace landsim::app

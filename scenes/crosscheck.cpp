@@ -1,0 +1,228 @@
+#include "scenes/crosscheck.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/atomic_file.h"
+#include "renderer/image_output.h"
+#include "renderer/render.h"
+#include "renderer/sky.h"
+#include "scenes/pov_export.h"
+
+namespace landsim::scenes {
+namespace {
+
+constexpr int kRegions = 4;  // per side, for the per-region luminance comparison
+
+enum class Cover { sky, ground, tree };
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Runs POV-Ray in `dir` (so that meshes.inc is found); returns seconds.
+double run_povray(const std::filesystem::path& dir, const std::string& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string cmd =
+      "cd '" + dir.string() + "' && povray scene.pov " + args + " >> povray.log 2>&1";
+  if (std::system(cmd.c_str()) != 0) {
+    throw std::runtime_error("POV-Ray failed: see " + (dir / "povray.log").string());
+  }
+  return seconds_since(start);
+}
+
+OIIO::ImageBuf read_image(const std::filesystem::path& path) {
+  OIIO::ImageBuf buf(path.string());
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+    throw std::runtime_error("cannot read " + path.string() + ": " + buf.geterror());
+  return buf;
+}
+
+float luminance(const float* c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
+
+Cover ours(std::uint8_t object) {
+  if (object == static_cast<std::uint8_t>(renderer::ObjectClass::bark) ||
+      object == static_cast<std::uint8_t>(renderer::ObjectClass::leaf)) {
+    return Cover::tree;
+  }
+  return object == 0 ? Cover::sky : Cover::ground;
+}
+
+Cover theirs(const float* rgb) {
+  if (rgb[0] > 0.5f) return Cover::ground;
+  if (rgb[1] > 0.5f || rgb[2] > 0.5f) return Cover::tree;
+  return Cover::sky;
+}
+
+double iou(const std::vector<Cover>& a, const std::vector<Cover>& b, Cover c) {
+  std::size_t both = 0, either = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    both += a[i] == c && b[i] == c;
+    either += a[i] == c || b[i] == c;
+  }
+  return either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
+}
+
+// The sky's radiance at the horizon, averaged around it: POV-Ray's constant fog colour.
+Vec3f horizon_mean(const renderer::SkyModel& sky) {
+  Vec3f sum{};
+  for (int i = 0; i < 64; ++i) {
+    const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / 64.0f;
+    sum += sky.radiance({std::cos(a), std::sin(a), 0.02f});
+  }
+  return sum / 64.0f;
+}
+
+void write_side_by_side(const renderer::Film& film, const OIIO::ImageBuf& pov,
+                        const std::vector<float>& heat, const std::filesystem::path& path) {
+  const int w = film.width(), h = film.height();
+  OIIO::ImageBuf out(OIIO::ImageSpec(3 * w, h, 3, OIIO::TypeDesc::FLOAT));
+  float px[3];
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const Vec3f c = film.rgb(x, y);
+      const float a[3] = {c.x, c.y, c.z};
+      out.setpixel(x, y, a);
+      pov.getpixel(x, y, px, 3);
+      out.setpixel(w + x, y, px);
+      const float d = heat[static_cast<std::size_t>(y) * w + x];
+      const float red[3] = {d, d * 0.1f, d * 0.1f};
+      out.setpixel(2 * w + x, y, red);
+    }
+  }
+  AtomicFile file(path);
+  const OIIO::ImageBuf display = OIIO::ImageBufAlgo::colorconvert(out, "linear", "sRGB");
+  if (!display.write(file.temp_path().string(), OIIO::TypeDesc::UINT8, "png"))
+    throw std::runtime_error("cannot write " + path.string());
+  file.commit();
+}
+
+void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
+                   const std::filesystem::path& dir) {
+  const nlohmann::json j = {{"object_iou", r.object_iou},
+                            {"tree_iou", r.tree_iou},
+                            {"ground_iou", r.ground_iou},
+                            {"luminance_mean_rel_diff", r.luminance_mean_rel_diff},
+                            {"luminance_region_max_rel_diff", r.luminance_region_max_rel_diff},
+                            {"landsim_seconds", r.landsim_seconds},
+                            {"povray_seconds", r.povray_seconds},
+                            {"thresholds",
+                             {{"min_iou", o.min_iou},
+                              {"max_mean_diff", o.max_mean_diff},
+                              {"max_region_diff", o.max_region_diff}}},
+                            {"pass", r.pass}};
+  {
+    AtomicFile json(dir / "report.json");
+    std::ofstream(json.temp_path()) << j.dump(2) << "\n";
+    json.commit();
+  }
+  AtomicFile html(dir / "report.html");
+  std::ofstream(html.temp_path()) << fmt::format(
+      "<!doctype html><meta charset=utf-8><title>landsim cross-check</title>\n"
+      "<h1>landsim against POV-Ray: {}</h1>\n<img src=side_by_side.png alt='landsim | POV-Ray | "
+      "difference'>\n"
+      "<table><tr><td>object IoU (mean of trees, ground)<td>{:.4f} (min {})\n<tr><td>trees "
+      "IoU<td>{:.4f}\n"
+      "<tr><td>ground IoU<td>{:.4f}\n<tr><td>mean luminance difference<td>{:.2f}% (max {:.0f}%)\n"
+      "<tr><td>largest region difference<td>{:.2f}% (max {:.0f}%)\n<tr><td>landsim<td>{:.2f} s\n"
+      "<tr><td>POV-Ray<td>{:.2f} s</table>\n",
+      r.pass ? "pass" : "FAIL", r.object_iou, o.min_iou, r.tree_iou, r.ground_iou,
+      100 * r.luminance_mean_rel_diff, 100 * o.max_mean_diff, 100 * r.luminance_region_max_rel_diff,
+      100 * o.max_region_diff, r.landsim_seconds, r.povray_seconds);
+  html.commit();
+}
+
+}  // namespace
+
+CrosscheckReport crosscheck(const Scenario& scenario, const renderer::Scene& scene,
+                            const CrosscheckOptions& o) {
+  (void)scenario;
+  const renderer::View& view = scene.views.at(o.view);
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.albedo);
+  PovExportOptions pov_options;
+  pov_options.ambient_irradiance = sky.horizontal_irradiance();
+  pov_options.fog_colour = horizon_mean(sky);
+  pov_options.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
+  pov_options.sky_horizon = pov_options.fog_colour;
+  const std::filesystem::path pov_dir = o.out_dir / "pov";
+  export_pov(scene, view, pov_dir, pov_options);
+
+  // landsim in the comparable mode, first sample at the pixel centre as POV-Ray samples.
+  renderer::Scene comparable = scene;
+  comparable.settings.spp = o.spp;
+  renderer::RenderOptions ro;
+  ro.threads = o.threads;
+  ro.centre_first_sample = true;
+  ro.trace.sky_light = false;
+  ro.trace.interreflection = false;
+  ro.trace.transmission = false;
+  ro.trace.ambient_irradiance = pov_options.ambient_irradiance;
+  ro.trace.fog_colour = pov_options.fog_colour;
+  CrosscheckReport r;
+  auto start = std::chrono::steady_clock::now();
+  const renderer::Film film = renderer::Renderer(comparable).render(view, ro);
+  r.landsim_seconds = seconds_since(start);
+  renderer::write_exr(film, o.out_dir / "landsim.exr", {{"mode", "POV-comparable"}});
+
+  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(o.spp)))));
+  const std::string size = fmt::format("+W{} +H{} -D -V", view.width, view.height);
+  r.povray_seconds = run_povray(
+      pov_dir, size + fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0", n));
+  run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1");
+  const OIIO::ImageBuf pov = read_image(pov_dir / "pov.exr");
+  const OIIO::ImageBuf mask = read_image(pov_dir / "mask.png");
+
+  const int w = film.width(), h = film.height();
+  std::vector<Cover> a(static_cast<std::size_t>(w) * h), b(a.size());
+  std::vector<float> heat(a.size(), 0.0f);
+  double sum_a = 0.0, sum_b = 0.0;
+  std::vector<double> region_a(kRegions * kRegions, 0.0), region_b(region_a.size(), 0.0);
+  std::vector<int> region_n(region_a.size(), 0);
+  float px[3], mk[3];
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      mask.getpixel(x, y, mk, 3);
+      a[i] = ours(film.object(x, y));
+      b[i] = theirs(mk);
+      if (a[i] == Cover::sky || b[i] == Cover::sky) continue;
+      pov.getpixel(x, y, px, 3);
+      const double la = film.luminance(x, y), lb = luminance(px);
+      sum_a += la;
+      sum_b += lb;
+      const std::size_t reg =
+          static_cast<std::size_t>(y * kRegions / h * kRegions + x * kRegions / w);
+      region_a[reg] += la;
+      region_b[reg] += lb;
+      ++region_n[reg];
+      heat[i] = static_cast<float>(std::min(1.0, 2.0 * std::abs(la - lb) / std::max(lb, 1e-3)));
+    }
+  }
+  r.tree_iou = iou(a, b, Cover::tree);
+  r.ground_iou = iou(a, b, Cover::ground);
+  r.object_iou = 0.5 * (r.tree_iou + r.ground_iou);
+  r.luminance_mean_rel_diff = sum_b > 0.0 ? std::abs(sum_a - sum_b) / sum_b : 1.0;
+  const int min_pixels =
+      std::max(1, w * h / (kRegions * kRegions * 10));  // regions at least 10% object
+  for (std::size_t k = 0; k < region_a.size(); ++k) {
+    if (region_n[k] < min_pixels || region_b[k] <= 0.0) continue;
+    r.luminance_region_max_rel_diff = std::max(r.luminance_region_max_rel_diff,
+                                               std::abs(region_a[k] - region_b[k]) / region_b[k]);
+  }
+  r.pass = r.object_iou >= o.min_iou && r.luminance_mean_rel_diff <= o.max_mean_diff &&
+           r.luminance_region_max_rel_diff <= o.max_region_diff;
+  write_side_by_side(film, pov, heat, o.out_dir / "side_by_side.png");
+  write_reports(r, o, o.out_dir);
+  return r;
+}
+
+}  // namespace landsim::scenes

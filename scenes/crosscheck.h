@@ -1,0 +1,40 @@
+#pragma once
+// Cross-check against POV-Ray: export the scene, render it with landsim in its
+// POV-comparable mode and with POV-Ray (colour, and flat class colours for coverage), and
+// compare: object coverage (intersection over union of the tree and ground masks) and
+// relative luminance over the pixels both see as objects, overall and per region.
+#include <filesystem>
+#include <string>
+
+#include "renderer/scene.h"
+#include "scenes/scenario.h"
+
+namespace landsim::scenes {
+
+struct CrosscheckOptions {
+  std::filesystem::path out_dir;
+  std::size_t view = 0;  // index into scene.views
+  int spp = 16;          // landsim samples; POV-Ray gets the nearest n x n antialiasing grid
+  int threads = 0;
+  double min_iou = 0.98;
+  double max_mean_diff = 0.05;
+  double max_region_diff = 0.25;
+};
+
+struct CrosscheckReport {
+  double object_iou = 0.0;
+  double tree_iou = 0.0, ground_iou = 0.0;
+  double luminance_mean_rel_diff = 0.0;
+  double luminance_region_max_rel_diff = 0.0;
+  double landsim_seconds = 0.0;
+  double povray_seconds = 0.0;
+  bool pass = false;
+};
+
+// Writes in out_dir: pov/ (the export and POV-Ray's images), landsim.exr, side_by_side.png
+// (landsim | POV-Ray | difference heat map), report.json and report.html. Throws
+// std::runtime_error when POV-Ray cannot be run.
+CrosscheckReport crosscheck(const Scenario& scenario, const renderer::Scene& scene,
+                            const CrosscheckOptions& options);
+
+}  // namespace landsim::scenes
