@@ -154,7 +154,10 @@ CrosscheckReport crosscheck(const Scenario& scenario, const renderer::Scene& sce
   pov_options.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
   pov_options.sky_horizon = pov_options.fog_colour;
   const std::filesystem::path pov_dir = o.out_dir / "pov";
-  export_pov(scene, view, pov_dir, pov_options);
+  renderer::View pov_view = view;
+  pov_view.position += o.pov_camera_shift;
+  pov_view.target += o.pov_camera_shift;
+  export_pov(scene, pov_view, pov_dir, pov_options);
 
   // landsim in the comparable mode, first sample at the pixel centre as POV-Ray samples.
   renderer::Scene comparable = scene;

@@ -19,6 +19,8 @@ struct CrosscheckOptions {
   double min_iou = 0.98;
   double max_mean_diff = 0.05;
   double max_region_diff = 0.25;
+  // Moves POV-Ray's camera (scene frame, metres): only to show that the check can fail.
+  Vec3 pov_camera_shift;
 };
 
 struct CrosscheckReport {

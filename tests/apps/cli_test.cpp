@@ -223,6 +223,49 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
   EXPECT_EQ(testing::read_file(out / "v.exr"), testing::read_file(whole / "v.exr"));
 }
 
+TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
+  TempDir dir;
+  std::string classes =
+      "ncols 61\nnrows 87\nxllcorner 0.0\nyllcorner 0.0\ncellsize 10.0\nNODATA_value -9999\n";
+  for (int r = 0; r < 87; ++r) {
+    for (int c = 0; c < 61; ++c) classes += (r >= 5 && r < 11 && c >= 20 && c < 26) ? "1 " : "0 ";
+    classes += "\n";
+  }
+  dir.write("cls.asc", classes);
+  dir.write("map.toml", "[[class]]\nvalue = 1\nspecies = [{ bit = 0, fraction = 1.0 }]\n");
+  const auto file =
+      dir.write("small.toml",
+                "[terrain]\nelevation = \"" + volcano() +
+                    "\"\n[featuremaps]\nclasses = \"cls.asc\"\n"
+                    "class_map = \"map.toml\"\n[[species]]\nbit = 0\nfile = \"" +
+                    testing::source_file("data/species/fanpalm.xml").string() +
+                    "\"\nvariants = 1\ndensity_per_ha = 12\n[sun]\nelevation = 35\nazimuth = 250\n"
+                    "[[views]]\nname = \"s\"\nposition = [230.0, 700.0, 126.0]\ntarget = [230.0, "
+                    "790.0, 104.0]\n"
+                    "width = 64\nheight = 40\n");
+  const Result ok = run(
+      "crosscheck " + file.string() + " --out " + (dir / "a").string() + " --spp 1 --json", dir);
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const auto j = nlohmann::json::parse(ok.out);
+  for (const char* key : {"object_iou", "luminance_mean_rel_diff", "luminance_region_max_rel_diff",
+                          "landsim_seconds", "povray_seconds", "pass"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["pass"], true);
+  const Result strict = run("crosscheck " + file.string() + " --out " + (dir / "b").string() +
+                                " --spp 1 --max-mean-diff 0",
+                            dir);
+  EXPECT_EQ(strict.exit_code, 3) << strict.err;
+  EXPECT_NE(strict.out.find("FAIL"), std::string::npos);
+  const Result pov = run("export-pov " + file.string() + " --out " + (dir / "pov").string(), dir);
+  EXPECT_EQ(pov.exit_code, 0) << pov.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "pov" / "scene.pov"));
+  EXPECT_EQ(
+      run("export-pov " + file.string() + " --out " + (dir / "p2").string() + " --frame 5", dir)
+          .exit_code,
+      2);
+}
+
 TEST(Cli, InfoDescribesTheDefaultScene) {
   TempDir dir;
   const Result r = run("info --json", dir);

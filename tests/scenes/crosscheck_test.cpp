@@ -1,0 +1,105 @@
+// POV-Ray is installed by the project's set-up, so these tests run it: a small scene
+// (terrain, a few trees, sun, haze) exports, renders in both renderers and passes; a moved
+// camera fails; unsafe names are exported safely.
+#include "scenes/crosscheck.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "renderer/render.h"
+#include "scenes/pov_export.h"
+#include "scenes/scene_builder.h"
+#include "tests/support/rasters.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+using landsim::testing::source_file;
+using landsim::testing::TempDir;
+
+// The volcano's flat north with a 60 m x 60 m stand of fan palms in view, sun and light haze.
+Scenario small_scene(const TempDir& dir) {
+  const std::string veg = (dir / "veg.tif").string();
+  std::vector<double> cells(61 * 87, 0.0);
+  for (int r = 5; r < 11; ++r)
+    for (int c = 20; c < 26; ++c) cells[static_cast<std::size_t>(r) * 61 + c] = 1;  // bit 0
+  const double gt[6] = {0.0, 10.0, 0.0, 870.0, 0.0, -10.0};
+  landsim::testing::write_raster(veg, "GTiff", GDT_UInt16, 61, 87, cells, gt);
+  const auto file = dir.write(
+      "small.toml", "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +
+                        "\"\n"
+                        "[featuremaps]\nvegetation = \"" +
+                        veg +
+                        "\"\n"
+                        "[[species]]\nbit = 0\nfile = \"" +
+                        source_file("data/species/fanpalm.xml").string() +
+                        "\"\n"
+                        "variants = 1\ndensity_per_ha = 12\nmin_spacing = 5.0\n"
+                        "[sun]\nelevation = 35.0\nazimuth = 250.0\n"
+                        "[haze]\nvisibility = 20000.0\n"
+                        "[[views]]\nname = \"stand\"\nposition = [230.0, 700.0, 126.0]\ntarget = "
+                        "[230.0, 790.0, 104.0]\n"
+                        "fov = 45.0\nwidth = 96\nheight = 64\n");
+  return load_scenario(file);
+}
+
+TEST(Crosscheck, SmallSceneAgreesWithPovRay) {
+  TempDir dir;
+  const Scenario s = small_scene(dir);
+  const renderer::Scene scene = build_scene(s);
+  ASSERT_GE(scene.instances.size(), 2u);
+  // The trees are in view (so the IoU below is not one of empty masks).
+  renderer::RenderOptions ro;
+  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], ro);
+  int tree_pixels = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      tree_pixels += film.object(x, y) == 2 || film.object(x, y) == 3;
+  ASSERT_GT(tree_pixels, 20);
+  CrosscheckOptions o;
+  o.out_dir = dir / "check";
+  o.spp = 1;
+  const CrosscheckReport r = crosscheck(s, scene, o);
+  EXPECT_GE(r.object_iou, 0.98);
+  EXPECT_GT(r.tree_iou, 0.9);
+  EXPECT_LE(r.luminance_mean_rel_diff, 0.05);
+  EXPECT_TRUE(r.pass);
+  for (const char* f : {"side_by_side.png", "report.json", "report.html", "landsim.exr",
+                        "pov/scene.pov", "pov/meshes.inc"}) {
+    EXPECT_TRUE(std::filesystem::exists(o.out_dir / f)) << f;
+  }
+}
+
+TEST(Crosscheck, AMovedCameraFails) {
+  TempDir dir;
+  const Scenario s = small_scene(dir);
+  const renderer::Scene scene = build_scene(s);
+  CrosscheckOptions o;
+  o.out_dir = dir / "check";
+  o.spp = 1;
+  o.pov_camera_shift = {3.0, 0.0, 0.0};
+  const CrosscheckReport r = crosscheck(s, scene, o);
+  EXPECT_LT(r.object_iou, 0.98);
+  EXPECT_FALSE(r.pass);
+}
+
+TEST(PovExport, UnsafeNamesCannotInjectDirectives) {
+  EXPECT_EQ(sanitize_for_pov("a\"b#c\nd}e"), "a_b_c_d_e");
+  TempDir dir;
+  renderer::Scene scene;
+  renderer::View view{"evil\"\n#declare X = 1;\n#fopen", {0, -10, 5}, {0, 0, 0}, 40.0, 8, 8};
+  export_pov(scene, view, dir.path(), {});
+  std::istringstream lines(landsim::testing::read_file(dir / "scene.pov"));
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_EQ(line.find("#declare X"), std::string::npos) << line;
+    EXPECT_EQ(line.find("#fopen"), std::string::npos) << line;
+  }
+  EXPECT_NE(landsim::testing::read_file(dir / "scene.pov").find("evil___declare X _ 1___fopen"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace landsim::scenes
