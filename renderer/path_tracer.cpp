@@ -195,8 +195,12 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
     // (the plain beyond the terrain); the sky model already holds the atmosphere above.
     if (hit || ray.direction.z <= 0.0f) {
       const double t = hit ? hit->t : kInfiniteDistance;
-      const auto transmitted =
-          static_cast<float>(haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
+      // The POV-comparable mode uses uniform fog of the base height's density, as POV-Ray's
+      // fog_type 1 does; otherwise the exponential haze.
+      const auto transmitted = static_cast<float>(
+          options_.fog_colour
+              ? (haze_.enabled() ? std::exp(-haze_.sigma(scene_.haze.base_height) * t) : 1.0)
+              : haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
       if (options_.fog_colour) {
         // POV-comparable: fog of one colour, as POV-Ray's.
         out.radiance += throughput * *options_.fog_colour * (1.0f - transmitted);
