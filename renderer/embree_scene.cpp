@@ -83,15 +83,6 @@ Vec3f rotate_z(const Vec3f& v, double angle) {
 
 }  // namespace
 
-// A 3x4 column-major transform placing a grass patch on its tile: z along the terrain
-// normal, x kept as close to east as the tilt allows.
-std::array<float, 12> patch_matrix(const Vec3f& centre, const Vec3f& normal) {
-  const Vec3f z = normalize(normal);
-  const Vec3f x = normalize(cross(Vec3f{0.0f, 1.0f, 0.0f}, z));
-  const Vec3f y = cross(z, x);
-  return {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, centre.x, centre.y, centre.z};
-}
-
 struct EmbreeScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
@@ -135,9 +126,8 @@ struct EmbreeScene::Impl {
     grass_patches.assign(3 * kGrassLevels, nullptr);
     for (int t = 0; t < 3; ++t) {
       for (int level = 0; level < kGrassLevels; ++level) {
-        const GrassBlades blades =
-            make_grass_patch(cover.types[static_cast<std::size_t>(t)], cover.tile, level,
-                             0x6772617373ULL + static_cast<std::uint64_t>(t));
+        const GrassBlades blades = make_grass_patch(cover.types[static_cast<std::size_t>(t)],
+                                                    cover.tile, level, grass_patch_seed(t));
         if (blades.first.empty()) continue;
         RTCScene s = rtcNewScene(device);
         RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
@@ -160,31 +150,19 @@ struct EmbreeScene::Impl {
   void add_grass(const GrassCover& cover, const View& view) {
     if (cover.cols == 0) return;
     add_grass_patches(cover);
-    for (int r = 0; r < cover.rows; ++r) {
-      for (int c = 0; c < cover.cols; ++c) {
-        const std::size_t k = static_cast<std::size_t>(r) * cover.cols + c;
-        const int type = cover.type[k];
-        if (type == 0) continue;
-        const Vec3f centre{static_cast<float>(cover.corner.x + (c + 0.5) * cover.tile),
-                           static_cast<float>(cover.corner.y + (r + 0.5) * cover.tile),
-                           cover.height[k]};
-        const int level =
-            grass_level(length(Vec3(centre) - view.position), view.height, view.fov_y_deg);
-        if (level < 0) continue;
-        RTCScene patch = grass_patches[static_cast<std::size_t>((type - 1) * kGrassLevels + level)];
-        if (patch == nullptr) continue;
-        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-        rtcSetGeometryInstancedScene(geom, patch);
-        const std::array<float, 12> m = patch_matrix(centre, cover.normal[k]);
-        rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m.data());
-        rtcCommitGeometry(geom);
-        const unsigned id = rtcAttachGeometry(scene, geom);
-        rtcReleaseGeometry(geom);
-        instance_of.resize(id + 1, -1);
-        grass_of.resize(id + 1, 0);
-        grass_of[id] = static_cast<std::uint8_t>(type);
-      }
-    }
+    for_each_grass_patch(cover, view, [&](int type, int level, const std::array<float, 12>& m) {
+      RTCScene patch = grass_patches[static_cast<std::size_t>((type - 1) * kGrassLevels + level)];
+      if (patch == nullptr) return;
+      RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(geom, patch);
+      rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m.data());
+      rtcCommitGeometry(geom);
+      const unsigned id = rtcAttachGeometry(scene, geom);
+      rtcReleaseGeometry(geom);
+      instance_of.resize(id + 1, -1);
+      grass_of.resize(id + 1, 0);
+      grass_of[id] = static_cast<std::uint8_t>(type);
+    });
   }
 
   void add_instance(const TreeInstance& inst, std::int32_t index) {

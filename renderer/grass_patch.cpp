@@ -49,4 +49,29 @@ int grass_level(double distance, int image_height, double fov_y_deg) {
   return -1;
 }
 
+std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal) {
+  const Vec3f z = normalize(normal);
+  const Vec3f x = normalize(cross(Vec3f{0.0f, 1.0f, 0.0f}, z));
+  const Vec3f y = cross(z, x);
+  return {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, centre.x, centre.y, centre.z};
+}
+
+void for_each_grass_patch(
+    const GrassCover& cover, const View& view,
+    const std::function<void(int, int, const std::array<float, 12>&)>& visit) {
+  for (int r = 0; r < cover.rows; ++r) {
+    for (int c = 0; c < cover.cols; ++c) {
+      const std::size_t k = static_cast<std::size_t>(r) * cover.cols + c;
+      const int type = cover.type[k];
+      if (type == 0) continue;
+      const Vec3f centre{static_cast<float>(cover.corner.x + (c + 0.5) * cover.tile),
+                         static_cast<float>(cover.corner.y + (r + 0.5) * cover.tile),
+                         cover.height[k]};
+      const int level =
+          grass_level(length(Vec3(centre) - view.position), view.height, view.fov_y_deg);
+      if (level >= 0) visit(type, level, grass_patch_frame(centre, cover.normal[k]));
+    }
+  }
+}
+
 }  // namespace landsim::renderer

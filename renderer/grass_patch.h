@@ -2,7 +2,9 @@
 // Grass patches: the blades of one square tile as round linear curves (Embree's
 // ROUND_LINEAR_CURVE layout: x, y, z, radius per point, a first-point index per segment).
 // Three levels of detail keep a patch's coverage while thinning blades with range.
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "renderer/scene.h"
@@ -16,6 +18,11 @@ struct GrassBlades {
 
 inline constexpr int kGrassLevels = 3;
 
+// The seed of grass type `type` (0-2) patches, shared by the renderer and the POV export.
+inline std::uint64_t grass_patch_seed(int type) {
+  return 0x6772617373ULL + static_cast<std::uint64_t>(type);
+}
+
 // Level 0 has every blade; level k keeps 1 / 4^k of them, each 2^k times as wide.
 GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std::uint64_t seed);
 
@@ -23,5 +30,13 @@ GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std:
 // image_height x fov_y / 60 (the paper's section 5 calibration); -1: no blades (the ground's
 // grass tint stands in for them).
 int grass_level(double distance, int image_height, double fov_y_deg);
+
+// The column-major 3x4 transform placing a patch on its tile: z along the terrain normal,
+// x kept as close to east as the tilt allows.
+std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal);
+
+// Calls visit(type 1-3, level, frame) for every grass tile `view` draws blades on.
+void for_each_grass_patch(const GrassCover& cover, const View& view,
+                          const std::function<void(int, int, const std::array<float, 12>&)>& visit);
 
 }  // namespace landsim::renderer

@@ -4,9 +4,11 @@
 #include <fmt/os.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "core/atomic_file.h"
+#include "renderer/grass_patch.h"
 
 namespace landsim::scenes {
 namespace {
@@ -43,6 +45,48 @@ std::string instance_matrix(const renderer::TreeInstance& t) {
       k, -s, c, t.position.x, t.position.z, t.position.y);
 }
 
+// POV-Ray's matrix for a landsim transform with axis columns x, y, z and translation t:
+// rows are where POV-Ray's axes go, POV-Ray's y being landsim's z.
+std::string pov_matrix(const std::array<float, 12>& m) {
+  const Vec3f x{m[0], m[1], m[2]}, y{m[3], m[4], m[5]}, z{m[6], m[7], m[8]}, t{m[9], m[10], m[11]};
+  const auto row = [](const Vec3f& v) {
+    return fmt::format("{:.9g}, {:.9g}, {:.9g}", v.x, v.z, v.y);
+  };
+  return fmt::format("matrix <{}, {}, {}, {}>", row(x), row(z), row(y), row(t));
+}
+
+// A grass patch's blades as ribbons (two triangles per segment, as wide as the blade) in
+// POV-Ray axes; landsim traces them as round curves of that width.
+void write_grass_patch(fmt::ostream& out, const std::string& name, const renderer::GrassBlades& b) {
+  std::vector<Vec3f> vertices, normals;
+  std::vector<std::uint32_t> indices;
+  for (std::uint32_t first : b.first) {
+    const auto at = [&](std::uint32_t k) {
+      return Vec3f{b.points[4 * k], b.points[4 * k + 1], b.points[4 * k + 2]};
+    };
+    const Vec3f p0 = at(first), p1 = at(first + 1);
+    const float r0 = b.points[4 * first + 3], r1 = b.points[4 * (first + 1) + 3];
+    const auto base = static_cast<std::uint32_t>(vertices.size());
+    vertices.insert(vertices.end(), {p0 - Vec3f{r0, 0, 0}, p0 + Vec3f{r0, 0, 0},
+                                     p1 + Vec3f{r1, 0, 0}, p1 - Vec3f{r1, 0, 0}});
+    normals.insert(normals.end(), 4, Vec3f{0, 1, 0});
+    indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  }
+  write_mesh2(out, name, vertices, normals, indices);
+}
+
+// Ground triangles grouped by material id (0: the terrain's own albedo).
+std::map<int, std::vector<std::uint32_t>> ground_by_material(const renderer::Ground& ground) {
+  std::map<int, std::vector<std::uint32_t>> groups;
+  const std::vector<std::uint32_t>& idx = ground.mesh.indices;
+  for (std::size_t t = 0; t < ground.mesh.triangle_count(); ++t) {
+    const int id = t < ground.triangle_material.size() ? ground.triangle_material[t] : 0;
+    groups[id].insert(groups[id].end(), idx.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                      idx.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  return groups;
+}
+
 }  // namespace
 
 std::string sanitize_for_pov(const std::string& text) {
@@ -62,14 +106,27 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     {
       auto out = fmt::output_file(inc.temp_path().string());
       out.print("// landsim tree prototypes, POV-Ray axes (y up)\n");
-      write_mesh2(out, "LS_Ground", scene.ground.mesh.vertices, scene.ground.mesh.normals,
-                  scene.ground.mesh.indices);
+      // The ground, one mesh per ground material (soil, rock, water, road, under grass).
+      for (const auto& [id, indices] : ground_by_material(scene.ground)) {
+        write_mesh2(out, fmt::format("LS_Ground_{}", id), scene.ground.mesh.vertices,
+                    scene.ground.mesh.normals, indices);
+      }
       for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
         const trees::TreeGeometry& g = scene.prototypes[p].geometry;
         for (int k = 0; k < trees::kGroupCount; ++k) {
           const trees::TriangleSet& t = g.groups[static_cast<std::size_t>(k)].triangles;
           if (!t.indices.empty())
             write_mesh2(out, fmt::format("LS_Proto_{}_{}", p, k), t.vertices, t.normals, t.indices);
+        }
+      }
+      if (scene.grass.cols > 0) {
+        for (int t = 0; t < 3; ++t) {
+          for (int level = 0; level < renderer::kGrassLevels; ++level) {
+            write_grass_patch(
+                out, fmt::format("LS_Grass_{}_{}", t, level),
+                renderer::make_grass_patch(scene.grass.types[static_cast<std::size_t>(t)],
+                                           scene.grass.tile, level, renderer::grass_patch_seed(t)));
+          }
         }
       }
     }
@@ -107,8 +164,12 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
                 rgb(o.fog_colour));
     }
     out.print("#else\nbackground {{ rgb 0 }}\n#end\n");
-    out.print("object {{ LS_Ground LS_Texture(<1, 0, 0>, {}) }}\n",
-              colour_vector(scene.ground.albedo));
+    for (const auto& [id, indices] : ground_by_material(scene.ground)) {
+      const Vec3f albedo = id == 0
+                               ? scene.ground.albedo
+                               : scene.ground.materials[static_cast<std::size_t>(id - 1)].albedo;
+      out.print("object {{ LS_Ground_{} LS_Texture(<1, 0, 0>, {}) }}\n", id, colour_vector(albedo));
+    }
     for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
       const renderer::TreePrototype& proto = scene.prototypes[p];
       out.print("#declare LS_Tree_{} = union {{\n", p);
@@ -124,6 +185,14 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     for (const renderer::TreeInstance& t : scene.instances) {
       out.print("object {{ LS_Tree_{} {} }}\n", t.prototype, instance_matrix(t));
     }
+    // Grass: the same patches at the same levels landsim draws for this view; the mask
+    // counts grass as ground, as landsim's comparison does.
+    renderer::for_each_grass_patch(
+        scene.grass, view, [&](int type, int level, const std::array<float, 12>& m) {
+          const renderer::GrassType& g = scene.grass.types[static_cast<std::size_t>(type - 1)];
+          out.print("object {{ LS_Grass_{}_{} LS_Texture(<1, 0, 0>, {}) {} }}\n", type - 1, level,
+                    colour_vector(g.reflectance), pov_matrix(m));
+        });
   }
   file.commit();
 }
