@@ -26,16 +26,23 @@ void report_embree_error(void*, RTCError code, const char* message) {
 // A triangle mesh with per-vertex normals (attribute 0), copied into Embree's own buffers
 // (Embree pads them for its vector loads).
 RTCGeometry make_mesh(RTCDevice device, const std::vector<Vec3f>& vertices,
-                      const std::vector<Vec3f>& normals,
-                      const std::vector<std::uint32_t>& indices) {
+                      const std::vector<Vec3f>& normals, const std::vector<std::uint32_t>& indices,
+                      const std::vector<float>* uvs = nullptr) {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                     sizeof(Vec3f), vertices.size());
   std::memcpy(v, vertices.data(), vertices.size() * sizeof(Vec3f));
-  rtcSetGeometryVertexAttributeCount(geom, 1);
+  // Attribute 0: normals; attribute 1 (when given): texture coordinates.
+  const bool with_uvs = uvs != nullptr && uvs->size() == 2 * vertices.size();
+  rtcSetGeometryVertexAttributeCount(geom, with_uvs ? 2 : 1);
   auto* n = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3,
                                     sizeof(Vec3f), normals.size());
   std::memcpy(n, normals.data(), normals.size() * sizeof(Vec3f));
+  if (with_uvs) {
+    auto* t = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, RTC_FORMAT_FLOAT2,
+                                      2 * sizeof(float), vertices.size());
+    std::memcpy(t, uvs->data(), uvs->size() * sizeof(float));
+  }
   auto* i = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                     3 * sizeof(std::uint32_t), indices.size() / 3);
   std::memcpy(i, indices.data(), indices.size() * sizeof(std::uint32_t));
@@ -110,7 +117,7 @@ struct EmbreeScene::Impl {
     for (int g = 0; g < trees::kGroupCount; ++g) {
       const trees::TriangleSet& t = proto.geometry.groups[static_cast<std::size_t>(g)].triangles;
       if (t.indices.empty()) continue;
-      RTCGeometry geom = make_mesh(device, t.vertices, t.normals, t.indices);
+      RTCGeometry geom = make_mesh(device, t.vertices, t.normals, t.indices, &t.uvs);
       const unsigned id = rtcAttachGeometry(s, geom);
       rtcReleaseGeometry(geom);
       classes.resize(id + 1);
@@ -263,6 +270,13 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
     owner = impl_->prototypes[inst.prototype];
     hit.object = impl_->prototype_classes[inst.prototype][rh.hit.geomID];
     rotation = inst.rotation;
+    if (hit.object == ObjectClass::bark && impl_->source->prototypes[inst.prototype].bark_texture) {
+      float uv[2];
+      rtcInterpolate0(rtcGetGeometry(owner, rh.hit.geomID), rh.hit.primID, rh.hit.u, rh.hit.v,
+                      RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, uv, 2);
+      hit.u = uv[0];
+      hit.v = uv[1];
+    }
   } else {
     hit.object = ObjectClass::ground;
   }

@@ -25,6 +25,7 @@ struct Hit {
   std::int32_t prototype = -1;  // its prototype, or -1
   std::uint32_t primitive = 0;  // triangle of the ground, for its material
   std::uint8_t grass_type = 0;  // 1-3 for grass
+  float u = 0.0f, v = 0.0f;     // texture coordinates (bark of textured prototypes)
 };
 
 // A ray as traced, for measuring Embree's raw rate on exactly the rays a render used.

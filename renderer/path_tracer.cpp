@@ -1,5 +1,7 @@
 #include "renderer/path_tracer.h"
 
+#include "renderer/bark_texture.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -92,6 +94,7 @@ SurfaceMaterial PathTracer::material(const Hit& hit) const {
   }
   const TreePrototype& proto = scene_.prototypes[static_cast<std::size_t>(hit.prototype)];
   if (hit.object == ObjectClass::leaf) return {proto.leaf_reflectance, proto.leaf_transmittance};
+  if (proto.bark_texture) return {proto.bark_albedo * proto.bark_texture->factor(hit.u, hit.v), {}};
   return {proto.bark_albedo, {}};
 }
 

@@ -7,6 +7,7 @@
 // coordinates, kept in double precision). Directions are unit vectors.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -97,9 +98,12 @@ struct RenderSettings {
 };
 
 // One unique tree (a species variant), stored once and instanced many times.
+class BarkTexture;
+
 struct TreePrototype {
   trees::TreeGeometry geometry;  // tree base at the origin, z up, metres
   Vec3f bark_albedo{0.30f, 0.24f, 0.18f};
+  std::shared_ptr<const BarkTexture> bark_texture;  // optional, modulates bark_albedo
   Vec3f leaf_reflectance{0.10f, 0.20f, 0.05f};
   Vec3f leaf_transmittance{0.05f, 0.12f, 0.02f};
   std::uint16_t species = 0;  // index in the scenario's species table

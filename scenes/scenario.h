@@ -103,7 +103,8 @@ struct SpeciesSettings {
   double scale_variation = 0.1;
   double colour_variation = 0.0;
   double min_spacing = 0.0;
-  bool evergreen = false;  // keeps its leaves in winter and its colour in autumn
+  bool evergreen = false;    // keeps its leaves in winter and its colour in autumn
+  std::string bark_texture;  // resolved path of an image, or empty
 };
 
 struct Scenario {

@@ -298,6 +298,12 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, 0.1);
     s.colour_variation = r.number("colour_variation", Range{0.0, 0.9}, 0.0);
     s.min_spacing = r.number("min_spacing", Range{0.0, 1000.0}, 0.0);
+    if (r.has("bark_texture")) {
+      s.bark_texture = resolve(base_dir, r.string("bark_texture"));
+      if (!terrain::raster_file_exists(s.bark_texture))
+        r.fail("bark_texture", "file not found: " + s.bark_texture);
+    }
+    r.allow("bark_texture");
     if (const toml::node* e = t_evergreen(r, *a->get(i)->as_table()))
       s.evergreen = *e->value<bool>();
     r.finish();

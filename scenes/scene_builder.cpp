@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "featuremaps/class_mapping.h"
 #include "featuremaps/placement.h"
+#include "renderer/bark_texture.h"
 #include "renderer/sky.h"
 #include "terrain/ground_mesh.h"
 
@@ -92,12 +93,20 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
     index = static_cast<std::uint32_t>(keys.size());
     keys.push_back(key);
   }
+  // Bark textures, read once per species and shared by its variants.
+  std::vector<std::shared_ptr<const renderer::BarkTexture>> textures(s.species.size());
+  for (std::size_t k = 0; k < s.species.size(); ++k) {
+    if (!s.species[k].bark_texture.empty())
+      textures[k] = renderer::load_bark_texture(s.species[k].bark_texture);
+  }
   scene.prototypes.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     const auto [species, variant] = keys[i];
     scene.prototypes[i] =
         make_prototype(s.species[species], species, variant, seed, time, s.wind, s.render.season);
   });
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    scene.prototypes[i].bark_texture = textures[keys[i].first];
   scene.instances.reserve(placed.size());
   for (const featuremaps::PlacedTree& t : placed) {
     scene.instances.push_back({prototype_of.at({t.species, t.variant}),

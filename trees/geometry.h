@@ -25,6 +25,7 @@ inline constexpr int kLeafMassSize = 4;
 struct TriangleSet {
   std::vector<Vec3f> vertices;
   std::vector<Vec3f> normals;          // per vertex, unit
+  std::vector<float> uvs;              // per vertex (u, v): stems u around, v along; may be empty
   std::vector<std::uint32_t> indices;  // three per triangle
 
   std::size_t triangle_count() const { return indices.size() / 3; }

@@ -10,20 +10,25 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kApexRadius = 1e-6;  // below this a cross-section is a single point
 
-void add_ring(const CrossSection& s, int points, const StemSkeleton& stem, TriangleSet& out) {
+// One cross-section's ring. The first vertex is repeated at the end (u = 1) so that bark
+// textures wrap without a seam; `v` is the texture coordinate along the stem.
+void add_ring(const CrossSection& s, int points, const StemSkeleton& stem, float v,
+              TriangleSet& out) {
   const Vec3 y_axis = cross(s.axis, s.x_axis);
   if (s.radius <= kApexRadius) {
     out.vertices.push_back(Vec3f(s.position));
     out.normals.push_back(Vec3f(s.axis));
+    out.uvs.insert(out.uvs.end(), {0.5f, v});
     return;
   }
-  for (int j = 0; j < points; ++j) {
+  for (int j = 0; j <= points; ++j) {
     const double a = kTwoPi * j / points;
     double r = s.radius;
     if (stem.lobes > 0) r *= 1.0 + stem.lobe_depth * std::cos(stem.lobes * a);
     const Vec3 radial = s.x_axis * std::cos(a) + y_axis * std::sin(a);
     out.vertices.push_back(Vec3f(s.position + radial * r));
     out.normals.push_back(Vec3f(radial));
+    out.uvs.insert(out.uvs.end(), {static_cast<float>(j) / static_cast<float>(points), v});
   }
 }
 
@@ -31,10 +36,11 @@ void add_ring(const CrossSection& s, int points, const StemSkeleton& stem, Trian
 void join_rings(std::uint32_t ia, int na, std::uint32_t ib, int nb,
                 std::vector<std::uint32_t>& idx) {
   if (na == 1 && nb == 1) return;
+  // Rings repeat their first vertex at the end: n - 1 quads, no wrap-around.
   const int n = std::max(na, nb);
-  for (int j = 0; j < n; ++j) {
+  for (int j = 0; j + 1 < n; ++j) {
     const auto j0 = static_cast<std::uint32_t>(j);
-    const auto j1 = static_cast<std::uint32_t>((j + 1) % n);
+    const auto j1 = static_cast<std::uint32_t>(j + 1);
     const std::uint32_t a0 = na == 1 ? ia : ia + j0, a1 = na == 1 ? ia : ia + j1;
     const std::uint32_t b0 = nb == 1 ? ib : ib + j0, b1 = nb == 1 ? ib : ib + j1;
     if (na != 1) idx.insert(idx.end(), {a0, a1, b1});
@@ -49,9 +55,14 @@ void mesh_stem(const StemSkeleton& stem, const MeshResolution& res, GroupGeometr
   const int points = res.ring_points[static_cast<std::size_t>(std::min(stem.level, 3))];
   std::uint32_t prev_start = vertex_base;
   int prev_count = 0;
+  // v runs along the stem in units of its base circumference, so bark keeps its aspect.
+  const double circumference = kTwoPi * std::max(stem.sections.front().radius, 1e-4);
+  double along = 0.0;
   for (std::size_t i = 0; i < stem.sections.size(); ++i) {
+    if (i > 0) along += length(stem.sections[i].position - stem.sections[i - 1].position);
     const auto start = static_cast<std::uint32_t>(g.triangles.vertices.size());
-    add_ring(stem.sections[i], points, stem, g.triangles);
+    add_ring(stem.sections[i], points, stem, static_cast<float>(along / circumference),
+             g.triangles);
     const int count = static_cast<int>(g.triangles.vertices.size() - start);
     if (i > 0) join_rings(prev_start, prev_count, start, count, g.triangles.indices);
     prev_start = start;
@@ -93,6 +104,8 @@ void mesh_leaf(const LeafSkeleton& leaf, const LeafMesh& m, GroupGeometry& g) {
   for (std::size_t i = 0; i < m.shape.vertices.size(); ++i) {
     g.triangles.vertices.push_back(Vec3f(place(m.shape.vertices[i])));
     const Vec3f& n = m.normals[i];
+    g.triangles.uvs.insert(g.triangles.uvs.end(),
+                           {m.shape.vertices[i].x + 0.5f, m.shape.vertices[i].y});
     g.triangles.normals.push_back(
         Vec3f(normalize(side * n.x + leaf.direction * n.y + leaf.normal * n.z)));
   }

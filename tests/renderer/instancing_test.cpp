@@ -3,8 +3,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/bark_texture.h"
 #include "renderer/embree_scene.h"
 #include "renderer/render.h"
+#include "trees/mesher.h"
 
 namespace landsim::renderer {
 namespace {
@@ -99,6 +101,42 @@ TEST(Instancing, LeavesTransmitSunlightToTheirShadedSide) {
   s.prototypes = {translucent};
   const double lit = mean_luminance_of(Renderer(s).render(view, {}), ObjectClass::leaf);
   EXPECT_GT(lit, dark + 0.05);
+}
+
+TEST(Instancing, BarkTextureWrapsAroundTheStem) {
+  // A vertical stem of radius 1 m through the mesher (which gives it texture coordinates)
+  // and a texture white on its first half around, black on the second.
+  trees::TreeSkeleton skeleton;
+  trees::StemSkeleton stem;
+  for (int i = 0; i < 3; ++i) stem.sections.push_back({{0, 0, 2.0 * i}, {0, 0, 1}, {1, 0, 0}, 1.0});
+  skeleton.stems.push_back(stem);
+  trees::MeshResolution res;
+  res.ring_points[0] = 32;
+  Scene s = base_scene();
+  TreePrototype p;
+  p.geometry = trees::mesh_tree(skeleton, res);
+  p.bark_albedo = {0.5f, 0.5f, 0.5f};
+  std::vector<float> texels(3 * 8, 0.0f);
+  std::fill(texels.begin(), texels.begin() + 3 * 4, 1.0f);  // u in [0, 0.5) white
+  p.bark_texture = std::make_shared<const BarkTexture>(8, 1, texels);
+  s.prototypes = {p};
+  s.instances = {{0, {20.0, 0.0, 0.0}, 0.0, 1.0}};
+  const View view{"v", {0.0, 0.0, 2.0}, {20.0, 0.0, 2.0}, 20.0, 48, 32};
+  const Film textured = Renderer(s).render(view, {});
+  float lo = 10.0f, hi = 0.0f;
+  int bark = 0;
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 48; ++x) {
+      if (textured.object(x, y) != static_cast<std::uint8_t>(ObjectClass::bark)) continue;
+      ++bark;
+      lo = std::min(lo, textured.albedo(x, y).x);
+      hi = std::max(hi, textured.albedo(x, y).x);
+    }
+  }
+  ASSERT_GT(bark, 50);
+  // The texture is normalised to mean 1: white halves become twice the albedo, black none.
+  EXPECT_NEAR(hi, 1.0f, 0.05f);
+  EXPECT_LT(lo, 0.05f);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "scenes/scenario.h"
 #include "scenes/scene_builder.h"
 #include "terrain/raster_files.h"
+#include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -55,7 +56,10 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "[[species]]\nbit = 2\nfile = \"" +
          data +
          "/species/palm.xml\"\nvariants = 2\ndensity_per_ha = 80\n"
-         "scale_variation = 0.2\ncolour_variation = 0.1\nmin_spacing = 3.0\nevergreen = true\n\n"
+         "scale_variation = 0.2\ncolour_variation = 0.1\nmin_spacing = 3.0\nevergreen = "
+         "true\nbark_texture = \"" +
+         (dir / "bark.png").string() +
+         "\"\n\n"
          "[[grass]]\ntype = 1\ndensity_per_m2 = 50\nblade_length = 0.2\nblade_width = "
          "0.003\ncurvature = 0.5\n"
          "colour = [0.1, 0.3, 0.05]\n\n"
@@ -95,6 +99,8 @@ struct Fixture {
     GDALClose(ds);
     if (written != CE_None) throw std::runtime_error("could not write the test vegetation map");
     write_grid((dir / "soil.tif").string(), GDT_Byte, 40, 44, 1);
+    landsim::testing::write_raster((dir / "bark.png").string(), "PNG", GDT_Byte, 2, 2,
+                                   {40, 200, 120, 90});
     write_grid((dir / "rock.tif").string(), GDT_Byte, 45, 49, 1);
     write_grid((dir / "water.tif").string(), GDT_Byte, 50, 54, 1);
     write_grid((dir / "road.tif").string(), GDT_Byte, 55, 60, 1);
@@ -121,6 +127,7 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(s.render.season, "autumn");
   EXPECT_DOUBLE_EQ(s.render.checkpoint_seconds, 30.0);
   EXPECT_TRUE(s.species[0].evergreen);
+  EXPECT_EQ(s.species[0].bark_texture, (f.dir / "bark.png").string());
   EXPECT_DOUBLE_EQ(s.sky.turbidity, 2.5);
   EXPECT_TRUE(s.haze.enabled);
   EXPECT_DOUBLE_EQ(s.haze.visibility, 9000.0);
@@ -204,6 +211,8 @@ TEST(FullScenario, SceneCarriesVegetationGrassAndGroundMaterials) {
   EXPECT_EQ(material_at(523.0), 2);
   EXPECT_EQ(material_at(573.0), 1);
   EXPECT_TRUE(scene.ground.materials[1].water);
+  ASSERT_FALSE(scene.prototypes.empty());
+  EXPECT_NE(scene.prototypes[0].bark_texture, nullptr);
 }
 
 TEST(FullScenario, RefusesAMisplacedFeatureMapAndOrphanSpecies) {

@@ -25,7 +25,14 @@ TEST(Mesher, TubeHasTwoTrianglesPerRingPointAndSegment) {
   const TreeGeometry g = mesh_tree(t, res);
   const GroupGeometry& trunk = g.group(Group::trunk);
   EXPECT_EQ(trunk.triangles.triangle_count(), 3u * 2u * 10u);
-  EXPECT_EQ(trunk.triangles.vertices.size(), 40u);
+  EXPECT_EQ(trunk.triangles.vertices.size(), 44u);  // 4 rings of 10, the seam vertex repeated
+  // Texture coordinates: u once around (0 to 1 at the repeated seam), v along the stem in
+  // base circumferences (3 m of a 0.3 m radius stem: 3 / (2 pi 0.3)).
+  ASSERT_EQ(trunk.triangles.uvs.size(), 2u * 44u);
+  EXPECT_FLOAT_EQ(trunk.triangles.uvs[0], 0.0f);
+  EXPECT_FLOAT_EQ(trunk.triangles.uvs[2 * 10], 1.0f);
+  EXPECT_FLOAT_EQ(trunk.triangles.uvs[2 * 43 + 1],
+                  static_cast<float>(3.0 / (2.0 * std::numbers::pi * 0.3)));
   EXPECT_EQ(trunk.lines.segment_count(), 3u);
   EXPECT_FLOAT_EQ(trunk.lines.radii[0], 0.3f);
   for (std::size_t i = 0; i < trunk.triangles.vertices.size(); ++i) {
@@ -50,7 +57,7 @@ TEST(Mesher, ZeroRadiusEndClosesToAnApex) {
   s.sections.back().radius = 0.0;
   t.stems.push_back(s);
   const TreeGeometry g = mesh_tree(t, MeshResolution{});
-  EXPECT_EQ(g.group(Group::level1).triangles.vertices.size(), 2u * 5u + 1u);
+  EXPECT_EQ(g.group(Group::level1).triangles.vertices.size(), 2u * 6u + 1u);
   EXPECT_EQ(g.group(Group::level1).triangles.triangle_count(), 2u * 5u + 5u);
 }
 
