@@ -1,6 +1,6 @@
 #pragma once
 // Scene: everything the renderer needs to know, as plain data. Built by scenes/ from a
-// scenario, read by the Embree build and (later) by the POV-Ray export, so that a difference
+// scenario, read by the Embree build and by the POV-Ray export, so that a difference
 // between two renders is a renderer difference, never a scene difference.
 //
 // Frame: x east, y north, z up, metres, relative to `origin` (a point in the terrain's own
