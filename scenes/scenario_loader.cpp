@@ -223,25 +223,21 @@ std::optional<FeatureMapSettings> read_featuremaps(const toml::table& root, cons
   if (!root.contains("featuremaps")) return std::nullopt;
   TableReader r(sub_table(root, "featuremaps", file, true), "featuremaps", file);
   FeatureMapSettings f;
-  const auto path = [&](std::string_view key) {
+  // An optional path key: resolved against the scenario, checked to exist.
+  const auto path = [&](std::string_view key) -> std::string {
+    r.allow(key);
+    if (!r.has(key)) return {};
     const std::string p = resolve(base_dir, r.string(key));
     if (!terrain::raster_file_exists(p)) r.fail(key, "file not found: " + p);
     return p;
   };
-  if (r.has("vegetation")) f.vegetation = path("vegetation");
-  if (r.has("classes")) f.classes = path("classes");
-  if (r.has("class_map")) f.class_map = path("class_map");
-  for (const char* key : {"soil", "rock", "water", "road"}) {
-    std::string& target = std::string_view(key) == "soil"    ? f.soil
-                          : std::string_view(key) == "rock"  ? f.rock
-                          : std::string_view(key) == "water" ? f.water
-                                                             : f.road;
-    if (r.has(key)) target = path(key);
-    r.string(key, "");
-  }
-  r.string("vegetation", "");
-  r.string("classes", "");
-  r.string("class_map", "");
+  f.vegetation = path("vegetation");
+  f.classes = path("classes");
+  f.class_map = path("class_map");
+  f.soil = path("soil");
+  f.rock = path("rock");
+  f.water = path("water");
+  f.road = path("road");
   f.placement.cell_size = r.optional_number("cell_size", kPositive);
   if (const auto o = r.optional_numbers("origin", 2, Range{-1e12, 1e12})) {
     f.placement.origin = std::array<double, 2>{(*o)[0], (*o)[1]};
