@@ -1,0 +1,73 @@
+#include "trees/graph_paths/poisson_disc.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "core/input_error.h"
+
+namespace landsim::trees::graph_paths {
+namespace {
+
+InitialVolume unit_sphere() {
+  VolumePrimitive s;
+  s.kind = PrimitiveKind::sphere;
+  return InitialVolume({s});
+}
+
+TEST(PoissonDisc, NodesAreInsideAndNoCloserThanTheSpacing) {
+  const InitialVolume v = unit_sphere();
+  const auto nodes = poisson_disc(v, {.spacing = 0.15}, 7);
+  ASSERT_GT(nodes.size(), 300u);
+  double closest = 1e9;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    EXPECT_TRUE(v.contains(nodes[i]));
+    for (std::size_t j = i + 1; j < nodes.size(); ++j)
+      closest = std::min(closest, length(nodes[i] - nodes[j]));
+  }
+  EXPECT_GE(closest, 0.15);
+}
+
+TEST(PoissonDisc, LeavesNoWideGaps) {
+  // Dart throwing from an active list fills the volume: any point inside has a node within
+  // about twice the spacing.
+  const InitialVolume v = unit_sphere();
+  const auto nodes = poisson_disc(v, {.spacing = 0.15}, 7);
+  std::mt19937_64 gen(3);
+  std::uniform_real_distribution<double> u(-0.9, 0.9);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 p{u(gen), u(gen), u(gen)};
+    if (!v.contains(p)) continue;
+    double nearest = 1e9;
+    for (const Vec3& n : nodes) nearest = std::min(nearest, length(n - p));
+    EXPECT_LT(nearest, 0.3) << p.x << " " << p.y << " " << p.z;
+  }
+}
+
+TEST(PoissonDisc, FillsEverySeparatePartOfAUnion) {
+  VolumePrimitive a, b;
+  b.origin = {4, 0, 0};
+  const auto nodes = poisson_disc(InitialVolume({a, b}), {.spacing = 0.2}, 1);
+  const auto far = std::count_if(nodes.begin(), nodes.end(), [](const Vec3& p) { return p.x > 2; });
+  EXPECT_GT(far, 100);
+  EXPECT_GT(static_cast<long>(nodes.size()) - far, 100);
+}
+
+TEST(PoissonDisc, SameSeedSameNodesOtherSeedOtherNodes) {
+  const InitialVolume v = unit_sphere();
+  const auto a = poisson_disc(v, {.spacing = 0.2}, 11);
+  const auto b = poisson_disc(v, {.spacing = 0.2}, 11);
+  const auto c = poisson_disc(v, {.spacing = 0.2}, 12);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+}
+
+TEST(PoissonDisc, RefusesExplosiveNodeCounts) {
+  EXPECT_THROW(poisson_disc(unit_sphere(), {.spacing = 0.05, .max_nodes = 1000}, 1), InputError);
+  EXPECT_THROW(poisson_disc(unit_sphere(), {.spacing = 1e-5}, 1), InputError);
+  EXPECT_THROW(poisson_disc(unit_sphere(), {.spacing = 0.0}, 1), InputError);
+}
+
+}  // namespace
+}  // namespace landsim::trees::graph_paths

@@ -1,0 +1,59 @@
+#pragma once
+// A uniform grid over a box for radius queries among points. Shared by the Poisson-disc
+// sampler (is a candidate too close to an accepted node?) and the graph builders (which
+// nodes lie near this one?). Dense cells: the callers bound the cell count first.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+
+namespace landsim::trees::graph_paths {
+
+struct Box {
+  Vec3 lo;
+  Vec3 hi;
+};
+
+class PointGrid {
+ public:
+  // Cells of edge `cell` covering `bounds`; throws InputError above `max_cells`.
+  PointGrid(const Box& bounds, double cell, std::size_t max_cells);
+
+  void insert(std::uint32_t id, const Vec3& p);
+
+  // Calls visit(id) for every inserted point in the cells overlapping the ball (p, radius);
+  // the caller tests the exact distance. Order: cell by cell, newest first within a cell.
+  template <typename Visit>
+  void for_each_near(const Vec3& p, double radius, Visit&& visit) const {
+    const CellRange r = cells_overlapping(p, radius);
+    for (int z = r.lo[2]; z <= r.hi[2]; ++z)
+      for (int y = r.lo[1]; y <= r.hi[1]; ++y)
+        for (int x = r.lo[0]; x <= r.hi[0]; ++x) {
+          const std::size_t c = index(x, y, z);
+          for (std::uint32_t k = start_[c]; k != kEnd; k = next_[k]) visit(k);
+        }
+  }
+
+  static constexpr std::uint32_t kEnd = 0xffffffffu;
+
+ private:
+  struct CellRange {
+    int lo[3];
+    int hi[3];
+  };
+  CellRange cells_overlapping(const Vec3& p, double radius) const;
+  std::size_t index(int x, int y, int z) const {
+    return (static_cast<std::size_t>(z) * dims_[1] + static_cast<std::size_t>(y)) * dims_[0] +
+           static_cast<std::size_t>(x);
+  }
+  int cell_of(double v, int axis) const;
+
+  Box bounds_;
+  double cell_;
+  int dims_[3];
+  std::vector<std::uint32_t> start_;  // per cell: first point id, or kEnd
+  std::vector<std::uint32_t> next_;   // per point id: next point in the same cell
+};
+
+}  // namespace landsim::trees::graph_paths
