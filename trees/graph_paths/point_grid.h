@@ -35,6 +35,18 @@ class PointGrid {
         }
   }
 
+  // True as soon as test(id) holds for a point in the cells overlapping the ball (p, radius).
+  template <typename Test>
+  bool any_near(const Vec3& p, double radius, Test&& test) const {
+    const CellRange r = cells_overlapping(p, radius);
+    for (int z = r.lo[2]; z <= r.hi[2]; ++z)
+      for (int y = r.lo[1]; y <= r.hi[1]; ++y)
+        for (int x = r.lo[0]; x <= r.hi[0]; ++x)
+          for (std::uint32_t k = start_[index(x, y, z)]; k != kEnd; k = next_[k])
+            if (test(k)) return true;
+    return false;
+  }
+
   static constexpr std::uint32_t kEnd = 0xffffffffu;
 
  private:

@@ -29,10 +29,11 @@ Vec3 shell_candidate(const Vec3& p, double spacing, Random& rng) {
 
 class Sampler {
  public:
+  // Cells as wide as the spacing: a few nodes each, and a query visits only 3^3 of them.
   Sampler(const InitialVolume& volume, const PoissonDiscOptions& options)
       : volume_(volume),
         options_(options),
-        grid_(volume.bounds(), options.spacing / std::sqrt(3.0), kMaxGridCells) {}
+        grid_(volume.bounds(), options.spacing, kMaxGridCells) {}
 
   // Accepts p if it is inside and at least the spacing from every node so far.
   bool try_add(const Vec3& p) {
@@ -49,13 +50,11 @@ class Sampler {
 
  private:
   bool crowded(const Vec3& p) const {
-    bool near = false;
     const double r2 = options_.spacing * options_.spacing;
-    grid_.for_each_near(p, options_.spacing, [&](std::uint32_t k) {
+    return grid_.any_near(p, options_.spacing, [&](std::uint32_t k) {
       const Vec3 d = nodes_[k] - p;
-      near = near || dot(d, d) < r2;
+      return dot(d, d) < r2;
     });
-    return near;
   }
 
   const InitialVolume& volume_;
