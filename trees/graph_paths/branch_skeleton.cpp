@@ -1,0 +1,115 @@
+#include "trees/graph_paths/branch_skeleton.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace landsim::trees::graph_paths {
+namespace {
+
+// Children of each structure node, the one with the largest reach first.
+std::vector<std::vector<std::uint32_t>> children_by_reach(const BranchStructure& b) {
+  std::vector<std::vector<std::uint32_t>> children(b.node.size());
+  for (std::uint32_t i = 1; i < b.node.size(); ++i) children[b.parent[i]].push_back(i);
+  for (auto& c : children)
+    std::stable_sort(c.begin(), c.end(),
+                     [&](std::uint32_t x, std::uint32_t y) { return b.reach[x] > b.reach[y]; });
+  return children;
+}
+
+// Parallel transport of the ring's x-axis, so the tube does not twist between sections.
+Vec3 transported_x(const Vec3& previous_x, const Vec3& axis) {
+  const Vec3 x = previous_x - axis * dot(previous_x, axis);
+  if (dot(x, x) > 1e-12) return normalize(x);
+  Vec3 t, b;
+  orthonormal_basis(axis, t, b);
+  return t;
+}
+
+class Builder {
+ public:
+  Builder(const Graph& g, const BranchStructure& b, const SkeletonOptions& o)
+      : g_(g), b_(b), o_(o), children_(children_by_reach(b)) {
+    const auto w = edge_thickness(g, b, o.thickness_power);
+    radius_.resize(w.size());
+    for (std::size_t i = 0; i < w.size(); ++i)
+      radius_[i] = std::max(o.min_radius, w[i] * o.radius_scale);
+    if (!radius_.empty() && !children_[0].empty()) radius_[0] = radius_[children_[0][0]];
+  }
+
+  TreeSkeleton build() {
+    TreeSkeleton s;
+    if (b_.node.empty() || children_[0].empty()) return s;  // no path: no tree
+    // Stems to start: (first structure node, level); the root's stem is the trunk.
+    std::vector<std::pair<std::uint32_t, int>> pending{{0u, 0}};
+    while (!pending.empty()) {
+      const auto [first, level] = pending.back();
+      pending.pop_back();
+      s.stems.push_back(stem_from(first, level, pending, s.leaves));
+    }
+    return s;
+  }
+
+ private:
+  Vec3 at(std::uint32_t i) const { return g_.nodes[b_.node[i]]; }
+
+  StemSkeleton stem_from(std::uint32_t first, int level,
+                         std::vector<std::pair<std::uint32_t, int>>& pending,
+                         std::vector<LeafSkeleton>& leaves) const {
+    StemSkeleton stem;
+    stem.level = level;
+    std::vector<std::uint32_t> chain;
+    if (first != 0) chain.push_back(b_.parent[first]);  // start at the joint on the parent
+    for (std::uint32_t v = first;; v = children_[v][0]) {
+      chain.push_back(v);
+      for (std::size_t k = 1; k < children_[v].size(); ++k)
+        pending.push_back({children_[v][k], std::min(level + 1, 3)});
+      if (children_[v].empty()) break;
+    }
+    Vec3 x{1, 0, 0};
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const Vec3 from = at(chain[k == 0 ? 0 : k - 1]);
+      const Vec3 to = at(chain[k + 1 < chain.size() ? k + 1 : k]);
+      const Vec3 axis = normalize(to - from);
+      x = transported_x(x, axis);
+      // The joint section takes the child's radius: the parent's thicker tube covers it.
+      const double r = radius_[chain[k == 0 && first != 0 ? 1 : k]];
+      stem.sections.push_back({at(chain[k]), axis, x, r});
+    }
+    if (b_.endpoint[chain.back()]) add_leaves(stem.sections.back(), leaves);
+    return stem;
+  }
+
+  // A small fan of leaves at an endpoint, turned about the twig's axis.
+  void add_leaves(const CrossSection& tip, std::vector<LeafSkeleton>& leaves) const {
+    const Vec3 y = cross(tip.axis, tip.x_axis);
+    for (int k = 0; k < o_.leaves_per_endpoint; ++k) {
+      const double a = 2.0 * std::numbers::pi * k / std::max(1, o_.leaves_per_endpoint);
+      const Vec3 out = tip.x_axis * std::cos(a) + y * std::sin(a);
+      const Vec3 dir = normalize(tip.axis + out);
+      LeafSkeleton leaf;
+      leaf.base = tip.position;
+      leaf.direction = dir;
+      leaf.normal = normalize(cross(dir, cross(Vec3{0, 0, 1}, dir) + out * 1e-3));
+      if (leaf.normal.z < 0) leaf.normal = -leaf.normal;
+      leaf.length = o_.leaf_length;
+      leaf.width = o_.leaf_width;
+      leaves.push_back(leaf);
+    }
+  }
+
+  const Graph& g_;
+  const BranchStructure& b_;
+  const SkeletonOptions& o_;
+  std::vector<std::vector<std::uint32_t>> children_;
+  std::vector<double> radius_;
+};
+
+}  // namespace
+
+TreeSkeleton branch_skeleton(const Graph& graph, const BranchStructure& branches,
+                             const SkeletonOptions& options) {
+  return Builder(graph, branches, options).build();
+}
+
+}  // namespace landsim::trees::graph_paths
