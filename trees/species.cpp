@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "trees/graph_paths/parameters.h"
 #include "trees/mesher.h"
 #include "trees/weber_penn/generator.h"
 
@@ -81,6 +82,8 @@ std::string core_name(CoreKind core) {
   switch (core) {
     case CoreKind::weber_penn:
       return "weber_penn";
+    case CoreKind::graph_paths:
+      return "graph_paths";
   }
   return "unknown";
 }
@@ -101,10 +104,13 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
   for (auto&& [key, value] : root) {
     const std::string k(key.str());
     if (k == "core") {
-      if (value.value<std::string>() != "weber_penn") {
-        throw InputError(where(source, value.source()) +
-                         ": core: expected \"weber_penn\" (the cores available)");
+      const auto core = value.value<std::string>();
+      if (core != "weber_penn" && core != "graph_paths") {
+        throw InputError(
+            where(source, value.source()) +
+            ": core: expected \"weber_penn\" or \"graph_paths\" (the cores available)");
       }
+      s.core = core == "graph_paths" ? CoreKind::graph_paths : CoreKind::weber_penn;
       has_core = true;
     } else if (k == "name") {
       const auto name = value.value<std::string>();
@@ -112,6 +118,8 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
       s.name = *name;
     } else if (k == "colours") {
       read_colours(value, source, s.colours);
+    } else if (root.contains("core") && root["core"].value<std::string>() == "graph_paths") {
+      continue;  // the core's own tables, read below
     } else {
       RawParam raw;
       raw.where = where(source, value.source());
@@ -132,7 +140,10 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
   }
   if (!has_core)
     throw InputError(source + ": required key 'core' is missing (e.g. core = \"weber_penn\")");
-  s.parameters = weber_penn::parse_parameters(params, source);
+  if (s.core == CoreKind::graph_paths)
+    s.parameters = graph_paths::parse_parameters(text, source);
+  else
+    s.parameters = weber_penn::parse_parameters(params, source);
   return s;
 }
 
@@ -179,7 +190,44 @@ Species load_species(const std::filesystem::path& file) {
   return parse_species(read_text(file), file.string());
 }
 
+namespace {
+
+void measure(Tree& tree) {
+  for (const GroupGeometry& g : tree.geometry.groups) {
+    for (const Vec3f& v : g.triangles.vertices) {
+      tree.stats.height = std::max(tree.stats.height, static_cast<double>(v.z));
+      tree.stats.crown_radius = std::max(
+          tree.stats.crown_radius, std::hypot(static_cast<double>(v.x), static_cast<double>(v.y)));
+    }
+  }
+}
+
+void count_stems(const TreeSkeleton& skeleton, std::size_t levels, TreeStats& stats) {
+  stats.stems_per_level.assign(levels, 0);
+  for (const StemSkeleton& stem : skeleton.stems) {
+    if (stem.sections.size() < 2) continue;
+    ++stats.stems_per_level[static_cast<std::size_t>(stem.level)];
+    stats.clones += stem.clone ? 1 : 0;
+  }
+  stats.leaves = static_cast<int>(skeleton.leaves.size());
+}
+
+// Graph-paths trees do not sway yet (wind is a Weber & Penn section 4 model).
+Tree generate_graph_paths(const Species& species, const TreeOptions& options) {
+  const auto& params = std::get<graph_paths::Parameters>(species.parameters);
+  TreeSkeleton skeleton = graph_paths::generate_skeleton(params, options.seed);
+  skeleton.colours = species.colours;
+  Tree tree;
+  count_stems(skeleton, 4, tree.stats);
+  tree.geometry = mesh_tree(skeleton, MeshResolution{});
+  measure(tree);
+  return tree;
+}
+
+}  // namespace
+
 Tree generate(const Species& species, const TreeOptions& options) {
+  if (species.core == CoreKind::graph_paths) return generate_graph_paths(species, options);
   const auto& params = std::get<weber_penn::Parameters>(species.parameters);
   weber_penn::GenerateOptions o;
   o.seed = options.seed;
@@ -189,21 +237,9 @@ Tree generate(const Species& species, const TreeOptions& options) {
   skeleton.colours = species.colours;
 
   Tree tree;
-  tree.stats.stems_per_level.assign(static_cast<std::size_t>(params.levels), 0);
-  for (const StemSkeleton& stem : skeleton.stems) {
-    if (stem.sections.size() < 2) continue;
-    ++tree.stats.stems_per_level[static_cast<std::size_t>(stem.level)];
-    tree.stats.clones += stem.clone ? 1 : 0;
-  }
-  tree.stats.leaves = static_cast<int>(skeleton.leaves.size());
+  count_stems(skeleton, static_cast<std::size_t>(params.levels), tree.stats);
   tree.geometry = mesh_tree(skeleton, weber_penn::mesh_resolution(params));
-  for (const GroupGeometry& g : tree.geometry.groups) {
-    for (const Vec3f& v : g.triangles.vertices) {
-      tree.stats.height = std::max(tree.stats.height, static_cast<double>(v.z));
-      tree.stats.crown_radius = std::max(
-          tree.stats.crown_radius, std::hypot(static_cast<double>(v.x), static_cast<double>(v.y)));
-    }
-  }
+  measure(tree);
   return tree;
 }
 

@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "trees/geometry.h"
+#include "trees/graph_paths/generator.h"
 #include "trees/weber_penn/parameters.h"
 
 namespace landsim::trees {
 
-enum class CoreKind { weber_penn };
+enum class CoreKind { weber_penn, graph_paths };
 std::string core_name(CoreKind core);
 
 struct Species {
@@ -21,7 +22,7 @@ struct Species {
   std::string source;  // the file, for messages
   CoreKind core = CoreKind::weber_penn;
   TreeColours colours;
-  std::variant<weber_penn::Parameters> parameters;
+  std::variant<weber_penn::Parameters, graph_paths::Parameters> parameters;
 };
 
 // By extension: .toml (any core) or .xml (Arbaro's Weber & Penn format). Throws InputError

@@ -370,5 +370,22 @@ TEST(CliTree, BadSpeciesFilesExitTwoNamingTheParameter) {
   EXPECT_EQ(run("tree /no/such/species.toml", dir).exit_code, 2);
 }
 
+TEST(CliTree, GraphPathsSpeciesGenerateAndBadShapesExitTwo) {
+  TempDir dir;
+  const auto species = testing::source_file("data/species/graph_round_crown.toml").string();
+  const Result r = run("tree " + species + " --seed 4 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["core"], "graph_paths");
+  EXPECT_GT(j["stems"]["total"].get<int>(), 50);
+  EXPECT_GT(j["height_m"].get<double>(), 5.0);
+  const auto bad = dir.write("bad.toml", "core = \"graph_paths\"\n[[volume]]\nkind = \"torus\"\n");
+  const Result b = run("tree " + bad.string() + " --obj " + (dir / "t.obj").string(), dir);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("bad.toml:3:"), std::string::npos) << b.err;
+  EXPECT_NE(b.err.find("volume.kind"), std::string::npos) << b.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "t.obj"));
+}
+
 }  // namespace
 }  // namespace landsim

@@ -1,0 +1,97 @@
+#include "trees/graph_paths/parameters.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/input_error.h"
+#include "tests/support/temp_dir.h"
+#include "trees/species.h"
+
+namespace landsim::trees::graph_paths {
+namespace {
+
+const std::string kHeader = "core = \"graph_paths\"\n";
+const std::string kVolume = "[[volume]]\nkind = \"sphere\"\nradius = 1.0\n";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_species_toml(text, "g.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GraphPathsSpecies, ReadsEveryTable) {
+  const Species s = parse_species_toml(
+      kHeader +
+          "name = \"t\"\n[graph]\nspacing = 0.2\npolicy = \"threshold\"\nthreshold = 1.8\n"
+          "endpoints = 50\nshell = 0.25\nroot = [0, 0, -1]\n[thickness]\npower = 2.0\n"
+          "[leaves]\nper_endpoint = 4\n[[volume]]\nkind = \"sphere_portion\"\nradius = 2.0\n"
+          "half_angle = 60\naxis = [0, 0, 2]\n",
+      "t.toml");
+  EXPECT_EQ(s.core, CoreKind::graph_paths);
+  const auto& p = std::get<Parameters>(s.parameters);
+  EXPECT_DOUBLE_EQ(p.spacing, 0.2);
+  EXPECT_EQ(p.policy, GraphPolicy::threshold);
+  EXPECT_DOUBLE_EQ(p.threshold, 1.8);
+  EXPECT_EQ(p.endpoints, 50);
+  EXPECT_DOUBLE_EQ(p.root.z, -1.0);
+  EXPECT_DOUBLE_EQ(p.skeleton.thickness_power, 2.0);
+  EXPECT_EQ(p.skeleton.leaves_per_endpoint, 4);
+  ASSERT_EQ(p.volume.parts().size(), 1u);
+  EXPECT_EQ(p.volume.parts()[0].kind, PrimitiveKind::sphere_portion);
+  EXPECT_NEAR(p.volume.parts()[0].half_angle, std::numbers::pi / 3, 1e-12);
+  EXPECT_DOUBLE_EQ(p.volume.parts()[0].axis.z, 1.0);  // normalised
+}
+
+TEST(GraphPathsSpecies, BadShapesAndParametersNameTheLineAndKey) {
+  std::string msg = error_of(kHeader + "[[volume]]\nkind = \"torus\"\n");
+  EXPECT_NE(msg.find("g.toml:3:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("volume.kind"), std::string::npos) << msg;
+  msg = error_of(kHeader + kVolume + "radius2 = 3\n");
+  EXPECT_NE(msg.find("volume.radius2"), std::string::npos) << msg;
+  msg = error_of(kHeader + "[graph]\ncone_subdivisions = 2\n" + kVolume);
+  EXPECT_NE(msg.find("g.toml:3:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("from 3 to 8"), std::string::npos) << msg;
+  msg = error_of(kHeader + "[[volume]]\nkind = \"cone\"\naxis = [0, 0, 0]\n");
+  EXPECT_NE(msg.find("volume.axis"), std::string::npos) << msg;
+  msg = error_of(kHeader + "[[volume]]\nradius = 1.0\n");
+  EXPECT_NE(msg.find("volume.kind"), std::string::npos) << msg;
+  msg = error_of(kHeader + "[graph]\nspacing = 0.1\n");
+  EXPECT_NE(msg.find("[[volume]] is required"), std::string::npos) << msg;
+  msg = error_of(kHeader + "Scale = 3\n" + kVolume);
+  EXPECT_NE(msg.find("Scale"), std::string::npos) << msg;
+}
+
+TEST(GraphPathsSpecies, ExplosiveSpacingIsRefusedBeforeGenerating) {
+  // A 10 m sphere at 5 cm spacing: about 19 million nodes.
+  const std::string msg =
+      error_of(kHeader + "[graph]\nspacing = 0.05\n[[volume]]\nkind = \"sphere\"\nradius = 10\n");
+  EXPECT_NE(msg.find("graph.spacing"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("limit"), std::string::npos) << msg;
+}
+
+TEST(GraphPathsSpecies, EstimatedNodesMatchesASampledVolume) {
+  Parameters p;
+  VolumePrimitive sphere;
+  p.volume = InitialVolume({sphere});
+  p.spacing = 0.1;
+  const double estimate = estimated_nodes(p);
+  GraphStatistics stats;
+  generate_skeleton(p, 1, &stats);
+  EXPECT_NEAR(static_cast<double>(stats.nodes), estimate, 0.1 * estimate);
+}
+
+TEST(GraphPathsSpecies, ExampleFileGeneratesATree) {
+  const Species s = load_species(testing::source_file("data/species/graph_round_crown.toml"));
+  const Tree t = generate(s, {3});
+  EXPECT_GT(t.stats.height, 5.0);
+  EXPECT_GT(t.stats.leaves, 300);
+  EXPECT_GT(t.geometry.triangle_count(), 5000u);
+}
+
+}  // namespace
+}  // namespace landsim::trees::graph_paths

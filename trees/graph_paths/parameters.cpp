@@ -1,0 +1,216 @@
+#include "trees/graph_paths/parameters.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "core/input_error.h"
+
+namespace landsim::trees::graph_paths {
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(const std::string& source) : source_(source) {}
+
+  [[noreturn]] void refuse(const toml::node& n, const std::string& key,
+                           const std::string& expected) const {
+    const auto& r = n.source();
+    throw InputError(source_ + ":" + std::to_string(r.begin.line) + ":" +
+                     std::to_string(r.begin.column) + ": " + key + ": expected " + expected);
+  }
+
+  double number(const toml::node& n, const std::string& key, double lo, double hi) const {
+    const auto v = n.value<double>();
+    if (!v || !(*v >= lo && *v <= hi))
+      refuse(n, key, "a number from " + text(lo) + " to " + text(hi));
+    return *v;
+  }
+  int integer(const toml::node& n, const std::string& key, int lo, int hi) const {
+    const auto v = n.value<std::int64_t>();
+    if (!n.is_integer() || !v || *v < lo || *v > hi)
+      refuse(n, key, "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+    return static_cast<int>(*v);
+  }
+  Vec3 vector(const toml::node& n, const std::string& key) const {
+    const toml::array* a = n.as_array();
+    if (a == nullptr || a->size() != 3) refuse(n, key, "[x, y, z]");
+    std::array<double, 3> c{};
+    for (std::size_t i = 0; i < 3; ++i) c[i] = number(*a->get(i), key, -1e4, 1e4);
+    return {c[0], c[1], c[2]};
+  }
+  const toml::table& table(const toml::node& n, const std::string& key) const {
+    if (!n.is_table()) refuse(n, key, "a table");
+    return *n.as_table();
+  }
+
+ private:
+  static std::string text(double v) {
+    std::string s = std::to_string(v);
+    s.erase(s.find_last_not_of('0') + 1);
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+  }
+  const std::string& source_;
+};
+
+PrimitiveKind kind_of(const Reader& r, const toml::node& n) {
+  const auto s = n.value<std::string>();
+  if (s == "cylinder") return PrimitiveKind::cylinder;
+  if (s == "cone") return PrimitiveKind::cone;
+  if (s == "sphere") return PrimitiveKind::sphere;
+  if (s == "sphere_portion") return PrimitiveKind::sphere_portion;
+  if (s == "ellipsoid") return PrimitiveKind::ellipsoid;
+  r.refuse(n, "volume.kind", "cylinder, cone, sphere, sphere_portion or ellipsoid");
+}
+
+VolumePrimitive read_primitive(const Reader& r, const toml::table& t) {
+  VolumePrimitive s;
+  bool has_kind = false;
+  for (auto&& [k, v] : t) {
+    const std::string key = "volume." + std::string(k.str());
+    if (k == "kind")
+      s.kind = kind_of(r, v), has_kind = true;
+    else if (k == "origin")
+      s.origin = r.vector(v, key);
+    else if (k == "axis") {
+      s.axis = r.vector(v, key);
+      if (!(length(s.axis) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
+      s.axis = normalize(s.axis);
+    } else if (k == "radius")
+      s.radius = r.number(v, key, 1e-3, 1e3);
+    else if (k == "height")
+      s.height = r.number(v, key, 1e-3, 1e3);
+    else if (k == "half_angle")
+      s.half_angle = r.number(v, key, 1, 180) * std::numbers::pi / 180;
+    else if (k == "radii") {
+      s.radii = r.vector(v, key);
+      if (!(std::min({s.radii.x, s.radii.y, s.radii.z}) >= 1e-3))
+        r.refuse(v, key, "three semi-axes, each at least 0.001 m");
+    } else
+      r.refuse(v, key, "one of kind, origin, axis, radius, height, half_angle, radii");
+  }
+  if (!has_kind)
+    r.refuse(t, "volume.kind", "a kind in every [[volume]]: cylinder, cone, sphere, ...");
+  return s;
+}
+
+void read_graph(const Reader& r, const toml::table& t, Parameters& p) {
+  for (auto&& [k, v] : t) {
+    const std::string key = "graph." + std::string(k.str());
+    if (k == "spacing")
+      p.spacing = r.number(v, key, 1e-3, 100);
+    else if (k == "policy") {
+      const auto s = v.value<std::string>();
+      if (s != "yao" && s != "threshold") r.refuse(v, key, "\"yao\" or \"threshold\"");
+      p.policy = s == "yao" ? GraphPolicy::yao : GraphPolicy::threshold;
+    } else if (k == "cone_subdivisions")
+      p.cone_subdivisions = r.integer(v, key, 3, 8);
+    else if (k == "search_radius")
+      p.search_radius = r.number(v, key, 1.5, 10);
+    else if (k == "threshold")
+      p.threshold = r.number(v, key, 1.0, 10);
+    else if (k == "weight_noise")
+      p.weight_noise = r.number(v, key, 0, 10);
+    else if (k == "root")
+      p.root = r.vector(v, key);
+    else if (k == "endpoints")
+      p.endpoints = r.integer(v, key, 1, 100000);
+    else if (k == "shell")
+      p.shell = r.number(v, key, 1e-3, 100);
+    else
+      r.refuse(v, key,
+               "one of spacing, policy, cone_subdivisions, search_radius, threshold, "
+               "weight_noise, root, endpoints, shell");
+  }
+}
+
+void read_thickness(const Reader& r, const toml::table& t, SkeletonOptions& o) {
+  for (auto&& [k, v] : t) {
+    const std::string key = "thickness." + std::string(k.str());
+    if (k == "power")
+      o.thickness_power = r.number(v, key, 0.1, 5);
+    else if (k == "radius_scale")
+      o.radius_scale = r.number(v, key, 1e-5, 10);
+    else if (k == "min_radius")
+      o.min_radius = r.number(v, key, 1e-4, 1);
+    else
+      r.refuse(v, key, "one of power, radius_scale, min_radius");
+  }
+}
+
+void read_leaves(const Reader& r, const toml::table& t, SkeletonOptions& o) {
+  for (auto&& [k, v] : t) {
+    const std::string key = "leaves." + std::string(k.str());
+    if (k == "per_endpoint")
+      o.leaves_per_endpoint = r.integer(v, key, 0, 64);
+    else if (k == "length")
+      o.leaf_length = r.number(v, key, 1e-3, 5);
+    else if (k == "width")
+      o.leaf_width = r.number(v, key, 1e-3, 5);
+    else
+      r.refuse(v, key, "one of per_endpoint, length, width");
+  }
+}
+
+double primitive_volume(const VolumePrimitive& s) {
+  constexpr double pi = std::numbers::pi;
+  switch (s.kind) {
+    case PrimitiveKind::cylinder:
+      return pi * s.radius * s.radius * s.height;
+    case PrimitiveKind::cone:
+      return pi * s.radius * s.radius * s.height / 3;
+    case PrimitiveKind::sphere:
+      return 4 * pi * std::pow(s.radius, 3) / 3;
+    case PrimitiveKind::sphere_portion:
+      return 2 * pi * std::pow(s.radius, 3) * (1 - std::cos(s.half_angle)) / 3;
+    case PrimitiveKind::ellipsoid:
+      return 4 * pi * s.radii.x * s.radii.y * s.radii.z / 3;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+double estimated_nodes(const Parameters& p) {
+  double v = 0.0;
+  for (const VolumePrimitive& s : p.volume.parts()) v += primitive_volume(s);
+  return 0.58 * v / std::pow(p.spacing, 3);
+}
+
+Parameters parse_parameters(std::string_view toml_text, const std::string& source) {
+  const toml::table root = toml::parse(toml_text, source);  // species.cpp parsed it already
+  const Reader r(source);
+  Parameters p;
+  std::vector<VolumePrimitive> parts;
+  for (auto&& [k, v] : root) {
+    if (k == "core" || k == "name" || k == "colours") continue;  // species.cpp's keys
+    const std::string key(k.str());
+    if (k == "graph")
+      read_graph(r, r.table(v, key), p);
+    else if (k == "thickness")
+      read_thickness(r, r.table(v, key), p.skeleton);
+    else if (k == "leaves")
+      read_leaves(r, r.table(v, key), p.skeleton);
+    else if (k == "volume") {
+      const toml::array* a = v.as_array();
+      if (a == nullptr || !a->is_array_of_tables()) r.refuse(v, key, "[[volume]] tables");
+      for (const toml::node& t : *a) parts.push_back(read_primitive(r, *t.as_table()));
+    } else
+      r.refuse(v, key, "one of core, name, colours, [graph], [thickness], [leaves], [[volume]]");
+  }
+  if (parts.empty()) throw InputError(source + ": at least one [[volume]] is required");
+  p.volume = InitialVolume(std::move(parts));
+  if (const double n = estimated_nodes(p); n > static_cast<double>(p.max_nodes))
+    throw InputError(source + ": graph.spacing " + std::to_string(p.spacing) +
+                     " would fill the "
+                     "volume with about " +
+                     std::to_string(static_cast<long long>(n)) + " nodes (limit " +
+                     std::to_string(p.max_nodes) + "); raise graph.spacing");
+  return p;
+}
+
+}  // namespace landsim::trees::graph_paths

@@ -1,0 +1,20 @@
+#pragma once
+// Graph-paths species files: the TOML schema of docs/SPECIES.md ("graph_paths" core) read
+// into generator Parameters. species.cpp reads the file and the shared keys (core, name,
+// colours); this reads the core's own tables and refuses anything else.
+#include <string>
+#include <string_view>
+
+#include "trees/graph_paths/generator.h"
+
+namespace landsim::trees::graph_paths {
+
+// Throws InputError naming the file, line and key, and what was expected; also refuses
+// volumes that would need more than Parameters::max_nodes nodes at the given spacing.
+Parameters parse_parameters(std::string_view toml_text, const std::string& source);
+
+// Expected node count of a Poisson-disc fill (0.58 nodes per spacing cube, measured) of the
+// primitives' summed volume: an upper estimate for overlapping unions.
+double estimated_nodes(const Parameters& p);
+
+}  // namespace landsim::trees::graph_paths
