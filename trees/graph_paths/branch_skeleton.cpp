@@ -8,12 +8,13 @@ namespace landsim::trees::graph_paths {
 namespace {
 
 // Children of each structure node, the one with the largest reach first.
-std::vector<std::vector<std::uint32_t>> children_by_reach(const BranchStructure& b) {
-  std::vector<std::vector<std::uint32_t>> children(b.node.size());
-  for (std::uint32_t i = 1; i < b.node.size(); ++i) children[b.parent[i]].push_back(i);
+std::vector<std::vector<std::uint32_t>> children_by_reach(const BranchTree& t) {
+  const std::vector<double> r = reach(t, 1 << 30);
+  std::vector<std::vector<std::uint32_t>> children(t.size());
+  for (std::uint32_t i = 1; i < t.size(); ++i) children[t.parent[i]].push_back(i);
   for (auto& c : children)
     std::stable_sort(c.begin(), c.end(),
-                     [&](std::uint32_t x, std::uint32_t y) { return b.reach[x] > b.reach[y]; });
+                     [&](std::uint32_t x, std::uint32_t y) { return r[x] > r[y]; });
   return children;
 }
 
@@ -28,9 +29,8 @@ Vec3 transported_x(const Vec3& previous_x, const Vec3& axis) {
 
 class Builder {
  public:
-  Builder(const Graph& g, const BranchStructure& b, const SkeletonOptions& o)
-      : g_(g), b_(b), o_(o), children_(children_by_reach(b)) {
-    const auto w = edge_thickness(g, b, o.thickness_power);
+  Builder(const BranchTree& t, const std::vector<double>& w, const SkeletonOptions& o)
+      : t_(t), o_(o), children_(children_by_reach(t)) {
     radius_.resize(w.size());
     for (std::size_t i = 0; i < w.size(); ++i)
       radius_[i] = std::max(o.min_radius, w[i] * o.radius_scale);
@@ -39,7 +39,7 @@ class Builder {
 
   TreeSkeleton build() {
     TreeSkeleton s;
-    if (b_.node.empty() || children_[0].empty()) return s;  // no path: no tree
+    if (t_.size() == 0 || children_[0].empty()) return s;  // no path: no tree
     // Stems to start: (first structure node, level); the root's stem is the trunk.
     std::vector<std::pair<std::uint32_t, int>> pending{{0u, 0}};
     while (!pending.empty()) {
@@ -51,7 +51,7 @@ class Builder {
   }
 
  private:
-  Vec3 at(std::uint32_t i) const { return g_.nodes[b_.node[i]]; }
+  Vec3 at(std::uint32_t i) const { return t_.position[i]; }
 
   StemSkeleton stem_from(std::uint32_t first, int level,
                          std::vector<std::pair<std::uint32_t, int>>& pending,
@@ -59,7 +59,7 @@ class Builder {
     StemSkeleton stem;
     stem.level = level;
     std::vector<std::uint32_t> chain;
-    if (first != 0) chain.push_back(b_.parent[first]);  // start at the joint on the parent
+    if (first != 0) chain.push_back(t_.parent[first]);  // start at the joint on the parent
     for (std::uint32_t v = first;; v = children_[v][0]) {
       chain.push_back(v);
       for (std::size_t k = 1; k < children_[v].size(); ++k)
@@ -76,7 +76,7 @@ class Builder {
       const double r = radius_[chain[k == 0 && first != 0 ? 1 : k]];
       stem.sections.push_back({at(chain[k]), axis, x, r});
     }
-    if (b_.endpoint[chain.back()]) add_leaves(stem.sections.back(), leaves);
+    if (t_.endpoint[chain.back()]) add_leaves(stem.sections.back(), leaves);
     return stem;
   }
 
@@ -98,8 +98,7 @@ class Builder {
     }
   }
 
-  const Graph& g_;
-  const BranchStructure& b_;
+  const BranchTree& t_;
   const SkeletonOptions& o_;
   std::vector<std::vector<std::uint32_t>> children_;
   std::vector<double> radius_;
@@ -107,9 +106,9 @@ class Builder {
 
 }  // namespace
 
-TreeSkeleton branch_skeleton(const Graph& graph, const BranchStructure& branches,
+TreeSkeleton branch_skeleton(const BranchTree& tree, const std::vector<double>& w,
                              const SkeletonOptions& options) {
-  return Builder(graph, branches, options).build();
+  return Builder(tree, w, options).build();
 }
 
 }  // namespace landsim::trees::graph_paths

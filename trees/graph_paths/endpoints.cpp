@@ -9,11 +9,11 @@ namespace landsim::trees::graph_paths {
 
 std::vector<std::uint32_t> shell_endpoints(const std::vector<Vec3>& nodes,
                                            const InitialVolume& volume, double shell,
-                                           std::size_t count, std::uint64_t seed) {
+                                           std::size_t count, std::uint64_t seed, double min_z) {
   std::vector<std::uint32_t> in_shell;
   for (std::uint32_t i = 0; i < nodes.size(); ++i) {
     const double d = volume.depth(nodes[i]);
-    if (d > 0.0 && d <= shell) in_shell.push_back(i);
+    if (d > 0.0 && d <= shell && nodes[i].z >= min_z) in_shell.push_back(i);
   }
   if (in_shell.size() > count) {
     // A partial Fisher-Yates shuffle picks `count` without replacement.

@@ -11,11 +11,13 @@
 
 namespace landsim::trees::graph_paths {
 
-// Up to `count` distinct nodes with 0 < depth <= shell, chosen at random (all of them if
-// fewer), in ascending node order.
+// Up to `count` distinct nodes with 0 < depth <= shell and z >= min_z, chosen at random (all
+// of them if fewer), in ascending node order. min_z keeps a trunk primitive's shell (near the
+// ground) free of endpoints.
 std::vector<std::uint32_t> shell_endpoints(const std::vector<Vec3>& nodes,
                                            const InitialVolume& volume, double shell,
-                                           std::size_t count, std::uint64_t seed);
+                                           std::size_t count, std::uint64_t seed,
+                                           double min_z = -1e300);
 
 // The node nearest to p (the lowest index among equals).
 std::uint32_t nearest_node(const std::vector<Vec3>& nodes, const Vec3& p);

@@ -1,32 +1,148 @@
 #include "trees/graph_paths/generator.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "core/counter_rng.h"
+#include "trees/graph_paths/branch_tree.h"
 #include "trees/graph_paths/endpoints.h"
 #include "trees/graph_paths/least_cost_paths.h"
 #include "trees/graph_paths/poisson_disc.h"
+#include "trees/weber_penn/random.h"
 
 namespace landsim::trees::graph_paths {
+namespace {
+
+// An endpoint that may grow a subgraph at the next level.
+struct Bud {
+  std::uint32_t node;  // in the BranchTree
+  Vec3 previous_root;  // v_g points from here to the node
+  double lifespan;
+};
+
+GraphOptions graph_options(const Parameters& p, double spacing) {
+  return {.policy = p.policy,
+          .cone_subdivisions = p.cone_subdivisions,
+          .search_radius = p.search_radius * spacing,
+          .threshold = p.threshold * spacing,
+          .weight_noise = p.weight_noise};
+}
+
+// v turned by `angle` about the horizontal axis across it; positive turns it downward.
+Vec3 droop(const Vec3& v, double angle) {
+  Vec3 k = cross(Vec3{0, 0, 1}, v);
+  k = dot(k, k) > 1e-12 ? normalize(k) : Vec3{1, 0, 0};
+  return normalize(v * std::cos(angle) + cross(k, v) * std::sin(angle));
+}
+
+// 1 + s (1 - 2 f), f the angle between v and the light over pi: above 1 toward the light.
+double light_factor(const IterationParameters& it, const Vec3& v) {
+  const double f = std::acos(std::clamp(dot(v, normalize(it.light)), -1.0, 1.0)) / std::numbers::pi;
+  return 1.0 + it.light_strength * (1.0 - 2.0 * f);
+}
+
+class Grower {
+ public:
+  Grower(const Parameters& p, std::uint64_t seed, GraphStatistics& stats)
+      : p_(p), seed_(seed), stats_(stats) {}
+
+  BranchTree grow() {
+    first_level();
+    double radius = p_.iteration.radius;
+    for (int level = 1; level <= p_.iteration.levels && !buds_.empty(); ++level) {
+      std::vector<Bud> next;
+      for (const Bud& bud : buds_)
+        if (!p_.iteration.use_lifespan || bud.lifespan > 0.0) subgraph(bud, level, radius, next);
+      buds_ = std::move(next);
+      radius *= p_.iteration.size_ratio;
+    }
+    return std::move(tree_);
+  }
+
+ private:
+  void first_level() {
+    const PoissonDiscOptions disc{.spacing = p_.spacing, .max_nodes = p_.max_nodes};
+    const Graph g = build_graph(poisson_disc(p_.volume, disc, hash_combine(seed_, 1)),
+                                graph_options(p_, p_.spacing), hash_combine(seed_, 2));
+    if (g.nodes.empty()) return;
+    const auto endpoints =
+        shell_endpoints(g.nodes, p_.volume, p_.shell, static_cast<std::size_t>(p_.endpoints),
+                        hash_combine(seed_, 3), p_.endpoint_min_z);
+    const BranchStructure b =
+        union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, p_.root)), endpoints);
+    count(g, endpoints.size());
+    const auto index = tree_.append(g, b, kNoNode, 0);
+    for (std::size_t i = 0; i < index.size(); ++i)
+      if (b.endpoint[i]) buds_.push_back({index[i], tree_.position[0], p_.iteration.lifespan});
+  }
+
+  void subgraph(const Bud& bud, int level, double radius, std::vector<Bud>& next) {
+    const IterationParameters& it = p_.iteration;
+    const Vec3 apex = tree_.position[bud.node];
+    const Vec3 along = apex - bud.previous_root;
+    if (!(dot(along, along) > 0.0)) return;
+    VolumePrimitive cone;
+    cone.kind = PrimitiveKind::sphere_portion;
+    cone.origin = apex;
+    cone.axis = droop(normalize(along), it.rotation);
+    cone.radius = radius;
+    cone.half_angle = it.half_angle;
+    const InitialVolume volume({cone});
+    const double factor = light_factor(it, cone.axis);
+    const std::uint64_t s =
+        hash_combine(hash_combine(seed_, static_cast<std::uint64_t>(level)), bud.node);
+    const double spacing = radius * it.spacing_ratio;
+    Graph g = build_graph(
+        poisson_disc(volume, {.spacing = spacing, .max_nodes = p_.max_nodes}, hash_combine(s, 1)),
+        graph_options(p_, spacing), hash_combine(s, 2));
+    if (g.nodes.size() < 2) return;
+    const auto wanted = static_cast<std::size_t>(std::max(1.0, std::round(it.endpoints * factor)));
+    const auto endpoints =
+        shell_endpoints(g.nodes, volume, it.shell * radius, wanted, hash_combine(s, 3));
+    const BranchStructure b =
+        union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, apex)), endpoints);
+    count(g, endpoints.size());
+    const auto index = tree_.append(g, b, bud.node, level);
+    tree_.endpoint[bud.node] = false;  // it grew: no longer a tip
+    weber_penn::Random rng(s, 0x11fe);
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      if (!b.endpoint[i]) continue;
+      next.push_back({index[i], apex, child_lifespan(bud.lifespan, factor, rng)});
+    }
+  }
+
+  // The paper's rule: end with probability 0.3, else lose a random part; the light orders it.
+  double child_lifespan(double lifespan, double factor, weber_penn::Random& rng) const {
+    const IterationParameters& it = p_.iteration;
+    if (!it.use_lifespan) return lifespan;
+    if (rng.unit() < it.terminate_probability) return 0.0;
+    return lifespan - (0.5 + rng.unit()) * (2.0 - factor);
+  }
+
+  void count(const Graph& g, std::size_t endpoints) {
+    stats_.nodes += g.nodes.size();
+    stats_.edges += g.edge_count();
+    stats_.endpoints += endpoints;
+  }
+
+  const Parameters& p_;
+  std::uint64_t seed_;
+  GraphStatistics& stats_;
+  BranchTree tree_;
+  std::vector<Bud> buds_;
+};
+
+}  // namespace
 
 TreeSkeleton generate_skeleton(const Parameters& p, std::uint64_t seed,
                                GraphStatistics* statistics) {
-  // Separate streams per stage: changing the weights' noise does not move the nodes.
-  const std::uint64_t node_seed = hash_combine(seed, 1), weight_seed = hash_combine(seed, 2),
-                      endpoint_seed = hash_combine(seed, 3);
-  const PoissonDiscOptions disc{.spacing = p.spacing, .max_nodes = p.max_nodes};
-  const GraphOptions options{.policy = p.policy,
-                             .cone_subdivisions = p.cone_subdivisions,
-                             .search_radius = p.search_radius * p.spacing,
-                             .threshold = p.threshold * p.spacing,
-                             .weight_noise = p.weight_noise};
-  const Graph g = build_graph(poisson_disc(p.volume, disc, node_seed), options, weight_seed);
-  if (g.nodes.empty()) return {};
-  const auto endpoints = shell_endpoints(g.nodes, p.volume, p.shell,
-                                         static_cast<std::size_t>(p.endpoints), endpoint_seed);
-  const BranchStructure b =
-      union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, p.root)), endpoints);
-  if (statistics != nullptr)
-    *statistics = {g.nodes.size(), g.edge_count(), endpoints.size(), b.node.size()};
-  return branch_skeleton(g, b, p.skeleton);
+  GraphStatistics stats;
+  const BranchTree tree = Grower(p, seed, stats).grow();
+  stats.structure_nodes = tree.size();
+  if (statistics != nullptr) *statistics = stats;
+  const std::vector<double> w = thickness(tree, {p.skeleton.thickness_power, p.iteration.power});
+  return branch_skeleton(tree, w, p.skeleton);
 }
 
 }  // namespace landsim::trees::graph_paths

@@ -121,10 +121,12 @@ void read_graph(const Reader& r, const toml::table& t, Parameters& p) {
       p.endpoints = r.integer(v, key, 1, 100000);
     else if (k == "shell")
       p.shell = r.number(v, key, 1e-3, 100);
+    else if (k == "endpoint_min_z")
+      p.endpoint_min_z = r.number(v, key, -1e4, 1e4);
     else
       r.refuse(v, key,
                "one of spacing, policy, cone_subdivisions, search_radius, threshold, "
-               "weight_noise, root, endpoints, shell");
+               "weight_noise, root, endpoints, shell, endpoint_min_z");
   }
 }
 
@@ -156,6 +158,45 @@ void read_leaves(const Reader& r, const toml::table& t, SkeletonOptions& o) {
   }
 }
 
+void read_iteration(const Reader& r, const toml::table& t, IterationParameters& it) {
+  constexpr double deg = std::numbers::pi / 180;
+  for (auto&& [k, v] : t) {
+    const std::string key = "iteration." + std::string(k.str());
+    if (k == "levels")
+      it.levels = r.integer(v, key, 0, 6);
+    else if (k == "radius")
+      it.radius = r.number(v, key, 1e-3, 100);
+    else if (k == "size_ratio")
+      it.size_ratio = r.number(v, key, 0.05, 1);
+    else if (k == "half_angle")
+      it.half_angle = r.number(v, key, 5, 180) * deg;
+    else if (k == "spacing_ratio")
+      it.spacing_ratio = r.number(v, key, 0.05, 1);
+    else if (k == "endpoints")
+      it.endpoints = r.integer(v, key, 1, 64);
+    else if (k == "shell")
+      it.shell = r.number(v, key, 0.01, 1);
+    else if (k == "rotation")
+      it.rotation = r.number(v, key, -90, 90) * deg;
+    else if (k == "lifespan")
+      it.lifespan = r.number(v, key, 0, 20), it.use_lifespan = true;
+    else if (k == "terminate_probability")
+      it.terminate_probability = r.number(v, key, 0, 1);
+    else if (k == "power")
+      it.power = r.number(v, key, 0.1, 5);
+    else if (k == "light") {
+      it.light = r.vector(v, key);
+      if (!(length(it.light) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
+    } else if (k == "light_strength")
+      it.light_strength = r.number(v, key, 0, 1);
+    else
+      r.refuse(v, key,
+               "one of levels, radius, size_ratio, half_angle, spacing_ratio, "
+               "endpoints, shell, rotation, lifespan, terminate_probability, power, "
+               "light, light_strength");
+  }
+}
+
 double primitive_volume(const VolumePrimitive& s) {
   constexpr double pi = std::numbers::pi;
   switch (s.kind) {
@@ -178,7 +219,20 @@ double primitive_volume(const VolumePrimitive& s) {
 double estimated_nodes(const Parameters& p) {
   double v = 0.0;
   for (const VolumePrimitive& s : p.volume.parts()) v += primitive_volume(s);
-  return 0.58 * v / std::pow(p.spacing, 3);
+  double nodes = 0.58 * v / std::pow(p.spacing, 3);
+  // Every endpoint of a level grows a subgraph at the next, each with the same node count
+  // (radius and spacing shrink together); the light can raise endpoint counts by 1 + strength.
+  const IterationParameters& it = p.iteration;
+  VolumePrimitive sector;
+  sector.kind = PrimitiveKind::sphere_portion;
+  sector.radius = 1.0;
+  sector.half_angle = it.half_angle;
+  const double per_subgraph = 0.58 * primitive_volume(sector) / std::pow(it.spacing_ratio, 3);
+  const double fan = it.endpoints * (1.0 + it.light_strength);
+  double subgraphs = p.endpoints;
+  for (int level = 1; level <= it.levels; ++level, subgraphs *= fan)
+    nodes += subgraphs * per_subgraph;
+  return nodes;
 }
 
 Parameters parse_parameters(std::string_view toml_text, const std::string& source) {
@@ -195,21 +249,26 @@ Parameters parse_parameters(std::string_view toml_text, const std::string& sourc
       read_thickness(r, r.table(v, key), p.skeleton);
     else if (k == "leaves")
       read_leaves(r, r.table(v, key), p.skeleton);
+    else if (k == "iteration")
+      read_iteration(r, r.table(v, key), p.iteration);
     else if (k == "volume") {
       const toml::array* a = v.as_array();
       if (a == nullptr || !a->is_array_of_tables()) r.refuse(v, key, "[[volume]] tables");
       for (const toml::node& t : *a) parts.push_back(read_primitive(r, *t.as_table()));
     } else
-      r.refuse(v, key, "one of core, name, colours, [graph], [thickness], [leaves], [[volume]]");
+      r.refuse(
+          v, key,
+          "one of core, name, colours, [graph], [thickness], [leaves], [iteration], [[volume]]");
   }
   if (parts.empty()) throw InputError(source + ": at least one [[volume]] is required");
   p.volume = InitialVolume(std::move(parts));
   if (const double n = estimated_nodes(p); n > static_cast<double>(p.max_nodes))
-    throw InputError(source + ": graph.spacing " + std::to_string(p.spacing) +
-                     " would fill the "
-                     "volume with about " +
-                     std::to_string(static_cast<long long>(n)) + " nodes (limit " +
-                     std::to_string(p.max_nodes) + "); raise graph.spacing");
+    throw InputError(source + ": graph.spacing " + std::to_string(p.spacing) + " and " +
+                     std::to_string(p.iteration.levels) + " iteration.levels would make about " +
+                     std::to_string(static_cast<long long>(n)) + " graph nodes (limit " +
+                     std::to_string(p.max_nodes) +
+                     "); raise graph.spacing or iteration.spacing_ratio, or lower "
+                     "graph.endpoints, iteration.endpoints or iteration.levels");
   return p;
 }
 
