@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include "core/input_error.h"
 #include "trees/mesher.h"
 
@@ -56,8 +58,18 @@ TEST(GraphPathsGenerator, LeavesGrowOnlyAtTheTips) {
   }
 }
 
+Parameters iterated(int levels) {
+  Parameters p = crown_on_trunk();
+  p.endpoint_min_z = 2.0;
+  p.iteration.levels = levels;
+  p.iteration.radius = 0.6;
+  p.iteration.endpoints = 4;
+  p.iteration.spacing_ratio = 0.25;
+  return p;
+}
+
 TEST(GraphPathsGenerator, RadiusNeverGrowsAlongAStemOrIntoAChild) {
-  const TreeSkeleton t = generate_skeleton(crown_on_trunk(), 6);
+  const TreeSkeleton t = generate_skeleton(iterated(2), 6);
   for (const StemSkeleton& s : t.stems) {
     const auto r = radii_along(s);
     for (std::size_t k = 1; k < r.size(); ++k) ASSERT_LE(r[k], r[k - 1] + 1e-12);
@@ -73,7 +85,7 @@ TEST(GraphPathsGenerator, RadiusNeverGrowsAlongAStemOrIntoAChild) {
 }
 
 TEST(GraphPathsGenerator, SameSeedSameTreeOtherSeedOtherTree) {
-  const Parameters p = crown_on_trunk();
+  const Parameters p = iterated(1);
   const TreeSkeleton a = generate_skeleton(p, 7), b = generate_skeleton(p, 7),
                      c = generate_skeleton(p, 8);
   ASSERT_EQ(a.stems.size(), b.stems.size());
@@ -81,6 +93,68 @@ TEST(GraphPathsGenerator, SameSeedSameTreeOtherSeedOtherTree) {
     for (std::size_t k = 0; k < a.stems[i].sections.size(); ++k)
       ASSERT_EQ(a.stems[i].sections[k].position, b.stems[i].sections[k].position);
   EXPECT_NE(a.stems.back().sections.back().position, c.stems.back().sections.back().position);
+}
+
+double farthest_leaf(const TreeSkeleton& t, const Vec3& from) {
+  double d = 0.0;
+  for (const LeafSkeleton& leaf : t.leaves) d = std::max(d, length(leaf.base - from));
+  return d;
+}
+
+double mean_leaf_z(const TreeSkeleton& t) {
+  double z = 0.0;
+  for (const LeafSkeleton& leaf : t.leaves) z += leaf.base.z;
+  return z / static_cast<double>(t.leaves.size());
+}
+
+TEST(GraphPathsGenerator, IteratedSubgraphsGrowBeyondTheInitialVolume) {
+  GraphStatistics one, three;
+  const TreeSkeleton a = generate_skeleton(iterated(0), 2, &one);
+  const TreeSkeleton b = generate_skeleton(iterated(2), 2, &three);
+  EXPECT_GT(b.stems.size(), 3 * a.stems.size());
+  EXPECT_GT(three.nodes, one.nodes);
+  EXPECT_GT(b.leaves.size(), 4 * a.leaves.size());
+  // The crown sphere has radius 1.5 about (0, 0, 3); level-1 cones reach 0.6 m beyond it.
+  EXPECT_LE(farthest_leaf(a, {0, 0, 3}), 1.5);
+  EXPECT_GT(farthest_leaf(b, {0, 0, 3}), 1.8);
+  EXPECT_LE(farthest_leaf(b, {0, 0, 3}), 1.5 + 0.6 + 0.3 + 1e-9);
+}
+
+TEST(GraphPathsGenerator, DownwardRotationMakesWeepingBranches) {
+  Parameters willow = iterated(3);
+  willow.iteration.size_ratio = 0.8;
+  willow.iteration.rotation = 50.0 * std::numbers::pi / 180;
+  const double straight = mean_leaf_z(generate_skeleton(iterated(3), 4));
+  const double weeping = mean_leaf_z(generate_skeleton(willow, 4));
+  EXPECT_LT(weeping, straight - 0.3);
+}
+
+TEST(GraphPathsGenerator, LifespanEndsSomeBranchesEarly) {
+  GraphStatistics free_growth, bush;
+  Parameters p = iterated(3);
+  generate_skeleton(p, 5, &free_growth);
+  p.iteration.use_lifespan = true;
+  p.iteration.lifespan = 2.0;
+  generate_skeleton(p, 5, &bush);
+  EXPECT_LT(bush.nodes, free_growth.nodes * 3 / 4);
+  EXPECT_GT(bush.nodes, 0u);
+}
+
+TEST(GraphPathsGenerator, LightFavoursTheSubgraphsFacingIt) {
+  Parameters p = iterated(2);
+  p.iteration.light = {1, 0, 0};
+  p.iteration.light_strength = 1.0;
+  const TreeSkeleton t = generate_skeleton(p, 6);
+  int lit = 0, shaded = 0;
+  for (const LeafSkeleton& leaf : t.leaves) (leaf.base.x > 0 ? lit : shaded) += 1;
+  EXPECT_GT(lit, 1.3 * shaded);
+  // Without the light the two sides are alike.
+  p.iteration.light_strength = 0.0;
+  const TreeSkeleton even = generate_skeleton(p, 6);
+  lit = shaded = 0;
+  for (const LeafSkeleton& leaf : even.leaves) (leaf.base.x > 0 ? lit : shaded) += 1;
+  EXPECT_LT(lit, 1.15 * shaded);
+  EXPECT_GT(lit, 0.87 * shaded);
 }
 
 TEST(GraphPathsGenerator, MeshesThroughTheSharedMesher) {
