@@ -72,6 +72,11 @@ TEST(GraphPathsSpecies, ExplosiveSpacingIsRefusedBeforeGenerating) {
       error_of(kHeader + "[graph]\nspacing = 0.05\n[[volume]]\nkind = \"sphere\"\nradius = 10\n");
   EXPECT_NE(msg.find("graph.spacing"), std::string::npos) << msg;
   EXPECT_NE(msg.find("limit"), std::string::npos) << msg;
+  // Iterated levels multiply: 200 endpoints x 64^5 subgraphs.
+  const std::string deep =
+      error_of(kHeader + "[iteration]\nlevels = 6\nendpoints = 64\n" + kVolume);
+  EXPECT_NE(deep.find("iteration.levels"), std::string::npos) << deep;
+  EXPECT_EQ(error_of(kHeader + "[iteration]\nlevels = 2\nendpoints = 4\n" + kVolume), "");
 }
 
 TEST(GraphPathsSpecies, EstimatedNodesMatchesASampledVolume) {
@@ -85,12 +90,28 @@ TEST(GraphPathsSpecies, EstimatedNodesMatchesASampledVolume) {
   EXPECT_NEAR(static_cast<double>(stats.nodes), estimate, 0.1 * estimate);
 }
 
-TEST(GraphPathsSpecies, ExampleFileGeneratesATree) {
-  const Species s = load_species(testing::source_file("data/species/graph_round_crown.toml"));
-  const Tree t = generate(s, {3});
-  EXPECT_GT(t.stats.height, 5.0);
-  EXPECT_GT(t.stats.leaves, 300);
-  EXPECT_GT(t.geometry.triangle_count(), 5000u);
+TEST(GraphPathsSpecies, TheSixExampleSpeciesGenerateDistinctShapes) {
+  struct Shape {
+    const char* file;
+    double min_height, max_height, min_crown, max_crown;
+  };
+  // Sizes follow from each file's volumes: e.g. the bush is a 1 m dome, the conifer a 9 m
+  // cone of 1.8 m base radius, the umbrella a flat crown 4 m wide at 5 m.
+  const Shape shapes[] = {
+      {"graph_round_crown.toml", 6, 9, 2.4, 4.0}, {"graph_conifer.toml", 8, 10.5, 1.5, 3.0},
+      {"graph_willow.toml", 6.5, 9, 3.0, 5.5},    {"graph_bush.toml", 1.0, 2.2, 1.0, 2.2},
+      {"graph_column.toml", 9.5, 12, 0.8, 2.0},   {"graph_umbrella.toml", 5.5, 8, 3.8, 5.5}};
+  for (const Shape& s : shapes) {
+    const Species species =
+        load_species(testing::source_file(std::string("data/species/") + s.file));
+    EXPECT_EQ(species.core, CoreKind::graph_paths);
+    const Tree t = generate(species, {3});
+    EXPECT_GT(t.stats.height, s.min_height) << s.file;
+    EXPECT_LT(t.stats.height, s.max_height) << s.file;
+    EXPECT_GT(t.stats.crown_radius, s.min_crown) << s.file;
+    EXPECT_LT(t.stats.crown_radius, s.max_crown) << s.file;
+    EXPECT_GT(t.stats.leaves, 1000) << s.file;
+  }
 }
 
 }  // namespace
