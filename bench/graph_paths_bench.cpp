@@ -5,10 +5,13 @@
 #include <sys/resource.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "trees/graph_paths/endpoints.h"
+#include "trees/graph_paths/generator.h"
 #include "trees/graph_paths/least_cost_paths.h"
 #include "trees/graph_paths/poisson_disc.h"
+#include "trees/species.h"
 
 namespace {
 
@@ -41,6 +44,27 @@ void BM_GraphPaths(benchmark::State& state) {
 }
 // Spacing in millimetres in a 1 m sphere: about 5 k, 39 k, 125 k and 355 k nodes.
 BENCHMARK(BM_GraphPaths)->Arg(80)->Arg(40)->Arg(27)->Arg(19)->Unit(benchmark::kMillisecond);
+
+// The six example species, whole trees (all levels, meshing excluded): nodes in all graphs.
+void BM_GraphSpecies(benchmark::State& state, const std::string& file) {
+  const landsim::trees::Species species = landsim::trees::load_species(
+      std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / file);
+  const auto& p = std::get<Parameters>(species.parameters);
+  GraphStatistics stats;
+  for (auto _ : state) benchmark::DoNotOptimize(generate_skeleton(p, 13, &stats));
+  state.counters["nodes"] = static_cast<double>(stats.nodes);
+  state.counters["structure"] = static_cast<double>(stats.structure_nodes);
+  state.counters["peak_rss_MB"] = peak_rss_mb();
+}
+
+const bool kRegistered = [] {
+  for (const char* file : {"graph_round_crown.toml", "graph_conifer.toml", "graph_willow.toml",
+                           "graph_bush.toml", "graph_column.toml", "graph_umbrella.toml"})
+    benchmark::RegisterBenchmark(("BM_GraphSpecies/" + std::string(file)).c_str(), BM_GraphSpecies,
+                                 std::string(file))
+        ->Unit(benchmark::kMillisecond);
+  return true;
+}();
 
 }  // namespace
 
