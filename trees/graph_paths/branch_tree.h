@@ -18,6 +18,14 @@ struct BranchTree {
   std::vector<int> level;             // the level whose subgraph added the node (and its edge)
 
   std::size_t size() const { return position.size(); }
+  // Starts the tree with a bare root node (for subvolumes that all hang from one point).
+  std::uint32_t add_root(const Vec3& p) {
+    position.push_back(p);
+    parent.push_back(kNoNode);
+    endpoint.push_back(false);
+    level.push_back(0);
+    return static_cast<std::uint32_t>(position.size() - 1);
+  }
 
   // Appends the path union `b` over graph `g`; its root hangs from node `attach` (or becomes
   // the tree's root when the tree is empty). Returns the tree index of each of b's nodes.

@@ -62,6 +62,7 @@ class Grower {
 
  private:
   void first_level() {
+    if (p_.refinement.spheres > 0) return refined_first_level();
     const PoissonDiscOptions disc{.spacing = p_.spacing, .max_nodes = p_.max_nodes};
     const Graph g = build_graph(poisson_disc(p_.volume, disc, hash_combine(seed_, 1)),
                                 graph_options(p_, p_.spacing), hash_combine(seed_, 2));
@@ -75,6 +76,58 @@ class Grower {
     const auto index = tree_.append(g, b, kNoNode, 0);
     for (std::size_t i = 0; i < index.size(); ++i)
       if (b.endpoint[i]) buds_.push_back({index[i], tree_.position[0], p_.iteration.lifespan});
+  }
+
+  // The trunk from the root to the junction (its own thin cylinder graph), then one graph per
+  // subvolume hung from the junction; endpoints allotted by subvolume size.
+  void refined_first_level() {
+    const std::uint32_t junction = trunk_to_junction();
+    const auto parts = refine(p_.volume, p_.refinement, p_.junction, hash_combine(seed_, 4));
+    const auto allotted = allot_endpoints(static_cast<std::size_t>(p_.endpoints), parts);
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const std::uint64_t s = hash_combine(hash_combine(seed_, 5), k);
+      const Graph g = build_graph(
+          poisson_disc(parts[k].volume, {.spacing = p_.spacing, .max_nodes = p_.max_nodes},
+                       hash_combine(s, 1)),
+          graph_options(p_, p_.spacing), hash_combine(s, 2));
+      if (g.nodes.size() < 2) continue;
+      const auto endpoints = shell_endpoints(g.nodes, InitialVolume({parts[k].sphere}), p_.shell,
+                                             allotted[k], hash_combine(s, 3), p_.endpoint_min_z);
+      const BranchStructure b =
+          union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, p_.junction)), endpoints);
+      count(g, endpoints.size());
+      const auto index = tree_.append(g, b, junction, 0);
+      for (std::size_t i = 0; i < index.size(); ++i)
+        if (b.endpoint[i]) buds_.push_back({index[i], p_.junction, p_.iteration.lifespan});
+    }
+  }
+
+  // A bare root when the junction is at the root, else the least-cost path up a cylinder.
+  std::uint32_t trunk_to_junction() {
+    const Vec3 rise = p_.junction - p_.root;
+    if (length(rise) < p_.spacing) return tree_.add_root(p_.root);
+    VolumePrimitive trunk;
+    trunk.kind = PrimitiveKind::cylinder;
+    trunk.origin = p_.root;
+    trunk.axis = normalize(rise);
+    trunk.height = length(rise);
+    trunk.radius = 1.5 * p_.spacing;
+    const Graph g = build_graph(
+        poisson_disc(InitialVolume({trunk}), {.spacing = p_.spacing, .max_nodes = p_.max_nodes},
+                     hash_combine(seed_, 6)),
+        graph_options(p_, p_.spacing), hash_combine(seed_, 7));
+    if (g.nodes.size() < 2) return tree_.add_root(p_.root);
+    const std::uint32_t top = nearest_node(g.nodes, p_.junction);
+    const BranchStructure b =
+        union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, p_.root)), {top});
+    count(g, 0);
+    const auto index = tree_.append(g, b, kNoNode, 0);
+    for (std::size_t i = 0; i < index.size(); ++i)
+      if (b.node[i] == top) {
+        tree_.endpoint[index[i]] = false;
+        return index[i];
+      }
+    return index.back();
   }
 
   void subgraph(const Bud& bud, int level, double radius, std::vector<Bud>& next) {

@@ -2,12 +2,13 @@
 // The graph-paths core (Xu & Mould 2012): nodes in the initial volume, the random graph,
 // endpoints in the surface shell, the union of their least-cost paths to the root; then, level
 // by level, a cone-shaped subgraph grown the same way at every living endpoint; thickness,
-// stems and leaves. docs/GRAPH_PATHS.md says what is still missing (refinement).
+// stems and leaves. The first level may be refined into limbs (refinement.h).
 #include <cstdint>
 
 #include "trees/graph_paths/branch_skeleton.h"
 #include "trees/graph_paths/initial_volume.h"
 #include "trees/graph_paths/random_graph.h"
+#include "trees/graph_paths/refinement.h"
 #include "trees/skeleton.h"
 
 namespace landsim::trees::graph_paths {
@@ -45,6 +46,8 @@ struct Parameters {
   double endpoint_min_z = -1e300;  // metres: no first-level endpoints below
   SkeletonOptions skeleton;
   IterationParameters iteration;
+  RefinementParameters refinement;
+  Vec3 junction{0, 0, 0};  // refinement: where the limbs' cones meet the trunk
   std::size_t max_nodes = 2000000;
 };
 

@@ -197,6 +197,24 @@ void read_iteration(const Reader& r, const toml::table& t, IterationParameters& 
   }
 }
 
+void read_refinement(const Reader& r, const toml::table& t, Parameters& p) {
+  for (auto&& [k, v] : t) {
+    const std::string key = "refinement." + std::string(k.str());
+    if (k == "spheres")
+      p.refinement.spheres = r.integer(v, key, 0, 32);
+    else if (k == "radius")
+      p.refinement.radius = r.number(v, key, 0.01, 100);
+    else if (k == "cone_ratio")
+      p.refinement.cone_ratio = r.number(v, key, 0.05, 1);
+    else if (k == "separation")
+      p.refinement.separation = r.number(v, key, 0.5, 4);
+    else if (k == "junction")
+      p.junction = r.vector(v, key);
+    else
+      r.refuse(v, key, "one of spheres, radius, cone_ratio, separation, junction");
+  }
+}
+
 double primitive_volume(const VolumePrimitive& s) {
   constexpr double pi = std::numbers::pi;
   switch (s.kind) {
@@ -219,6 +237,9 @@ double primitive_volume(const VolumePrimitive& s) {
 double estimated_nodes(const Parameters& p) {
   double v = 0.0;
   for (const VolumePrimitive& s : p.volume.parts()) v += primitive_volume(s);
+  // Refinement replaces the volume's fill by its spheres (and their thin cones).
+  if (p.refinement.spheres > 0)
+    v = p.refinement.spheres * 4.0 * std::numbers::pi * std::pow(p.refinement.radius, 3) / 3.0;
   double nodes = 0.58 * v / std::pow(p.spacing, 3);
   // Every endpoint of a level grows a subgraph at the next, each with the same node count
   // (radius and spacing shrink together); the light can raise endpoint counts by 1 + strength.
@@ -251,14 +272,16 @@ Parameters parse_parameters(std::string_view toml_text, const std::string& sourc
       read_leaves(r, r.table(v, key), p.skeleton);
     else if (k == "iteration")
       read_iteration(r, r.table(v, key), p.iteration);
+    else if (k == "refinement")
+      read_refinement(r, r.table(v, key), p);
     else if (k == "volume") {
       const toml::array* a = v.as_array();
       if (a == nullptr || !a->is_array_of_tables()) r.refuse(v, key, "[[volume]] tables");
       for (const toml::node& t : *a) parts.push_back(read_primitive(r, *t.as_table()));
     } else
-      r.refuse(
-          v, key,
-          "one of core, name, colours, [graph], [thickness], [leaves], [iteration], [[volume]]");
+      r.refuse(v, key,
+               "one of core, name, colours, [graph], [thickness], [leaves], [iteration], "
+               "[refinement], [[volume]]");
   }
   if (parts.empty()) throw InputError(source + ": at least one [[volume]] is required");
   p.volume = InitialVolume(std::move(parts));

@@ -47,6 +47,21 @@ TEST(GraphPathsSpecies, ReadsEveryTable) {
   EXPECT_DOUBLE_EQ(p.volume.parts()[0].axis.z, 1.0);  // normalised
 }
 
+TEST(GraphPathsSpecies, ReadsTheRefinement) {
+  const Species s = parse_species_toml(
+      kHeader +
+          "[refinement]\nspheres = 4\nradius = 1.5\ncone_ratio = 0.3\njunction = [0, 0, 2]\n" +
+          kVolume,
+      "r.toml");
+  const auto& p = std::get<Parameters>(s.parameters);
+  EXPECT_EQ(p.refinement.spheres, 4);
+  EXPECT_DOUBLE_EQ(p.refinement.radius, 1.5);
+  EXPECT_DOUBLE_EQ(p.refinement.cone_ratio, 0.3);
+  EXPECT_DOUBLE_EQ(p.junction.z, 2.0);
+  const std::string msg = error_of(kHeader + "[refinement]\nspheres = 99\n" + kVolume);
+  EXPECT_NE(msg.find("refinement.spheres"), std::string::npos) << msg;
+}
+
 TEST(GraphPathsSpecies, BadShapesAndParametersNameTheLineAndKey) {
   std::string msg = error_of(kHeader + "[[volume]]\nkind = \"torus\"\n");
   EXPECT_NE(msg.find("g.toml:3:"), std::string::npos) << msg;
@@ -95,12 +110,13 @@ TEST(GraphPathsSpecies, TheSixExampleSpeciesGenerateDistinctShapes) {
     const char* file;
     double min_height, max_height, min_crown, max_crown;
   };
-  // Sizes follow from each file's volumes: e.g. the bush is a 1 m dome, the conifer a 9 m
-  // cone of 1.8 m base radius, the umbrella a flat crown 4 m wide at 5 m.
+  // Sizes follow from each file's volumes and subgraph reach: e.g. the bush is a 1 m dome,
+  // the round crown's limb spheres (1.4 m) reach at most 5 m out with their subgraphs, the conifer
+  // a 9 m cone of 1.8 m base radius, the umbrella a flat crown 4 m wide at 5 m.
   const Shape shapes[] = {
-      {"graph_round_crown.toml", 6, 9, 2.4, 4.0}, {"graph_conifer.toml", 8, 10.5, 1.5, 3.0},
-      {"graph_willow.toml", 6.5, 9, 3.0, 5.5},    {"graph_bush.toml", 1.0, 2.2, 1.0, 2.2},
-      {"graph_column.toml", 9.5, 12, 0.8, 2.0},   {"graph_umbrella.toml", 5.5, 8, 3.8, 5.5}};
+      {"graph_round_crown.toml", 6, 10, 2.4, 5.2}, {"graph_conifer.toml", 8, 10.5, 1.5, 3.0},
+      {"graph_willow.toml", 6.5, 9, 3.0, 5.5},     {"graph_bush.toml", 1.0, 2.2, 1.0, 2.2},
+      {"graph_column.toml", 9.5, 12, 0.8, 2.0},    {"graph_umbrella.toml", 5.5, 8, 3.8, 5.5}};
   for (const Shape& s : shapes) {
     const Species species =
         load_species(testing::source_file(std::string("data/species/") + s.file));
