@@ -40,6 +40,21 @@ double ellipsoid_depth(const Vec3& radii, const Vec3& q) {
   return (1.0 - k) * std::min({radii.x, radii.y, radii.z});
 }
 
+// The profile segment at q's height gives the side: the radial gap times the segment's
+// cosine, as for a cone; the end discs bound it below and above.
+double revolution_depth(const std::vector<ProfilePoint>& profile, const Vec3& q) {
+  if (profile.size() < 2 || q.z < profile.front().height || q.z > profile.back().height)
+    return -1.0;
+  std::size_t k = 1;
+  while (k + 1 < profile.size() && profile[k].height < q.z) ++k;
+  const ProfilePoint& a = profile[k - 1];
+  const ProfilePoint& b = profile[k];
+  const double slope = (b.radius - a.radius) / (b.height - a.height);
+  const double r = a.radius + slope * (q.z - a.height);
+  const double side = (r - std::hypot(q.x, q.y)) / std::sqrt(1.0 + slope * slope);
+  return std::min({side, q.z - profile.front().height, profile.back().height - q.z});
+}
+
 }  // namespace
 
 double VolumePrimitive::depth(const Vec3& p) const {
@@ -55,6 +70,8 @@ double VolumePrimitive::depth(const Vec3& p) const {
       return sector_depth(radius, half_angle, q);
     case PrimitiveKind::ellipsoid:
       return ellipsoid_depth(radii, q);
+    case PrimitiveKind::revolution:
+      return revolution_depth(profile, q);
   }
   return -1.0;
 }
@@ -72,6 +89,15 @@ Box VolumePrimitive::bounds() const {
     case PrimitiveKind::ellipsoid:
       reach = max_component(radii);
       break;
+    case PrimitiveKind::revolution: {
+      double widest = 0.0;
+      for (const ProfilePoint& p : profile) widest = std::max(widest, p.radius);
+      const double lo = profile.empty() ? 0.0 : profile.front().height;
+      const double hi = profile.empty() ? 0.0 : profile.back().height;
+      centre = origin + axis * (0.5 * (lo + hi));
+      reach = std::hypot(widest, 0.5 * (hi - lo));
+      break;
+    }
     default:
       break;
   }

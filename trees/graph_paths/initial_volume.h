@@ -16,6 +16,13 @@ enum class PrimitiveKind {
   sphere,          // radius, centred on the origin
   sphere_portion,  // radius, the points within half_angle of the axis (a spherical sector)
   ellipsoid,       // semi-axes radii (x, y along the local frame, z along the axis)
+  revolution,      // a profile curve (height, radius) turned about the axis
+};
+
+// One point of a surface of revolution's profile: the radius at a height along the axis.
+struct ProfilePoint {
+  double height = 0.0;
+  double radius = 0.0;
 };
 
 struct VolumePrimitive {
@@ -24,11 +31,14 @@ struct VolumePrimitive {
   Vec3 axis{0, 0, 1};  // unit
   double radius = 1.0;
   double height = 1.0;
-  double half_angle = 0.5;  // radians, sphere_portion only
-  Vec3 radii{1, 1, 1};      // ellipsoid only
+  double half_angle = 0.5;            // radians, sphere_portion only
+  Vec3 radii{1, 1, 1};                // ellipsoid only
+  std::vector<ProfilePoint> profile;  // revolution only: heights strictly increasing
 
   // How deep p lies inside: positive inside, the distance to the nearest surface for every
-  // kind but the ellipsoid (a lower bound there); zero or negative outside.
+  // kind but the ellipsoid (a lower bound there) and the surface of revolution (the distance
+  // to the local profile segment's cone, exact where the profile is straight); zero or
+  // negative outside.
   double depth(const Vec3& p) const;
   Box bounds() const;
 };

@@ -64,7 +64,26 @@ PrimitiveKind kind_of(const Reader& r, const toml::node& n) {
   if (s == "sphere") return PrimitiveKind::sphere;
   if (s == "sphere_portion") return PrimitiveKind::sphere_portion;
   if (s == "ellipsoid") return PrimitiveKind::ellipsoid;
-  r.refuse(n, "volume.kind", "cylinder, cone, sphere, sphere_portion or ellipsoid");
+  if (s == "revolution") return PrimitiveKind::revolution;
+  r.refuse(n, "volume.kind", "cylinder, cone, sphere, sphere_portion, ellipsoid or revolution");
+}
+
+// [[height, radius], ...]: heights strictly increasing, radii 0-1000 m.
+std::vector<ProfilePoint> read_profile(const Reader& r, const toml::node& n,
+                                       const std::string& key) {
+  const toml::array* a = n.as_array();
+  const std::string expected =
+      "[[height, radius], ...]: at least two points, heights strictly increasing, radii 0 to 1000";
+  if (a == nullptr || a->size() < 2) r.refuse(n, key, expected);
+  std::vector<ProfilePoint> profile;
+  for (const toml::node& point : *a) {
+    const toml::array* hr = point.as_array();
+    if (hr == nullptr || hr->size() != 2) r.refuse(point, key, expected);
+    const ProfilePoint p{r.number(*hr->get(0), key, -1e3, 1e3), r.number(*hr->get(1), key, 0, 1e3)};
+    if (!profile.empty() && !(p.height > profile.back().height)) r.refuse(point, key, expected);
+    profile.push_back(p);
+  }
+  return profile;
 }
 
 VolumePrimitive read_primitive(const Reader& r, const toml::table& t) {
@@ -90,11 +109,16 @@ VolumePrimitive read_primitive(const Reader& r, const toml::table& t) {
       s.radii = r.vector(v, key);
       if (!(std::min({s.radii.x, s.radii.y, s.radii.z}) >= 1e-3))
         r.refuse(v, key, "three semi-axes, each at least 0.001 m");
-    } else
-      r.refuse(v, key, "one of kind, origin, axis, radius, height, half_angle, radii");
+    } else if (k == "profile")
+      s.profile = read_profile(r, v, key);
+    else
+      r.refuse(v, key, "one of kind, origin, axis, radius, height, half_angle, radii, profile");
   }
   if (!has_kind)
     r.refuse(t, "volume.kind", "a kind in every [[volume]]: cylinder, cone, sphere, ...");
+  if (s.kind == PrimitiveKind::revolution && s.profile.size() < 2)
+    r.refuse(t, "volume.profile",
+             "[[height, radius], ...] with at least two points for a revolution");
   return s;
 }
 
@@ -228,6 +252,16 @@ double primitive_volume(const VolumePrimitive& s) {
       return 2 * pi * std::pow(s.radius, 3) * (1 - std::cos(s.half_angle)) / 3;
     case PrimitiveKind::ellipsoid:
       return 4 * pi * s.radii.x * s.radii.y * s.radii.z / 3;
+    case PrimitiveKind::revolution: {
+      double v = 0.0;  // frusta between profile points
+      for (std::size_t k = 1; k < s.profile.size(); ++k) {
+        const ProfilePoint& a = s.profile[k - 1];
+        const ProfilePoint& b = s.profile[k];
+        v += pi * (b.height - a.height) *
+             (a.radius * a.radius + a.radius * b.radius + b.radius * b.radius) / 3;
+      }
+      return v;
+    }
   }
   return 0.0;
 }

@@ -71,6 +71,37 @@ TEST(InitialVolume, EllipsoidInsideMatchesItsEquation) {
   EXPECT_LE(s.depth({0.5, 0, 0}), 0.5 + 1e-12);
 }
 
+TEST(InitialVolume, SurfaceOfRevolutionMatchesTheShapesItsProfileTraces) {
+  VolumePrimitive rev = make(PrimitiveKind::revolution);
+  rev.profile = {{0.0, 1.0}, {1.0, 0.0}};  // a cone of radius 1, height 1
+  VolumePrimitive cone = make(PrimitiveKind::cone);
+  cone.radius = 1.0;
+  cone.height = 1.0;
+  for (const Vec3& p : {Vec3{0, 0, 0.5}, Vec3{0.3, 0.1, 0.2}, Vec3{0.6, 0, 0.5}, Vec3{0, 0, 1.2}}) {
+    // Inside, the same distance; outside, both negative (how negative is not specified).
+    EXPECT_EQ(rev.depth(p) > 0, cone.depth(p) > 0) << p.x << " " << p.z;
+    if (cone.depth(p) <= 0) continue;
+    EXPECT_NEAR(rev.depth(p), cone.depth(p), 1e-12) << p.x << " " << p.z;
+  }
+  rev.profile = {{0.0, 0.5}, {1.0, 0.5}, {3.0, 0.5}};  // a cylinder, in two segments
+  VolumePrimitive cylinder = make(PrimitiveKind::cylinder);
+  cylinder.radius = 0.5;
+  cylinder.height = 3.0;
+  for (const Vec3& p : {Vec3{0, 0, 1.5}, Vec3{0.4, 0, 0.9}, Vec3{0.6, 0, 2}, Vec3{0, 0, -0.1}}) {
+    // Inside, the same distance; outside, both negative (how negative is not specified).
+    EXPECT_EQ(rev.depth(p) > 0, cylinder.depth(p) > 0) << p.x << " " << p.z;
+    if (cylinder.depth(p) <= 0) continue;
+    EXPECT_NEAR(rev.depth(p), cylinder.depth(p), 1e-12) << p.x << " " << p.z;
+  }
+  // A bulging profile: wider in the middle than at its ends.
+  rev.profile = {{0.0, 0.2}, {1.0, 1.0}, {2.0, 0.2}};
+  EXPECT_GT(rev.depth({0.8, 0, 1.0}), 0.0);
+  EXPECT_LT(rev.depth({0.8, 0, 0.2}), 0.0);
+  const Box b = rev.bounds();
+  EXPECT_LE(b.lo.x, -1.0);
+  EXPECT_GE(b.hi.z, 2.0);
+}
+
 TEST(InitialVolume, UnionTakesTheDeepestPartAndBoundsAll) {
   VolumePrimitive a = make(PrimitiveKind::sphere);
   VolumePrimitive b = make(PrimitiveKind::sphere);

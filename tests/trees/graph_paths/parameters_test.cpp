@@ -75,6 +75,12 @@ TEST(GraphPathsSpecies, BadShapesAndParametersNameTheLineAndKey) {
   EXPECT_NE(msg.find("volume.axis"), std::string::npos) << msg;
   msg = error_of(kHeader + "[[volume]]\nradius = 1.0\n");
   EXPECT_NE(msg.find("volume.kind"), std::string::npos) << msg;
+  msg = error_of(kHeader +
+                 "[[volume]]\nkind = \"revolution\"\nprofile = [[0, 1], [2, 1], [1, 0.5]]\n");
+  EXPECT_NE(msg.find("g.toml:4:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("heights strictly increasing"), std::string::npos) << msg;
+  msg = error_of(kHeader + "[[volume]]\nkind = \"revolution\"\n");
+  EXPECT_NE(msg.find("volume.profile"), std::string::npos) << msg;
   msg = error_of(kHeader + "[graph]\nspacing = 0.1\n");
   EXPECT_NE(msg.find("[[volume]] is required"), std::string::npos) << msg;
   msg = error_of(kHeader + "Scale = 3\n" + kVolume);
