@@ -20,8 +20,9 @@ namespace {
 using landsim::testing::source_file;
 using landsim::testing::TempDir;
 
-// The volcano's flat north with a 60 m x 60 m stand of fan palms in view, sun and light haze.
-Scenario small_scene(const TempDir& dir) {
+// The volcano's flat north with a 60 m x 60 m stand of trees (fan palms unless told) in view,
+// sun and light haze.
+Scenario small_scene(const TempDir& dir, const std::string& species = "fanpalm.xml") {
   const std::string veg = (dir / "veg.tif").string();
   std::vector<double> cells(61 * 87, 0.0);
   for (int r = 5; r < 11; ++r)
@@ -35,7 +36,7 @@ Scenario small_scene(const TempDir& dir) {
                         veg +
                         "\"\n"
                         "[[species]]\nbit = 0\nfile = \"" +
-                        source_file("data/species/fanpalm.xml").string() +
+                        source_file("data/species/" + species).string() +
                         "\"\n"
                         "variants = 1\ndensity_per_ha = 12\nmin_spacing = 5.0\n"
                         "[sun]\nelevation = 35.0\nazimuth = 250.0\n"
@@ -71,6 +72,27 @@ TEST(Crosscheck, SmallSceneAgreesWithPovRay) {
                         "pov/scene.pov", "pov/meshes.inc"}) {
     EXPECT_TRUE(std::filesystem::exists(o.out_dir / f)) << f;
   }
+}
+
+TEST(Crosscheck, GraphPathsTreesAgreeWithPovRay) {
+  // The graph-paths core's trees go through the same TreeGeometry, export and comparison.
+  TempDir dir;
+  const Scenario s = small_scene(dir, "graph_column.toml");
+  const renderer::Scene scene = build_scene(s);
+  ASSERT_GE(scene.instances.size(), 2u);
+  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+  int tree_pixels = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      tree_pixels += film.object(x, y) == 2 || film.object(x, y) == 3;
+  ASSERT_GT(tree_pixels, 20);  // the columns are in view: the tree IoU means something
+  CrosscheckOptions o;
+  o.out_dir = dir / "check";
+  o.spp = 1;
+  const CrosscheckReport r = crosscheck(s, scene, o);
+  EXPECT_GT(r.tree_iou, 0.9);
+  EXPECT_LE(r.luminance_mean_rel_diff, 0.05);
+  EXPECT_TRUE(r.pass);
 }
 
 TEST(Crosscheck, AMovedCameraFails) {
