@@ -101,6 +101,8 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
   s.name = std::filesystem::path(source).stem().string();
   ParamTable params;
   bool has_core = false;
+  // A graph-paths file's own tables are read by its core below, not as flat parameters.
+  const bool graph_paths = root["core"].value<std::string>() == "graph_paths";
   for (auto&& [key, value] : root) {
     const std::string k(key.str());
     if (k == "core") {
@@ -118,8 +120,8 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
       s.name = *name;
     } else if (k == "colours") {
       read_colours(value, source, s.colours);
-    } else if (root.contains("core") && root["core"].value<std::string>() == "graph_paths") {
-      continue;  // the core's own tables, read below
+    } else if (graph_paths) {
+      continue;
     } else {
       RawParam raw;
       raw.where = where(source, value.source());

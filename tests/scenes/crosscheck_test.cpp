@@ -47,18 +47,23 @@ Scenario small_scene(const TempDir& dir, const std::string& species = "fanpalm.x
   return load_scenario(file);
 }
 
+// Pixels of the first view whose object class is a tree (stem 2 or leaf 3) in landsim's render.
+int tree_pixels_in_view(const renderer::Scene& scene) {
+  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+  int count = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      count += film.object(x, y) == 2 || film.object(x, y) == 3;
+  return count;
+}
+
 TEST(Crosscheck, SmallSceneAgreesWithPovRay) {
   TempDir dir;
   const Scenario s = small_scene(dir);
   const renderer::Scene scene = build_scene(s);
   ASSERT_GE(scene.instances.size(), 2u);
   // The trees are in view (so the IoU below is not one of empty masks).
-  renderer::RenderOptions ro;
-  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], ro);
-  int tree_pixels = 0;
-  for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x)
-      tree_pixels += film.object(x, y) == 2 || film.object(x, y) == 3;
+  const int tree_pixels = tree_pixels_in_view(scene);
   ASSERT_GT(tree_pixels, 20);
   CrosscheckOptions o;
   o.out_dir = dir / "check";
@@ -80,11 +85,7 @@ TEST(Crosscheck, GraphPathsTreesAgreeWithPovRay) {
   const Scenario s = small_scene(dir, "graph_column.toml");
   const renderer::Scene scene = build_scene(s);
   ASSERT_GE(scene.instances.size(), 2u);
-  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
-  int tree_pixels = 0;
-  for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x)
-      tree_pixels += film.object(x, y) == 2 || film.object(x, y) == 3;
+  const int tree_pixels = tree_pixels_in_view(scene);
   ASSERT_GT(tree_pixels, 20);  // the columns are in view: the tree IoU means something
   CrosscheckOptions o;
   o.out_dir = dir / "check";

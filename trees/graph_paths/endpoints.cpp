@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "trees/weber_penn/random.h"
+#include "trees/random.h"
 
 namespace landsim::trees::graph_paths {
 
@@ -17,7 +17,7 @@ std::vector<std::uint32_t> shell_endpoints(const std::vector<Vec3>& nodes,
   }
   if (in_shell.size() > count) {
     // A partial Fisher-Yates shuffle picks `count` without replacement.
-    weber_penn::Random rng(seed, 0xe4d5u);
+    Random rng(seed, 0xe4d5u);
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t j =
           k + static_cast<std::size_t>(rng.unit() * static_cast<double>(in_shell.size() - k));

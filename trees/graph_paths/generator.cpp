@@ -9,7 +9,7 @@
 #include "trees/graph_paths/endpoints.h"
 #include "trees/graph_paths/least_cost_paths.h"
 #include "trees/graph_paths/poisson_disc.h"
-#include "trees/weber_penn/random.h"
+#include "trees/random.h"
 
 namespace landsim::trees::graph_paths {
 namespace {
@@ -63,17 +63,14 @@ class Grower {
  private:
   void first_level() {
     if (p_.refinement.spheres > 0) return refined_first_level();
-    const PoissonDiscOptions disc{.spacing = p_.spacing, .max_nodes = p_.max_nodes};
-    const Graph g = build_graph(poisson_disc(p_.volume, disc, hash_combine(seed_, 1)),
-                                graph_options(p_, p_.spacing), hash_combine(seed_, 2));
+    const Graph g = graph_in(p_.volume, p_.spacing, hash_combine(seed_, 1), hash_combine(seed_, 2));
     if (g.nodes.empty()) return;
     const auto endpoints =
         shell_endpoints(g.nodes, p_.volume, p_.shell, static_cast<std::size_t>(p_.endpoints),
                         hash_combine(seed_, 3), p_.endpoint_min_z);
-    const BranchStructure b =
-        union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, p_.root)), endpoints);
+    BranchStructure b;
+    const auto index = hang(g, endpoints, p_.root, kNoNode, 0, b);
     count(g, endpoints.size());
-    const auto index = tree_.append(g, b, kNoNode, 0);
     for (std::size_t i = 0; i < index.size(); ++i)
       if (b.endpoint[i]) buds_.push_back({index[i], tree_.position[0], p_.iteration.lifespan});
   }
@@ -86,17 +83,13 @@ class Grower {
     const auto allotted = allot_endpoints(static_cast<std::size_t>(p_.endpoints), parts);
     for (std::size_t k = 0; k < parts.size(); ++k) {
       const std::uint64_t s = hash_combine(hash_combine(seed_, 5), k);
-      const Graph g = build_graph(
-          poisson_disc(parts[k].volume, {.spacing = p_.spacing, .max_nodes = p_.max_nodes},
-                       hash_combine(s, 1)),
-          graph_options(p_, p_.spacing), hash_combine(s, 2));
+      const Graph g = graph_in(parts[k].volume, p_.spacing, hash_combine(s, 1), hash_combine(s, 2));
       if (g.nodes.size() < 2) continue;
       const auto endpoints = shell_endpoints(g.nodes, InitialVolume({parts[k].sphere}), p_.shell,
                                              allotted[k], hash_combine(s, 3), p_.endpoint_min_z);
-      const BranchStructure b =
-          union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, p_.junction)), endpoints);
+      BranchStructure b;
+      const auto index = hang(g, endpoints, p_.junction, junction, 0, b);
       count(g, endpoints.size());
-      const auto index = tree_.append(g, b, junction, 0);
       for (std::size_t i = 0; i < index.size(); ++i)
         if (b.endpoint[i]) buds_.push_back({index[i], p_.junction, p_.iteration.lifespan});
     }
@@ -112,16 +105,13 @@ class Grower {
     trunk.axis = normalize(rise);
     trunk.height = length(rise);
     trunk.radius = 1.5 * p_.spacing;
-    const Graph g = build_graph(
-        poisson_disc(InitialVolume({trunk}), {.spacing = p_.spacing, .max_nodes = p_.max_nodes},
-                     hash_combine(seed_, 6)),
-        graph_options(p_, p_.spacing), hash_combine(seed_, 7));
+    const Graph g = graph_in(InitialVolume({trunk}), p_.spacing, hash_combine(seed_, 6),
+                             hash_combine(seed_, 7));
     if (g.nodes.size() < 2) return tree_.add_root(p_.root);
     const std::uint32_t top = nearest_node(g.nodes, p_.junction);
-    const BranchStructure b =
-        union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, p_.root)), {top});
-    count(g, 0);
-    const auto index = tree_.append(g, b, kNoNode, 0);
+    BranchStructure b;
+    const auto index = hang(g, {top}, p_.root, kNoNode, 0, b);
+    count(g, 0);  // the trunk's top is a joint, not one of the tree's endpoints
     for (std::size_t i = 0; i < index.size(); ++i)
       if (b.node[i] == top) {
         tree_.endpoint[index[i]] = false;
@@ -146,19 +136,16 @@ class Grower {
     const std::uint64_t s =
         hash_combine(hash_combine(seed_, static_cast<std::uint64_t>(level)), bud.node);
     const double spacing = radius * it.spacing_ratio;
-    Graph g = build_graph(
-        poisson_disc(volume, {.spacing = spacing, .max_nodes = p_.max_nodes}, hash_combine(s, 1)),
-        graph_options(p_, spacing), hash_combine(s, 2));
+    const Graph g = graph_in(volume, spacing, hash_combine(s, 1), hash_combine(s, 2));
     if (g.nodes.size() < 2) return;
     const auto wanted = static_cast<std::size_t>(std::max(1.0, std::round(it.endpoints * factor)));
     const auto endpoints =
         shell_endpoints(g.nodes, volume, it.shell * radius, wanted, hash_combine(s, 3));
-    const BranchStructure b =
-        union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, apex)), endpoints);
+    BranchStructure b;
+    const auto index = hang(g, endpoints, apex, bud.node, level, b);
     count(g, endpoints.size());
-    const auto index = tree_.append(g, b, bud.node, level);
     tree_.endpoint[bud.node] = false;  // it grew: no longer a tip
-    weber_penn::Random rng(s, 0x11fe);
+    Random rng(s, 0x11fe);
     for (std::size_t i = 0; i < index.size(); ++i) {
       if (!b.endpoint[i]) continue;
       next.push_back({index[i], apex, child_lifespan(bud.lifespan, factor, rng)});
@@ -166,11 +153,29 @@ class Grower {
   }
 
   // The paper's rule: end with probability 0.3, else lose a random part; the light orders it.
-  double child_lifespan(double lifespan, double factor, weber_penn::Random& rng) const {
+  double child_lifespan(double lifespan, double factor, Random& rng) const {
     const IterationParameters& it = p_.iteration;
     if (!it.use_lifespan) return lifespan;
     if (rng.unit() < it.terminate_probability) return 0.0;
     return lifespan - (0.5 + rng.unit()) * (2.0 - factor);
+  }
+
+  // The random graph over `volume`'s Poisson-disc nodes (the same steps at every level).
+  Graph graph_in(const InitialVolume& volume, double spacing, std::uint64_t node_seed,
+                 std::uint64_t weight_seed) const {
+    return build_graph(
+        poisson_disc(volume, {.spacing = spacing, .max_nodes = p_.max_nodes}, node_seed),
+        graph_options(p_, spacing), weight_seed);
+  }
+
+  // The union of the endpoints' least-cost paths to the node nearest `root`, hung from the
+  // tree node `attach` (kNoNode: it starts the tree); returns the tree index of each of its
+  // nodes, and the union in `b`.
+  std::vector<std::uint32_t> hang(const Graph& g, const std::vector<std::uint32_t>& endpoints,
+                                  const Vec3& root, std::uint32_t attach, int level,
+                                  BranchStructure& b) {
+    b = union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, root)), endpoints);
+    return tree_.append(g, b, attach, level);
   }
 
   void count(const Graph& g, std::size_t endpoints) {

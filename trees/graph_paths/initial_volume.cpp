@@ -112,13 +112,8 @@ double InitialVolume::depth(const Vec3& p) const {
 }
 
 Box InitialVolume::bounds() const {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  Box box{{inf, inf, inf}, {-inf, -inf, -inf}};
-  for (const VolumePrimitive& s : parts_) {
-    const Box b = s.bounds();
-    box.lo = {std::min(box.lo.x, b.lo.x), std::min(box.lo.y, b.lo.y), std::min(box.lo.z, b.lo.z)};
-    box.hi = {std::max(box.hi.x, b.hi.x), std::max(box.hi.y, b.hi.y), std::max(box.hi.z, b.hi.z)};
-  }
+  Box box;
+  for (const VolumePrimitive& s : parts_) box.grow(s.bounds());
   return box;
 }
 

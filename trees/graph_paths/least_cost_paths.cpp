@@ -70,23 +70,7 @@ BranchStructure union_of_paths(const Graph& graph, const PathTree& tree,
     const std::uint32_t p = tree.parent[b.node[i]];
     b.parent[i] = p == kNoNode ? kNoNode : index_of[p];
   }
-  // Children come after parents, so one backward sweep carries the reach upward.
-  b.reach.assign(b.node.size(), 0.0);
-  for (std::size_t i = b.node.size(); i-- > 1;) {
-    const std::uint32_t p = b.parent[i];
-    const double up = b.reach[i] + length(graph.nodes[b.node[i]] - graph.nodes[b.node[p]]);
-    b.reach[p] = std::max(b.reach[p], up);
-  }
   return b;
-}
-
-std::vector<double> edge_thickness(const Graph& graph, const BranchStructure& b, double z) {
-  std::vector<double> w(b.node.size(), 0.0);
-  for (std::size_t i = 1; i < b.node.size(); ++i) {
-    const double edge = length(graph.nodes[b.node[i]] - graph.nodes[b.node[b.parent[i]]]);
-    w[i] = std::pow(b.reach[i] + edge, z);
-  }
-  return w;
 }
 
 }  // namespace landsim::trees::graph_paths

@@ -2,8 +2,8 @@
 // The branch structure of Xu & Mould 2012: the union of the least-cost paths from the
 // endpoints to the root through the random graph. One Dijkstra search from the root gives
 // every node's cheapest way home, so the union is a tree (the shortest-path tree pruned to
-// the endpoints' paths). Thickness follows the paper's w = s^z, s being the path length
-// from an edge to the farthest endpoint it carries.
+// the endpoints' paths). Reach and thickness are measured on the whole BranchTree
+// (branch_tree.h), which holds every level's unions.
 #include <cstdint>
 #include <vector>
 
@@ -24,16 +24,11 @@ PathTree least_cost_tree(const Graph& graph, std::uint32_t root);
 struct BranchStructure {
   std::vector<std::uint32_t> node;    // graph node of each structure node; [0] is the root
   std::vector<std::uint32_t> parent;  // structure index of the parent; kNoNode for the root
-  std::vector<double> reach;          // metres from this node to its farthest endpoint below
   std::vector<bool> endpoint;
   std::size_t unreachable = 0;  // endpoints with no path to the root (left out)
 };
 
 BranchStructure union_of_paths(const Graph& graph, const PathTree& tree,
                                const std::vector<std::uint32_t>& endpoints);
-
-// w = s^z for the edge from structure node i to its parent, s = the edge length plus i's
-// reach: non-increasing toward the tips for any z > 0. Zero at the root (it has no edge).
-std::vector<double> edge_thickness(const Graph& graph, const BranchStructure& branches, double z);
 
 }  // namespace landsim::trees::graph_paths

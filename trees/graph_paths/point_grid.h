@@ -2,8 +2,10 @@
 // A uniform grid over a box for radius queries among points. Shared by the Poisson-disc
 // sampler (is a candidate too close to an accepted node?) and the graph builders (which
 // nodes lie near this one?). Dense cells: the callers bound the cell count first.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/vec3.h"
@@ -11,8 +13,18 @@
 namespace landsim::trees::graph_paths {
 
 struct Box {
-  Vec3 lo;
-  Vec3 hi;
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+  Vec3 lo{kInf, kInf, kInf};  // empty until grown
+  Vec3 hi{-kInf, -kInf, -kInf};
+
+  void grow(const Vec3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  void grow(const Box& b) {
+    grow(b.lo);
+    grow(b.hi);
+  }
 };
 
 class PointGrid {
@@ -26,13 +38,10 @@ class PointGrid {
   // the caller tests the exact distance. Order: cell by cell, newest first within a cell.
   template <typename Visit>
   void for_each_near(const Vec3& p, double radius, Visit&& visit) const {
-    const CellRange r = cells_overlapping(p, radius);
-    for (int z = r.lo[2]; z <= r.hi[2]; ++z)
-      for (int y = r.lo[1]; y <= r.hi[1]; ++y)
-        for (int x = r.lo[0]; x <= r.hi[0]; ++x) {
-          const std::size_t c = index(x, y, z);
-          for (std::uint32_t k = start_[c]; k != kEnd; k = next_[k]) visit(k);
-        }
+    any_near(p, radius, [&](std::uint32_t k) {
+      visit(k);
+      return false;
+    });
   }
 
   // True as soon as test(id) holds for a point in the cells overlapping the ball (p, radius).

@@ -6,12 +6,11 @@
 
 #include "core/input_error.h"
 #include "trees/graph_paths/point_grid.h"
-#include "trees/weber_penn/random.h"  // the trees' seeded stream, shared by every core
+#include "trees/random.h"
 
 namespace landsim::trees::graph_paths {
 namespace {
 
-using weber_penn::Random;
 constexpr std::size_t kMaxGridCells = 32u << 20;
 
 Vec3 uniform_direction(Random& rng) {

@@ -17,12 +17,8 @@ namespace {
 constexpr std::size_t kMaxGridCells = 32u << 20;
 
 Box bounds_of(const std::vector<Vec3>& nodes) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  Box b{{inf, inf, inf}, {-inf, -inf, -inf}};
-  for (const Vec3& p : nodes) {
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
+  Box b;
+  for (const Vec3& p : nodes) b.grow(p);
   return b;
 }
 

@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "trees/graph_paths/poisson_disc.h"
-#include "trees/weber_penn/random.h"
+#include "trees/random.h"
 
 namespace landsim::trees::graph_paths {
 
@@ -15,7 +15,7 @@ std::vector<Subvolume> refine(const InitialVolume& volume, const RefinementParam
   std::vector<Vec3> centres =
       poisson_disc(volume, {.spacing = r.separation * r.radius, .max_nodes = 100000}, seed);
   // The sampler grows outward from its seeds; a shuffle makes the first few a fair choice.
-  weber_penn::Random rng(seed, 0x5be7u);
+  Random rng(seed, 0x5be7u);
   for (std::size_t k = centres.size(); k > 1; --k)
     std::swap(centres[k - 1],
               centres[static_cast<std::size_t>(rng.unit() * static_cast<double>(k))]);

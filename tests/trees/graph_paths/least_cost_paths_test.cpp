@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "trees/graph_paths/branch_tree.h"
 #include "trees/graph_paths/endpoints.h"
 #include "trees/graph_paths/poisson_disc.h"
 
@@ -71,7 +72,9 @@ TEST(UnionOfPaths, ThicknessNeverIncreasesTowardTheTips) {
   const auto endpoints = shell_endpoints(c.graph.nodes, c.volume, 0.15, 100, 3);
   const BranchStructure b = union_of_paths(
       c.graph, least_cost_tree(c.graph, nearest_node(c.graph.nodes, {0, 0, 0})), endpoints);
-  const auto w = edge_thickness(c.graph, b, 1.5);
+  BranchTree tree;
+  tree.append(c.graph, b, kNoNode, 0);  // one level: tree index i is structure index i
+  const auto w = thickness(tree, {1.5});
   double thickest = 0;
   for (std::size_t i = 1; i < b.node.size(); ++i) {
     thickest = std::max(thickest, w[i]);
