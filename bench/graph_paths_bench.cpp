@@ -42,8 +42,30 @@ void BM_GraphPaths(benchmark::State& state) {
   state.counters["structure"] = static_cast<double>(structure);
   state.counters["peak_rss_MB"] = peak_rss_mb();
 }
-// Spacing in millimetres in a 1 m sphere: about 5 k, 39 k, 125 k and 355 k nodes.
-BENCHMARK(BM_GraphPaths)->Arg(80)->Arg(40)->Arg(27)->Arg(19)->Unit(benchmark::kMillisecond);
+// Spacing in millimetres in a 1 m sphere: about 5.6 k, 44 k, 142 k and 355 k nodes.
+BENCHMARK(BM_GraphPaths)->Arg(80)->Arg(40)->Arg(27)->Arg(20)->Unit(benchmark::kMillisecond);
+
+// The stages alone, to see where the time of BM_GraphPaths goes.
+void BM_PoissonDisc(benchmark::State& state) {
+  const double spacing = static_cast<double>(state.range(0)) / 1000.0;
+  const InitialVolume volume({VolumePrimitive{}});
+  std::size_t nodes = 0;
+  for (auto _ : state) nodes = poisson_disc(volume, {.spacing = spacing}, 1).size();
+  state.counters["nodes"] = static_cast<double>(nodes);
+}
+BENCHMARK(BM_PoissonDisc)->Arg(27)->Unit(benchmark::kMillisecond);
+
+void BM_YaoGraph(benchmark::State& state) {
+  const double spacing = static_cast<double>(state.range(0)) / 1000.0;
+  const InitialVolume volume({VolumePrimitive{}});
+  const std::vector<landsim::Vec3> points = poisson_disc(volume, {.spacing = spacing}, 1);
+  std::size_t edges = 0;
+  for (auto _ : state)
+    edges = build_graph(points, {.search_radius = 2.5 * spacing}, 1).neighbours.size();
+  state.counters["nodes"] = static_cast<double>(points.size());
+  state.counters["edges"] = static_cast<double>(edges);
+}
+BENCHMARK(BM_YaoGraph)->Arg(27)->Unit(benchmark::kMillisecond);
 
 // The six example species, whole trees (all levels, meshing excluded): nodes in all graphs.
 void BM_GraphSpecies(benchmark::State& state, const std::string& file) {

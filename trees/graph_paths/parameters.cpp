@@ -1,5 +1,7 @@
 #include "trees/graph_paths/parameters.h"
 
+#include "trees/graph_paths/poisson_disc.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -274,7 +276,7 @@ double estimated_nodes(const Parameters& p) {
   // Refinement replaces the volume's fill by its spheres (and their thin cones).
   if (p.refinement.spheres > 0)
     v = p.refinement.spheres * 4.0 * std::numbers::pi * std::pow(p.refinement.radius, 3) / 3.0;
-  double nodes = 0.58 * v / std::pow(p.spacing, 3);
+  double nodes = kNodesPerCubicSpacing * v / std::pow(p.spacing, 3);
   // Every endpoint of a level grows a subgraph at the next, each with the same node count
   // (radius and spacing shrink together); the light can raise endpoint counts by 1 + strength.
   const IterationParameters& it = p.iteration;
@@ -282,7 +284,8 @@ double estimated_nodes(const Parameters& p) {
   sector.kind = PrimitiveKind::sphere_portion;
   sector.radius = 1.0;
   sector.half_angle = it.half_angle;
-  const double per_subgraph = 0.58 * primitive_volume(sector) / std::pow(it.spacing_ratio, 3);
+  const double per_subgraph =
+      kNodesPerCubicSpacing * primitive_volume(sector) / std::pow(it.spacing_ratio, 3);
   const double fan = it.endpoints * (1.0 + it.light_strength);
   double subgraphs = p.endpoints;
   for (int level = 1; level <= it.levels; ++level, subgraphs *= fan)

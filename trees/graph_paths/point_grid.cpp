@@ -23,11 +23,6 @@ PointGrid::PointGrid(const Box& bounds, double cell, std::size_t max_cells)
   start_.assign(static_cast<std::size_t>(total), kEnd);
 }
 
-int PointGrid::cell_of(double v, int axis) const {
-  const int c = static_cast<int>(std::floor((v - bounds_.lo[axis]) / cell_));
-  return std::clamp(c, 0, dims_[axis] - 1);
-}
-
 void PointGrid::insert(std::uint32_t id, const Vec3& p) {
   if (next_.size() <= id) next_.resize(id + 1, kEnd);
   const std::size_t c = index(cell_of(p.x, 0), cell_of(p.y, 1), cell_of(p.z, 2));

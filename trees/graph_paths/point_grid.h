@@ -3,6 +3,7 @@
 // sampler (is a candidate too close to an accepted node?) and the graph builders (which
 // nodes lie near this one?). Dense cells: the callers bound the cell count first.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -47,12 +48,19 @@ class PointGrid {
   // True as soon as test(id) holds for a point in the cells overlapping the ball (p, radius).
   template <typename Test>
   bool any_near(const Vec3& p, double radius, Test&& test) const {
+    // The point's own cell first: a conflict is likeliest there, and most darts conflict.
+    const std::size_t own = index(cell_of(p.x, 0), cell_of(p.y, 1), cell_of(p.z, 2));
+    for (std::uint32_t k = start_[own]; k != kEnd; k = next_[k])
+      if (test(k)) return true;
     const CellRange r = cells_overlapping(p, radius);
     for (int z = r.lo[2]; z <= r.hi[2]; ++z)
       for (int y = r.lo[1]; y <= r.hi[1]; ++y)
-        for (int x = r.lo[0]; x <= r.hi[0]; ++x)
-          for (std::uint32_t k = start_[index(x, y, z)]; k != kEnd; k = next_[k])
+        for (int x = r.lo[0]; x <= r.hi[0]; ++x) {
+          const std::size_t c = index(x, y, z);
+          if (c == own) continue;
+          for (std::uint32_t k = start_[c]; k != kEnd; k = next_[k])
             if (test(k)) return true;
+        }
     return false;
   }
 
@@ -68,7 +76,10 @@ class PointGrid {
     return (static_cast<std::size_t>(z) * dims_[1] + static_cast<std::size_t>(y)) * dims_[0] +
            static_cast<std::size_t>(x);
   }
-  int cell_of(double v, int axis) const;
+  int cell_of(double v, int axis) const {
+    const int c = static_cast<int>(std::floor((v - bounds_.lo[axis]) / cell_));
+    return std::clamp(c, 0, dims_[axis] - 1);
+  }
 
   Box bounds_;
   double cell_;

@@ -14,9 +14,13 @@ namespace landsim::trees::graph_paths {
 
 struct PoissonDiscOptions {
   double spacing = 0.1;             // metres, the minimum distance between nodes
-  int attempts = 30;                // candidates tried around an active node before retiring it
+  int attempts = 8;                 // candidates tried around an active node before retiring it
   std::size_t max_nodes = 2000000;  // refused above this (InputError), never an OOM
 };
+
+// Nodes per cubic spacing deep inside a volume, as the sampler packs them (measured, and
+// checked by a test): for estimating node counts before sampling.
+inline constexpr double kNodesPerCubicSpacing = 0.67;
 
 std::vector<Vec3> poisson_disc(const InitialVolume& volume, const PoissonDiscOptions& options,
                                std::uint64_t seed);

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <random>
 
 #include "core/input_error.h"
@@ -43,6 +45,31 @@ TEST(PoissonDisc, LeavesNoWideGaps) {
     for (const Vec3& n : nodes) nearest = std::min(nearest, length(n - p));
     EXPECT_LT(nearest, 0.3) << p.x << " " << p.y << " " << p.z;
   }
+}
+
+TEST(PoissonDisc, PacksAsDenselyAsTheNodeCountEstimateAssumes) {
+  const InitialVolume v = unit_sphere();
+  const double spacing = 0.05, inner = 0.6;
+  const auto nodes = poisson_disc(v, {.spacing = spacing}, 3);
+  const auto inside =
+      std::count_if(nodes.begin(), nodes.end(), [&](const Vec3& p) { return length(p) < inner; });
+  const double cubic_spacings = 4.0 / 3.0 * std::numbers::pi * std::pow(inner / spacing, 3);
+  EXPECT_NEAR(static_cast<double>(inside) / cubic_spacings, kNodesPerCubicSpacing, 0.03);
+}
+
+TEST(PoissonDisc, StoresNodesNearTheirNeighbours) {
+  // Morton order: a node's nearest neighbour is usually close in the array too, where the
+  // sampler's own wavefront order scatters it (the later stages rely on this for speed).
+  const auto nodes = poisson_disc(unit_sphere(), {.spacing = 0.08}, 5);
+  std::vector<double> gaps;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    std::size_t nearest = i == 0 ? 1 : 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j)
+      if (j != i && length(nodes[j] - nodes[i]) < length(nodes[nearest] - nodes[i])) nearest = j;
+    gaps.push_back(std::abs(static_cast<double>(nearest) - static_cast<double>(i)));
+  }
+  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+  EXPECT_LT(gaps[gaps.size() / 2], 0.01 * static_cast<double>(nodes.size()));
 }
 
 TEST(PoissonDisc, FillsEverySeparatePartOfAUnion) {

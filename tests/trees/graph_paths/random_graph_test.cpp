@@ -96,10 +96,14 @@ TEST(YaoGraph, TheEdgeInAConeGoesToTheNearestNodeThere) {
 }
 
 TEST(YaoGraph, ConnectsAVolumeThatASmallThresholdLeavesInPieces) {
-  const auto nodes = sphere_nodes(0.1, 4);
-  // Searched only 2.5 spacings far, as the species default does (docs/GRAPH_PATHS.md).
+  // A sphere of nodes cut by an empty slab 1.5 spacings thick: no edge of 1.2 spacings
+  // crosses it, while Yao edges, searched 2.5 spacings far as the species default does
+  // (docs/GRAPH_PATHS.md), still join the halves.
+  std::vector<Vec3> nodes;
+  for (const Vec3& p : sphere_nodes(0.1, 4))
+    if (std::abs(p.z) >= 0.075) nodes.push_back(p);
   const Graph yao = build_graph(nodes, {.search_radius = 0.25}, 9);
-  const Graph small = build_graph(nodes, {.policy = GraphPolicy::threshold, .threshold = 0.11}, 9);
+  const Graph small = build_graph(nodes, {.policy = GraphPolicy::threshold, .threshold = 0.12}, 9);
   EXPECT_EQ(components(yao), 1);
   EXPECT_GT(components(small), 1);
   const Graph large = build_graph(nodes, {.policy = GraphPolicy::threshold, .threshold = 0.3}, 9);
