@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "trees/graph_paths/parameters.h"
 #include "trees/mesher.h"
+#include "trees/self_organizing/generator.h"
 #include "trees/weber_penn/generator.h"
 
 namespace landsim::trees {
@@ -84,6 +85,8 @@ std::string core_name(CoreKind core) {
       return "weber_penn";
     case CoreKind::graph_paths:
       return "graph_paths";
+    case CoreKind::self_organizing:
+      return "self_organizing";
   }
   return "unknown";
 }
@@ -102,17 +105,20 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
   ParamTable params;
   bool has_core = false;
   // A graph-paths file's own tables are read by its core below, not as flat parameters.
-  const bool graph_paths = root["core"].value<std::string>() == "graph_paths";
+  const auto core_value = root["core"].value<std::string>();
+  const bool own_tables = core_value == "graph_paths" || core_value == "self_organizing";
   for (auto&& [key, value] : root) {
     const std::string k(key.str());
     if (k == "core") {
       const auto core = value.value<std::string>();
-      if (core != "weber_penn" && core != "graph_paths") {
-        throw InputError(
-            where(source, value.source()) +
-            ": core: expected \"weber_penn\" or \"graph_paths\" (the cores available)");
+      if (core != "weber_penn" && core != "graph_paths" && core != "self_organizing") {
+        throw InputError(where(source, value.source()) +
+                         ": core: expected \"weber_penn\", \"graph_paths\" or "
+                         "\"self_organizing\" (the cores available)");
       }
-      s.core = core == "graph_paths" ? CoreKind::graph_paths : CoreKind::weber_penn;
+      s.core = core == "graph_paths"       ? CoreKind::graph_paths
+               : core == "self_organizing" ? CoreKind::self_organizing
+                                           : CoreKind::weber_penn;
       has_core = true;
     } else if (k == "name") {
       const auto name = value.value<std::string>();
@@ -120,7 +126,7 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
       s.name = *name;
     } else if (k == "colours") {
       read_colours(value, source, s.colours);
-    } else if (graph_paths) {
+    } else if (own_tables) {
       continue;
     } else {
       RawParam raw;
@@ -144,6 +150,8 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
     throw InputError(source + ": required key 'core' is missing (e.g. core = \"weber_penn\")");
   if (s.core == CoreKind::graph_paths)
     s.parameters = graph_paths::parse_parameters(text, source);
+  else if (s.core == CoreKind::self_organizing)
+    s.parameters = self_organizing::parse_parameters(text, source);
   else
     s.parameters = weber_penn::parse_parameters(params, source);
   return s;
@@ -214,10 +222,9 @@ void count_stems(const TreeSkeleton& skeleton, std::size_t levels, TreeStats& st
   stats.leaves = static_cast<int>(skeleton.leaves.size());
 }
 
-// Graph-paths trees do not sway yet (wind is a Weber & Penn section 4 model).
-Tree generate_graph_paths(const Species& species, const TreeOptions& options) {
-  const auto& params = std::get<graph_paths::Parameters>(species.parameters);
-  TreeSkeleton skeleton = graph_paths::generate_skeleton(params, options.seed);
+// A skeleton of a core without wind sway (wind is a Weber & Penn section 4 model; the
+// graph-paths and self-organising trees stand still), meshed.
+Tree still_tree(TreeSkeleton skeleton, const Species& species) {
   skeleton.colours = species.colours;
   Tree tree;
   count_stems(skeleton, 4, tree.stats);
@@ -229,7 +236,14 @@ Tree generate_graph_paths(const Species& species, const TreeOptions& options) {
 }  // namespace
 
 Tree generate(const Species& species, const TreeOptions& options) {
-  if (species.core == CoreKind::graph_paths) return generate_graph_paths(species, options);
+  if (species.core == CoreKind::graph_paths)
+    return still_tree(graph_paths::generate_skeleton(
+                          std::get<graph_paths::Parameters>(species.parameters), options.seed),
+                      species);
+  if (species.core == CoreKind::self_organizing)
+    return still_tree(self_organizing::generate_skeleton(
+                          std::get<self_organizing::Parameters>(species.parameters), options.seed),
+                      species);
   const auto& params = std::get<weber_penn::Parameters>(species.parameters);
   weber_penn::GenerateOptions o;
   o.seed = options.seed;

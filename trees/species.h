@@ -10,11 +10,12 @@
 
 #include "trees/geometry.h"
 #include "trees/graph_paths/generator.h"
+#include "trees/self_organizing/parameters.h"
 #include "trees/weber_penn/parameters.h"
 
 namespace landsim::trees {
 
-enum class CoreKind { weber_penn, graph_paths };
+enum class CoreKind { weber_penn, graph_paths, self_organizing };
 std::string core_name(CoreKind core);
 
 struct Species {
@@ -22,7 +23,8 @@ struct Species {
   std::string source;  // the file, for messages
   CoreKind core = CoreKind::weber_penn;
   TreeColours colours;
-  std::variant<weber_penn::Parameters, graph_paths::Parameters> parameters;
+  std::variant<weber_penn::Parameters, graph_paths::Parameters, self_organizing::Parameters>
+      parameters;
 };
 
 // By extension: .toml (any core) or .xml (Arbaro's Weber & Penn format). Throws InputError

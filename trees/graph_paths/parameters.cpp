@@ -10,54 +10,12 @@
 #include <optional>
 
 #include "core/input_error.h"
+#include "trees/toml_reader.h"
 
 namespace landsim::trees::graph_paths {
 namespace {
 
-class Reader {
- public:
-  explicit Reader(const std::string& source) : source_(source) {}
-
-  [[noreturn]] void refuse(const toml::node& n, const std::string& key,
-                           const std::string& expected) const {
-    const auto& r = n.source();
-    throw InputError(source_ + ":" + std::to_string(r.begin.line) + ":" +
-                     std::to_string(r.begin.column) + ": " + key + ": expected " + expected);
-  }
-
-  double number(const toml::node& n, const std::string& key, double lo, double hi) const {
-    const auto v = n.value<double>();
-    if (!v || !(*v >= lo && *v <= hi))
-      refuse(n, key, "a number from " + text(lo) + " to " + text(hi));
-    return *v;
-  }
-  int integer(const toml::node& n, const std::string& key, int lo, int hi) const {
-    const auto v = n.value<std::int64_t>();
-    if (!n.is_integer() || !v || *v < lo || *v > hi)
-      refuse(n, key, "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
-    return static_cast<int>(*v);
-  }
-  Vec3 vector(const toml::node& n, const std::string& key) const {
-    const toml::array* a = n.as_array();
-    if (a == nullptr || a->size() != 3) refuse(n, key, "[x, y, z]");
-    std::array<double, 3> c{};
-    for (std::size_t i = 0; i < 3; ++i) c[i] = number(*a->get(i), key, -1e4, 1e4);
-    return {c[0], c[1], c[2]};
-  }
-  const toml::table& table(const toml::node& n, const std::string& key) const {
-    if (!n.is_table()) refuse(n, key, "a table");
-    return *n.as_table();
-  }
-
- private:
-  static std::string text(double v) {
-    std::string s = std::to_string(v);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-  }
-  const std::string& source_;
-};
+using Reader = TomlReader;
 
 PrimitiveKind kind_of(const Reader& r, const toml::node& n) {
   const auto s = n.value<std::string>();
@@ -311,11 +269,10 @@ Parameters parse_parameters(std::string_view toml_text, const std::string& sourc
       read_iteration(r, r.table(v, key), p.iteration);
     else if (k == "refinement")
       read_refinement(r, r.table(v, key), p);
-    else if (k == "volume") {
-      const toml::array* a = v.as_array();
-      if (a == nullptr || !a->is_array_of_tables()) r.refuse(v, key, "[[volume]] tables");
-      for (const toml::node& t : *a) parts.push_back(read_primitive(r, *t.as_table()));
-    } else
+    else if (k == "volume")
+      for (const toml::node& t : r.tables(v, key))
+        parts.push_back(read_primitive(r, *t.as_table()));
+    else
       r.refuse(v, key,
                "one of core, name, colours, [graph], [thickness], [leaves], [iteration], "
                "[refinement], [[volume]]");

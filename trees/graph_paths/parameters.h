@@ -13,7 +13,7 @@ namespace landsim::trees::graph_paths {
 // volumes that would need more than Parameters::max_nodes nodes at the given spacing.
 Parameters parse_parameters(std::string_view toml_text, const std::string& source);
 
-// Expected node count of a Poisson-disc fill (0.58 nodes per spacing cube, measured) of the
+// Expected node count of a Poisson-disc fill (kNodesPerCubicSpacing, measured) of the
 // primitives' summed volume: an upper estimate for overlapping unions.
 double estimated_nodes(const Parameters& p);
 

@@ -1,0 +1,60 @@
+#include "trees/self_organizing/competition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "trees/random.h"
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+TEST(Competition, AMarkerGoesToTheClosestBudWhoseConeHoldsIt) {
+  // Two buds facing each other along x, a third facing away from the markers.
+  const std::vector<Vec3> positions{{0, 0, 0}, {2, 0, 0}, {1, 0.2, 0}};
+  const std::vector<Vec3> directions{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}};
+  const std::vector<Vec3> markers{{0.8, 0, 0}, {1.3, 0, 0}, {1.0, -0.1, 0}};
+  const auto space = allocate_markers(markers, positions, directions, 3.0, std::numbers::pi / 2);
+  // 0.8 is nearer bud 0; 1.3 nearer bud 1; (1, -0.1) is nearest to bud 2 but behind its cone,
+  // and equally near buds 0 and 1 in x... it is 1.005 from both: the tie goes to bud 0.
+  EXPECT_EQ(space[0].markers, 2);
+  EXPECT_EQ(space[1].markers, 1);
+  EXPECT_EQ(space[2].markers, 0);
+  EXPECT_NEAR(length(space[0].direction), 1.0, 1e-12);
+  EXPECT_EQ(space[2].direction, (Vec3{0, 0, 0}));
+}
+
+TEST(Competition, MatchesABruteForceAssignment) {
+  Random rng(9, 0);
+  std::vector<Vec3> positions, directions, markers;
+  for (int b = 0; b < 60; ++b) {
+    positions.push_back({rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(0, 4)});
+    directions.push_back(
+        normalize(Vec3{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)}));
+  }
+  for (int m = 0; m < 2000; ++m)
+    markers.push_back({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 5)});
+  const double radius = 1.5, angle = 1.6;
+  const auto space = allocate_markers(markers, positions, directions, radius, angle);
+  std::vector<int> expected(positions.size(), 0);
+  for (const Vec3& m : markers) {
+    int owner = -1;
+    double best = 1e300;
+    for (std::size_t b = 0; b < positions.size(); ++b) {
+      const Vec3 d = m - positions[b];
+      if (length(d) > radius || std::acos(dot(normalize(d), directions[b])) > 0.5 * angle) continue;
+      if (length(d) < best) best = length(d), owner = static_cast<int>(b);
+    }
+    if (owner >= 0) ++expected[static_cast<std::size_t>(owner)];
+  }
+  int total = 0;
+  for (std::size_t b = 0; b < positions.size(); ++b) {
+    EXPECT_EQ(space[b].markers, expected[b]) << b;
+    total += space[b].markers;
+  }
+  EXPECT_GT(total, 100);
+}
+
+}  // namespace
+}  // namespace landsim::trees::self_organizing

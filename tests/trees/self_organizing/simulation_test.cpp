@@ -1,0 +1,134 @@
+#include "trees/self_organizing/simulation.h"
+
+#include <gtest/gtest.h>
+
+#include "core/input_error.h"
+#include "trees/self_organizing/generator.h"
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+Parameters crown(EnvelopeKind kind = EnvelopeKind::ellipsoid) {
+  Parameters p;
+  p.steps = 18;
+  p.internode_length = 0.15;
+  p.envelope.kind = kind;
+  p.envelope.centre = {0, 0, 2.2};
+  p.envelope.radii = {1.5, 1.5, 2};
+  p.envelope.silhouette = {{0, 0}, {0.4, 0}, {0.4, 1.5}, {2.0, 2.5}, {1.5, 4.5}, {0, 5}};
+  p.envelope.density = 80;
+  return p;
+}
+
+TEST(SelfOrganizing, AnEnvelopeGrownCrownStaysInsideItsEnvelope) {
+  for (EnvelopeKind kind : {EnvelopeKind::ellipsoid, EnvelopeKind::silhouette}) {
+    Parameters p = crown(kind);
+    if (kind == EnvelopeKind::ellipsoid) p.envelope.centre = {0, 0, 1.9};  // holds the seedling
+    GrowthStatistics stats;
+    const Plant plant = grow(p, 5, &stats);
+    ASSERT_GT(stats.internodes, 200u);
+    for (std::uint32_t i = 1; i < plant.size(); ++i)
+      ASSERT_TRUE(p.envelope.contains(plant[i].tip)) << i;
+  }
+}
+
+TEST(SelfOrganizing, WithoutConfinementShootsOvershootTheEnvelope) {
+  // The check above could not fail if growth never reached the surface: unconfined, it does.
+  Parameters p = crown(EnvelopeKind::silhouette);
+  p.envelope.confine = false;
+  const Plant plant = grow(p, 5);
+  int outside = 0;
+  for (std::uint32_t i = 1; i < plant.size(); ++i)
+    outside += plant[i].alive && !p.envelope.contains(plant[i].tip) ? 1 : 0;
+  EXPECT_GT(outside, 0);
+}
+
+TEST(SelfOrganizing, SameSeedSameTreeOtherSeedOtherTree) {
+  const Parameters p = crown(EnvelopeKind::silhouette);
+  const Plant a = grow(p, 11), b = grow(p, 11), c = grow(p, 12);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::uint32_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].tip, b[i].tip);
+    ASSERT_EQ(a[i].width, b[i].width);
+  }
+  bool differs = a.size() != c.size();
+  for (std::uint32_t i = 0; i < std::min(a.size(), c.size()) && !differs; ++i)
+    differs = !(a[i].tip == c[i].tip);
+  EXPECT_TRUE(differs);
+}
+
+TEST(SelfOrganizing, ShootsFollowABrushStroke) {
+  Parameters p;
+  p.steps = 30;
+  p.internode_length = 0.1;
+  p.space.occupancy = 1.5;
+  BrushStroke s;
+  s.points = {{{0, 0, 0.3}, 0.4}, {{0, 0, 1.5}, 0.4}, {{1.5, 0, 2.0}, 0.4}};
+  s.points_per_step = 0.15;
+  s.markers_per_step = 80;
+  s.max_age = 6;
+  p.strokes = {s};
+  const Plant plant = grow(p, 1);
+  double farthest_x = 0.0;
+  for (const Internode& n : plant.internodes())
+    if (n.alive) farthest_x = std::max(farthest_x, n.tip.x);
+  EXPECT_GT(farthest_x, 1.0);  // the tree turned along the stroke's second leg
+}
+
+TEST(SelfOrganizing, PruningLeavesAStubThatKeepsItsWidth) {
+  // Growth is sequential, so a 9-step tree is the 20-step tree as it stood before step 10.
+  Parameters p = crown(EnvelopeKind::silhouette);
+  p.steps = 9;
+  const Plant at_nine = grow(p, 7);
+  std::uint32_t branch = 0;
+  for (std::uint32_t i = 1; i < at_nine.size() && branch == 0; ++i)
+    if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > p.width.tip) branch = i;
+  ASSERT_NE(branch, 0u);
+  p.steps = 20;
+  p.prunings = {{10, branch}};
+  const Plant after = grow(p, 7);
+  EXPECT_TRUE(after[branch].alive);
+  EXPECT_TRUE(after[branch].stub);
+  for (std::uint32_t c : {after[branch].main, after[branch].lateral})
+    EXPECT_TRUE(c == kNone || !after[c].alive);
+  // The stub keeps the width it had when cut (wider than a tip: it had branched).
+  EXPECT_DOUBLE_EQ(after[branch].width, at_nine[branch].width);
+  p.prunings = {{3, 999999}};
+  EXPECT_THROW(grow(p, 7), InputError);
+}
+
+TEST(SelfOrganizing, HeavySheddingRemovesBranches) {
+  Parameters p = crown(EnvelopeKind::silhouette);
+  GrowthStatistics none, heavy;
+  grow(p, 3, &none);
+  p.vigour.shedding = 0.6;
+  grow(p, 3, &heavy);
+  EXPECT_EQ(none.shed_branches, 0u);
+  EXPECT_GT(heavy.shed_branches, 5u);
+}
+
+TEST(SelfOrganizing, GrowthBeyondTheInternodeLimitIsRefused) {
+  Parameters p;
+  p.steps = 60;
+  p.space.autonomous_markers = 6;
+  p.max_internodes = 2000;
+  EXPECT_THROW(grow(p, 1), InputError);
+}
+
+TEST(SelfOrganizing, SkeletonHasOneStemPerAxisAndLeavesOnYoungShoots) {
+  const Parameters p = crown(EnvelopeKind::silhouette);
+  GrowthStatistics stats;
+  const Plant plant = grow(p, 2, &stats);
+  const TreeSkeleton s = generate_skeleton(p, 2);
+  std::size_t axes = 0;
+  for (std::uint32_t i = 0; i < plant.size(); ++i)
+    axes += plant[i].alive && (i == 0 || plant.starts_branch(i)) ? 1 : 0;
+  EXPECT_EQ(s.stems.size(), axes);
+  EXPECT_EQ(s.stems[0].level, 0);
+  EXPECT_GT(s.stems[0].sections.front().radius, s.stems[0].sections.back().radius);
+  EXPECT_GT(s.leaves.size(), 50u);
+  EXPECT_LT(s.leaves.size(), stats.internodes);
+}
+
+}  // namespace
+}  // namespace landsim::trees::self_organizing

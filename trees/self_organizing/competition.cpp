@@ -1,0 +1,40 @@
+#include "trees/self_organizing/competition.h"
+
+#include <cmath>
+#include <cstdint>
+
+#include "trees/self_organizing/plant.h"
+#include "trees/self_organizing/sparse_grid.h"
+
+namespace landsim::trees::self_organizing {
+
+std::vector<BudSpace> allocate_markers(const std::vector<Vec3>& markers,
+                                       const std::vector<Vec3>& positions,
+                                       const std::vector<Vec3>& directions, double radius,
+                                       double angle) {
+  std::vector<BudSpace> space(positions.size());
+  if (positions.empty()) return space;
+  const SparseGrid grid(positions, radius);
+  const double cos_half = std::cos(0.5 * angle);
+  std::vector<Vec3> sum(positions.size(), Vec3{0, 0, 0});
+  for (const Vec3& m : markers) {
+    std::uint32_t owner = kNone;
+    double nearest = radius * radius;
+    grid.for_each_near(m, radius, [&](std::uint32_t b) {
+      const Vec3 d = m - positions[b];
+      const double d2 = dot(d, d);
+      if (d2 > nearest || d2 == 0.0) return;
+      // Inside the cone: the angle to the bud's direction is at most half the opening.
+      if (dot(d, directions[b]) < cos_half * std::sqrt(d2)) return;
+      if (d2 < nearest || b < owner) nearest = d2, owner = b;
+    });
+    if (owner == kNone) continue;
+    ++space[owner].markers;
+    sum[owner] += normalize(m - positions[owner]);
+  }
+  for (std::size_t b = 0; b < space.size(); ++b)
+    if (space[b].markers > 0 && length(sum[b]) > 1e-12) space[b].direction = normalize(sum[b]);
+  return space;
+}
+
+}  // namespace landsim::trees::self_organizing

@@ -1,0 +1,73 @@
+#include "trees/self_organizing/growth.h"
+
+#include <cmath>
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+// A unit vector perpendicular to h, as close to `near` as possible.
+Vec3 perpendicular(const Vec3& h, const Vec3& near) {
+  Vec3 f = near - h * dot(near, h);
+  if (length(f) < 1e-9) f = std::abs(h.x) < 0.9 ? Vec3{1, 0, 0} - h * h.x : Vec3{0, 1, 0} - h * h.y;
+  return normalize(f);
+}
+
+Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
+}
+
+Vec3 random_turn(const Vec3& h, double amount, Random& rng) {
+  if (amount <= 0.0) return h;
+  for (;;) {
+    const Vec3 u{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    if (dot(u, u) <= 1.0) return normalize(h + u * amount);
+  }
+}
+
+}  // namespace
+
+Vec3 tropism_vector(const Vec3& h, const Vec3& frame, double set_point) {
+  Vec3 level{h.x, h.y, 0.0};
+  if (length(level) < 1e-9) level = Vec3{frame.x, frame.y, 0.0};
+  if (length(level) < 1e-9) level = Vec3{1, 0, 0};
+  return Vec3{0, 0, 1} * std::cos(set_point) + normalize(level) * std::sin(set_point);
+}
+
+// Where a bud would head: a lateral bud along its own direction; a terminal bud along its
+// internode, turned away from the node's lateral bud by the deflection.
+static Vec3 bud_heading(const Plant& plant, const BudRef& bud, double deflection) {
+  const Internode& n = plant[bud.internode];
+  if (bud.lateral) return n.lateral_direction;
+  if (deflection == 0.0) return n.direction;
+  const Vec3 away = n.lateral_direction - n.direction * dot(n.lateral_direction, n.direction);
+  if (length(away) < 1e-9) return n.direction;
+  return normalize(n.direction - normalize(away) * std::tan(deflection));
+}
+
+int grow_shoot(Plant& plant, const Parameters& p, BudRef bud, int n, const Vec3& environment,
+               int step, Random& rng, ShadowGrid& shadows) {
+  const DirectionParameters& d = p.direction;
+  const bool confine = p.envelope.kind != EnvelopeKind::none && p.envelope.confine;
+  int grown = 0;
+  for (; grown < n; ++grown) {
+    const Internode& from = plant[bud.internode];
+    const Vec3 heading = bud_heading(plant, bud, d.deflection);
+    Vec3 frame = bud.lateral ? from.direction : from.frame;
+    Vec3 h = heading * d.heading + tropism_vector(heading, frame, d.set_point) * d.tropism +
+             environment * d.environment;
+    h = random_turn(length(h) > 1e-9 ? normalize(h) : heading, d.noise, rng);
+    const Vec3 base = from.tip;
+    const Vec3 tip = base + h * p.internode_length;
+    if (confine && !p.envelope.contains(tip)) break;
+    frame = perpendicular(h, frame);
+    const int rank = bud.lateral ? 0 : from.rank + 1;
+    const Vec3 toward = rotate_about(frame, h, rank * d.phyllotaxis);
+    const Vec3 lateral = h * std::cos(d.branching) + toward * std::sin(d.branching);
+    bud = {plant.grow(bud, base, tip, frame, lateral, step), false};
+    shadows.cast(tip, +1.0);
+  }
+  return grown;
+}
+
+}  // namespace landsim::trees::self_organizing

@@ -1,0 +1,97 @@
+#include "trees/self_organizing/markers.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "trees/self_organizing/sparse_grid.h"
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+Vec3 in_unit_ball(Random& rng) {
+  for (;;) {
+    const Vec3 p{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    if (dot(p, p) <= 1.0) return p;
+  }
+}
+
+}  // namespace
+
+template <typename Keep>
+void MarkerSet::keep_if(Keep&& keep) {
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    if (keep(i)) points_[out] = points_[i], last_step_[out] = last_step_[i], ++out;
+  points_.resize(out);
+  last_step_.resize(out);
+}
+
+void MarkerSet::expire(int step) {
+  keep_if([&](std::size_t i) { return last_step_[i] >= step; });
+}
+
+std::size_t MarkerSet::consume(const std::vector<Vec3>& buds, double radius) {
+  const std::size_t before = points_.size();
+  if (buds.empty()) return 0;
+  const SparseGrid grid(buds, radius);
+  keep_if([&](std::size_t i) {
+    bool occupied = false;
+    grid.for_each_near(points_[i], radius, [&](std::uint32_t b) {
+      const Vec3 d = buds[b] - points_[i];
+      occupied = occupied || dot(d, d) < radius * radius;
+    });
+    return !occupied;
+  });
+  return before - points_.size();
+}
+
+void add_envelope_markers(const Envelope& envelope, Random& rng, MarkerSet& markers) {
+  if (envelope.kind == EnvelopeKind::none) return;
+  const auto [lo, hi] = envelope.bounds();
+  const Vec3 size = hi - lo;
+  // Darts over the bounding box at the density: those inside are the envelope's share.
+  const auto darts = static_cast<std::size_t>(envelope.density * size.x * size.y * size.z);
+  for (std::size_t k = 0; k < darts; ++k) {
+    const Vec3 p{rng.uniform(lo.x, hi.x), rng.uniform(lo.y, hi.y), rng.uniform(lo.z, hi.z)};
+    if (envelope.contains(p)) markers.add(p, MarkerSet::kForever);
+  }
+}
+
+bool brush_position(const BrushStroke& stroke, int step, StrokePoint& where) {
+  if (stroke.points.empty() || step < stroke.start_step) return false;
+  const double t = (step - stroke.start_step) * stroke.points_per_step;
+  const double last = static_cast<double>(stroke.points.size() - 1);
+  if (t > last) return false;
+  const auto k = static_cast<std::size_t>(std::floor(t));
+  if (k + 1 >= stroke.points.size()) {
+    where = stroke.points.back();
+    return true;
+  }
+  const double f = t - static_cast<double>(k);
+  const StrokePoint& a = stroke.points[k];
+  const StrokePoint& b = stroke.points[k + 1];
+  where.position = a.position + (b.position - a.position) * f;
+  where.radius = a.radius + (b.radius - a.radius) * f;
+  return true;
+}
+
+void add_stroke_markers(const BrushStroke& stroke, int step, Random& rng, MarkerSet& markers) {
+  StrokePoint brush;
+  if (!brush_position(stroke, step, brush)) return;
+  for (int k = 0; k < stroke.markers_per_step; ++k)
+    markers.add(brush.position + in_unit_ball(rng) * brush.radius, step + stroke.max_age - 1);
+}
+
+void add_cone_markers(const Vec3& apex, const Vec3& axis, double angle, double radius, int count,
+                      int step, Random& rng, MarkerSet& markers) {
+  const double cos_half = std::cos(0.5 * angle);
+  for (int k = 0, tries = 0; k < count && tries < 64 * count; ++tries) {
+    const Vec3 d = in_unit_ball(rng);
+    const double len = length(d);
+    if (len < 1e-9 || dot(d, axis) < cos_half * len) continue;
+    markers.add(apex + d * radius, step);
+    ++k;
+  }
+}
+
+}  // namespace landsim::trees::self_organizing

@@ -1,0 +1,122 @@
+#pragma once
+// Parameters of the self-organising core (TreeSketch, Longay et al. 2012, on Palubicki et
+// al. 2009 and Runions et al. 2007). Lengths are metres unless a comment says "internode
+// lengths"; angles are radians here and degrees in species files (docs/SELF_ORGANIZING.md).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/vec3.h"
+#include "trees/self_organizing/envelope.h"
+
+namespace landsim::trees::self_organizing {
+
+// A brush stroke: the brush moves along the polyline, `points_per_step` points per step from
+// `start_step`, and drops markers in its sphere that live `max_age` steps.
+struct StrokePoint {
+  Vec3 position;
+  double radius = 0.5;
+};
+
+struct BrushStroke {
+  std::vector<StrokePoint> points;
+  int start_step = 1;
+  double points_per_step = 1.0;
+  int markers_per_step = 60;
+  int max_age = 6;
+};
+
+struct SpaceParameters {
+  double occupancy = 2.0;          // r, internode lengths: markers this near a bud are consumed
+  double perception = 4.0;         // d, internode lengths: the perception cone reaches r + d
+  double perception_angle = 1.57;  // zeta, the cone's full opening angle
+  int autonomous_markers = 0;      // markers each bud drops in its cone every step (live 1 step)
+};
+
+// Shadow propagation (Palubicki 2009): a metamer adds a * b^-q to the voxels q layers below
+// it, in a square spreading by q; a bud's light is max(C - s + a, 0).
+struct LightParameters {
+  double full = 1.0;  // C
+  double a = 0.2;
+  double b = 2.0;            // > 1
+  int depth = 6;             // q_max
+  double voxel = 1.0;        // internode lengths
+  double sensitivity = 1.0;  // kappa: Q = b_g * L^kappa
+};
+
+struct VigourParameters {
+  double alpha = 2.0;           // v at the base = alpha * Q of the whole tree
+  double apical_control = 0.5;  // lambda
+  double shedding = 0.0;        // Th: a branch with less vigour per internode is shed
+  int max_shoot = 3;            // n_max: the most vigorous bud's shoot, in metamers
+};
+
+// The control ellipse of gravimorphism: semi-axes s_v (vertical) and s_p (horizontal), its
+// centre e_v above the bud. A bud's factor is the distance from the bud to the ellipse along
+// the bud's direction: e_v > 0 favours upward buds (epitony), e_v < 0 downward ones
+// (hypotony), s_p > s_v sideways ones (amphitony).
+struct Gravimorphism {
+  double vertical = 1.0;
+  double horizontal = 1.0;
+  double offset = 0.0;
+};
+
+struct DirectionParameters {
+  double heading = 1.0;       // weight of the current heading H
+  double tropism = 0.2;       // weight of the tropism vector T
+  double environment = 0.3;   // weight of the environment direction E
+  double set_point = 0.0;     // theta: T's angle from the vertical (0 up, pi/2 level, > pi/2 down)
+  double branching = 0.785;   // psi: a lateral bud's angle to its internode
+  double deflection = 0.0;    // delta: the axis turns away from each new lateral bud
+  double phyllotaxis = 2.40;  // divergence between successive lateral buds
+  double noise = 0.05;        // random turn per metamer
+};
+
+// Pipe model d^n = sum d_i^n. A constraint fixes the width of one internode (by index in
+// growth order, 0 the trunk's first); n is then solved for its subtree.
+struct WidthConstraint {
+  std::uint32_t internode = 0;
+  double width = 0.1;
+};
+
+struct WidthParameters {
+  double tip = 0.004;
+  double exponent = 2.0;
+  std::vector<WidthConstraint> constraints;
+};
+
+struct LeafParameters {
+  int age = 2;  // steps: internodes younger than this carry a leaf
+  double length = 0.08;
+  double width = 0.05;
+};
+
+struct Pruning {
+  int step = 1;                 // before this step's growth
+  std::uint32_t internode = 1;  // the branch from this internode up is cut; it stays as a stub
+};
+
+struct Parameters {
+  int steps = 20;
+  double internode_length = 0.1;
+  SpaceParameters space;
+  LightParameters light;
+  VigourParameters vigour;
+  Gravimorphism gravimorphism;
+  DirectionParameters direction;
+  WidthParameters width;
+  LeafParameters leaves;
+  Envelope envelope;
+  std::vector<BrushStroke> strokes;
+  std::vector<Pruning> prunings;
+  std::size_t max_internodes = 1000000;  // growth beyond this is refused (InputError)
+};
+
+// The core's own tables of a species file (docs/SPECIES.md); throws InputError naming the
+// file, line, key and what was expected.
+Parameters parse_parameters(std::string_view toml_text, const std::string& source);
+
+}  // namespace landsim::trees::self_organizing

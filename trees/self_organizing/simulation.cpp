@@ -1,0 +1,174 @@
+#include "trees/self_organizing/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/input_error.h"
+#include "trees/random.h"
+#include "trees/self_organizing/competition.h"
+#include "trees/self_organizing/growth.h"
+#include "trees/self_organizing/markers.h"
+#include "trees/self_organizing/pipe_model.h"
+#include "trees/self_organizing/shadow_grid.h"
+#include "trees/self_organizing/vigour.h"
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+class Simulation {
+ public:
+  Simulation(const Parameters& p, std::uint64_t seed)
+      : p_(p),
+        plant_(p.internode_length),
+        shadows_(p.light, p.light.voxel * p.internode_length),
+        marker_rng_(seed, 1),
+        growth_rng_(seed, 2) {
+    shadows_.cast(plant_[0].tip, +1.0);
+    add_envelope_markers(p.envelope, marker_rng_, markers_);
+  }
+
+  // One step; false when nothing grew and no markers can still come.
+  bool step(int s) {
+    prune(s);
+    add_markers(s);
+    const std::vector<BudRef> buds = plant_.buds();
+    std::vector<Vec3> positions(buds.size()), directions(buds.size());
+    for (std::size_t b = 0; b < buds.size(); ++b)
+      positions[b] = plant_[buds[b].internode].tip, directions[b] = plant_.bud_direction(buds[b]);
+    const double l = p_.internode_length;
+    markers_.consume(positions, p_.space.occupancy * l);
+    const std::vector<BudSpace> space =
+        allocate_markers(markers_.points(), positions, directions,
+                         (p_.space.occupancy + p_.space.perception) * l, p_.space.perception_angle);
+    set_bud_light(buds, directions);
+    gather_light(plant_);
+    distribute_vigour(plant_, p_.vigour.alpha, p_.vigour.apical_control);
+    shed();
+    const int grown = grow_shoots(buds, space, s);
+    return grown > 0 || more_markers_after(s);
+  }
+
+  Plant& plant() { return plant_; }
+  const MarkerSet& markers() const { return markers_; }
+  std::size_t shed_branches = 0, shed_internodes = 0;
+
+ private:
+  void prune(int s) {
+    for (const Pruning& cut : p_.prunings) {
+      if (cut.step != s) continue;
+      if (cut.internode == 0 || cut.internode >= plant_.size() || !plant_[cut.internode].alive)
+        throw InputError("prune: internode " + std::to_string(cut.internode) +
+                         " is not a living branch internode at step " + std::to_string(s) +
+                         " (the tree has " + std::to_string(plant_.size()) + " internodes)");
+      assign_widths(plant_, p_.width);
+      for (std::uint32_t gone : plant_.cut_above(cut.internode, plant_[cut.internode].width))
+        shadows_.cast(plant_[gone].tip, -1.0);
+    }
+  }
+
+  void add_markers(int s) {
+    markers_.expire(s);
+    for (const BrushStroke& stroke : p_.strokes)
+      add_stroke_markers(stroke, s, marker_rng_, markers_);
+    if (p_.space.autonomous_markers <= 0) return;
+    const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
+    for (const BudRef& bud : plant_.buds())
+      add_cone_markers(plant_[bud.internode].tip, plant_.bud_direction(bud),
+                       p_.space.perception_angle, radius, p_.space.autonomous_markers, s,
+                       marker_rng_, markers_);
+  }
+
+  // Q = b * L^kappa for every bud: light feeds the resource; space only decides which buds
+  // can use theirs (docs/SELF_ORGANIZING.md).
+  void set_bud_light(const std::vector<BudRef>& buds, const std::vector<Vec3>& directions) {
+    for (std::size_t b = 0; b < buds.size(); ++b) {
+      Internode& n = plant_[buds[b].internode];
+      const double q = gravimorphism(p_.gravimorphism, directions[b]) *
+                       std::pow(shadows_.exposure(n.tip), p_.light.sensitivity);
+      (buds[b].lateral ? n.lateral_light : n.terminal_light) = q;
+    }
+  }
+
+  void shed() {
+    if (!(p_.vigour.shedding > 0.0)) return;
+    const std::vector<std::uint32_t> branches = branches_to_shed(plant_, p_.vigour.shedding);
+    if (branches.empty()) return;
+    assign_widths(plant_, p_.width);  // the kept widths of the shed branches
+    for (std::uint32_t root : branches) {
+      Internode& parent = plant_[plant_[root].parent];
+      parent.shed_lateral_width = std::max(parent.shed_lateral_width, plant_[root].width);
+      const auto gone = plant_.remove(root);
+      for (std::uint32_t k : gone) shadows_.cast(plant_[k].tip, -1.0);
+      ++shed_branches;
+      shed_internodes += gone.size();
+    }
+  }
+
+  int grow_shoots(const std::vector<BudRef>& buds, const std::vector<BudSpace>& space, int s) {
+    // Only buds with space grow: n = floor(v / v_max * n_max) among them.
+    double v_max = 0.0;
+    for (std::size_t b = 0; b < buds.size(); ++b)
+      if (space[b].markers > 0) v_max = std::max(v_max, vigour_of(buds[b]));
+    if (!(v_max > 0.0)) return 0;
+    int grown = 0;
+    for (std::size_t b = 0; b < buds.size(); ++b) {
+      const Internode& n = plant_[buds[b].internode];
+      if (space[b].markers == 0 || !n.alive || (buds[b].lateral ? !n.lateral_bud : !n.terminal_bud))
+        continue;
+      const int metamers =
+          static_cast<int>(std::floor(vigour_of(buds[b]) / v_max * p_.vigour.max_shoot));
+      if (metamers <= 0) continue;
+      grown +=
+          grow_shoot(plant_, p_, buds[b], metamers, space[b].direction, s, growth_rng_, shadows_);
+      if (plant_.size() > p_.max_internodes)
+        throw InputError("self-organising growth would exceed " +
+                         std::to_string(p_.max_internodes) + " internodes at step " +
+                         std::to_string(s) +
+                         ": lower growth.steps, vigour.max_shoot or the marker density");
+    }
+    return grown;
+  }
+
+  double vigour_of(const BudRef& bud) const {
+    const Internode& n = plant_[bud.internode];
+    return n.alive ? (bud.lateral ? n.lateral_vigour : n.terminal_vigour) : 0.0;
+  }
+
+  bool more_markers_after(int s) const {
+    if (p_.space.autonomous_markers > 0) return false;  // nothing grew with them: nothing will
+    for (const BrushStroke& stroke : p_.strokes) {
+      StrokePoint where;
+      if (brush_position(stroke, s + 1, where) || s + 1 < stroke.start_step) return true;
+    }
+    return false;
+  }
+
+  const Parameters& p_;
+  Plant plant_;
+  ShadowGrid shadows_;
+  MarkerSet markers_;
+  Random marker_rng_;
+  Random growth_rng_;
+};
+
+}  // namespace
+
+Plant grow(const Parameters& p, std::uint64_t seed, GrowthStatistics* statistics) {
+  Simulation sim(p, seed);
+  int steps = 0;
+  while (steps < p.steps)
+    if (!sim.step(++steps)) break;
+  assign_widths(sim.plant(), p.width);
+  if (statistics != nullptr) {
+    statistics->steps = steps;
+    statistics->internodes = sim.plant().living();
+    statistics->shed_branches = sim.shed_branches;
+    statistics->shed_internodes = sim.shed_internodes;
+    statistics->markers_left = sim.markers().size();
+    statistics->buds = sim.plant().buds().size();
+  }
+  return std::move(sim.plant());
+}
+
+}  // namespace landsim::trees::self_organizing
