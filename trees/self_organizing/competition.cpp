@@ -14,7 +14,7 @@ std::vector<BudSpace> allocate_markers(const std::vector<Vec3>& markers,
                                        double angle) {
   std::vector<BudSpace> space(positions.size());
   if (positions.empty()) return space;
-  const SparseGrid grid(positions, radius);
+  const SparseGrid grid(positions, 0.5 * radius);  // 5^3 half-size cells cover less than 3^3
   const double cos_half = std::cos(0.5 * angle);
   std::vector<Vec3> sum(positions.size(), Vec3{0, 0, 0});
   for (const Vec3& m : markers) {

@@ -54,12 +54,15 @@ int grow_shoot(Plant& plant, const Parameters& p, BudRef bud, int n, const Vec3&
     const Internode& from = plant[bud.internode];
     const Vec3 heading = bud_heading(plant, bud, d.deflection);
     Vec3 frame = bud.lateral ? from.direction : from.frame;
-    Vec3 h = heading * d.heading + tropism_vector(heading, frame, d.set_point) * d.tropism +
+    const bool trunk = !bud.lateral && from.order == 0;
+    const double set_point = trunk ? d.trunk_set_point : d.set_point;
+    Vec3 h = heading * d.heading + tropism_vector(heading, frame, set_point) * d.tropism +
              environment * d.environment;
     h = random_turn(length(h) > 1e-9 ? normalize(h) : heading, d.noise, rng);
     const Vec3 base = from.tip;
     const Vec3 tip = base + h * p.internode_length;
-    if (confine && !p.envelope.contains(tip)) break;
+    // The ground is an obstacle, and a confining envelope a wall.
+    if (tip.z < 0.0 || (confine && !p.envelope.contains(tip))) break;
     frame = perpendicular(h, frame);
     const int rank = bud.lateral ? 0 : from.rank + 1;
     const Vec3 toward = rotate_about(frame, h, rank * d.phyllotaxis);

@@ -1,5 +1,6 @@
 #include "trees/self_organizing/markers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -35,12 +36,10 @@ std::size_t MarkerSet::consume(const std::vector<Vec3>& buds, double radius) {
   if (buds.empty()) return 0;
   const SparseGrid grid(buds, radius);
   keep_if([&](std::size_t i) {
-    bool occupied = false;
-    grid.for_each_near(points_[i], radius, [&](std::uint32_t b) {
+    return !grid.any_near(points_[i], radius, [&](std::uint32_t b) {
       const Vec3 d = buds[b] - points_[i];
-      occupied = occupied || dot(d, d) < radius * radius;
+      return dot(d, d) < radius * radius;
     });
-    return !occupied;
   });
   return before - points_.size();
 }
@@ -84,13 +83,16 @@ void add_stroke_markers(const BrushStroke& stroke, int step, Random& rng, Marker
 
 void add_cone_markers(const Vec3& apex, const Vec3& axis, double angle, double radius, int count,
                       int step, Random& rng, MarkerSet& markers) {
-  const double cos_half = std::cos(0.5 * angle);
-  for (int k = 0, tries = 0; k < count && tries < 64 * count; ++tries) {
-    const Vec3 d = in_unit_ball(rng);
-    const double len = length(d);
-    if (len < 1e-9 || dot(d, axis) < cos_half * len) continue;
-    markers.add(apex + d * radius, step);
-    ++k;
+  // Uniform by volume: cos(polar angle) uniform over the cap, distance by the cube root.
+  const double cos_half = std::cos(0.5 * std::min(angle, 2.0 * std::numbers::pi));
+  const Vec3 u =
+      normalize(std::abs(axis.x) < 0.9 ? cross(axis, Vec3{1, 0, 0}) : cross(axis, Vec3{0, 1, 0}));
+  const Vec3 v = cross(axis, u);
+  for (int k = 0; k < count; ++k) {
+    const double c = rng.uniform(cos_half, 1.0), s = std::sqrt(std::max(0.0, 1.0 - c * c));
+    const double phi = rng.uniform(0.0, 2.0 * std::numbers::pi);
+    const double r = radius * std::cbrt(rng.unit());
+    markers.add(apex + (axis * c + u * (s * std::cos(phi)) + v * (s * std::sin(phi))) * r, step);
   }
 }
 

@@ -118,7 +118,8 @@ void read_gravimorphism(const Reader& r, const toml::table& t, Gravimorphism& g)
 
 void read_direction(const Reader& r, const toml::table& t, DirectionParameters& d) {
   read_table(r, t, "direction",
-             "heading, tropism, environment, set_point, branching, deflection, phyllotaxis, noise",
+             "heading, tropism, environment, set_point, trunk_set_point, branching, deflection, "
+             "phyllotaxis, noise",
              [&](const std::string& k, const std::string& key, const toml::node& v) {
                if (k == "heading")
                  d.heading = r.number(v, key, 0, 10);
@@ -128,6 +129,8 @@ void read_direction(const Reader& r, const toml::table& t, DirectionParameters& 
                  d.environment = r.number(v, key, 0, 10);
                else if (k == "set_point")
                  d.set_point = r.number(v, key, 0, 180) * kDegree;
+               else if (k == "trunk_set_point")
+                 d.trunk_set_point = r.number(v, key, 0, 180) * kDegree;
                else if (k == "branching")
                  d.branching = r.number(v, key, 0, 180) * kDegree;
                else if (k == "deflection")

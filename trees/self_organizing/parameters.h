@@ -40,9 +40,9 @@ struct SpaceParameters {
 // it, in a square spreading by q; a bud's light is max(C - s + a, 0).
 struct LightParameters {
   double full = 1.0;  // C
-  double a = 0.2;
-  double b = 2.0;            // > 1
-  int depth = 6;             // q_max
+  double a = 0.05;    // small enough that a dense crown darkens gradually (docs/SELF_ORGANIZING.md)
+  double b = 2.0;     // > 1
+  int depth = 6;      // q_max
   double voxel = 1.0;        // internode lengths
   double sensitivity = 1.0;  // kappa: Q = b_g * L^kappa
 };
@@ -65,14 +65,16 @@ struct Gravimorphism {
 };
 
 struct DirectionParameters {
-  double heading = 1.0;       // weight of the current heading H
-  double tropism = 0.2;       // weight of the tropism vector T
-  double environment = 0.3;   // weight of the environment direction E
-  double set_point = 0.0;     // theta: T's angle from the vertical (0 up, pi/2 level, > pi/2 down)
-  double branching = 0.785;   // psi: a lateral bud's angle to its internode
-  double deflection = 0.0;    // delta: the axis turns away from each new lateral bud
-  double phyllotaxis = 2.40;  // divergence between successive lateral buds
-  double noise = 0.05;        // random turn per metamer
+  double heading = 1.0;          // weight of the current heading H
+  double tropism = 0.2;          // weight of the tropism vector T
+  double environment = 0.3;      // weight of the environment direction E
+  double set_point = 0.0;        // theta of branches: T's angle from the vertical (0 up,
+                                 // pi/2 level, > pi/2 down)
+  double trunk_set_point = 0.0;  // theta of the trunk (order 0): upright unless set
+  double branching = 0.785;      // psi: a lateral bud's angle to its internode
+  double deflection = 0.0;       // delta: the axis turns away from each new lateral bud
+  double phyllotaxis = 2.40;     // divergence between successive lateral buds
+  double noise = 0.05;           // random turn per metamer
 };
 
 // Pipe model d^n = sum d_i^n. A constraint fixes the width of one internode (by index in

@@ -2,36 +2,41 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace landsim::trees::self_organizing {
 
 SparseGrid::SparseGrid(const std::vector<Vec3>& points, double cell) : cell_(cell) {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(points.size());
-  for (std::uint32_t i = 0; i < points.size(); ++i) keyed[i] = {key(cell_of(points[i])), i};
-  std::sort(keyed.begin(), keyed.end());
-  order_.resize(keyed.size());
-  runs_.reserve(keyed.size());
-  for (std::uint32_t k = 0; k < keyed.size(); ++k) {
-    order_[k] = keyed[k].second;
-    auto [it, fresh] = runs_.try_emplace(keyed[k].first, k, k + 1);
+  struct Entry {
+    std::uint64_t row;
+    std::int64_t x;
+    std::uint32_t index;
+  };
+  std::vector<Entry> entries(points.size());
+  for (std::uint32_t i = 0; i < points.size(); ++i)
+    entries[i] = {row_key(cell_of(points[i].y), cell_of(points[i].z)), cell_of(points[i].x), i};
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return std::tie(a.row, a.x, a.index) < std::tie(b.row, b.x, b.index);
+  });
+  order_.resize(entries.size());
+  cell_x_.resize(entries.size());
+  rows_.reserve(entries.size());
+  for (std::uint32_t k = 0; k < entries.size(); ++k) {
+    order_[k] = entries[k].index;
+    cell_x_[k] = entries[k].x;
+    auto [it, fresh] = rows_.try_emplace(entries[k].row, k, k + 1);
     if (!fresh) it->second.second = k + 1;
   }
 }
 
-SparseGrid::Cell SparseGrid::cell_of(const Vec3& p) const {
-  return {static_cast<std::int64_t>(std::floor(p.x / cell_)),
-          static_cast<std::int64_t>(std::floor(p.y / cell_)),
-          static_cast<std::int64_t>(std::floor(p.z / cell_))};
+std::int64_t SparseGrid::cell_of(double v) const {
+  return static_cast<std::int64_t>(std::floor(v / cell_));
 }
 
-// 21 bits per axis, offset to be non-negative: cells within +-2^20 of the origin (a million
-// cells of at least a centimetre: far beyond any tree).
-std::uint64_t SparseGrid::key(const Cell& c) {
-  constexpr std::int64_t kOffset = 1 << 20;
-  const auto part = [](std::int64_t v) {
-    return static_cast<std::uint64_t>(std::clamp<std::int64_t>(v + kOffset, 0, 2 * kOffset - 1));
-  };
-  return part(c.x) | part(c.y) << 21 | part(c.z) << 42;
+// 32 bits per axis (cells far beyond any tree alias harmlessly: the caller tests distances).
+std::uint64_t SparseGrid::row_key(std::int64_t y, std::int64_t z) {
+  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) |
+         static_cast<std::uint64_t>(static_cast<std::uint32_t>(z)) << 32;
 }
 
 }  // namespace landsim::trees::self_organizing

@@ -17,6 +17,7 @@ Parameters species_with_shedding() {
   p.envelope.centre = {0, 0, 2};
   p.envelope.radii = {1.5, 1.5, 2};
   p.envelope.density = 60;
+  p.light.a = 0.2;  // strong shade, so that shedding has branches to take
   p.vigour.shedding = 0.3;
   return p;
 }

@@ -99,6 +99,7 @@ TEST(SelfOrganizing, PruningLeavesAStubThatKeepsItsWidth) {
 
 TEST(SelfOrganizing, HeavySheddingRemovesBranches) {
   Parameters p = crown(EnvelopeKind::silhouette);
+  p.light.a = 0.2;  // strong shade
   GrowthStatistics none, heavy;
   grow(p, 3, &none);
   p.vigour.shedding = 0.6;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "trees/random.h"
@@ -84,7 +85,13 @@ TEST(Shedding, ChoosesExactlyTheBranchesUnderTheThreshold) {
         0.2 + 0.8 * ((b.internode * 7919u) % 13u) / 13.0;
   gather_light(plant);
   distribute_vigour(plant, 2.0, 0.55);
-  const double threshold = 0.5;
+  // The median vigour per internode of the branches: some are under, some over.
+  std::vector<double> ratios;
+  for (std::uint32_t i = 1; i < plant.size(); ++i)
+    if (plant[i].alive && plant.starts_branch(i)) ratios.push_back(plant[i].vigour / plant[i].size);
+  ASSERT_GT(ratios.size(), 10u);
+  std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+  const double threshold = ratios[ratios.size() / 2];
   const auto shed = branches_to_shed(plant, threshold);
   ASSERT_FALSE(shed.empty());
   std::vector<bool> chosen(plant.size(), false), covered(plant.size(), false);

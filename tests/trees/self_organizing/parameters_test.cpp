@@ -1,0 +1,144 @@
+#include "trees/self_organizing/parameters.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "core/input_error.h"
+#include "trees/self_organizing/generator.h"
+#include "trees/species.h"
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+const std::string kHeader = "core = \"self_organizing\"\n";
+const std::string kSpace = "[space]\nautonomous_markers = 4\n";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_species_toml(text, "so.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SelfOrganizingSpecies, ReadsEveryTable) {
+  const Species s = parse_species_toml(
+      kHeader +
+          "name = \"t\"\n[growth]\nage = 12\ninternode_length = 0.2\n"
+          "[space]\noccupancy = 1.5\nperception = 3.0\nperception_angle = 120\n"
+          "autonomous_markers = 3\n[light]\na = 0.1\nb = 1.5\ndepth = 4\nvoxel = 2\n"
+          "sensitivity = 0.5\n[vigour]\nalpha = 3\napical_control = 0.6\nshedding = 0.2\n"
+          "max_shoot = 4\n[gravimorphism]\nvertical = 1.2\nhorizontal = 0.7\noffset = 0.3\n"
+          "[direction]\nset_point = 100\ntrunk_set_point = 5\nbranching = 30\ndeflection = 10\n"
+          "phyllotaxis = 90\nnoise = 0.1\n[width]\ntip = 0.003\nexponent = 2.5\n"
+          "[[width_constraint]]\ninternode = 0\nwidth = 0.2\n[leaves]\nage = 3\n"
+          "[envelope]\nkind = \"ellipsoid\"\ncentre = [0, 0, 3]\nradii = [2, 2, 3]\n"
+          "density = 10\nconfine = false\n"
+          "[[stroke]]\npoints = [[0, 0, 1, 0.5], [1, 0, 2, 0.5]]\nstart_step = 3\n"
+          "[[prune]]\nstep = 5\ninternode = 7\n",
+      "t.toml");
+  EXPECT_EQ(s.core, CoreKind::self_organizing);
+  const auto& p = std::get<Parameters>(s.parameters);
+  EXPECT_EQ(p.steps, 12);
+  EXPECT_DOUBLE_EQ(p.internode_length, 0.2);
+  EXPECT_NEAR(p.space.perception_angle, 120 * std::numbers::pi / 180, 1e-12);
+  EXPECT_EQ(p.space.autonomous_markers, 3);
+  EXPECT_EQ(p.light.depth, 4);
+  EXPECT_DOUBLE_EQ(p.vigour.apical_control, 0.6);
+  EXPECT_EQ(p.vigour.max_shoot, 4);
+  EXPECT_DOUBLE_EQ(p.gravimorphism.offset, 0.3);
+  EXPECT_NEAR(p.direction.set_point, 100 * std::numbers::pi / 180, 1e-12);
+  EXPECT_NEAR(p.direction.trunk_set_point, 5 * std::numbers::pi / 180, 1e-12);
+  ASSERT_EQ(p.width.constraints.size(), 1u);
+  EXPECT_DOUBLE_EQ(p.width.constraints[0].width, 0.2);
+  EXPECT_EQ(p.envelope.kind, EnvelopeKind::ellipsoid);
+  EXPECT_FALSE(p.envelope.confine);
+  ASSERT_EQ(p.strokes.size(), 1u);
+  EXPECT_EQ(p.strokes[0].points.size(), 2u);
+  EXPECT_EQ(p.strokes[0].start_step, 3);
+  ASSERT_EQ(p.prunings.size(), 1u);
+  EXPECT_EQ(p.prunings[0].internode, 7u);
+}
+
+TEST(SelfOrganizingSpecies, BadInputNamesTheFileLineAndKey) {
+  std::string e = error_of(kHeader + kSpace + "[vigour]\napical_control = 1.5\n");
+  EXPECT_NE(e.find("so.toml:5:"), std::string::npos) << e;
+  EXPECT_NE(e.find("vigour.apical_control"), std::string::npos) << e;
+  EXPECT_NE(e.find("0 to 1"), std::string::npos) << e;
+  e = error_of(kHeader + kSpace + "[direction]\nbend = 3\n");
+  EXPECT_NE(e.find("direction.bend"), std::string::npos) << e;
+  e = error_of(kHeader + kSpace + "[gravimorphism]\nvertical = 1.0\noffset = 1.5\n");
+  EXPECT_NE(e.find("gravimorphism.offset"), std::string::npos) << e;
+  e = error_of(kHeader + kSpace +
+               "[envelope]\nkind = \"silhouette\"\nsilhouette = [[0, 0], [1, 1]]\n");
+  EXPECT_NE(e.find("envelope.silhouette"), std::string::npos) << e;
+  e = error_of(kHeader + kSpace + "[[stroke]]\npoints = [[0, 0, 1]]\n");
+  EXPECT_NE(e.find("stroke.points"), std::string::npos) << e;
+  e = error_of(kHeader + kSpace + "[[prune]]\ninternode = 0\n");
+  EXPECT_NE(e.find("prune.internode"), std::string::npos) << e;  // the trunk cannot be pruned
+  e = error_of(kHeader + "[growth]\nsteps = 10\n");
+  EXPECT_NE(e.find("no markers of free space"), std::string::npos) << e;
+  e = error_of(kHeader + kSpace + "[growth]\nsteps = 10.5\n");
+  EXPECT_NE(e.find("growth.steps"), std::string::npos) << e;
+}
+
+TEST(SelfOrganizingSpecies, ExplosiveMarkerCountsAreRefused) {
+  const std::string e =
+      error_of(kHeader +
+               "[envelope]\nkind = \"ellipsoid\"\ncentre = [0, 0, 50]\nradii = [50, 50, 50]\n"
+               "density = 1000\n");
+  EXPECT_NE(e.find("envelope.density"), std::string::npos) << e;
+}
+
+TEST(SelfOrganizingSpecies, TheExampleSpeciesGrowDistinctShapes) {
+  struct Shape {
+    const char* file;
+    double min_height, max_height, min_crown, max_crown;
+  };
+  const Shape shapes[] = {
+      {"so_upright.toml", 9, 15, 3, 8},  {"so_plagiotropic.toml", 9, 15, 4, 10},
+      {"so_weeping.toml", 9, 15, 3, 9},  {"so_epitonic.toml", 7, 12, 1.5, 4.5},
+      {"so_shedding.toml", 9, 14, 2, 5}, {"so_envelope.toml", 7.5, 9.01, 2.5, 3.31},
+      {"so_brushed.toml", 5, 8, 3, 6},
+  };
+  for (const Shape& shape : shapes) {
+    const Species s =
+        load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / shape.file);
+    ASSERT_EQ(s.core, CoreKind::self_organizing) << shape.file;
+    const Tree t = generate(s, {.seed = 3});
+    EXPECT_GE(t.stats.height, shape.min_height) << shape.file;
+    EXPECT_LE(t.stats.height, shape.max_height) << shape.file;
+    EXPECT_GE(t.stats.crown_radius, shape.min_crown) << shape.file;
+    EXPECT_LE(t.stats.crown_radius, shape.max_crown) << shape.file;
+    EXPECT_GT(t.stats.leaves, 500) << shape.file;
+  }
+}
+
+TEST(SelfOrganizingSpecies, WeepingBranchesHangAndPlagiotropicOnesLevelOut) {
+  const auto load = [](const char* file) {
+    return std::get<Parameters>(
+        load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / file).parameters);
+  };
+  // Mean vertical component of the branch internodes (order >= 1), by tropism.
+  const auto mean_rise = [](const Parameters& p) {
+    const Plant plant = grow(p, 3);
+    double sum = 0.0;
+    int count = 0;
+    for (const Internode& n : plant.internodes())
+      if (n.alive && n.order >= 1) sum += n.direction.z, ++count;
+    return sum / count;
+  };
+  const double upright = mean_rise(load("so_upright.toml"));
+  const double level = mean_rise(load("so_plagiotropic.toml"));
+  const double weeping = mean_rise(load("so_weeping.toml"));
+  EXPECT_GT(upright, 0.3);
+  EXPECT_LT(std::abs(level), 0.25);
+  EXPECT_LT(weeping, -0.1);
+}
+
+}  // namespace
+}  // namespace landsim::trees::self_organizing
