@@ -18,8 +18,7 @@ struct GrowthStatistics {
   std::size_t shed_branches = 0;
   std::size_t shed_internodes = 0;
   std::size_t markers_left = 0;
-  std::size_t buds = 0;           // living at the end
-  double seconds_per_step = 0.0;  // filled by callers that time it
+  std::size_t buds = 0;  // living at the end
 };
 
 // Grows the tree; deterministic per (parameters, seed). Throws InputError if it would exceed
