@@ -93,7 +93,11 @@ SurfaceMaterial PathTracer::material(const Hit& hit) const {
     return {ground.albedo, {}};
   }
   const TreePrototype& proto = scene_.prototypes[static_cast<std::size_t>(hit.prototype)];
-  if (hit.object == ObjectClass::leaf) return {proto.leaf_reflectance, proto.leaf_transmittance};
+  if (hit.object == ObjectClass::leaf) {
+    const Vec3f tint = proto.leaf_tint(
+        proto.geometry.group(trees::Group::leaves).vigour_of_triangle(hit.primitive));
+    return {proto.leaf_reflectance * tint, proto.leaf_transmittance * tint};
+  }
   if (proto.bark_texture) return {proto.bark_albedo * proto.bark_texture->factor(hit.u, hit.v), {}};
   return {proto.bark_albedo, {}};
 }

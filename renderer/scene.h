@@ -106,6 +106,12 @@ struct TreePrototype {
   std::shared_ptr<const BarkTexture> bark_texture;  // optional, modulates bark_albedo
   Vec3f leaf_reflectance{0.10f, 0.20f, 0.05f};
   Vec3f leaf_transmittance{0.05f, 0.12f, 0.02f};
+  // Leaf colour factor at vigour 0 (species weak-leaf colour over leaf colour); leaves of
+  // vigour v take lerp(leaf_weak_tint, 1, v) times the colours above.
+  Vec3f leaf_weak_tint{1.0f, 1.0f, 1.0f};
+  Vec3f leaf_tint(float vigour) const {
+    return leaf_weak_tint + (Vec3f{1.0f, 1.0f, 1.0f} - leaf_weak_tint) * vigour;
+  }
   std::uint16_t species = 0;  // index in the scenario's species table
 };
 

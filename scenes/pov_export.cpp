@@ -87,6 +87,21 @@ std::map<int, std::vector<std::uint32_t>> ground_by_material(const renderer::Gro
   return groups;
 }
 
+// Leaf triangles grouped by vigour level, for leaves with graded vigour (else none): the
+// renderer colours each leaf by its level, so the export draws each level in its colour.
+std::map<int, std::vector<std::uint32_t>> leaves_by_vigour(const trees::GroupGeometry& leaves) {
+  std::map<int, std::vector<std::uint32_t>> groups;
+  if (leaves.item_vigour.empty()) return groups;
+  const std::vector<std::uint32_t>& idx = leaves.triangles.indices;
+  for (std::uint32_t t = 0; t < leaves.triangles.triangle_count(); ++t) {
+    const int level =
+        static_cast<int>(std::lround(leaves.vigour_of_triangle(t) * (trees::kVigourLevels - 1)));
+    groups[level].insert(groups[level].end(), idx.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                         idx.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  return groups;
+}
+
 }  // namespace
 
 std::string sanitize_for_pov(const std::string& text) {
@@ -114,10 +129,16 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
       for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
         const trees::TreeGeometry& g = scene.prototypes[p].geometry;
         for (int k = 0; k < trees::kGroupCount; ++k) {
-          const trees::TriangleSet& t = g.groups[static_cast<std::size_t>(k)].triangles;
-          if (!t.indices.empty())
+          const trees::GroupGeometry& group = g.groups[static_cast<std::size_t>(k)];
+          const trees::TriangleSet& t = group.triangles;
+          if (!t.indices.empty() && group.item_vigour.empty())
             write_mesh2(out, fmt::format("LS_Proto_{}_{}", p, k), t.vertices, t.normals, t.indices);
         }
+        // Leaves of graded vigour: one mesh per level, each drawn in its own colour.
+        for (const auto& [level, indices] : leaves_by_vigour(g.group(trees::Group::leaves)))
+          write_mesh2(out, fmt::format("LS_Proto_{}_4_{}", p, level),
+                      g.group(trees::Group::leaves).triangles.vertices,
+                      g.group(trees::Group::leaves).triangles.normals, indices);
       }
       if (scene.grass.cols > 0) {
         for (int t = 0; t < 3; ++t) {
@@ -173,9 +194,16 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
       const renderer::TreePrototype& proto = scene.prototypes[p];
       out.print("#declare LS_Tree_{} = union {{\n", p);
+      for (const auto& [level, indices] :
+           leaves_by_vigour(proto.geometry.group(trees::Group::leaves)))
+        out.print(
+            "  object {{ LS_Proto_{}_4_{} LS_Texture(<0, 0, 1>, {}) }}\n", p, level,
+            colour_vector(proto.leaf_reflectance *
+                          proto.leaf_tint(static_cast<float>(level) / (trees::kVigourLevels - 1))));
       for (int k = 0; k < trees::kGroupCount; ++k) {
         if (proto.geometry.groups[static_cast<std::size_t>(k)].triangles.indices.empty()) continue;
         const bool leaf = k == static_cast<int>(trees::Group::leaves);
+        if (leaf && !proto.geometry.group(trees::Group::leaves).item_vigour.empty()) continue;
         out.print("  object {{ LS_Proto_{}_{} LS_Texture({}, {}) }}\n", p, k,
                   leaf ? "<0, 0, 1>" : "<0, 1, 0>",
                   colour_vector(leaf ? proto.leaf_reflectance : proto.bark_albedo));

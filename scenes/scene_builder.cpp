@@ -70,6 +70,10 @@ renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t 
     }
   }
   p.leaf_transmittance = p.leaf_reflectance * kLeafTransmittanceRatio;
+  const Vec3f& leaf = sp.species.colours.leaf;
+  const Vec3f& weak = sp.species.colours.leaf_weak;
+  p.leaf_weak_tint = {leaf.x > 0 ? weak.x / leaf.x : 1.0f, leaf.y > 0 ? weak.y / leaf.y : 1.0f,
+                      leaf.z > 0 ? weak.z / leaf.z : 1.0f};
   return p;
 }
 

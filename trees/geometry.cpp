@@ -1,6 +1,7 @@
 #include "trees/geometry.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace landsim::trees {
@@ -43,6 +44,23 @@ std::array<Vec3f, 2> TreeGeometry::bounds() const {
   }
   if (!any) return {Vec3f{}, Vec3f{}};
   return {lo, hi};
+}
+
+std::size_t GroupGeometry::item_of_triangle(std::uint32_t triangle) const {
+  return static_cast<std::size_t>(
+      std::upper_bound(item_triangle_end.begin(), item_triangle_end.end(), triangle) -
+      item_triangle_end.begin());
+}
+
+float GroupGeometry::vigour_of_triangle(std::uint32_t triangle) const {
+  if (item_vigour.empty()) return 1.0f;
+  const std::size_t item = item_of_triangle(triangle);
+  return item < item_vigour.size() ? item_vigour[item] : 1.0f;
+}
+
+float quantize_vigour(float vigour) {
+  constexpr float steps = static_cast<float>(kVigourLevels - 1);
+  return std::round(std::clamp(vigour, 0.0f, 1.0f) * steps) / steps;
 }
 
 std::size_t rank_major_position(std::size_t index, std::size_t count, int mass_size) {

@@ -21,6 +21,10 @@ enum class Group : int { trunk = 0, level1 = 1, level2 = 2, level3plus = 3, leav
 inline constexpr int kGroupCount = 5;
 inline constexpr int kStemMassSize = 16;
 inline constexpr int kLeafMassSize = 4;
+// Leaf vigour is stored in this many levels (0, 1/7, ..., 1), so that exports can draw each
+// level with one colour and match the renderer exactly.
+inline constexpr int kVigourLevels = 8;
+float quantize_vigour(float vigour);
 
 struct TriangleSet {
   std::vector<Vec3f> vertices;
@@ -63,6 +67,9 @@ struct GroupGeometry {
   std::vector<std::uint32_t> item_triangle_end;
   std::vector<std::uint32_t> item_line_end;
   std::vector<std::uint32_t> item_point_end;
+  // Leaves only: per stored item, its vigour in kVigourLevels steps (0 to 1); empty when
+  // every leaf has full vigour.
+  std::vector<float> item_vigour;
 
   std::size_t mass_count() const {
     return (item_count + static_cast<std::size_t>(mass_size) - 1) /
@@ -72,11 +79,15 @@ struct GroupGeometry {
   std::uint32_t triangles_in_prefix(std::size_t items) const;
   std::uint32_t lines_in_prefix(std::size_t items) const;
   std::uint32_t points_in_prefix(std::size_t items) const;
+  // The stored item a triangle belongs to, and (leaves) that item's vigour, 1 without any.
+  std::size_t item_of_triangle(std::uint32_t triangle) const;
+  float vigour_of_triangle(std::uint32_t triangle) const;
 };
 
 struct TreeColours {
   Vec3f bark{0.30f, 0.24f, 0.18f};  // linear RGB reflectance
   Vec3f leaf{0.12f, 0.25f, 0.06f};
+  Vec3f leaf_weak{0.30f, 0.30f, 0.09f};  // leaves of the weakest shoots (self-organising core)
 };
 
 struct TreeGeometry {

@@ -147,6 +147,17 @@ GroupGeometry assemble(const std::vector<const Item*>& items, int mass_size, Mes
   return group;
 }
 
+// Each leaf's vigour at its stored position, if any leaf is below full vigour.
+void store_leaf_vigour(const std::vector<LeafSkeleton>& leaves, GroupGeometry& group) {
+  const bool all_full = std::all_of(leaves.begin(), leaves.end(),
+                                    [](const LeafSkeleton& l) { return l.vigour >= 1.0f; });
+  if (all_full) return;
+  group.item_vigour.resize(leaves.size());
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+    group.item_vigour[rank_major_position(i, leaves.size(), group.mass_size)] =
+        quantize_vigour(leaves[i].vigour);
+}
+
 }  // namespace
 
 Group stem_group(int level) { return static_cast<Group>(std::clamp(level, 0, 3)); }
@@ -172,6 +183,7 @@ TreeGeometry mesh_tree(const TreeSkeleton& skeleton, const MeshResolution& resol
       leaves, kLeafMassSize,
       [&](const LeafSkeleton& l, GroupGeometry& out) { mesh_leaf(l, leaf_mesh, out); },
       leaf_mesh.shape.vertices.size(), leaf_mesh.shape.indices.size());
+  store_leaf_vigour(skeleton.leaves, leaf_group);
   geometry.colours = skeleton.colours;
   return geometry;
 }

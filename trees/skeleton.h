@@ -31,6 +31,9 @@ struct LeafSkeleton {
   Vec3 normal;     // unit, the upper face
   double length = 0.0;
   double width = 0.0;
+  // The vigour of the shoot the leaf grew on, 0-1 (the self-organising core; 1 elsewhere):
+  // the leaf's colour runs from the species' weak-leaf colour at 0 to its leaf colour at 1.
+  float vigour = 1.0f;
 };
 
 struct TreeSkeleton {

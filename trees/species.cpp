@@ -64,9 +64,11 @@ void read_colours(const toml::node& node, const std::string& source, TreeColours
       colours.bark = read_colour(value, source, "bark");
     } else if (key.str() == "leaf") {
       colours.leaf = read_colour(value, source, "leaf");
+    } else if (key.str() == "leaf_weak") {
+      colours.leaf_weak = read_colour(value, source, "leaf_weak");
     } else {
       throw InputError(where(source, key.source()) + ": colours: unknown key '" +
-                       std::string(key.str()) + "' (expected bark, leaf)");
+                       std::string(key.str()) + "' (expected bark, leaf, leaf_weak)");
     }
   }
 }

@@ -33,6 +33,43 @@ Scene base_scene() {
   return s;
 }
 
+TEST(Instancing, LeavesTakeTheColourOfTheirVigour) {
+  // Two leaf panels side by side: the left one (triangles 0-1, +y side) of vigour 0, the
+  // right one of vigour 1.
+  Scene s = base_scene();
+  TreePrototype p = panel(trees::Group::leaves);
+  trees::GroupGeometry& leaves = p.geometry.group(trees::Group::leaves);
+  leaves.triangles.vertices = {{0, 0, 0},  {0, 1, 0}, {0, 1, 4}, {0, 0, 4},
+                               {0, -1, 0}, {0, 0, 0}, {0, 0, 4}, {0, -1, 4}};
+  leaves.triangles.normals.assign(8, Vec3f{1, 0, 0});
+  leaves.triangles.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
+  leaves.item_count = 2;
+  leaves.item_triangle_end = {2, 4};
+  leaves.item_vigour = {0.0f, 1.0f};
+  p.leaf_weak_tint = {2.0f, 1.0f, 0.5f};
+  s.prototypes.push_back(p);
+  s.instances.push_back({0, {10.0, 0.0, 0.0}, 0.0, 1.0});
+  const View view{"v", {0.0, 0.0, 2.0}, {1.0, 0.0, 2.0}, 30.0, 64, 64};
+  const Film film = Renderer(s).render(view, {});
+  int weak = 0, full = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      if (film.object(x, y) != static_cast<std::uint8_t>(ObjectClass::leaf)) continue;
+      const Vec3f a = film.albedo(x, y);
+      if (x < 30) {  // +y: the weak panel
+        ++weak;
+        EXPECT_NEAR(a.x, 0.4f, 1e-4);
+        EXPECT_NEAR(a.z, 0.1f, 1e-4);
+      } else if (x > 33) {
+        ++full;
+        EXPECT_NEAR(a.x, 0.2f, 1e-4);
+        EXPECT_NEAR(a.z, 0.2f, 1e-4);
+      }
+    }
+  EXPECT_GT(weak, 50);
+  EXPECT_GT(full, 50);
+}
+
 TEST(Instancing, InstancesAppearWhereTheirTransformPutsThem) {
   Scene s = base_scene();
   s.prototypes.push_back(panel(trees::Group::trunk));

@@ -79,21 +79,38 @@ TEST(Crosscheck, SmallSceneAgreesWithPovRay) {
   }
 }
 
-TEST(Crosscheck, GraphPathsTreesAgreeWithPovRay) {
-  // The graph-paths core's trees go through the same TreeGeometry, export and comparison.
-  TempDir dir;
-  const Scenario s = small_scene(dir, "graph_column.toml");
+// Another core's trees go through the same TreeGeometry, export and comparison.
+CrosscheckReport crosscheck_species(const TempDir& dir, const std::string& species) {
+  const Scenario s = small_scene(dir, species);
   const renderer::Scene scene = build_scene(s);
-  ASSERT_GE(scene.instances.size(), 2u);
-  const int tree_pixels = tree_pixels_in_view(scene);
-  ASSERT_GT(tree_pixels, 20);  // the columns are in view: the tree IoU means something
+  EXPECT_GE(scene.instances.size(), 2u);
+  EXPECT_GT(tree_pixels_in_view(scene), 20);  // in view: the tree IoU means something
   CrosscheckOptions o;
   o.out_dir = dir / "check";
   o.spp = 1;
-  const CrosscheckReport r = crosscheck(s, scene, o);
+  return crosscheck(s, scene, o);
+}
+
+TEST(Crosscheck, GraphPathsTreesAgreeWithPovRay) {
+  TempDir dir;
+  const CrosscheckReport r = crosscheck_species(dir, "graph_column.toml");
   EXPECT_GT(r.tree_iou, 0.9);
   EXPECT_LE(r.luminance_mean_rel_diff, 0.05);
   EXPECT_TRUE(r.pass);
+}
+
+TEST(Crosscheck, SelfOrganizingTreesAgreeWithPovRay) {
+  TempDir dir;
+  const CrosscheckReport r = crosscheck_species(dir, "so_envelope.toml");
+  EXPECT_GT(r.tree_iou, 0.9);
+  EXPECT_LE(r.luminance_mean_rel_diff, 0.05);
+  EXPECT_TRUE(r.pass);
+  // Leaves coloured by vigour are exported one mesh per vigour level, each in its colour.
+  std::ifstream inc(dir / "check" / "pov" / "meshes.inc");
+  const std::string text((std::istreambuf_iterator<char>(inc)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text.find("LS_Proto_0_4 "), std::string::npos);    // not as one mesh
+  EXPECT_NE(text.find("LS_Proto_0_4_7 "), std::string::npos);  // full vigour
+  EXPECT_NE(text.find("LS_Proto_0_4_5 "), std::string::npos);  // and weaker shoots
 }
 
 TEST(Crosscheck, AMovedCameraFails) {

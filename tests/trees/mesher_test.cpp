@@ -112,5 +112,28 @@ TEST(Mesher, LeafPointsCarryTheBladesArea) {
   for (const Vec3f& v : leaves.triangles.vertices) EXPECT_NEAR(v.z, 5.0f, 1e-6);
 }
 
+TEST(Mesher, LeafVigourIsStoredQuantisedAtEachLeafsStoredPosition) {
+  TreeSkeleton t;
+  t.leaf_shape = {LeafShapeKind::triangle, 1};
+  const float vigour[] = {0.0f, 1.0f, 0.3f, 0.93f, 0.5f, 0.07f, 1.0f};
+  for (float v : vigour) {
+    LeafSkeleton leaf{{0, 0, 5}, {1, 0, 0}, {0, 0, 1}, 0.2, 0.1};
+    leaf.vigour = v;
+    t.leaves.push_back(leaf);
+  }
+  const GroupGeometry leaves = mesh_tree(t, MeshResolution{}).group(Group::leaves);
+  ASSERT_EQ(leaves.item_vigour.size(), 7u);
+  for (std::size_t i = 0; i < 7; ++i) {
+    const std::size_t stored = rank_major_position(i, 7, kLeafMassSize);
+    const float expected = std::round(vigour[i] * 7.0f) / 7.0f;
+    EXPECT_FLOAT_EQ(leaves.item_vigour[stored], expected) << i;
+    // One triangle per leaf here: triangle `stored` is that leaf's.
+    EXPECT_FLOAT_EQ(leaves.vigour_of_triangle(static_cast<std::uint32_t>(stored)), expected);
+  }
+  // Full vigour everywhere stores nothing (the other cores).
+  for (LeafSkeleton& leaf : t.leaves) leaf.vigour = 1.0f;
+  EXPECT_TRUE(mesh_tree(t, MeshResolution{}).group(Group::leaves).item_vigour.empty());
+}
+
 }  // namespace
 }  // namespace landsim::trees

@@ -41,6 +41,7 @@ struct Internode {
   double vigour = 0.0;     // v reaching the base
   std::uint32_t size = 1;  // living internodes in the subtree from here
   double width = 0.0;
+  double shoot_vigour = 0.0;  // the vigour of the bud whose shoot this internode is part of
 };
 
 // A bud: the node at the internode's tip, terminal or lateral.

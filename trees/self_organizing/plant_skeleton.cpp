@@ -34,6 +34,19 @@ LeafSkeleton leaf_at(const Internode& n, const LeafParameters& p) {
   return leaf;
 }
 
+// Leaf vigour 0-1: the shoot's vigour over the 90th percentile of the shoots' (the
+// distribution is skewed: the leaders get most), so that the strongest tenth keep the
+// species' leaf colour and weaker shoots fade towards its weak-leaf colour.
+void colour_by_vigour(const std::vector<double>& vigour, std::vector<LeafSkeleton>& leaves) {
+  if (vigour.empty()) return;
+  std::vector<double> sorted = vigour;
+  const auto at = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() * 9 / 10);
+  std::nth_element(sorted.begin(), at, sorted.end());
+  const double full = *at;
+  for (std::size_t k = 0; k < leaves.size(); ++k)
+    leaves[k].vigour = full > 0.0 ? static_cast<float>(std::min(1.0, vigour[k] / full)) : 1.0f;
+}
+
 // The step each internode's axis last grew in (the birth of the axis's living tip).
 std::vector<int> axis_last_growth(const Plant& plant) {
   std::vector<int> last(plant.size(), 0);
@@ -50,13 +63,18 @@ std::vector<int> axis_last_growth(const Plant& plant) {
 TreeSkeleton plant_skeleton(const Plant& plant, const LeafParameters& leaves) {
   TreeSkeleton skeleton;
   const std::vector<int> last = axis_last_growth(plant);
+  std::vector<double> vigour;  // of each leaf's shoot
   for (std::uint32_t i = 0; i < plant.size(); ++i) {
     const Internode& n = plant[i];
     if (!n.alive) continue;
     // Axes in the order of their first internode: every parent axis before its branches.
     if (i == 0 || plant.starts_branch(i)) skeleton.stems.push_back(axis_stem(plant, i));
-    if (!n.stub && last[i] - n.birth < leaves.age) skeleton.leaves.push_back(leaf_at(n, leaves));
+    if (!n.stub && last[i] - n.birth < leaves.age) {
+      skeleton.leaves.push_back(leaf_at(n, leaves));
+      vigour.push_back(n.shoot_vigour);
+    }
   }
+  colour_by_vigour(vigour, skeleton.leaves);
   return skeleton;
 }
 

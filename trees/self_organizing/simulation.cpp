@@ -119,8 +119,11 @@ class Simulation {
       const int metamers =
           static_cast<int>(std::floor(vigour_of(buds[b]) / v_max * p_.vigour.max_shoot));
       if (metamers <= 0) continue;
+      const std::size_t first = plant_.size();
       grown +=
           grow_shoot(plant_, p_, buds[b], metamers, space[b].direction, s, growth_rng_, shadows_);
+      for (std::size_t k = first; k < plant_.size(); ++k)
+        plant_[static_cast<std::uint32_t>(k)].shoot_vigour = vigour_of(buds[b]);
       if (plant_.size() > p_.max_internodes)
         throw InputError("self-organising growth would exceed " +
                          std::to_string(p_.max_internodes) + " internodes at step " +

@@ -129,6 +129,15 @@ TEST(SelfOrganizing, SkeletonHasOneStemPerAxisAndLeavesOnYoungShoots) {
   EXPECT_GT(s.stems[0].sections.front().radius, s.stems[0].sections.back().radius);
   EXPECT_GT(s.leaves.size(), 50u);
   EXPECT_LT(s.leaves.size(), stats.internodes);
+  // Leaves are coloured by their shoot's vigour: full on the strong shoots, less on weak.
+  int full = 0, weaker = 0;
+  for (const LeafSkeleton& leaf : s.leaves) {
+    ASSERT_GE(leaf.vigour, 0.0f);
+    ASSERT_LE(leaf.vigour, 1.0f);
+    (leaf.vigour == 1.0f ? full : weaker) += 1;
+  }
+  EXPECT_GT(full, 0);
+  EXPECT_GT(weaker, 0);
 }
 
 }  // namespace
