@@ -10,6 +10,7 @@
 
 #include "core/input_error.h"
 #include "trees/graph_paths/parameters.h"
+#include "trees/harmonic/generator.h"
 #include "trees/mesher.h"
 #include "trees/self_organizing/generator.h"
 #include "trees/weber_penn/generator.h"
@@ -89,6 +90,8 @@ std::string core_name(CoreKind core) {
       return "graph_paths";
     case CoreKind::self_organizing:
       return "self_organizing";
+    case CoreKind::harmonic:
+      return "harmonic";
   }
   return "unknown";
 }
@@ -108,18 +111,21 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
   bool has_core = false;
   // A graph-paths file's own tables are read by its core below, not as flat parameters.
   const auto core_value = root["core"].value<std::string>();
-  const bool own_tables = core_value == "graph_paths" || core_value == "self_organizing";
+  const bool own_tables =
+      core_value == "graph_paths" || core_value == "self_organizing" || core_value == "harmonic";
   for (auto&& [key, value] : root) {
     const std::string k(key.str());
     if (k == "core") {
       const auto core = value.value<std::string>();
-      if (core != "weber_penn" && core != "graph_paths" && core != "self_organizing") {
+      if (core != "weber_penn" && core != "graph_paths" && core != "self_organizing" &&
+          core != "harmonic") {
         throw InputError(where(source, value.source()) +
-                         ": core: expected \"weber_penn\", \"graph_paths\" or "
-                         "\"self_organizing\" (the cores available)");
+                         ": core: expected \"weber_penn\", \"graph_paths\", "
+                         "\"self_organizing\" or \"harmonic\" (the cores available)");
       }
       s.core = core == "graph_paths"       ? CoreKind::graph_paths
                : core == "self_organizing" ? CoreKind::self_organizing
+               : core == "harmonic"        ? CoreKind::harmonic
                                            : CoreKind::weber_penn;
       has_core = true;
     } else if (k == "name") {
@@ -154,6 +160,8 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
     s.parameters = graph_paths::parse_parameters(text, source);
   else if (s.core == CoreKind::self_organizing)
     s.parameters = self_organizing::parse_parameters(text, source);
+  else if (s.core == CoreKind::harmonic)
+    s.parameters = harmonic::parse_parameters(text, source);
   else
     s.parameters = weber_penn::parse_parameters(params, source);
   return s;
@@ -242,6 +250,14 @@ Tree generate(const Species& species, const TreeOptions& options) {
     return still_tree(graph_paths::generate_skeleton(
                           std::get<graph_paths::Parameters>(species.parameters), options.seed),
                       species);
+  if (species.core == CoreKind::harmonic) {
+    // Level of detail for this core: fewer cross-sections per chain at lower quality.
+    const int stride = std::max(1, static_cast<int>(std::lround(1.0 / options.quality)));
+    return still_tree(
+        harmonic::generate_skeleton(std::get<harmonic::Parameters>(species.parameters),
+                                    options.seed, {.max_level = 5, .stride = stride}),
+        species);
+  }
   if (species.core == CoreKind::self_organizing)
     return still_tree(self_organizing::generate_skeleton(
                           std::get<self_organizing::Parameters>(species.parameters), options.seed),

@@ -10,12 +10,13 @@
 
 #include "trees/geometry.h"
 #include "trees/graph_paths/generator.h"
+#include "trees/harmonic/parameters.h"
 #include "trees/self_organizing/parameters.h"
 #include "trees/weber_penn/parameters.h"
 
 namespace landsim::trees {
 
-enum class CoreKind { weber_penn, graph_paths, self_organizing };
+enum class CoreKind { weber_penn, graph_paths, self_organizing, harmonic };
 std::string core_name(CoreKind core);
 
 struct Species {
@@ -23,7 +24,8 @@ struct Species {
   std::string source;  // the file, for messages
   CoreKind core = CoreKind::weber_penn;
   TreeColours colours;
-  std::variant<weber_penn::Parameters, graph_paths::Parameters, self_organizing::Parameters>
+  std::variant<weber_penn::Parameters, graph_paths::Parameters, self_organizing::Parameters,
+               harmonic::Parameters>
       parameters;
 };
 

@@ -1,0 +1,184 @@
+#include "trees/harmonic/particle_growth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/input_error.h"
+#include "trees/random.h"
+
+namespace landsim::trees::harmonic {
+namespace {
+
+const Vec3 kUp{0, 0, 1};
+
+struct Bud {
+  std::size_t chain;
+  Quaternion orientation;  // local z: the heading
+  int level = 0;
+  int age = 0;  // steps since birth
+  int nodes = 0;
+  bool alive = true;
+};
+
+Vec3 heading_of(const Quaternion& q) { return q.rotate({0, 0, 1}); }
+Vec3 side_of(const Quaternion& q) { return q.rotate({1, 0, 0}); }
+
+// The axis about which a positive angle turns heading h towards the sky.
+Vec3 upward_axis(const Quaternion& q) {
+  const Vec3 a = cross(heading_of(q), kUp);
+  return length(a) > 1e-9 ? normalize(a) : side_of(q);
+}
+
+// R: the bend per step of the arc section the bud's age falls in (none past the last).
+double arc_bend_per_step(const std::array<ArcSection, 4>& arc, int age) {
+  int start = 0;
+  for (const ArcSection& s : arc) {
+    if (s.span > 0 && age < start + s.span) return s.bend / s.span;
+    start += s.span;
+  }
+  return 0.0;
+}
+
+class Grower {
+ public:
+  Grower(const Parameters& p, std::uint64_t seed, std::size_t max_particles)
+      : p_(p), rng_(seed, 0x6a2du), max_particles_(max_particles) {
+    growth_.chains.push_back({0, p.girth_rate(), {{{0, 0, 0}, kUp, 0}}});
+    buds_.push_back({0, Quaternion{}, 0});
+  }
+
+  Growth run(int steps) {
+    for (int t = 1; t <= steps; ++t) {
+      const std::size_t count = buds_.size();  // buds born this step start next step
+      for (std::size_t b = 0; b < count; ++b)
+        if (buds_[b].alive) advance(b, t);
+      growth_.age = t;
+    }
+    return std::move(growth_);
+  }
+
+ private:
+  void advance(std::size_t index, int t) {
+    Bud& bud = buds_[index];
+    const LevelParameters lp = p_.level(bud.level);
+    orient(bud, lp);
+    const Vec3 h = heading_of(bud.orientation);
+    Chain& chain = growth_.chains[bud.chain];
+    const Vec3 at = chain.particles.back().position + h * (p_.step_length() * lp.step_scale);
+    chain.particles.push_back({at, h, t});
+    if (++particles_ > max_particles_)
+      throw InputError("harmonic growth would exceed " + std::to_string(max_particles_) +
+                       " particles: lower general.max_age, the levels or the branch "
+                       "probabilities");
+    ++bud.age;
+    drop_semantics(bud, at, h);
+    if (bud.age % std::max(lp.node_spacing, 1) == 0 && rng_.unit() < lp.node_probability)
+      form_node(index, at, t);
+    if (bud.age >= lp.terminal_age) buds_[index].alive = false;
+  }
+
+  // B <- B R W H, then twist and tropism.
+  void orient(Bud& bud, const LevelParameters& lp) {
+    Quaternion& q = bud.orientation;
+    const double bend = arc_bend_per_step(p_.arc(bud.level), bud.age);
+    if (bend != 0.0) q = Quaternion::about(upward_axis(q), bend) * q;
+    const double wander = p_.wander_angle(bud.level);
+    if (wander > 0.0 && bud.age % std::max(p_.wander_interval(bud.level), 1) == 0) {
+      const double turn = wander * (1.0 + p_.wander_noise() * rng_.uniform(-1.0, 1.0));
+      const double around = rng_.uniform(0.0, 2.0 * std::numbers::pi);
+      const Vec3 axis = q.rotate({std::cos(around), std::sin(around), 0.0});
+      q = Quaternion::about(axis, turn) * q;
+    }
+    const double amplitude = p_.harmonic_amplitude(bud.level);
+    if (amplitude > 0.0) {
+      const double angle = amplitude * std::sin(bud.age * p_.harmonic_frequency(bud.level) +
+                                                p_.harmonic_phase(bud.level));
+      q = Quaternion::about(side_of(q), angle) * q;
+    }
+    if (lp.twist != 0.0) q = Quaternion::about(heading_of(q), lp.twist) * q;
+    if (p_.tropism() != 0.0) q = Quaternion::about(upward_axis(q), p_.tropism()) * q;
+    q = q.normalized();
+  }
+
+  void form_node(std::size_t index, const Vec3& at, int t) {
+    ++growth_.nodes;
+    Bud& bud = buds_[index];
+    const LevelParameters lp = p_.level(bud.level);
+    const int n = bud.nodes++;
+    if (bud.level + 1 >= p_.levels() || rng_.unit() >= lp.branch_probability) return;
+    // The child's heading: the parent's, turned by the branch angle about a side axis
+    // that rotates by the divergence from node to node.
+    const Vec3 h = heading_of(bud.orientation);
+    const Quaternion spin = Quaternion::about(h, n * lp.divergence);
+    const Vec3 side = spin.rotate(side_of(bud.orientation));
+    const Quaternion child =
+        (Quaternion::about(side, lp.branch_angle) * bud.orientation).normalized();
+    const LevelParameters next = p_.level(bud.level + 1);
+    Chain chain{bud.level + 1,
+                growth_.chains[bud.chain].girth_rate * next.radius_ratio,
+                {{at, heading_of(child), t}}};
+    growth_.chains.push_back(std::move(chain));
+    buds_.push_back({growth_.chains.size() - 1, child, bud.level + 1});
+  }
+
+  void drop_semantics(const Bud& bud, const Vec3& at, const Vec3& h) {
+    const auto s = [&](std::size_t k) { return p_.semantic(k); };
+    if (bud.level >= static_cast<int>(s(4)) && bud.age % static_cast<int>(s(0)) == 0 &&
+        rng_.unit() < s(1))
+      growth_.leaves.push_back(leaf(bud, at, h));
+    if (s(7) > 0.0 && bud.level >= static_cast<int>(s(10)) &&
+        bud.age % static_cast<int>(s(6)) == 0 && rng_.unit() < s(7))
+      growth_.parts.push_back(
+          {at, normalize(h * 0.3 + Vec3{0, 0, -1}), Vec3{1, 0, 0}, s(8), static_cast<int>(s(9))});
+  }
+
+  // A leaf off to one side of the shoot, drooping by leaf_droop, its face tilted from the
+  // sky by at most the tilt limit.
+  SemanticParticle leaf(const Bud& bud, const Vec3& at, const Vec3& h) {
+    const double around = rng_.uniform(0.0, 2.0 * std::numbers::pi);
+    const Vec3 out = bud.orientation.rotate({std::cos(around), std::sin(around), 0.0});
+    const double droop = p_.semantic(11) * std::numbers::pi / 180.0;
+    Vec3 direction = normalize(out + h * 0.5 - kUp * std::tan(std::clamp(droop, -1.4, 1.4)));
+    Vec3 normal = normalize(cross(cross(direction, kUp), direction));
+    if (length(normal) < 1e-6 || !std::isfinite(normal.x)) normal = kUp;
+    if (normal.z < 0) normal = normal * -1.0;
+    const double limit = p_.semantic(3) * std::numbers::pi / 180.0;
+    const double tilt = std::acos(std::clamp(normal.z, -1.0, 1.0));
+    if (tilt > limit) {  // turn the face towards the sky until it is within the limit
+      const Vec3 axis = cross(normal, kUp);
+      if (length(axis) > 1e-9) {
+        const Quaternion back = Quaternion::about(normalize(axis), tilt - limit);
+        normal = back.rotate(normal);
+        direction = back.rotate(direction);
+      }
+    }
+    return {at, direction, normal, p_.semantic(2), 0};
+  }
+
+  const Parameters& p_;
+  Random rng_;
+  Growth growth_;
+  std::vector<Bud> buds_;
+  std::size_t max_particles_;
+  std::size_t particles_ = 1;
+};
+
+}  // namespace
+
+std::size_t Growth::particles() const {
+  std::size_t n = 0;
+  for (const Chain& c : chains) n += c.particles.size();
+  return n;
+}
+
+Growth grow(const Parameters& p, std::uint64_t seed, int age, std::size_t max_particles) {
+  return Grower(p, seed, max_particles).run(age < 0 ? p.max_age() : age);
+}
+
+double particle_radius(const Parameters& p, const Chain& chain, const Particle& particle, int age) {
+  return p.tip_radius() + chain.girth_rate * std::max(0, age - particle.birth);
+}
+
+}  // namespace landsim::trees::harmonic

@@ -1,0 +1,60 @@
+#pragma once
+// Particle growth (Hoetzlein 2022): apical buds are particles that advance one step per time
+// step, leaving a chain of particles (nodes and internodes) behind. Each step a bud's
+// orientation B is updated as B R W H: R bends along the level's arc sections (span, bend:
+// positive turns up, negative down), W turns by the wander angle every wander interval (with
+// noise), H adds the harmonic sin(age f + phase) a; then twist and a general tropism. Every
+// node_spacing steps a node forms with the node probability, and a node starts a bud of
+// the next level with the branch probability, at the branch angle, rotated by the
+// divergence from node to node. A bud dies at its terminal age; growth ends at max age.
+// Semantic particles (leaves, and a second part kind) are dropped at their own spacing.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+#include "trees/harmonic/parameters.h"
+#include "trees/harmonic/quaternion.h"
+
+namespace landsim::trees::harmonic {
+
+struct Particle {
+  Vec3 position;
+  Vec3 heading;   // unit: the bud's heading when it left this particle
+  int birth = 0;  // the step it was left at (0: the chain's start)
+};
+
+struct Chain {
+  int level = 0;
+  double girth_rate = 0.0;  // metres of radius per step of age
+  std::vector<Particle> particles;
+};
+
+struct SemanticParticle {
+  Vec3 position;
+  Vec3 direction;  // unit: along the leaf, or the part's axis
+  Vec3 normal;     // unit: the leaf's face
+  double size = 0.0;
+  int kind = 0;  // leaves: 0; parts: 0 seed ball, 1 cone
+};
+
+struct Growth {
+  int age = 0;  // steps grown
+  std::vector<Chain> chains;
+  std::vector<SemanticParticle> leaves;
+  std::vector<SemanticParticle> parts;
+  std::size_t nodes = 0;  // nodes formed
+  std::size_t particles() const;
+};
+
+// Grows for `age` steps (the species' max age when negative). Deterministic per seed; the
+// first steps do not depend on how many follow.
+// More than `max_particles` is refused (InputError), never an out-of-memory crash.
+Growth grow(const Parameters& p, std::uint64_t seed, int age = -1,
+            std::size_t max_particles = 5000000);
+
+// A particle's radius at the growth's age: the tip radius, thickened every step since it
+// was left (secondary growth).
+double particle_radius(const Parameters& p, const Chain& chain, const Particle& particle, int age);
+
+}  // namespace landsim::trees::harmonic
