@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "core/input_error.h"
+#include "discover_command.h"
 #include "info_command.h"
 #include "pov_command.h"
 #include "render_command.h"
@@ -43,6 +44,8 @@ int main(int argc, char** argv) {
   CLI::App* crosscheck = landsim::app::add_crosscheck_command(app, crosscheck_args);
   landsim::app::FeaturemapBuildArgs featuremap_args;
   CLI::App* featuremap_build = landsim::app::add_featuremap_command(app, featuremap_args);
+  landsim::app::DiscoverArgs discover_args;
+  CLI::App* discover = landsim::app::add_discover_command(app, discover_args);
 
   try {
     app.parse(argc, argv);
@@ -61,6 +64,7 @@ int main(int argc, char** argv) {
     if (crosscheck->parsed()) return landsim::app::run_crosscheck(crosscheck_args);
     if (export_obj->parsed()) return landsim::app::run_export_obj(export_obj_args);
     if (featuremap_build->parsed()) return landsim::app::run_featuremap_build(featuremap_args);
+    if (discover->parsed()) return landsim::app::run_discover(discover_args);
   } catch (const landsim::InputError& e) {
     std::cerr << "landsim: error: " << e.what() << "\n";
     return kBadInput;

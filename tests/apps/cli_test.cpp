@@ -2,6 +2,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <gtest/gtest.h>
+#include <OpenImageIO/imageio.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -99,6 +100,33 @@ TEST(Cli, BadCommandLineValuesExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("nowhere"), std::string::npos) << r.err;
   EXPECT_FALSE(has_files(dir / "o"));
+}
+
+TEST(Cli, DiscoverRendersAContactSheetAndWritesEachTilesSpecies) {
+  TempDir dir;
+  const auto sheet = dir / "sheet.png";
+  const Result r = run("discover --count 4 --tile 32 --spp 1 --json --out " + sheet.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  ASSERT_EQ(json["tiles"].size(), 4u);
+  auto image = OIIO::ImageInput::open(sheet.string());
+  ASSERT_TRUE(image);
+  EXPECT_EQ(image->spec().width, 4 * 32);  // one row of four tiles
+  EXPECT_EQ(image->spec().height, 32);
+  std::set<double> heights;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto& tile = json["tiles"][k];
+    // Each tile's species file grows the same tree again with the tree command.
+    const Result t = run("tree " + tile["species"].get<std::string>() + " --seed " +
+                             std::to_string(k + 1) + " --json",
+                         dir);
+    ASSERT_EQ(t.exit_code, 0) << t.err;
+    EXPECT_DOUBLE_EQ(nlohmann::json::parse(t.out)["height_m"].get<double>(),
+                     tile["height_m"].get<double>());
+    heights.insert(tile["height_m"].get<double>());
+  }
+  EXPECT_EQ(heights.size(), 4u);  // four different trees
+  EXPECT_EQ(run("discover --count 0 --out " + (dir / "x.png").string(), dir).exit_code, 2);
 }
 
 TEST(Cli, RendersAScenarioToExrAndPngWithJson) {

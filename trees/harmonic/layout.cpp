@@ -15,11 +15,11 @@ constexpr ParameterSpec kGeneral[8] = {
     {"max_age", 5, 400, 40, 120, true},
     {"step_length", 0.005, 2, 0.05, 0.15},
     {"levels", 3, 5, 3, 5, true},
-    {"girth_rate", 0, 0.01, 0.0005, 0.002},
+    {"girth_rate", 0, 0.01, 0.0003, 0.001},
     {"tip_radius", 0.0005, 0.05, 0.002, 0.006},
     {"wander_noise", 0, 1, 0, 0.5},
     {"variation", 0, 0.3, 0.02, 0.1},
-    {"tropism", -1, 1, -0.02, 0.05},
+    {"tropism", -10, 10, -1, 2},
 };
 constexpr ParameterSpec kHierarchy[9] = {
     {"node_spacing", 1, 50, 2, 8, true},  {"node_probability", 0, 1, 0.5, 1},

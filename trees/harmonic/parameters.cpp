@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/input_error.h"
@@ -136,6 +137,26 @@ Parameters sample_discovery(std::uint64_t seed) {
   for (std::size_t i = 0; i < kParameterCount; ++i)
     p.values[i] = clamp_to_spec(rng.uniform(specs[i].discover_min, specs[i].discover_max), i);
   return p;
+}
+
+std::string format_parameters(const Parameters& p) {
+  std::string out;
+  for (Block b : kBlocks) {
+    const BlockShape& s = block_shape(b);
+    out += s.key;
+    out += " = [";
+    for (std::size_t row = 0; row < s.rows; ++row) {
+      if (s.rows > 1) out += row == 0 ? "[" : ", [";
+      for (std::size_t k = 0; k < s.per_row; ++k) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%.17g", p.values[s.offset + row * s.per_row + k]);
+        out += (k == 0 ? "" : ", ") + std::string(number);
+      }
+      if (s.rows > 1) out += "]";
+    }
+    out += "]\n";
+  }
+  return out;
 }
 
 }  // namespace landsim::trees::harmonic

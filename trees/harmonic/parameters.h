@@ -37,7 +37,7 @@ struct Parameters {
   double tip_radius() const { return values[4]; }
   double wander_noise() const { return values[5]; }
   double variation() const { return values[6]; }
-  double tropism() const { return values[7]; }
+  double tropism() const { return values[7] * 3.14159265358979323846 / 180.0; }  // radians/step
   LevelParameters level(int i) const;              // levels beyond 3 use row 3
   std::array<ArcSection, 4> arc(int level) const;  // beyond 2 use row 2
   double wander_angle(int level) const;            // radians
@@ -61,5 +61,9 @@ Parameters vary(const Parameters& p, std::uint64_t seed);
 
 // Values uniform between each parameter's discovery bounds (`landsim discover`).
 Parameters sample_discovery(std::uint64_t seed);
+
+// The core's keys as species-file TOML (one block per line, rows per level): what
+// parse_parameters reads back to the same values.
+std::string format_parameters(const Parameters& p);
 
 }  // namespace landsim::trees::harmonic

@@ -62,6 +62,12 @@ TEST(HarmonicSpecies, WrongCountsAndRangesAreRefused) {
   EXPECT_NE(e.find("leaves: expected one of"), std::string::npos) << e;
 }
 
+TEST(HarmonicSpecies, FormattedParametersReadBackToTheSameValues) {
+  const Parameters p = sample_discovery(42);
+  const Species s = parse_species_toml("core = \"harmonic\"\n" + format_parameters(p), "f.toml");
+  EXPECT_EQ(std::get<Parameters>(s.parameters).values, p.values);
+}
+
 TEST(HarmonicSpecies, VariationStaysInRangeAndZeroChangesNothing) {
   Parameters p = default_parameters();
   p.values[6] = 0.3;

@@ -1,0 +1,66 @@
+#include "scenes/contact_sheet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "renderer/render.h"
+#include "renderer/scene.h"
+
+namespace landsim::scenes {
+namespace {
+
+// A flat square of ground under the tree.
+terrain::GroundMesh ground_square(float half) {
+  terrain::GroundMesh m;
+  m.vertices = {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}};
+  m.normals.assign(4, Vec3f{0, 0, 1});
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+// The tree alone, seen from the south-west, the whole of its bounds in view.
+renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOptions& o,
+                           renderer::View& view) {
+  renderer::Scene s;
+  const auto [lo, hi] = tree.bounds();
+  const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1.0f});
+  s.ground.mesh = ground_square(20.0f * size);
+  renderer::TreePrototype proto;
+  proto.geometry = tree;
+  proto.bark_albedo = tree.colours.bark;
+  proto.leaf_reflectance = tree.colours.leaf;
+  proto.leaf_transmittance = tree.colours.leaf * 0.5f;
+  s.prototypes.push_back(std::move(proto));
+  s.instances.push_back({0, {0, 0, 0}, 0.0, 1.0});
+  s.sun.direction = normalize(Vec3{-0.5, -0.6, 0.8});
+  s.settings.spp = o.spp;
+  s.settings.seed = o.seed;
+  const Vec3 centre{0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y), 0.5 * (lo.z + hi.z)};
+  const double fov = 40.0;
+  const double distance = 0.75 * size / std::tan(0.5 * fov * std::numbers::pi / 180.0);
+  const Vec3 from = normalize(Vec3{-0.6, -1.0, 0.25});
+  view = {"tile", centre + from * distance, centre, fov, o.tile, o.tile};
+  return s;
+}
+
+}  // namespace
+
+renderer::Film render_contact_sheet(const std::vector<trees::TreeGeometry>& trees,
+                                    const ContactSheetOptions& o) {
+  const int columns = std::max(1, std::min(o.columns, static_cast<int>(trees.size())));
+  const int rows = (static_cast<int>(trees.size()) + columns - 1) / columns;
+  renderer::Film sheet(columns * o.tile, std::max(rows, 1) * o.tile);
+  for (std::size_t k = 0; k < trees.size(); ++k) {
+    renderer::View view;
+    const renderer::Scene scene = tile_scene(trees[k], o, view);
+    const renderer::Film tile = renderer::Renderer(scene).render(view, {});
+    const int x0 = static_cast<int>(k) % columns * o.tile;
+    const int y0 = static_cast<int>(k) / columns * o.tile;
+    for (int y = 0; y < o.tile; ++y)
+      for (int x = 0; x < o.tile; ++x) sheet.set(x0 + x, y0 + y, tile.rgb(x, y), {});
+  }
+  return sheet;
+}
+
+}  // namespace landsim::scenes
