@@ -113,6 +113,14 @@ TEST(Crosscheck, SelfOrganizingTreesAgreeWithPovRay) {
   EXPECT_NE(text.find("LS_Proto_0_4_5 "), std::string::npos);  // and weaker shoots
 }
 
+TEST(Crosscheck, HarmonicTreesAgreeWithPovRay) {
+  TempDir dir;
+  const CrosscheckReport r = crosscheck_species(dir, "harmonic_american_elm.toml");
+  EXPECT_GT(r.tree_iou, 0.9);
+  EXPECT_LE(r.luminance_mean_rel_diff, 0.05);
+  EXPECT_TRUE(r.pass);
+}
+
 TEST(Crosscheck, AMovedCameraFails) {
   TempDir dir;
   const Scenario s = small_scene(dir);
