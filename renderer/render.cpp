@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <mutex>
 
@@ -26,6 +27,18 @@ struct TileGrid {
   int cols, rows;
   int count() const { return cols * rows; }
 };
+
+TileGrid tile_grid(int width, int height) {
+  return {(width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize};
+}
+TileGrid tile_grid(const View& view) { return tile_grid(view.width, view.height); }
+
+template <typename Visit>
+void for_each_tile_pixel(const TileGrid& grid, int tile, int width, int height, Visit&& visit) {
+  const int x0 = (tile % grid.cols) * kTileSize, y0 = (tile / grid.cols) * kTileSize;
+  for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+    for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) visit(x, y);
+}
 
 // Renders one tile into the film; returns the rays it traced.
 std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const View& view,
@@ -68,8 +81,9 @@ std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const 
 // Tiles rendered between checkpoint opportunities.
 constexpr int kTilesPerWave = 64;
 
-// Loads a matching checkpoint into `film`; returns the tiles it already holds (0 if none).
-int resume_from(const RenderOptions& options, Film& film, int tile_count) {
+}  // namespace
+
+int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) {
   if (options.checkpoint.empty() || !std::filesystem::exists(options.checkpoint)) return 0;
   ImageMetadata meta;
   Film saved = read_exr(options.checkpoint, &meta);
@@ -89,8 +103,6 @@ int resume_from(const RenderOptions& options, Film& film, int tile_count) {
   return tiles;
 }
 
-}  // namespace
-
 // Grass detail depends on the camera, so scenes with grass get an Embree scene per view.
 Renderer::Renderer(const Scene& scene)
     : scene_(scene),
@@ -98,52 +110,78 @@ Renderer::Renderer(const Scene& scene)
 
 Renderer::~Renderer() = default;
 
+struct ViewRenderer::State {
+  explicit State(const View& view) : camera(view) {}
+  Camera camera;
+  std::unique_ptr<EmbreeScene> per_view;
+  std::unique_ptr<PathTracer> tracer;
+  std::unique_ptr<tbb::task_arena> arena;
+};
+
+ViewRenderer::ViewRenderer(const Renderer& renderer, const View& view, const RenderOptions& options)
+    : scene_(renderer.scene_),
+      view_(view),
+      options_(options),
+      state_(std::make_unique<State>(view)) {
+  if (!renderer.embree_) state_->per_view = std::make_unique<EmbreeScene>(scene_, &view);
+  state_->tracer = std::make_unique<PathTracer>(
+      scene_, renderer.embree_ ? *renderer.embree_ : *state_->per_view, options.trace);
+  const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
+  state_->arena = std::make_unique<tbb::task_arena>(threads);
+}
+
+ViewRenderer::~ViewRenderer() = default;
+
+int ViewRenderer::tile_count() const { return tile_grid(view_).count(); }
+
+std::uint64_t ViewRenderer::render_tiles(int first, int last, Film& film,
+                                         const std::function<void()>& tile_done) const {
+  const TileGrid grid = tile_grid(view_);
+  std::atomic<std::uint64_t> rays{0};
+  state_->arena->execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<int>(first, last, 1), [&](const tbb::blocked_range<int>& r) {
+          for (int tile = r.begin(); tile != r.end(); ++tile) {
+            rays += render_tile(*state_->tracer, state_->camera, view_, scene_.settings, tile, grid,
+                                options_.centre_first_sample, film);
+            if (tile_done) tile_done();
+          }
+        });
+  });
+  return rays.load();
+}
+
 Film Renderer::render(const View& view, const RenderOptions& options, RenderStats* stats) const {
   const auto start = std::chrono::steady_clock::now();
   Film film(view.width, view.height);
-  const Camera camera(view);
-  std::unique_ptr<EmbreeScene> per_view;
-  if (!embree_) per_view = std::make_unique<EmbreeScene>(scene_, &view);
-  const PathTracer tracer(scene_, embree_ ? *embree_ : *per_view, options.trace);
+  const ViewRenderer tiles(*this, view, options);
   const double setup =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.started) options.started();
-  const TileGrid grid{(view.width + kTileSize - 1) / kTileSize,
-                      (view.height + kTileSize - 1) / kTileSize};
-
-  int first_tile = options.resume ? resume_from(options, film, grid.count()) : 0;
-  std::atomic<std::uint64_t> rays{0};
+  const int count = tiles.tile_count();
+  const int first_tile = options.resume ? resume_checkpoint(options, film, count) : 0;
+  std::uint64_t rays = 0;
   std::atomic<int> tiles_done{first_tile};
   std::mutex progress_mutex;
-  const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
-  tbb::task_arena arena(threads);
+  const auto tile_done = [&] {
+    const int done = ++tiles_done;
+    if (options.progress && (done * 20 / count != (done - 1) * 20 / count)) {
+      const std::lock_guard lock(progress_mutex);
+      options.progress(static_cast<double>(done) / count);
+    }
+  };
   auto last_checkpoint = std::chrono::steady_clock::now();
   // Waves of tiles in a fixed order: between waves the film is a consistent snapshot.
-  for (int wave = first_tile; wave < grid.count(); wave += kTilesPerWave) {
-    const int wave_end = std::min(wave + kTilesPerWave, grid.count());
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<int>(wave, wave_end, 1),
-                        [&](const tbb::blocked_range<int>& r) {
-                          for (int tile = r.begin(); tile != r.end(); ++tile) {
-                            rays += render_tile(tracer, camera, view, scene_.settings, tile, grid,
-                                                options.centre_first_sample, film);
-                            const int done = ++tiles_done;
-                            if (options.progress &&
-                                (done * 20 / grid.count() != (done - 1) * 20 / grid.count())) {
-                              const std::lock_guard lock(progress_mutex);
-                              options.progress(static_cast<double>(done) / grid.count());
-                            }
-                          }
-                        });
-    });
-    const bool stop = options.stop_after_tiles > 0 && wave_end >= options.stop_after_tiles &&
-                      wave_end < grid.count();
+  for (int wave = first_tile; wave < count; wave += kTilesPerWave) {
+    const int wave_end = std::min(wave + kTilesPerWave, count);
+    rays += tiles.render_tiles(wave, wave_end, film, tile_done);
+    const bool stop =
+        options.stop_after_tiles > 0 && wave_end >= options.stop_after_tiles && wave_end < count;
     const auto now = std::chrono::steady_clock::now();
-    if (!options.checkpoint.empty() && wave_end < grid.count() &&
+    if (!options.checkpoint.empty() && wave_end < count &&
         (stop || std::chrono::duration<double>(now - last_checkpoint).count() >=
                      options.checkpoint_seconds)) {
-      write_exr(film, options.checkpoint,
-                {{"render_key", options.render_key}, {"tiles_done", std::to_string(wave_end)}});
+      write_checkpoint(options, film, wave_end);
       last_checkpoint = now;
     }
     if (stop)
@@ -157,10 +195,56 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   if (stats != nullptr) {
     stats->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    stats->rays = rays.load();
+    stats->rays = rays;
     stats->setup_seconds = setup;
   }
   return film;
 }
+
+void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_done) {
+  write_exr(film, options.checkpoint,
+            {{"render_key", options.render_key}, {"tiles_done", std::to_string(tiles_done)}});
+}
+
+// A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
+// species, instance and level: 14 words per pixel.
+constexpr std::size_t kWordsPerPixel = 14;
+
+std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
+  const TileGrid grid = tile_grid(film.width(), film.height());
+  std::vector<std::uint32_t> words;
+  const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+  for (int tile = first; tile < last; ++tile)
+    for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
+      const Vec3f c = film.rgb(x, y), n = film.normal(x, y), a = film.albedo(x, y);
+      words.insert(words.end(),
+                   {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y),
+                    bits(n.z), bits(a.x), bits(a.y), bits(a.z), film.object(x, y),
+                    film.species(x, y), film.instance(x, y), film.level(x, y)});
+    });
+  return words;
+}
+
+void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, Film& film) {
+  const TileGrid grid = tile_grid(film.width(), film.height());
+  const auto f = [&](std::size_t k) { return std::bit_cast<float>(words[k]); };
+  std::size_t k = 0;
+  for (int tile = first; tile < last; ++tile)
+    for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
+      if (k + kWordsPerPixel > words.size()) throw std::runtime_error("tile data too short");
+      PixelAovs aovs;
+      aovs.depth = f(k + 3);
+      aovs.normal = {f(k + 4), f(k + 5), f(k + 6)};
+      aovs.albedo = {f(k + 7), f(k + 8), f(k + 9)};
+      aovs.object = words[k + 10];
+      aovs.species = words[k + 11];
+      aovs.instance = words[k + 12];
+      aovs.level = words[k + 13];
+      film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
+      k += kWordsPerPixel;
+    });
+}
+
+int tile_count(const View& view) { return tile_grid(view).count(); }
 
 }  // namespace landsim::renderer

@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "renderer/film.h"
 #include "renderer/path_tracer.h"
@@ -54,6 +55,7 @@ struct RenderStats {
 };
 
 class EmbreeScene;
+class ViewRenderer;
 
 class Renderer {
  public:
@@ -65,8 +67,39 @@ class Renderer {
   Film render(const View& view, const RenderOptions& options, RenderStats* stats = nullptr) const;
 
  private:
+  friend class ViewRenderer;
   const Scene& scene_;
   std::unique_ptr<EmbreeScene> embree_;
 };
+
+// One view ready to trace (camera, tracer, worker arena): renders any range of its tiles, so
+// that callers (the distributed renderer) can hand tiles out themselves. Tiles are 16 x 16
+// pixels, numbered row by row; a tile's pixels do not depend on who renders it or when.
+class ViewRenderer {
+ public:
+  ViewRenderer(const Renderer& renderer, const View& view, const RenderOptions& options);
+  ~ViewRenderer();
+  int tile_count() const;
+  // Renders tiles [first, last) into `film`; tile_done (if set) is called after each tile,
+  // from any worker thread. Returns the rays traced.
+  std::uint64_t render_tiles(int first, int last, Film& film,
+                             const std::function<void()>& tile_done = {}) const;
+
+ private:
+  struct State;
+  const Scene& scene_;
+  View view_;
+  RenderOptions options_;
+  std::unique_ptr<State> state_;
+};
+
+int tile_count(const View& view);
+// Checkpoints: the film so far and the tiles [0, tiles_done) it holds (options.checkpoint,
+// options.render_key); resume_checkpoint loads a matching one and returns its tiles_done.
+void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_done);
+int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count);
+// Tiles [first, last) of a film as 32-bit words (every plane, bit for bit), and back.
+std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last);
+void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, Film& film);
 
 }  // namespace landsim::renderer
