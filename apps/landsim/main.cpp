@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "discover_command.h"
 #include "info_command.h"
+#include "mpi_session.h"
 #include "pov_command.h"
 #include "render_command.h"
 #include "tree_command.h"
@@ -17,17 +18,19 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-// Logs and progress go to stderr, so stdout stays clean for --json.
-void log_to_stderr() {
+// Logs and progress go to stderr, so stdout stays clean for --json. Under MPI every line
+// names its rank.
+void log_to_stderr(const std::string& rank) {
   auto logger = spdlog::stderr_color_mt("landsim");
-  logger->set_pattern("landsim: %^%l%$: %v");
+  logger->set_pattern("landsim: " + rank + "%^%l%$: %v");
   spdlog::set_default_logger(logger);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  log_to_stderr();
+  const landsim::app::MpiSession session(argc, argv);
+  log_to_stderr(session.label());
   CLI::App app{"landsim: ray-traced landscape renderer for scene simulation"};
   app.set_version_flag("--version", std::string("landsim ") + LANDSIM_VERSION);
   app.require_subcommand(1);
@@ -66,10 +69,13 @@ int main(int argc, char** argv) {
     if (featuremap_build->parsed()) return landsim::app::run_featuremap_build(featuremap_args);
     if (discover->parsed()) return landsim::app::run_discover(discover_args);
   } catch (const landsim::InputError& e) {
-    std::cerr << "landsim: error: " << e.what() << "\n";
+    std::cerr << "landsim: " << session.label() << "error: " << e.what() << "\n";
+    // One rank failing fails the whole job: the others would wait for it forever.
+    if (session.distributed()) session.abort(kBadInput);
     return kBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "landsim: internal error: " << e.what() << "\n";
+    std::cerr << "landsim: " << session.label() << "internal error: " << e.what() << "\n";
+    if (session.distributed()) session.abort(1);
     return 1;
   }
   return 0;

@@ -13,11 +13,15 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "mpi_session.h"
 #include "renderer/camera.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
 #include "scenes/default_scenario.h"
 #include "scenes/scene_builder.h"
+#ifdef LANDSIM_HAVE_MPI
+#include "distributed_render.h"
+#endif
 
 namespace landsim::app {
 namespace {
@@ -93,6 +97,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
   cmd->add_flag("--resume", args.resume,
                 "Continue from the checkpoints of an interrupted render in --out");
+  cmd->add_option("--task-index", args.task_index,
+                  "Render only image N of the set (frame-major), e.g. SLURM_ARRAY_TASK_ID")
+      ->check(CLI::Range(0, 1000000));
+  cmd->add_flag("--check", args.check,
+                "Render nothing: check every image of the set is in --out, write the manifest");
   return cmd;
 }
 
@@ -126,31 +135,89 @@ void write_manifest(const std::filesystem::path& path, const scenes::Scenario& s
 
 }  // namespace
 
+namespace {
+
+nlohmann::json manifest_entry(const scenes::ViewSettings& vs, const std::string& stem,
+                              std::size_t f, double time) {
+  return {{"path", stem + ".exr"},
+          {"preview", stem + ".png"},
+          {"view", vs.name},
+          {"frame_index", f},
+          {"time_s", time},
+          {"camera",
+           {{"position", vec_json(vs.position)},
+            {"target", vec_json(vs.target)},
+            {"fov_y_deg", vs.fov_y_deg},
+            {"width", vs.width},
+            {"height", vs.height}}}};
+}
+
+// --check: every image of the set must be in the output directory; then the manifest.
+int check_image_set(const scenes::Scenario& scenario, const std::filesystem::path& out_dir) {
+  const std::vector<double>& frames = scenario.render.frames;
+  nlohmann::json entries = nlohmann::json::array();
+  std::vector<std::string> missing;
+  for (std::size_t f = 0; f < frames.size(); ++f)
+    for (const scenes::ViewSettings& vs : scenario.views) {
+      const std::string stem = image_stem(vs.name, f, frames.size());
+      for (const char* ext : {".exr", ".png"})
+        if (!std::filesystem::exists(out_dir / (stem + ext))) missing.push_back(stem + ext);
+      entries.push_back(manifest_entry(vs, stem, f, frames[f]));
+    }
+  if (!missing.empty()) {
+    std::string list;
+    for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
+    spdlog::error("{}: {} of {} images missing: {}", out_dir.string(),
+                  missing.size() / 2 + missing.size() % 2, entries.size(), list);
+    return 1;
+  }
+  write_manifest(out_dir / "manifest.json", scenario, entries);
+  std::cout << fmt::format("{}: all {} images present, manifest written\n", out_dir.string(),
+                           entries.size());
+  return 0;
+}
+
+}  // namespace
+
 int run_render(const RenderArgs& args) {
   scenes::Scenario scenario =
       args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
   apply_overrides(scenario, args);
+  const std::filesystem::path out_dir(args.out_dir);
+  if (args.check) return check_image_set(scenario, out_dir);
   const std::vector<double>& frames = scenario.render.frames;
+  const std::size_t image_count = frames.size() * scenario.views.size();
+  if (args.task_index && static_cast<std::size_t>(*args.task_index) >= image_count)
+    throw InputError(fmt::format("--task-index {}: the image set has {} images (0 to {})",
+                                 *args.task_index, image_count, image_count - 1));
+  const MpiSession* session = current_session();
+  const bool distributed = session != nullptr && session->distributed();
+  const bool writer = session == nullptr || session->rank() == 0;
   // Without wind every frame shows the same geometry: build the scene once.
   const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
   const auto start = std::chrono::steady_clock::now();
-  std::optional<renderer::Scene> scene = scenes::build_scene(scenario, frames.front());
+  const std::size_t first_frame =
+      args.task_index ? static_cast<std::size_t>(*args.task_index) / scenario.views.size() : 0;
+  std::optional<renderer::Scene> scene = scenes::build_scene(scenario, frames[first_frame]);
   spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(start),
                scene->instances.size(), scene->prototypes.size());
 
-  const std::filesystem::path out_dir(args.out_dir);
-  std::filesystem::create_directories(out_dir);
+  if (writer) std::filesystem::create_directories(out_dir);
   nlohmann::json images = nlohmann::json::array();
   nlohmann::json manifest_images = nlohmann::json::array();
   for (std::size_t f = 0; f < frames.size(); ++f) {
-    if (f > 0 && sway) scene = scenes::build_scene(scenario, frames[f]);
+    if (args.task_index && f != first_frame) continue;
+    if (f != first_frame && sway) scene = scenes::build_scene(scenario, frames[f]);
     const renderer::Renderer renderer(*scene);
     for (std::size_t i = 0; i < scene->views.size(); ++i) {
+      if (args.task_index &&
+          f * scene->views.size() + i != static_cast<std::size_t>(*args.task_index))
+        continue;
       const renderer::View& view = scene->views[i];
       const scenes::ViewSettings& vs = scenario.views[i];
       renderer::RenderOptions options;
       options.threads = scenario.render.threads;
-      if (f == 0 && i == 0)
+      if (images.empty())
         options.started = [&] { spdlog::info("first pixel after {:.2f} s", seconds_since(start)); };
       const auto view_start = std::chrono::steady_clock::now();
       options.progress = [&](double p) {
@@ -158,9 +225,9 @@ int run_render(const RenderArgs& args) {
         spdlog::info("{} t={}s: {:3.0f}%, {:.0f} s left", view.name, frames[f], 100.0 * p,
                      elapsed / p * (1.0 - p));
       };
-      if (scenario.render.checkpoint_seconds > 0.0) {
-        options.checkpoint =
-            out_dir / (image_stem(view.name, f, frames.size()) + ".checkpoint.exr");
+      const std::string stem = image_stem(view.name, f, frames.size());
+      if (scenario.render.checkpoint_seconds > 0.0 && writer) {
+        options.checkpoint = out_dir / (stem + ".checkpoint.exr");
         options.checkpoint_seconds = scenario.render.checkpoint_seconds;
       }
       options.resume = args.resume;
@@ -168,30 +235,44 @@ int run_render(const RenderArgs& args) {
           fmt::format("{} {} {} {} {} {}x{}", scenario.text_hash, view.name, frames[f],
                       scenario.render.spp, scenario.render.seed, view.width, view.height);
       renderer::RenderStats stats;
+      double communication = 0.0;
+#ifdef LANDSIM_HAVE_MPI
+      std::optional<renderer::Film> rendered;
+      if (distributed) {
+        DistributedStats d;
+        rendered = render_distributed(renderer, view, options, *session, &d);
+        stats.seconds = d.seconds;
+        stats.rays = d.rays;
+        communication = d.communication_seconds;
+        if (writer)
+          spdlog::info("{}: {:.2f} s, {:.3f} s in communication, {} of {} tiles on rank 0",
+                       view.name, d.seconds, d.communication_seconds, d.tiles_by_rank0,
+                       renderer::tile_count(view));
+      } else {
+        rendered = renderer.render(view, options, &stats);
+      }
+      const renderer::Film& film = *rendered;
+#else
       const renderer::Film film = renderer.render(view, options, &stats);
-      const std::string stem = image_stem(view.name, f, frames.size());
+#endif
+      if (!writer) continue;
       const auto exr = out_dir / (stem + ".exr");
       renderer::ImageMetadata meta = metadata(scenario, vs, *scene);
       meta.emplace_back("time_s", fmt::format("{}", frames[f]));
       const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
       renderer::write_exr(film, exr, meta, &camera);
       renderer::write_preview_png(film, out_dir / (stem + ".png"), scene->settings.exposure_ev);
-      images.push_back({{"path", exr.string()},
-                        {"view", view.name},
-                        {"frame", frames[f]},
-                        {"seconds", stats.seconds},
-                        {"rays_per_second", stats.rays_per_second()}});
-      manifest_images.push_back({{"path", exr.filename().string()},
-                                 {"preview", stem + ".png"},
-                                 {"view", view.name},
-                                 {"frame_index", f},
-                                 {"time_s", frames[f]},
-                                 {"camera",
-                                  {{"position", vec_json(vs.position)},
-                                   {"target", vec_json(vs.target)},
-                                   {"fov_y_deg", vs.fov_y_deg},
-                                   {"width", vs.width},
-                                   {"height", vs.height}}}});
+      nlohmann::json entry = {{"path", exr.string()},
+                              {"view", view.name},
+                              {"frame", frames[f]},
+                              {"seconds", stats.seconds},
+                              {"rays_per_second", stats.rays_per_second()}};
+      if (distributed) {
+        entry["ranks"] = session->size();
+        entry["communication_seconds"] = communication;
+      }
+      images.push_back(entry);
+      manifest_images.push_back(manifest_entry(vs, stem, f, frames[f]));
       if (!args.json) {
         std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(),
                                  view.width, view.height, scene->settings.spp, stats.seconds,
@@ -199,7 +280,8 @@ int run_render(const RenderArgs& args) {
       }
     }
   }
-  write_manifest(out_dir / "manifest.json", scenario, manifest_images);
+  if (!writer) return 0;
+  if (!args.task_index) write_manifest(out_dir / "manifest.json", scenario, manifest_images);
   if (args.json) std::cout << nlohmann::json{{"images", images}}.dump() << "\n";
   return 0;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // `landsim render [SCENARIO] [--out DIR] [--view NAME] [--spp N] [--threads N]
-//                 [--width W] [--height H] [--json]`
+//                 [--width W] [--height H] [--json] [--resume] [--task-index N] [--check]`
+// Under mpirun every rank renders each image's tiles; rank 0 writes (docs/CLUSTER.md).
 #include <optional>
 #include <string>
 
@@ -20,6 +21,11 @@ struct RenderArgs {
   std::optional<int> height;
   bool json = false;
   bool resume = false;  // continue from checkpoints left by a killed render
+  // Render only this image of the set (frame-major: index = frame x views + view), for job
+  // arrays; no manifest is written.
+  std::optional<int> task_index;
+  // Render nothing: check that every image of the set is in --out, then write the manifest.
+  bool check = false;
 };
 
 // Registers the subcommand; `args` is filled when it parses.

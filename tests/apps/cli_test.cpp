@@ -1,8 +1,8 @@
 // End-to-end tests of the landsim program: exit codes, messages, files written or not.
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
-#include <gtest/gtest.h>
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "tests/support/run_program.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim {
@@ -19,26 +20,9 @@ namespace {
 
 using testing::TempDir;
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using Result = testing::ProgramResult;
 
-Result run(const std::string& args, const TempDir& dir) {
-  const auto err_file = dir / "stderr.txt";
-  const std::string cmd = std::string(LANDSIM_BINARY) + " " + args + " 2>" + err_file.string();
-  Result r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = testing::read_file(err_file);
-  std::filesystem::remove(err_file);
-  return r;
-}
+Result run(const std::string& args, const TempDir& dir) { return testing::run_landsim(args, dir); }
 
 std::string volcano() { return testing::source_file("data/terrain/volcano.asc").string(); }
 

@@ -1,0 +1,119 @@
+// The MPI path end to end: landsim under `mpirun -np 2` against landsim alone.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <set>
+
+#include "tests/support/run_program.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim {
+namespace {
+
+using testing::TempDir;
+
+// Two ranks on however many cores there are (and as root, as CI runs).
+testing::ProgramResult run_mpi(const std::string& args, const TempDir& dir) {
+  const std::string root = ::geteuid() == 0 ? " --allow-run-as-root" : "";
+  return testing::run_command(std::string(LANDSIM_MPIRUN) + " --oversubscribe" + root + " -np 2 " +
+                                  LANDSIM_BINARY + " " + args,
+                              dir);
+}
+
+// Two views, two frames, trees (so that tiles differ in cost), small images.
+std::filesystem::path image_set(const TempDir& dir) {
+  const std::string data = testing::source_file("data").string();
+  return dir.write("set.toml",
+                   "[terrain]\nelevation = \"" + data +
+                       "/terrain/volcano.asc\"\n"
+                       "[sun]\nelevation = 30\nazimuth = 300\n"
+                       "[featuremaps]\nclasses = \"" +
+                       data +
+                       "/featuremaps/volcano_landcover.asc\"\n"
+                       "class_map = \"" +
+                       testing::source_file("scenes/examples/volcano_classes.toml").string() +
+                       "\"\n[[species]]\nbit = 0\nfile = \"" + data +
+                       "/species/quaking_aspen.toml\"\n"
+                       "variants = 2\ndensity_per_ha = 60\n"
+                       "[[views]]\nname = \"a\"\nposition = [520.0, 930.0, 330.0]\ntarget = "
+                       "[280.0, 280.0, 130.0]\n"
+                       "width = 48\nheight = 27\n"
+                       "[[views]]\nname = \"b\"\nposition = [100.0, 500.0, 250.0]\ntarget = "
+                       "[300.0, 300.0, 130.0]\n"
+                       "width = 40\nheight = 30\n"
+                       "[render]\nspp = 2\nframes = [0.0, 1.0]\n");
+}
+
+std::set<std::string> files_in(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    names.insert(e.path().filename().string());
+  return names;
+}
+
+void expect_same_files(const std::filesystem::path& a, const std::filesystem::path& b) {
+  ASSERT_EQ(files_in(a), files_in(b));
+  for (const std::string& name : files_in(a))
+    EXPECT_EQ(testing::read_file(a / name), testing::read_file(b / name)) << name;
+}
+
+TEST(Mpi, AnImageSetSplitAcrossRanksGivesTheSameFilesBitForBit) {
+  TempDir dir;
+  const auto scenario = image_set(dir);
+  const auto one =
+      testing::run_landsim("render " + scenario.string() + " --out " + (dir / "one").string(), dir);
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const auto two =
+      run_mpi("render " + scenario.string() + " --out " + (dir / "two").string() + " --json", dir);
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_NE(two.err.find("rank 0 of 2"), std::string::npos) << "logs name the rank";
+  EXPECT_NE(two.out.find("\"ranks\":2"), std::string::npos) << two.out;
+  EXPECT_EQ(files_in(dir / "two").size(), 9u);  // 4 EXR, 4 PNG, the manifest
+  expect_same_files(dir / "one", dir / "two");
+}
+
+TEST(Mpi, TaskIndexRendersExactlyOneImageAndCheckWritesTheManifest) {
+  TempDir dir;
+  const auto scenario = image_set(dir);
+  const auto out = dir / "tasks";
+  const auto r = testing::run_landsim(
+      "render " + scenario.string() + " --task-index 3 --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Image 3 is frame 1 of view b.
+  EXPECT_EQ(files_in(out), (std::set<std::string>{"b_f0001.exr", "b_f0001.png"}));
+  const auto incomplete =
+      testing::run_landsim("render " + scenario.string() + " --check --out " + out.string(), dir);
+  EXPECT_EQ(incomplete.exit_code, 1);
+  EXPECT_NE(incomplete.err.find("a_f0000.exr"), std::string::npos) << incomplete.err;
+  for (int k : {0, 1, 2})
+    ASSERT_EQ(testing::run_landsim("render " + scenario.string() + " --task-index " +
+                                       std::to_string(k) + " --out " + out.string(),
+                                   dir)
+                  .exit_code,
+              0);
+  ASSERT_EQ(
+      testing::run_landsim("render " + scenario.string() + " --check --out " + out.string(), dir)
+          .exit_code,
+      0);
+  const auto whole = testing::run_landsim(
+      "render " + scenario.string() + " --out " + (dir / "whole").string(), dir);
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  expect_same_files(dir / "whole", out);  // the same images and manifest
+  EXPECT_EQ(testing::run_landsim(
+                "render " + scenario.string() + " --task-index 4 --out " + out.string(), dir)
+                .exit_code,
+            2);
+}
+
+TEST(Mpi, ARankThatFailsFailsTheJobClearly) {
+  TempDir dir;
+  const auto bad = dir.write("bad.toml", "[terrain]\nelevation = \"nowhere.asc\"\n");
+  const auto r = run_mpi("render " + bad.string() + " --out " + (dir / "o").string(), dir);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("rank"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("nowhere.asc"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace landsim
