@@ -37,7 +37,11 @@ int run_info(const InfoArgs& args) {
                                 {"triangles_stored", s.triangles_stored},
                                 {"triangles_instanced", s.triangles_instanced},
                                 {"grass_tiles", s.grass_tiles},
-                                {"memory_estimate_bytes", s.memory_estimate_bytes}}
+                                {"memory_estimate_bytes", s.memory_estimate_bytes},
+                                // The image set: what a job array needs to size itself.
+                                {"views", scenario.views.size()},
+                                {"frames", scenario.render.frames.size()},
+                                {"images", scenario.views.size() * scenario.render.frames.size()}}
                      .dump()
               << "\n";
     return 0;

@@ -76,6 +76,9 @@ TEST(Mpi, AnImageSetSplitAcrossRanksGivesTheSameFilesBitForBit) {
 TEST(Mpi, TaskIndexRendersExactlyOneImageAndCheckWritesTheManifest) {
   TempDir dir;
   const auto scenario = image_set(dir);
+  // The count a job array is sized by (scripts/slurm/submit.sh).
+  const auto info = testing::run_landsim("info " + scenario.string() + " --json", dir);
+  EXPECT_NE(info.out.find("\"images\":4"), std::string::npos) << info.out;
   const auto out = dir / "tasks";
   const auto r = testing::run_landsim(
       "render " + scenario.string() + " --task-index 3 --out " + out.string(), dir);
