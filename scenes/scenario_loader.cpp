@@ -273,6 +273,30 @@ const toml::node* t_evergreen(TableReader& r, const toml::table& t) {
   return n;
 }
 
+// The optional `age` of a [[species]] table: years, or [youngest, oldest] across variants;
+// only measured-growth species grow with age.
+void read_age(TableReader& r, const toml::table& t, SpeciesSettings& s) {
+  r.allow("age");
+  const toml::node* n = t.get("age");
+  if (n == nullptr) return;
+  if (s.species.core != trees::CoreKind::measured_growth)
+    r.fail("age", "only measured-growth species (core = \"measured_growth\") take an age");
+  const auto years = [&](const toml::node& v) {
+    const auto x = v.value<double>();
+    if (!x || !(*x >= 0.0 && *x <= 500.0))
+      r.fail("age", "expected years from 0 to 500, or [youngest, oldest]");
+    return *x;
+  };
+  if (const toml::array* range = n->as_array()) {
+    if (range->size() != 2) r.fail("age", "expected [youngest, oldest]");
+    s.age_min = years(*range->get(0));
+    s.age_max = years(*range->get(1));
+    if (s.age_max < s.age_min) r.fail("age", "expected [youngest, oldest] with youngest first");
+  } else {
+    s.age_min = s.age_max = years(*n);
+  }
+}
+
 std::vector<SpeciesSettings> read_species(const toml::table& root, const std::string& file,
                                           const std::string& base_dir) {
   std::vector<SpeciesSettings> out;
@@ -300,6 +324,7 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
         r.fail("bark_texture", "file not found: " + s.bark_texture);
     }
     r.allow("bark_texture");
+    read_age(r, *a->get(i)->as_table(), s);
     if (const toml::node* e = t_evergreen(r, *a->get(i)->as_table()))
       s.evergreen = *e->value<bool>();
     r.finish();

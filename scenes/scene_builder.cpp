@@ -44,6 +44,11 @@ renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t 
   trees::TreeOptions options;
   options.seed = vs;
   options.time = time;
+  // Measured-growth ages: evenly from the youngest to the oldest across the variants.
+  if (sp.age_min >= 0.0)
+    options.age = sp.variants > 1 ? sp.age_min + (sp.age_max - sp.age_min) * variant /
+                                                     (sp.variants - 1)
+                                  : sp.age_min;
   options.wind_speed = wind.speed;
   options.wind_gust = wind.gust;
   p.geometry = trees::generate(sp.species, options).geometry;

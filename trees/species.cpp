@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "trees/graph_paths/parameters.h"
 #include "trees/harmonic/generator.h"
+#include "trees/measured_growth/generator.h"
 #include "trees/mesher.h"
 #include "trees/self_organizing/generator.h"
 #include "trees/weber_penn/generator.h"
@@ -92,6 +93,8 @@ std::string core_name(CoreKind core) {
       return "self_organizing";
     case CoreKind::harmonic:
       return "harmonic";
+    case CoreKind::measured_growth:
+      return "measured_growth";
   }
   return "unknown";
 }
@@ -112,21 +115,26 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
   // A graph-paths file's own tables are read by its core below, not as flat parameters.
   const auto core_value = root["core"].value<std::string>();
   const bool own_tables =
-      core_value == "graph_paths" || core_value == "self_organizing" || core_value == "harmonic";
+      core_value == "graph_paths" || core_value == "self_organizing" || core_value == "harmonic" ||
+      core_value == "measured_growth";
   for (auto&& [key, value] : root) {
     const std::string k(key.str());
     if (k == "core") {
       const auto core = value.value<std::string>();
-      if (core != "weber_penn" && core != "graph_paths" && core != "self_organizing" &&
-          core != "harmonic") {
+      static const std::pair<const char*, CoreKind> kCores[] = {
+          {"weber_penn", CoreKind::weber_penn},
+          {"graph_paths", CoreKind::graph_paths},
+          {"self_organizing", CoreKind::self_organizing},
+          {"harmonic", CoreKind::harmonic},
+          {"measured_growth", CoreKind::measured_growth}};
+      bool known = false;
+      for (const auto& [n, kind] : kCores)
+        if (core == n) s.core = kind, known = true;
+      if (!known)
         throw InputError(where(source, value.source()) +
                          ": core: expected \"weber_penn\", \"graph_paths\", "
-                         "\"self_organizing\" or \"harmonic\" (the cores available)");
-      }
-      s.core = core == "graph_paths"       ? CoreKind::graph_paths
-               : core == "self_organizing" ? CoreKind::self_organizing
-               : core == "harmonic"        ? CoreKind::harmonic
-                                           : CoreKind::weber_penn;
+                         "\"self_organizing\", \"harmonic\" or \"measured_growth\" (the cores "
+                         "available)");
       has_core = true;
     } else if (k == "name") {
       const auto name = value.value<std::string>();
@@ -162,6 +170,8 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
     s.parameters = self_organizing::parse_parameters(text, source);
   else if (s.core == CoreKind::harmonic)
     s.parameters = harmonic::parse_parameters(text, source);
+  else if (s.core == CoreKind::measured_growth)
+    s.parameters = measured_growth::parse_parameters(text, source);
   else
     s.parameters = weber_penn::parse_parameters(params, source);
   return s;
@@ -249,6 +259,11 @@ Tree generate(const Species& species, const TreeOptions& options) {
   if (species.core == CoreKind::graph_paths)
     return still_tree(graph_paths::generate_skeleton(
                           std::get<graph_paths::Parameters>(species.parameters), options.seed),
+                      species);
+  if (species.core == CoreKind::measured_growth)
+    return still_tree(measured_growth::generate_skeleton(
+                          std::get<measured_growth::Parameters>(species.parameters), options.seed,
+                          options.age),
                       species);
   if (species.core == CoreKind::harmonic) {
     // Level of detail for this core: fewer cross-sections per chain at lower quality.

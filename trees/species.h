@@ -11,12 +11,13 @@
 #include "trees/geometry.h"
 #include "trees/graph_paths/generator.h"
 #include "trees/harmonic/parameters.h"
+#include "trees/measured_growth/parameters.h"
 #include "trees/self_organizing/parameters.h"
 #include "trees/weber_penn/parameters.h"
 
 namespace landsim::trees {
 
-enum class CoreKind { weber_penn, graph_paths, self_organizing, harmonic };
+enum class CoreKind { weber_penn, graph_paths, self_organizing, harmonic, measured_growth };
 std::string core_name(CoreKind core);
 
 struct Species {
@@ -25,7 +26,7 @@ struct Species {
   CoreKind core = CoreKind::weber_penn;
   TreeColours colours;
   std::variant<weber_penn::Parameters, graph_paths::Parameters, self_organizing::Parameters,
-               harmonic::Parameters>
+               harmonic::Parameters, measured_growth::Parameters>
       parameters;
 };
 
@@ -43,6 +44,7 @@ struct TreeOptions {
   double wind_speed = 0.0;
   double wind_gust = 0.0;
   double quality = 1.0;  // leaf quality factor, (0, 1]
+  double age = -1.0;     // years, for the measured-growth core (< 0: the species' age)
 };
 
 struct TreeStats {

@@ -1,0 +1,119 @@
+#include "trees/measured_growth/generator.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+
+#include "core/input_error.h"
+#include "trees/measured_growth/dimensions.h"
+#include "trees/mesher.h"
+#include "trees/species.h"
+
+namespace landsim::trees::measured_growth {
+namespace {
+
+Species london_plane() {
+  return load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species/london_plane.toml");
+}
+
+TEST(MeasuredGrowth, TreesFollowTheEquationsFromTenToSixtyYears) {
+  const Species s = london_plane();
+  const Allometry& a = std::get<Parameters>(s.parameters).allometry;
+  for (double age = 10; age <= 60; age += 10)
+    for (std::uint64_t seed : {1u, 7u}) {
+      const Dimensions d = measure(generate(s, {.seed = seed, .age = age}).geometry);
+      const auto within = [&](double got, double want, double tolerance, const char* what) {
+        EXPECT_NEAR(got, want, tolerance * want) << what << " at " << age << " years";
+      };
+      within(d.height_m, a.f_height(age), 0.10, "height");
+      within(d.crown_diameter_m, a.f_crown_diameter(age), 0.10, "crown diameter");
+      within(d.crown_height_m, a.f_crown_height(age), 0.10, "crown height");
+      within(d.dbh_cm, a.f_dbh(age), 0.05, "DBH");
+      within(d.leaf_area_m2, a.f_leaf_area(age), 0.15, "leaf area");
+    }
+}
+
+TEST(MeasuredGrowth, NoBranchShrinksAndTheScaffoldsStayTheSame) {
+  const Parameters p = std::get<Parameters>(london_plane().parameters);
+  TreeAtAge young, old;
+  generate_skeleton(p, 3, 20, &young);
+  generate_skeleton(p, 3, 45, &old);
+  const std::vector<Module> modules20 = derive(p, 3, 20), modules45 = derive(p, 3, 45);
+  std::map<std::uint64_t, std::size_t> at45;
+  for (std::size_t i = 0; i < modules45.size(); ++i) at45[modules45[i].id] = i;
+  int compared = 0;
+  for (std::size_t i = 0; i < modules20.size(); ++i) {
+    // The same module, created with the same parameters, at both ages.
+    ASSERT_TRUE(at45.count(modules20[i].id));
+    const std::size_t j = at45[modules20[i].id];
+    EXPECT_EQ(modules20[i].direction, modules45[j].direction);
+    EXPECT_EQ(modules20[i].c_l, modules45[j].c_l);
+    EXPECT_EQ(modules20[i].t0, modules45[j].t0);
+    const Branch& a = young.branches[i];
+    const Branch& b = old.branches[j];
+    if (!a.present) continue;
+    // Crown raising may take a low scaffold away (with all on it); nothing else goes, and a
+    // branch that stays never shrinks.
+    if (!b.present) {
+      std::size_t root = j;
+      while (modules45[root].parent != kLeader) root = modules45[root].parent;
+      EXPECT_LT(modules45[root].attach_height, old.crown_base);
+      continue;
+    }
+    EXPECT_EQ(a.base, b.base);
+    EXPECT_GE(b.length, a.length - 1e-12);
+    EXPECT_GE(b.base_radius, a.base_radius);
+    ++compared;
+  }
+  EXPECT_GT(compared, 200);
+  EXPECT_GT(old.height, young.height);
+  EXPECT_GE(old.dbh_radius, young.dbh_radius);
+}
+
+TEST(MeasuredGrowth, LowScaffoldsGoAsTheCrownBaseRises) {
+  const Parameters p = std::get<Parameters>(london_plane().parameters);
+  TreeAtAge tree;
+  generate_skeleton(p, 1, 40, &tree);
+  const std::vector<Module> modules = derive(p, 1, 40);
+  int removed = 0;
+  for (std::size_t i = 0; i < modules.size(); ++i)
+    if (modules[i].parent == kLeader) {
+      EXPECT_EQ(tree.branches[i].present || tree.branches[i].length < 0.01,
+                modules[i].attach_height >= tree.crown_base);
+      removed += modules[i].attach_height < tree.crown_base ? 1 : 0;
+    }
+  EXPECT_GT(removed, 0);
+}
+
+TEST(MeasuredGrowth, AgesOutsideTheDataAreClamped) {
+  const Parameters p = std::get<Parameters>(london_plane().parameters);
+  EXPECT_DOUBLE_EQ(clamp_age(p, 200), p.allometry.max_age);
+  EXPECT_DOUBLE_EQ(clamp_age(p, -3), 0.0);
+  EXPECT_DOUBLE_EQ(clamp_age(p, 25), 25.0);
+  TreeAtAge beyond, at_max;
+  generate_skeleton(p, 2, 150, &beyond);
+  generate_skeleton(p, 2, p.allometry.max_age, &at_max);
+  EXPECT_EQ(beyond.age, at_max.age);
+  EXPECT_EQ(beyond.height, at_max.height);
+}
+
+TEST(MeasuredGrowth, SpeciesFileErrorsNameTheKey) {
+  const auto error = [](const std::string& text) {
+    try {
+      parse_species_toml("core = \"measured_growth\"\n" + text, "p.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("[allometry.dbh]\nform = \"exp\"\n").find("allometry.dbh.form"),
+            std::string::npos);
+  EXPECT_NE(error("[growth]\nbifurcation_period = 0\n").find("growth.bifurcation_period"),
+            std::string::npos);
+  EXPECT_NE(error("[growth]\nscaffold_interval = 0.25\nmax_generations = 12\n").find("branches"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace landsim::trees::measured_growth

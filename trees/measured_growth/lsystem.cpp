@@ -1,0 +1,82 @@
+#include "trees/measured_growth/lsystem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/counter_rng.h"
+
+namespace landsim::trees::measured_growth {
+namespace {
+
+Vec3 perpendicular(const Vec3& a) {
+  const Vec3 t = std::abs(a.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+  return normalize(cross(a, t));
+}
+
+Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
+}
+
+// The bifurcation half-angle from the crown's shape at time t: arctan(CD / CH) / 2.
+double crown_angle(const Allometry& a, double t) {
+  return 0.5 * std::atan2(a.f_crown_diameter(t), a.f_crown_height(t));
+}
+
+}  // namespace
+
+bool bifurcates(const Parameters& p, const Module& m) {
+  return m.generation < p.max_generations && m.c_l >= p.min_scale;
+}
+
+std::vector<Module> derive(const Parameters& p, std::uint64_t seed, double age) {
+  const Allometry& a = p.allometry;
+  std::vector<Module> modules;
+  // Scaffolds: one every interval at the leader's top, 130 degrees round from the last,
+  // leaving at the crown's full angle from the vertical.
+  int k = 0;
+  for (double t = p.scaffold_interval; t < age; t += p.scaffold_interval, ++k) {
+    const std::uint64_t id = hash_combine(1, static_cast<std::uint64_t>(k));
+    const CounterRng r(seed, id, 0);
+    const double around = k * p.divergence + p.angle_noise * (2.0 * r.uniform(0) - 1.0);
+    const double tilt = 2.0 * crown_angle(a, t) + p.angle_noise * (2.0 * r.uniform(1) - 1.0);
+    Module m;
+    m.id = id;
+    m.t0 = t;
+    m.attach_height = a.f_height(t);
+    m.c_l = 0.6 + 0.4 * r.uniform(2);
+    m.c_d = 0.5;
+    m.direction = {std::sin(tilt) * std::cos(around), std::sin(tilt) * std::sin(around),
+                   std::cos(tilt)};
+    modules.push_back(m);
+  }
+  // Productions: a branch that has grown its period bifurcates into two, each at the crown's
+  // half-angle (plus noise) on either side of it, the plane turned by the divergence.
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    const Module parent = modules[i];
+    const double t = parent.t0 + p.bifurcation_period;
+    if (t >= age || !bifurcates(p, parent)) continue;
+    const Vec3 side = rotate_about(perpendicular(parent.direction), parent.direction,
+                                   (parent.generation + 1) * p.divergence);
+    for (int child = 0; child < 2; ++child) {
+      const std::uint64_t id = hash_combine(parent.id, static_cast<std::uint64_t>(child) + 2);
+      const CounterRng r(seed, id, 0);
+      const double angle = (child == 0 ? 1.0 : -1.0) *
+                           (crown_angle(a, t) + p.angle_noise * (2.0 * r.uniform(0) - 1.0));
+      Module m;
+      m.id = id;
+      m.parent = static_cast<std::uint32_t>(i);
+      m.t0 = t;
+      m.c_l = parent.c_l * (0.6 + 0.4 * r.uniform(1));
+      // da Vinci in mind: two children share the parent's cross-section.
+      m.c_d = parent.c_d * m.c_l * (1.0 - 0.7 * m.c_l);
+      m.generation = parent.generation + 1;
+      m.direction = normalize(rotate_about(parent.direction, side, angle));
+      modules.push_back(m);
+    }
+  }
+  return modules;
+}
+
+}  // namespace landsim::trees::measured_growth

@@ -1,0 +1,30 @@
+#pragma once
+// Measured-growth species (London plane from Modesto street-tree data): the age functions
+// (allometry equations) and the parameters of the parametric L-system they drive.
+#include <string>
+#include <string_view>
+
+#include "trees/measured_growth/allometry.h"
+
+namespace landsim::trees::measured_growth {
+
+struct Parameters {
+  Allometry allometry = modesto_london_plane();
+  double age = 30.0;                // years since planting, when a scenario gives none
+  double scaffold_interval = 1.0;   // years between scaffold limbs leaving the leader
+  double bifurcation_period = 3.0;  // years a branch grows before it bifurcates
+  int max_generations = 6;          // bifurcations along a scaffold
+  double min_scale = 0.15;          // branches with a smaller c_l do not bifurcate
+  double l_max = 0.0;               // metres: a scaffold's c_l = 1 length; 0 = the max height
+  double c_dbh = 1.0;               // trunk diameter at 1.37 m = c_dbh * f_DBH
+  double divergence = 2.2689;       // radians (130 degrees) between successive scaffolds
+  double angle_noise = 0.087;       // radians: random part of the bifurcation angle
+  double leaf_area = 0.025;         // m2 per leaf
+  double leaf_threshold = 0.03;     // metres: leaves on branches thinner than this
+};
+
+// Reads the core's tables ([allometry.*], [growth], [leaves]); InputError names file, line,
+// key and what was expected.
+Parameters parse_parameters(std::string_view toml_text, const std::string& source);
+
+}  // namespace landsim::trees::measured_growth

@@ -1,0 +1,152 @@
+#include "trees/measured_growth/tree_at_age.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/counter_rng.h"
+#include "trees/leaf_shape.h"
+
+namespace landsim::trees::measured_growth {
+namespace {
+
+constexpr double kBreastHeight = 1.37;  // metres: where DBH is measured
+constexpr double kMinLength = 0.01;     // metres: shorter branches are left out
+
+// How far from `base` along `dir` the crown's cylinder (radius r, top h) lets a branch go.
+double room(const Vec3& base, const Vec3& dir, double r, double h) {
+  double s = 1e300;
+  if (dir.z > 1e-12) s = std::min(s, (h - base.z) / dir.z);
+  const double a = dir.x * dir.x + dir.y * dir.y;
+  if (a > 1e-12) {  // |base_xy + s dir_xy| = r
+    const double b = 2.0 * (base.x * dir.x + base.y * dir.y);
+    const double c = base.x * base.x + base.y * base.y - r * r;
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return 0.0;
+    s = std::min(s, (-b + std::sqrt(disc)) / (2.0 * a));
+  }
+  return std::max(s, 0.0);
+}
+
+Vec3 perpendicular(const Vec3& a) {
+  const Vec3 t = std::abs(a.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+  return normalize(cross(a, t));
+}
+
+}  // namespace
+
+// The crown's cylinder at time t: radius f_CD / 2, top f_H.
+struct Envelope {
+  double radius, top;
+};
+Envelope envelope_at(const Allometry& a, double t) {
+  return {0.5 * a.f_crown_diameter(t), a.f_height(t)};
+}
+
+TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, double age) {
+  const Allometry& a = p.allometry;
+  TreeAtAge tree;
+  tree.age = age;
+  tree.height = a.f_height(age);
+  tree.crown_base = tree.height - a.f_crown_height(age);
+  tree.dbh_radius = p.c_dbh * a.f_dbh(age) / 200.0;
+  const double h_max = a.f_height(a.max_age);
+  const double l_max = p.l_max > 0.0 ? p.l_max : h_max;
+  // The branch's length at time t: grown by the age function, ended by the crown's cylinder.
+  const auto length_at = [&](const Module& m, const Vec3& base, double t) {
+    const Envelope e = envelope_at(a, t);
+    const double grown = m.c_l * l_max / h_max * a.f_height(t - m.t0);
+    return std::min(grown, room(base, m.direction, e.radius, e.top));
+  };
+  tree.branches.resize(modules.size());
+  std::vector<bool> removed(modules.size(), false);
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    const Module& m = modules[i];
+    Branch& b = tree.branches[i];
+    b.id = m.id;
+    if (m.t0 >= age) continue;
+    if (m.parent == kLeader) {
+      removed[i] = m.attach_height < tree.crown_base;  // crown raising
+      b.base = {0, 0, m.attach_height};
+    } else {
+      removed[i] = removed[m.parent];
+      b.base = tree.branches[m.parent].tip;
+    }
+    // A branch that bifurcated stopped growing then: its tip, where the children start,
+    // stays put, so no child is ever pushed out of the crown.
+    const double stop = m.t0 + p.bifurcation_period;
+    b.length =
+        bifurcates(p, m) && age >= stop ? length_at(m, b.base, stop) : length_at(m, b.base, age);
+    b.tip = b.base + m.direction * b.length;
+    b.base_radius = m.c_d * a.f_dbh(age - m.t0) / 200.0;
+    b.present = !removed[i] && b.length >= kMinLength;
+  }
+  return tree;
+}
+
+double leader_radius(const TreeAtAge& tree, double z) {
+  const double r = tree.dbh_radius;
+  if (z <= kBreastHeight) return r * (1.0 + 0.15 * (kBreastHeight - z) / kBreastHeight);
+  const double f =
+      std::clamp((z - kBreastHeight) / std::max(tree.height - kBreastHeight, 1e-6), 0.0, 1.0);
+  return r * (1.0 - 0.85 * f);
+}
+
+TreeSkeleton tree_skeleton(const Parameters& p, const TreeAtAge& tree, std::uint64_t seed) {
+  TreeSkeleton s;
+  StemSkeleton leader;
+  leader.level = 0;
+  for (double z : {0.0, 0.5 * kBreastHeight, kBreastHeight})
+    leader.sections.push_back({{0, 0, z}, {0, 0, 1}, {1, 0, 0}, leader_radius(tree, z)});
+  for (int k = 1; k <= 12; ++k) {
+    const double z = kBreastHeight + (tree.height - kBreastHeight) * k / 12.0;
+    leader.sections.push_back({{0, 0, z}, {0, 0, 1}, {1, 0, 0}, leader_radius(tree, z)});
+  }
+  s.stems.push_back(leader);
+  // Branches, and the total length of the thin ones that carry leaves.
+  double thin = 0.0;
+  for (const Branch& b : tree.branches) {
+    if (!b.present) continue;
+    StemSkeleton stem;
+    const Vec3 axis = normalize(b.tip - b.base);
+    const Vec3 x = perpendicular(axis);
+    const int level = b.base_radius > 0.05 ? 1 : b.base_radius > 0.015 ? 2 : 3;
+    stem.level = level;
+    stem.sections = {{b.base, axis, x, b.base_radius}, {b.tip, axis, x, 0.7 * b.base_radius}};
+    s.stems.push_back(stem);
+    if (2.0 * b.base_radius < p.leaf_threshold) thin += b.length;
+  }
+  // Leaves: f_LA / (area per leaf) of them, evenly along the thin branches, spiralling.
+  const LeafTemplate leaf_template = make_leaf_template(s.leaf_shape);
+  const double count = std::round(p.allometry.f_leaf_area(tree.age) / p.leaf_area);
+  if (thin <= 0.0 || count < 1.0) return s;
+  const double spacing = thin / count;
+  const double side = std::sqrt(p.leaf_area / leaf_template.area);  // length = width = side
+  // Positions along the thin branches laid end to end: one leaf every `spacing`.
+  double next = 0.5 * spacing, offset = 0.0;
+  std::uint64_t n = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.present || 2.0 * b.base_radius >= p.leaf_threshold) continue;
+    const Vec3 axis = normalize(b.tip - b.base);
+    const Vec3 x = perpendicular(axis), y = cross(axis, x);
+    for (; next < offset + b.length && n < static_cast<std::uint64_t>(count);
+         next += spacing, ++n) {
+      const double turn = static_cast<double>(n) * 2.39996 +  // 137.5 degrees
+                          0.3 * CounterRng(seed, 7, n).uniform(0);
+      const Vec3 out = x * std::cos(turn) + y * std::sin(turn);
+      LeafSkeleton leaf;
+      leaf.base = b.base + axis * (next - offset);
+      leaf.direction = normalize(out + Vec3{0, 0, -0.3});
+      Vec3 normal = normalize(cross(cross(leaf.direction, Vec3{0, 0, 1}), leaf.direction));
+      if (!std::isfinite(normal.x) || length(normal) < 0.5) normal = {0, 0, 1};
+      leaf.normal = normal.z < 0 ? normal * -1.0 : normal;
+      leaf.length = side;
+      leaf.width = side;
+      s.leaves.push_back(leaf);
+    }
+    offset += b.length;
+  }
+  return s;
+}
+
+}  // namespace landsim::trees::measured_growth
