@@ -6,6 +6,7 @@
 
 #include "renderer/render.h"
 #include "renderer/scene.h"
+#include "trees/mesher.h"
 
 namespace landsim::scenes {
 namespace {
@@ -22,10 +23,9 @@ terrain::GroundMesh ground_square(float half) {
 // The tree alone, seen from the south-west, the whole of its bounds in view.
 renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOptions& o,
                            renderer::View& view) {
-  renderer::Scene s;
   const auto [lo, hi] = tree.bounds();
   const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1.0f});
-  s.ground.mesh = ground_square(20.0f * size);
+  renderer::Scene s = studio_scene(20.0f * size);
   renderer::TreePrototype proto;
   proto.geometry = tree;
   proto.bark_albedo = tree.colours.bark;
@@ -33,7 +33,6 @@ renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOp
   proto.leaf_transmittance = tree.colours.leaf * 0.5f;
   s.prototypes.push_back(std::move(proto));
   s.instances.push_back({0, {0, 0, 0}, 0.0, 1.0});
-  s.sun.direction = normalize(Vec3{-0.5, -0.6, 0.8});
   s.settings.spp = o.spp;
   s.settings.seed = o.seed;
   const Vec3 centre{0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y), 0.5 * (lo.z + hi.z)};
@@ -45,6 +44,30 @@ renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOp
 }
 
 }  // namespace
+
+renderer::Scene studio_scene(float half) {
+  renderer::Scene s;
+  s.ground.mesh = ground_square(half);
+  s.sun.direction = normalize(Vec3{-0.5, -0.6, 0.8});
+  return s;
+}
+
+trees::TreeGeometry person_figure() {
+  trees::TreeSkeleton figure;
+  trees::StemSkeleton body;  // legs and trunk, then shoulders narrowing to the neck
+  const auto add = [&](trees::StemSkeleton& stem, double z, double r) {
+    stem.sections.push_back({{0, 0, z}, {0, 0, 1}, {1, 0, 0}, r});
+  };
+  add(body, 0.0, 0.12), add(body, 0.85, 0.16), add(body, 1.35, 0.2), add(body, 1.45, 0.14),
+      add(body, 1.52, 0.05);
+  trees::StemSkeleton head;
+  for (int k = 0; k <= 6; ++k) {
+    const double a = std::numbers::pi * k / 6.0;
+    add(head, 1.52 + 0.115 * (1.0 - std::cos(a)), 0.1 * std::sin(a));
+  }
+  figure.stems = {body, head};
+  return trees::mesh_tree(figure, trees::MeshResolution{{12, 12, 12, 12}});
+}
 
 renderer::Film render_contact_sheet(const std::vector<trees::TreeGeometry>& trees,
                                     const ContactSheetOptions& o) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "renderer/film.h"
+#include "renderer/scene.h"
 #include "trees/geometry.h"
 
 namespace landsim::scenes {
@@ -19,5 +20,12 @@ struct ContactSheetOptions {
 // One tile per tree, row by row. Deterministic for the same trees and options.
 renderer::Film render_contact_sheet(const std::vector<trees::TreeGeometry>& trees,
                                     const ContactSheetOptions& options);
+
+// A studio for single trees: flat ground `half` metres each way from the origin, sun from
+// the south-west, physical sky.
+renderer::Scene studio_scene(float half);
+
+// A person-sized reference figure, 1.75 m tall, standing at the origin (for scale).
+trees::TreeGeometry person_figure();
 
 }  // namespace landsim::scenes

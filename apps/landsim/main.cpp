@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "discover_command.h"
+#include "grow_command.h"
 #include "info_command.h"
 #include "mpi_session.h"
 #include "pov_command.h"
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
   CLI::App* featuremap_build = landsim::app::add_featuremap_command(app, featuremap_args);
   landsim::app::DiscoverArgs discover_args;
   CLI::App* discover = landsim::app::add_discover_command(app, discover_args);
+  landsim::app::GrowArgs grow_args;
+  CLI::App* grow = landsim::app::add_grow_command(app, grow_args);
 
   try {
     app.parse(argc, argv);
@@ -68,6 +71,7 @@ int main(int argc, char** argv) {
     if (export_obj->parsed()) return landsim::app::run_export_obj(export_obj_args);
     if (featuremap_build->parsed()) return landsim::app::run_featuremap_build(featuremap_args);
     if (discover->parsed()) return landsim::app::run_discover(discover_args);
+    if (grow->parsed()) return landsim::app::run_grow(grow_args);
   } catch (const landsim::InputError& e) {
     std::cerr << "landsim: " << session.label() << "error: " << e.what() << "\n";
     // One rank failing fails the whole job: the others would wait for it forever.

@@ -13,21 +13,6 @@ namespace {
 constexpr double kBreastHeight = 1.37;  // metres: where DBH is measured
 constexpr double kMinLength = 0.01;     // metres: shorter branches are left out
 
-// How far from `base` along `dir` the crown's cylinder (radius r, top h) lets a branch go.
-double room(const Vec3& base, const Vec3& dir, double r, double h) {
-  double s = 1e300;
-  if (dir.z > 1e-12) s = std::min(s, (h - base.z) / dir.z);
-  const double a = dir.x * dir.x + dir.y * dir.y;
-  if (a > 1e-12) {  // |base_xy + s dir_xy| = r
-    const double b = 2.0 * (base.x * dir.x + base.y * dir.y);
-    const double c = base.x * base.x + base.y * base.y - r * r;
-    const double disc = b * b - 4.0 * a * c;
-    if (disc < 0.0) return 0.0;
-    s = std::min(s, (-b + std::sqrt(disc)) / (2.0 * a));
-  }
-  return std::max(s, 0.0);
-}
-
 Vec3 perpendicular(const Vec3& a) {
   const Vec3 t = std::abs(a.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
   return normalize(cross(a, t));
@@ -35,12 +20,30 @@ Vec3 perpendicular(const Vec3& a) {
 
 }  // namespace
 
-// The crown's cylinder at time t: radius f_CD / 2, top f_H.
+// The crown's shape at time t: a cylinder of radius f_CD / 2 under a dome that sinks from
+// f_H on the axis by 30 % of the crown height at the rim. Convex, and growing with age
+// (f_H grows faster than 0.3 f_CH), so a branch's room never shrinks.
 struct Envelope {
-  double radius, top;
+  double radius, top, dome;
+  bool contains(const Vec3& p) const {
+    const double r = std::hypot(p.x, p.y) / radius;
+    return r <= 1.0 && p.z <= top - dome * (1.0 - std::sqrt(std::max(0.0, 1.0 - r * r)));
+  }
 };
 Envelope envelope_at(const Allometry& a, double t) {
-  return {0.5 * a.f_crown_diameter(t), a.f_height(t)};
+  return {0.5 * a.f_crown_diameter(t), a.f_height(t), 0.3 * a.f_crown_height(t)};
+}
+
+// How far from `base` along `dir` a branch stays inside (bisection: the shape is convex).
+double room(const Vec3& base, const Vec3& dir, const Envelope& e, double limit) {
+  if (!e.contains(base)) return 0.0;
+  if (e.contains(base + dir * limit)) return limit;
+  double lo = 0.0, hi = limit;
+  for (int k = 0; k < 40; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (e.contains(base + dir * mid) ? lo : hi) = mid;
+  }
+  return lo;
 }
 
 TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, double age) {
@@ -54,9 +57,8 @@ TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, doub
   const double l_max = p.l_max > 0.0 ? p.l_max : h_max;
   // The branch's length at time t: grown by the age function, ended by the crown's cylinder.
   const auto length_at = [&](const Module& m, const Vec3& base, double t) {
-    const Envelope e = envelope_at(a, t);
     const double grown = m.c_l * l_max / h_max * a.f_height(t - m.t0);
-    return std::min(grown, room(base, m.direction, e.radius, e.top));
+    return room(base, m.direction, envelope_at(a, t), grown);
   };
   tree.branches.resize(modules.size());
   std::vector<bool> removed(modules.size(), false);

@@ -2,8 +2,8 @@
 // The L-system's modules evaluated at one age: where each branch is, how long and how thick,
 // after crown raising (scaffolds that leave the leader below the crown base f_H - f_CH are
 // removed, with everything on them) and maintenance pruning (branches end where they would
-// leave the crown's cylinder: radius f_CD / 2, top f_H). Both bounds only grow with age, so
-// no branch ever gets shorter.
+// leave the crown's shape: a cylinder of radius f_CD / 2 under a dome reaching f_H). Both
+// only grow with age, so no branch ever gets shorter.
 #include <cstdint>
 #include <vector>
 
