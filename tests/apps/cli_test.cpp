@@ -113,6 +113,33 @@ TEST(Cli, DiscoverRendersAContactSheetAndWritesEachTilesSpecies) {
   EXPECT_EQ(run("discover --count 0 --out " + (dir / "x.png").string(), dir).exit_code, 2);
 }
 
+TEST(Cli, GrowWritesAnImagePerAgeAndTheGrowthTable) {
+  TempDir dir;
+  const auto plane = testing::source_file("data/species/london_plane.toml").string();
+  const auto out = dir / "growth";
+  const Result r =
+      run("grow " + plane + " --ages 10,30,90 --width 48 --height 48 --spp 1 --out " + out.string(),
+          dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"age_010.png", "age_030.exr", "age_090.png", "growth.json"})
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  EXPECT_NE(r.err.find("outside the growth data"), std::string::npos) << "age 90 is clamped";
+  const auto table = nlohmann::json::parse(testing::read_file(out / "growth.json"));
+  ASSERT_EQ(table["ages"].size(), 3u);
+  EXPECT_LT(table["ages"][2]["age_used"].get<double>(), 90.0);
+  for (const auto& row : table["ages"])
+    for (const char* k : {"height_m", "crown_diameter_m", "crown_height_m", "dbh_cm"}) {
+      const double model = row["model"][k], equation = row["equations"][k];
+      EXPECT_NEAR(model, equation, 0.1 * equation) << k << " at " << row["age"];
+    }
+  const Result wrong =
+      run("grow " + testing::source_file("data/species/quaking_aspen.toml").string() + " --out " +
+              (dir / "x").string(),
+          dir);
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_NE(wrong.err.find("measured_growth"), std::string::npos) << wrong.err;
+}
+
 TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
   TempDir dir;
   const auto file = dir.write("ok.toml", scenario("", "", "spp = 2"));

@@ -60,6 +60,9 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "true\nbark_texture = \"" +
          (dir / "bark.png").string() +
          "\"\n\n"
+         "[[species]]\nbit = 3\nfile = \"" +
+         data +
+         "/species/london_plane.toml\"\nvariants = 2\ndensity_per_ha = 5\nage = [15.0, 40.0]\n\n"
          "[[grass]]\ntype = 1\ndensity_per_m2 = 50\nblade_length = 0.2\nblade_width = "
          "0.003\ncurvature = 0.5\n"
          "colour = [0.1, 0.3, 0.05]\n\n"
@@ -114,7 +117,7 @@ TEST(FullScenario, LoadsEveryKey) {
   ASSERT_TRUE(s.featuremaps.has_value());
   EXPECT_EQ(s.featuremaps->vegetation, f.vegetation);
   EXPECT_EQ(s.featuremaps->water, (f.dir / "water.tif").string());
-  ASSERT_EQ(s.species.size(), 1u);
+  ASSERT_EQ(s.species.size(), 2u);
   EXPECT_EQ(s.species[0].bit, 2);
   EXPECT_EQ(s.species[0].variants, 2);
   EXPECT_DOUBLE_EQ(s.species[0].min_spacing, 3.0);
@@ -127,6 +130,8 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(s.render.season, "autumn");
   EXPECT_DOUBLE_EQ(s.render.checkpoint_seconds, 30.0);
   EXPECT_TRUE(s.species[0].evergreen);
+  EXPECT_DOUBLE_EQ(s.species[1].age_min, 15.0);
+  EXPECT_DOUBLE_EQ(s.species[1].age_max, 40.0);
   EXPECT_EQ(s.species[0].bark_texture, (f.dir / "bark.png").string());
   EXPECT_DOUBLE_EQ(s.sky.turbidity, 2.5);
   EXPECT_TRUE(s.haze.enabled);
@@ -136,6 +141,20 @@ TEST(FullScenario, LoadsEveryKey) {
   // (90 - 36.88 - 23.44 = 29.7 at solar noon, which falls about 12:40 there).
   EXPECT_NEAR(s.sun.elevation_deg, 29.5, 1.0);
   EXPECT_NEAR(std::remainder(s.sun.azimuth_deg, 360.0), 0.0, 10.0);
+}
+
+TEST(FullScenario, AgesGoToMeasuredGrowthSpeciesOnly) {
+  Fixture f;
+  std::string text = f.text();
+  const std::string plane = "/species/london_plane.toml";
+  text.replace(text.find(plane), plane.size(), "/species/quaking_aspen.toml");
+  try {
+    load_scenario(f.dir.write("aged.toml", text));
+    FAIL() << "an age for a Weber & Penn species was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("species[1]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("age"), std::string::npos) << e.what();
+  }
 }
 
 TEST(FullScenario, EveryDocumentedKeyIsExercised) {
