@@ -12,6 +12,7 @@
 #include "core/counter_rng.h"
 #include "renderer/image_output.h"
 #include "scenes/contact_sheet.h"
+#include "scenes/scenario.h"
 #include "trees/harmonic/parameters.h"
 #include "trees/species.h"
 
@@ -62,6 +63,10 @@ void write_species_file(const trees::Species& s, const std::filesystem::path& pa
 }  // namespace
 
 int run_discover(const DiscoverArgs& args) {
+  // The sheet is one film: refuse sizes that could not be held, before any work.
+  const int columns = std::min(6, args.count);
+  scenes::check_image_size(columns * args.tile, (args.count + columns - 1) / columns * args.tile,
+                           "--count/--tile");
   const std::filesystem::path out(args.out);
   const std::filesystem::path dir = out.parent_path() / (out.stem().string() + "_species");
   std::filesystem::create_directories(dir);

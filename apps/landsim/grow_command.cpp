@@ -14,6 +14,7 @@
 #include "renderer/image_output.h"
 #include "renderer/render.h"
 #include "scenes/contact_sheet.h"
+#include "scenes/scenario.h"
 #include "trees/measured_growth/dimensions.h"
 #include "trees/measured_growth/generator.h"
 #include "trees/species.h"
@@ -88,6 +89,7 @@ int run_grow(const GrowArgs& args) {
                      ": core: `landsim grow` needs a measured-growth species "
                      "(core = \"measured_growth\"), got " +
                      trees::core_name(species.core));
+  scenes::check_image_size(args.width, args.height, "--width/--height");
   const auto& p = std::get<trees::measured_growth::Parameters>(species.parameters);
   const std::filesystem::path out(args.out);
   std::filesystem::create_directories(out);

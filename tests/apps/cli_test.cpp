@@ -111,6 +111,12 @@ TEST(Cli, DiscoverRendersAContactSheetAndWritesEachTilesSpecies) {
   }
   EXPECT_EQ(heights.size(), 4u);  // four different trees
   EXPECT_EQ(run("discover --count 0 --out " + (dir / "x.png").string(), dir).exit_code, 2);
+  // A sheet too large to hold is refused before any work, nothing written.
+  const Result huge =
+      run("discover --count 400 --tile 2048 --out " + (dir / "h.png").string(), dir);
+  EXPECT_EQ(huge.exit_code, 2);
+  EXPECT_NE(huge.err.find("--count/--tile"), std::string::npos) << huge.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "h_species"));
 }
 
 TEST(Cli, GrowWritesAnImagePerAgeAndTheGrowthTable) {
