@@ -121,7 +121,12 @@ Parameters parse_parameters(std::string_view toml_text, const std::string& sourc
     else
       r.refuse(v, key, "one of core, name, colours, [allometry], [growth], [leaves]");
   }
-  // Explosion guard: scaffolds times the branches each can carry.
+  // Explosion guards: leaves at the largest leaf area, and scaffolds times their branches.
+  const double leaves = p.allometry.leaf_area(p.allometry.dbh.max) / p.leaf_area;
+  if (leaves > 2e6)
+    throw InputError(source + ": leaves.area " + std::to_string(p.leaf_area) +
+                     " would make about " + std::to_string(static_cast<long long>(leaves)) +
+                     " leaves at full leaf area (limit 2,000,000): raise leaves.area");
   const double scaffolds = p.allometry.max_age / p.scaffold_interval;
   const double per_scaffold = std::pow(2.0, p.max_generations + 1);
   if (scaffolds * per_scaffold > 2e6)

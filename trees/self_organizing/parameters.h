@@ -115,6 +115,7 @@ struct Parameters {
   std::vector<BrushStroke> strokes;
   std::vector<Pruning> prunings;
   std::size_t max_internodes = 1000000;  // growth beyond this is refused (InputError)
+  std::size_t max_markers = 20000000;    // markers held at once beyond this: refused too
 };
 
 // The core's own tables of a species file (docs/SPECIES.md); throws InputError naming the

@@ -71,12 +71,18 @@ class Simulation {
     markers_.expire(s);
     for (const BrushStroke& stroke : p_.strokes)
       add_stroke_markers(stroke, s, marker_rng_, markers_);
-    if (p_.space.autonomous_markers <= 0) return;
-    const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
-    for (const BudRef& bud : plant_.buds())
-      add_cone_markers(plant_[bud.internode].tip, plant_.bud_direction(bud),
-                       p_.space.perception_angle, radius, p_.space.autonomous_markers, s,
-                       marker_rng_, markers_);
+    if (p_.space.autonomous_markers > 0) {
+      const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
+      for (const BudRef& bud : plant_.buds())
+        add_cone_markers(plant_[bud.internode].tip, plant_.bud_direction(bud),
+                         p_.space.perception_angle, radius, p_.space.autonomous_markers, s,
+                         marker_rng_, markers_);
+    }
+    if (markers_.size() > p_.max_markers)
+      throw InputError("self-organising growth would hold more than " +
+                       std::to_string(p_.max_markers) + " markers at step " + std::to_string(s) +
+                       ": lower space.autonomous_markers or the strokes' markers_per_step and "
+                       "max_age");
   }
 
   // Q = b * L^kappa for every bud: light feeds the resource; space only decides which buds

@@ -113,6 +113,7 @@ TEST(MeasuredGrowth, SpeciesFileErrorsNameTheKey) {
             std::string::npos);
   EXPECT_NE(error("[growth]\nscaffold_interval = 0.25\nmax_generations = 12\n").find("branches"),
             std::string::npos);
+  EXPECT_NE(error("[leaves]\narea = 0.0001\n").find("leaves.area"), std::string::npos);
 }
 
 }  // namespace

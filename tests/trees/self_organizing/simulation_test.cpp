@@ -114,6 +114,9 @@ TEST(SelfOrganizing, GrowthBeyondTheInternodeLimitIsRefused) {
   p.space.autonomous_markers = 6;
   p.max_internodes = 2000;
   EXPECT_THROW(grow(p, 1), InputError);
+  p.max_internodes = 1000000;
+  p.max_markers = 5000;  // and too many markers at once
+  EXPECT_THROW(grow(p, 1), InputError);
 }
 
 TEST(SelfOrganizing, SkeletonHasOneStemPerAxisAndLeavesOnYoungShoots) {
