@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/trees/species_shapes.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -112,28 +114,17 @@ TEST(GraphPathsSpecies, EstimatedNodesMatchesASampledVolume) {
 }
 
 TEST(GraphPathsSpecies, TheSixExampleSpeciesGenerateDistinctShapes) {
-  struct Shape {
-    const char* file;
-    double min_height, max_height, min_crown, max_crown;
-  };
   // Sizes follow from each file's volumes and subgraph reach: e.g. the bush is a 1 m dome,
   // the round crown's limb spheres (1.4 m) reach at most 5 m out with their subgraphs, the conifer
   // a 9 m cone of 1.8 m base radius, the umbrella a flat crown 4 m wide at 5 m.
-  const Shape shapes[] = {
-      {"graph_round_crown.toml", 6, 10, 2.4, 5.2}, {"graph_conifer.toml", 8, 10.5, 1.5, 3.0},
-      {"graph_willow.toml", 6.5, 9, 3.0, 5.5},     {"graph_bush.toml", 1.0, 2.2, 1.0, 2.2},
-      {"graph_column.toml", 9.5, 12, 0.8, 2.0},    {"graph_umbrella.toml", 5.5, 8, 3.8, 5.5}};
-  for (const Shape& s : shapes) {
-    const Species species =
-        load_species(testing::source_file(std::string("data/species/") + s.file));
-    EXPECT_EQ(species.core, CoreKind::graph_paths);
-    const Tree t = generate(species, {3});
-    EXPECT_GT(t.stats.height, s.min_height) << s.file;
-    EXPECT_LT(t.stats.height, s.max_height) << s.file;
-    EXPECT_GT(t.stats.crown_radius, s.min_crown) << s.file;
-    EXPECT_LT(t.stats.crown_radius, s.max_crown) << s.file;
-    EXPECT_GT(t.stats.leaves, 1000) << s.file;
-  }
+  testing::expect_shapes(CoreKind::graph_paths,
+                         {{"graph_round_crown.toml", 6, 10, 2.4, 5.2},
+                          {"graph_conifer.toml", 8, 10.5, 1.5, 3.0},
+                          {"graph_willow.toml", 6.5, 9, 3.0, 5.5},
+                          {"graph_bush.toml", 1.0, 2.2, 1.0, 2.2},
+                          {"graph_column.toml", 9.5, 12, 0.8, 2.0},
+                          {"graph_umbrella.toml", 5.5, 8, 3.8, 5.5}},
+                         3, 1000);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/trees/species_shapes.h"
+
 #include <filesystem>
 #include <set>
 
@@ -85,26 +87,14 @@ TEST(HarmonicSpecies, VariationStaysInRangeAndZeroChangesNothing) {
 }
 
 TEST(HarmonicSpecies, TheSixExampleSpeciesGrowDistinctShapes) {
-  struct Shape {
-    const char* file;
-    double min_height, max_height, min_crown, max_crown;
-  };
-  const Shape shapes[] = {
-      {"harmonic_ponderosa_pine.toml", 13, 20, 2, 5}, {"harmonic_snow_gum.toml", 4, 8, 2.5, 6},
-      {"harmonic_paper_birch.toml", 8, 12, 1.5, 4},   {"harmonic_cherry.toml", 3.5, 7, 1.8, 4},
-      {"harmonic_american_elm.toml", 7.5, 12, 4, 8},  {"harmonic_juniper.toml", 3.5, 6, 0.8, 2},
-  };
-  for (const Shape& shape : shapes) {
-    const Species s =
-        load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / shape.file);
-    ASSERT_EQ(s.core, CoreKind::harmonic) << shape.file;
-    const Tree t = generate(s, {.seed = 1});
-    EXPECT_GE(t.stats.height, shape.min_height) << shape.file;
-    EXPECT_LE(t.stats.height, shape.max_height) << shape.file;
-    EXPECT_GE(t.stats.crown_radius, shape.min_crown) << shape.file;
-    EXPECT_LE(t.stats.crown_radius, shape.max_crown) << shape.file;
-    EXPECT_GT(t.stats.leaves, 500) << shape.file;
-  }
+  trees::testing::expect_shapes(CoreKind::harmonic,
+                                {{"harmonic_ponderosa_pine.toml", 13, 20, 2, 5},
+                                 {"harmonic_snow_gum.toml", 4, 8, 2.5, 6},
+                                 {"harmonic_paper_birch.toml", 8, 12, 1.5, 4},
+                                 {"harmonic_cherry.toml", 3.5, 7, 1.8, 4},
+                                 {"harmonic_american_elm.toml", 7.5, 12, 4, 8},
+                                 {"harmonic_juniper.toml", 3.5, 6, 0.8, 2}},
+                                1, 500);
 }
 
 TEST(HarmonicSpecies, DetailDropsChainsAndCrossSections) {

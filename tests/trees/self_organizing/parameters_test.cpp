@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/trees/species_shapes.h"
+
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -95,27 +97,15 @@ TEST(SelfOrganizingSpecies, ExplosiveMarkerCountsAreRefused) {
 }
 
 TEST(SelfOrganizingSpecies, TheExampleSpeciesGrowDistinctShapes) {
-  struct Shape {
-    const char* file;
-    double min_height, max_height, min_crown, max_crown;
-  };
-  const Shape shapes[] = {
-      {"so_upright.toml", 9, 15, 3, 8},  {"so_plagiotropic.toml", 9, 15, 4, 10},
-      {"so_weeping.toml", 9, 15, 3, 9},  {"so_epitonic.toml", 7, 12, 1.5, 4.5},
-      {"so_shedding.toml", 9, 14, 2, 5}, {"so_envelope.toml", 7.5, 9.01, 2.5, 3.31},
-      {"so_brushed.toml", 5, 8, 3, 6},
-  };
-  for (const Shape& shape : shapes) {
-    const Species s =
-        load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / shape.file);
-    ASSERT_EQ(s.core, CoreKind::self_organizing) << shape.file;
-    const Tree t = generate(s, {.seed = 3});
-    EXPECT_GE(t.stats.height, shape.min_height) << shape.file;
-    EXPECT_LE(t.stats.height, shape.max_height) << shape.file;
-    EXPECT_GE(t.stats.crown_radius, shape.min_crown) << shape.file;
-    EXPECT_LE(t.stats.crown_radius, shape.max_crown) << shape.file;
-    EXPECT_GT(t.stats.leaves, 500) << shape.file;
-  }
+  trees::testing::expect_shapes(CoreKind::self_organizing,
+                                {{"so_upright.toml", 9, 15, 3, 8},
+                                 {"so_plagiotropic.toml", 9, 15, 4, 10},
+                                 {"so_weeping.toml", 9, 15, 3, 9},
+                                 {"so_epitonic.toml", 7, 12, 1.5, 4.5},
+                                 {"so_shedding.toml", 9, 14, 2, 5},
+                                 {"so_envelope.toml", 7.5, 9.01, 2.5, 3.31},
+                                 {"so_brushed.toml", 5, 8, 3, 6}},
+                                3, 500);
 }
 
 TEST(SelfOrganizingSpecies, WeepingBranchesHangAndPlagiotropicOnesLevelOut) {

@@ -4,19 +4,14 @@
 
 #include <cmath>
 
+#include "tests/trees/self_organizing/test_species.h"
 #include "trees/self_organizing/simulation.h"
 
 namespace landsim::trees::self_organizing {
 namespace {
 
 Parameters species_with_shedding() {
-  Parameters p;
-  p.steps = 16;
-  p.internode_length = 0.2;
-  p.envelope.kind = EnvelopeKind::ellipsoid;
-  p.envelope.centre = {0, 0, 2};
-  p.envelope.radii = {1.5, 1.5, 2};
-  p.envelope.density = 60;
+  Parameters p = testing::ellipsoid_crown(16);
   p.light.a = 0.2;  // strong shade, so that shedding has branches to take
   p.vigour.shedding = 0.3;
   return p;

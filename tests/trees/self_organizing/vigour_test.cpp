@@ -5,22 +5,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tests/trees/self_organizing/test_species.h"
 #include "trees/random.h"
 #include "trees/self_organizing/simulation.h"
 
 namespace landsim::trees::self_organizing {
 namespace {
 
-Parameters grown_species() {
-  Parameters p;
-  p.steps = 14;
-  p.internode_length = 0.2;
-  p.envelope.kind = EnvelopeKind::ellipsoid;
-  p.envelope.centre = {0, 0, 2};
-  p.envelope.radii = {1.5, 1.5, 2};
-  p.envelope.density = 60;
-  return p;
-}
+Parameters grown_species() { return testing::ellipsoid_crown(14); }
 
 TEST(BorchertHonda, SplitConservesTheResource) {
   Random rng(1, 0);
