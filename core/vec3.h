@@ -77,4 +77,24 @@ void orthonormal_basis(const Vec3T<T>& n, Vec3T<T>& t, Vec3T<T>& b) {
   b = {c, sign + n.y * n.y * a, -n.y};
 }
 
+// Rodrigues' rotation of v about the unit axis by `angle` radians.
+inline Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
+}
+
+// The unit vector perpendicular to the unit `axis` nearest to `near` (a fixed fallback when
+// `near` is along the axis): for carrying a frame along a curve without twisting it.
+inline Vec3 perpendicular_near(const Vec3& axis, const Vec3& near) {
+  Vec3 f = near - axis * dot(near, axis);
+  if (length(f) < 1e-9)
+    f = std::abs(axis.x) < 0.9 ? Vec3{1, 0, 0} - axis * axis.x : Vec3{0, 1, 0} - axis * axis.y;
+  return normalize(f);
+}
+
+// Some unit vector perpendicular to the unit `axis` (horizontal unless the axis is near z).
+inline Vec3 any_perpendicular(const Vec3& axis) {
+  return normalize(cross(axis, std::abs(axis.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0}));
+}
+
 }  // namespace landsim

@@ -7,13 +7,6 @@
 namespace landsim::trees::harmonic {
 namespace {
 
-Vec3 perpendicular(const Vec3& axis, const Vec3& near) {
-  Vec3 f = near - axis * dot(near, axis);
-  if (length(f) < 1e-9)
-    f = std::abs(axis.x) < 0.9 ? Vec3{1, 0, 0} - axis * axis.x : Vec3{0, 1, 0} - axis * axis.y;
-  return normalize(f);
-}
-
 StemSkeleton chain_stem(const Parameters& p, const Chain& chain, int age, int stride) {
   StemSkeleton stem;
   stem.level = std::min(chain.level, 3);
@@ -25,7 +18,7 @@ StemSkeleton chain_stem(const Parameters& p, const Chain& chain, int age, int st
     // Along the chain: towards the next particle (the last keeps the previous direction).
     const Vec3 axis = k + 1 < n ? normalize(chain.particles[k + 1].position - particle.position)
                                 : particle.heading;
-    frame = perpendicular(axis, frame);
+    frame = perpendicular_near(axis, frame);
     stem.sections.push_back(
         {particle.position, axis, frame, particle_radius(p, chain, particle, age)});
   }
@@ -37,7 +30,7 @@ StemSkeleton chain_stem(const Parameters& p, const Chain& chain, int age, int st
 StemSkeleton part_stem(const SemanticParticle& part) {
   StemSkeleton stem;
   stem.level = 3;
-  const Vec3 frame = perpendicular(part.direction, {1, 0, 0});
+  const Vec3 frame = perpendicular_near(part.direction, {1, 0, 0});
   const double s = part.size;
   const auto add = [&](double along, double radius) {
     stem.sections.push_back(

@@ -9,16 +9,6 @@
 namespace landsim::trees::measured_growth {
 namespace {
 
-Vec3 perpendicular(const Vec3& a) {
-  const Vec3 t = std::abs(a.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-  return normalize(cross(a, t));
-}
-
-Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
-}
-
 // The bifurcation half-angle from the crown's shape at time t: arctan(CD / CH) / 2.
 double crown_angle(const Allometry& a, double t) {
   return 0.5 * std::atan2(a.f_crown_diameter(t), a.f_crown_height(t));
@@ -57,7 +47,7 @@ std::vector<Module> derive(const Parameters& p, std::uint64_t seed, double age) 
     const Module parent = modules[i];
     const double t = parent.t0 + p.bifurcation_period;
     if (t >= age || !bifurcates(p, parent)) continue;
-    const Vec3 side = rotate_about(perpendicular(parent.direction), parent.direction,
+    const Vec3 side = rotate_about(any_perpendicular(parent.direction), parent.direction,
                                    (parent.generation + 1) * p.divergence);
     for (int child = 0; child < 2; ++child) {
       const std::uint64_t id = hash_combine(parent.id, static_cast<std::uint64_t>(child) + 2);

@@ -13,11 +13,6 @@ namespace {
 constexpr double kBreastHeight = 1.37;  // metres: where DBH is measured
 constexpr double kMinLength = 0.01;     // metres: shorter branches are left out
 
-Vec3 perpendicular(const Vec3& a) {
-  const Vec3 t = std::abs(a.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-  return normalize(cross(a, t));
-}
-
 }  // namespace
 
 // The crown's shape at time t: a cylinder of radius f_CD / 2 under a dome that sinks from
@@ -111,7 +106,7 @@ TreeSkeleton tree_skeleton(const Parameters& p, const TreeAtAge& tree, std::uint
     if (!b.present) continue;
     StemSkeleton stem;
     const Vec3 axis = normalize(b.tip - b.base);
-    const Vec3 x = perpendicular(axis);
+    const Vec3 x = any_perpendicular(axis);
     const int level = b.base_radius > 0.05 ? 1 : b.base_radius > 0.015 ? 2 : 3;
     stem.level = level;
     stem.sections = {{b.base, axis, x, b.base_radius}, {b.tip, axis, x, 0.7 * b.base_radius}};
@@ -130,7 +125,7 @@ TreeSkeleton tree_skeleton(const Parameters& p, const TreeAtAge& tree, std::uint
   for (const Branch& b : tree.branches) {
     if (!b.present || 2.0 * b.base_radius >= p.leaf_threshold) continue;
     const Vec3 axis = normalize(b.tip - b.base);
-    const Vec3 x = perpendicular(axis), y = cross(axis, x);
+    const Vec3 x = any_perpendicular(axis), y = cross(axis, x);
     for (; next < offset + b.length && n < static_cast<std::uint64_t>(count);
          next += spacing, ++n) {
       const double turn = static_cast<double>(n) * 2.39996 +  // 137.5 degrees

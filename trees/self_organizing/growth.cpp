@@ -5,18 +5,6 @@
 namespace landsim::trees::self_organizing {
 namespace {
 
-// A unit vector perpendicular to h, as close to `near` as possible.
-Vec3 perpendicular(const Vec3& h, const Vec3& near) {
-  Vec3 f = near - h * dot(near, h);
-  if (length(f) < 1e-9) f = std::abs(h.x) < 0.9 ? Vec3{1, 0, 0} - h * h.x : Vec3{0, 1, 0} - h * h.y;
-  return normalize(f);
-}
-
-Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
-}
-
 Vec3 random_turn(const Vec3& h, double amount, Random& rng) {
   if (amount <= 0.0) return h;
   for (;;) {
@@ -63,7 +51,7 @@ int grow_shoot(Plant& plant, const Parameters& p, BudRef bud, int n, const Vec3&
     const Vec3 tip = base + h * p.internode_length;
     // The ground is an obstacle, and a confining envelope a wall.
     if (tip.z < 0.0 || (confine && !p.envelope.contains(tip))) break;
-    frame = perpendicular(h, frame);
+    frame = perpendicular_near(h, frame);
     const int rank = bud.lateral ? 0 : from.rank + 1;
     const Vec3 toward = rotate_about(frame, h, rank * d.phyllotaxis);
     const Vec3 lateral = h * std::cos(d.branching) + toward * std::sin(d.branching);
