@@ -25,6 +25,17 @@ class TomlReader {
   // An array of tables ([[key]]).
   const toml::array& tables(const toml::node& n, const std::string& key) const;
 
+  // Reads every key of table `t` (named `name`) with read(key, "name.key", value), which
+  // returns false for a key it does not know; that key is refused, listing `known`.
+  template <typename Read>
+  void read_table(const toml::table& t, const std::string& name, const std::string& known,
+                  Read&& read) const {
+    for (auto&& [k, v] : t) {
+      const std::string key = name + "." + std::string(k.str());
+      if (!read(std::string(k.str()), key, v)) refuse(v, key, "one of " + known);
+    }
+  }
+
   const std::string& source() const { return source_; }
   // A number as a short decimal: 0.5, not 0.500000.
   static std::string text(double v);

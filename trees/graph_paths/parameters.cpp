@@ -49,31 +49,32 @@ std::vector<ProfilePoint> read_profile(const Reader& r, const toml::node& n,
 VolumePrimitive read_primitive(const Reader& r, const toml::table& t) {
   VolumePrimitive s;
   bool has_kind = false;
-  for (auto&& [k, v] : t) {
-    const std::string key = "volume." + std::string(k.str());
-    if (k == "kind")
-      s.kind = kind_of(r, v), has_kind = true;
-    else if (k == "origin")
-      s.origin = r.vector(v, key);
-    else if (k == "axis") {
-      s.axis = r.vector(v, key);
-      if (!(length(s.axis) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
-      s.axis = normalize(s.axis);
-    } else if (k == "radius")
-      s.radius = r.number(v, key, 1e-3, 1e3);
-    else if (k == "height")
-      s.height = r.number(v, key, 1e-3, 1e3);
-    else if (k == "half_angle")
-      s.half_angle = r.number(v, key, 1, 180) * std::numbers::pi / 180;
-    else if (k == "radii") {
-      s.radii = r.vector(v, key);
-      if (!(std::min({s.radii.x, s.radii.y, s.radii.z}) >= 1e-3))
-        r.refuse(v, key, "three semi-axes, each at least 0.001 m");
-    } else if (k == "profile")
-      s.profile = read_profile(r, v, key);
-    else
-      r.refuse(v, key, "one of kind, origin, axis, radius, height, half_angle, radii, profile");
-  }
+  r.read_table(t, "volume", "kind, origin, axis, radius, height, half_angle, radii, profile",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "kind")
+                   s.kind = kind_of(r, v), has_kind = true;
+                 else if (k == "origin")
+                   s.origin = r.vector(v, key);
+                 else if (k == "axis") {
+                   s.axis = r.vector(v, key);
+                   if (!(length(s.axis) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
+                   s.axis = normalize(s.axis);
+                 } else if (k == "radius")
+                   s.radius = r.number(v, key, 1e-3, 1e3);
+                 else if (k == "height")
+                   s.height = r.number(v, key, 1e-3, 1e3);
+                 else if (k == "half_angle")
+                   s.half_angle = r.number(v, key, 1, 180) * std::numbers::pi / 180;
+                 else if (k == "radii") {
+                   s.radii = r.vector(v, key);
+                   if (!(std::min({s.radii.x, s.radii.y, s.radii.z}) >= 1e-3))
+                     r.refuse(v, key, "three semi-axes, each at least 0.001 m");
+                 } else if (k == "profile")
+                   s.profile = read_profile(r, v, key);
+                 else
+                   return false;
+                 return true;
+               });
   if (!has_kind)
     r.refuse(t, "volume.kind", "a kind in every [[volume]]: cylinder, cone, sphere, ...");
   if (s.kind == PrimitiveKind::revolution && s.profile.size() < 2)
@@ -83,120 +84,124 @@ VolumePrimitive read_primitive(const Reader& r, const toml::table& t) {
 }
 
 void read_graph(const Reader& r, const toml::table& t, Parameters& p) {
-  for (auto&& [k, v] : t) {
-    const std::string key = "graph." + std::string(k.str());
-    if (k == "spacing")
-      p.spacing = r.number(v, key, 1e-3, 100);
-    else if (k == "policy") {
-      const auto s = v.value<std::string>();
-      if (s != "yao" && s != "threshold") r.refuse(v, key, "\"yao\" or \"threshold\"");
-      p.policy = s == "yao" ? GraphPolicy::yao : GraphPolicy::threshold;
-    } else if (k == "cone_subdivisions")
-      p.cone_subdivisions = r.integer(v, key, 3, 8);
-    else if (k == "search_radius")
-      p.search_radius = r.number(v, key, 1.5, 10);
-    else if (k == "threshold")
-      p.threshold = r.number(v, key, 1.0, 10);
-    else if (k == "weight_noise")
-      p.weight_noise = r.number(v, key, 0, 10);
-    else if (k == "root")
-      p.root = r.vector(v, key);
-    else if (k == "endpoints")
-      p.endpoints = r.integer(v, key, 1, 100000);
-    else if (k == "shell")
-      p.shell = r.number(v, key, 1e-3, 100);
-    else if (k == "endpoint_min_z")
-      p.endpoint_min_z = r.number(v, key, -1e4, 1e4);
-    else
-      r.refuse(v, key,
-               "one of spacing, policy, cone_subdivisions, search_radius, threshold, "
-               "weight_noise, root, endpoints, shell, endpoint_min_z");
-  }
+  r.read_table(t, "graph",
+               "spacing, policy, cone_subdivisions, search_radius, threshold, weight_noise, root, "
+               "endpoints, shell, endpoint_min_z",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "spacing")
+                   p.spacing = r.number(v, key, 1e-3, 100);
+                 else if (k == "policy") {
+                   const auto s = v.value<std::string>();
+                   if (s != "yao" && s != "threshold") r.refuse(v, key, "\"yao\" or \"threshold\"");
+                   p.policy = s == "yao" ? GraphPolicy::yao : GraphPolicy::threshold;
+                 } else if (k == "cone_subdivisions")
+                   p.cone_subdivisions = r.integer(v, key, 3, 8);
+                 else if (k == "search_radius")
+                   p.search_radius = r.number(v, key, 1.5, 10);
+                 else if (k == "threshold")
+                   p.threshold = r.number(v, key, 1.0, 10);
+                 else if (k == "weight_noise")
+                   p.weight_noise = r.number(v, key, 0, 10);
+                 else if (k == "root")
+                   p.root = r.vector(v, key);
+                 else if (k == "endpoints")
+                   p.endpoints = r.integer(v, key, 1, 100000);
+                 else if (k == "shell")
+                   p.shell = r.number(v, key, 1e-3, 100);
+                 else if (k == "endpoint_min_z")
+                   p.endpoint_min_z = r.number(v, key, -1e4, 1e4);
+                 else
+                   return false;
+                 return true;
+               });
 }
 
 void read_thickness(const Reader& r, const toml::table& t, SkeletonOptions& o) {
-  for (auto&& [k, v] : t) {
-    const std::string key = "thickness." + std::string(k.str());
-    if (k == "power")
-      o.thickness_power = r.number(v, key, 0.1, 5);
-    else if (k == "radius_scale")
-      o.radius_scale = r.number(v, key, 1e-5, 10);
-    else if (k == "min_radius")
-      o.min_radius = r.number(v, key, 1e-4, 1);
-    else
-      r.refuse(v, key, "one of power, radius_scale, min_radius");
-  }
+  r.read_table(t, "thickness", "power, radius_scale, min_radius",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "power")
+                   o.thickness_power = r.number(v, key, 0.1, 5);
+                 else if (k == "radius_scale")
+                   o.radius_scale = r.number(v, key, 1e-5, 10);
+                 else if (k == "min_radius")
+                   o.min_radius = r.number(v, key, 1e-4, 1);
+                 else
+                   return false;
+                 return true;
+               });
 }
 
 void read_leaves(const Reader& r, const toml::table& t, SkeletonOptions& o) {
-  for (auto&& [k, v] : t) {
-    const std::string key = "leaves." + std::string(k.str());
-    if (k == "per_endpoint")
-      o.leaves_per_endpoint = r.integer(v, key, 0, 64);
-    else if (k == "length")
-      o.leaf_length = r.number(v, key, 1e-3, 5);
-    else if (k == "width")
-      o.leaf_width = r.number(v, key, 1e-3, 5);
-    else
-      r.refuse(v, key, "one of per_endpoint, length, width");
-  }
+  r.read_table(t, "leaves", "per_endpoint, length, width",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "per_endpoint")
+                   o.leaves_per_endpoint = r.integer(v, key, 0, 64);
+                 else if (k == "length")
+                   o.leaf_length = r.number(v, key, 1e-3, 5);
+                 else if (k == "width")
+                   o.leaf_width = r.number(v, key, 1e-3, 5);
+                 else
+                   return false;
+                 return true;
+               });
 }
 
 void read_iteration(const Reader& r, const toml::table& t, IterationParameters& it) {
   constexpr double deg = std::numbers::pi / 180;
-  for (auto&& [k, v] : t) {
-    const std::string key = "iteration." + std::string(k.str());
-    if (k == "levels")
-      it.levels = r.integer(v, key, 0, 6);
-    else if (k == "radius")
-      it.radius = r.number(v, key, 1e-3, 100);
-    else if (k == "size_ratio")
-      it.size_ratio = r.number(v, key, 0.05, 1);
-    else if (k == "half_angle")
-      it.half_angle = r.number(v, key, 5, 180) * deg;
-    else if (k == "spacing_ratio")
-      it.spacing_ratio = r.number(v, key, 0.05, 1);
-    else if (k == "endpoints")
-      it.endpoints = r.integer(v, key, 1, 64);
-    else if (k == "shell")
-      it.shell = r.number(v, key, 0.01, 1);
-    else if (k == "rotation")
-      it.rotation = r.number(v, key, -90, 90) * deg;
-    else if (k == "lifespan")
-      it.lifespan = r.number(v, key, 0, 20), it.use_lifespan = true;
-    else if (k == "terminate_probability")
-      it.terminate_probability = r.number(v, key, 0, 1);
-    else if (k == "power")
-      it.power = r.number(v, key, 0.1, 5);
-    else if (k == "light") {
-      it.light = r.vector(v, key);
-      if (!(length(it.light) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
-    } else if (k == "light_strength")
-      it.light_strength = r.number(v, key, 0, 1);
-    else
-      r.refuse(v, key,
-               "one of levels, radius, size_ratio, half_angle, spacing_ratio, "
-               "endpoints, shell, rotation, lifespan, terminate_probability, power, "
-               "light, light_strength");
-  }
+  r.read_table(t, "iteration",
+               "levels, radius, size_ratio, half_angle, spacing_ratio, endpoints, shell, rotation, "
+               "lifespan, terminate_probability, power, light, light_strength",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "levels")
+                   it.levels = r.integer(v, key, 0, 6);
+                 else if (k == "radius")
+                   it.radius = r.number(v, key, 1e-3, 100);
+                 else if (k == "size_ratio")
+                   it.size_ratio = r.number(v, key, 0.05, 1);
+                 else if (k == "half_angle")
+                   it.half_angle = r.number(v, key, 5, 180) * deg;
+                 else if (k == "spacing_ratio")
+                   it.spacing_ratio = r.number(v, key, 0.05, 1);
+                 else if (k == "endpoints")
+                   it.endpoints = r.integer(v, key, 1, 64);
+                 else if (k == "shell")
+                   it.shell = r.number(v, key, 0.01, 1);
+                 else if (k == "rotation")
+                   it.rotation = r.number(v, key, -90, 90) * deg;
+                 else if (k == "lifespan")
+                   it.lifespan = r.number(v, key, 0, 20), it.use_lifespan = true;
+                 else if (k == "terminate_probability")
+                   it.terminate_probability = r.number(v, key, 0, 1);
+                 else if (k == "power")
+                   it.power = r.number(v, key, 0.1, 5);
+                 else if (k == "light") {
+                   it.light = r.vector(v, key);
+                   if (!(length(it.light) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
+                 } else if (k == "light_strength")
+                   it.light_strength = r.number(v, key, 0, 1);
+                 else
+                   return false;
+                 return true;
+               });
 }
 
 void read_refinement(const Reader& r, const toml::table& t, Parameters& p) {
-  for (auto&& [k, v] : t) {
-    const std::string key = "refinement." + std::string(k.str());
-    if (k == "spheres")
-      p.refinement.spheres = r.integer(v, key, 0, 32);
-    else if (k == "radius")
-      p.refinement.radius = r.number(v, key, 0.01, 100);
-    else if (k == "cone_ratio")
-      p.refinement.cone_ratio = r.number(v, key, 0.05, 1);
-    else if (k == "separation")
-      p.refinement.separation = r.number(v, key, 0.5, 4);
-    else if (k == "junction")
-      p.junction = r.vector(v, key);
-    else
-      r.refuse(v, key, "one of spheres, radius, cone_ratio, separation, junction");
-  }
+  r.read_table(t, "refinement", "spheres, radius, cone_ratio, separation, junction",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "spheres")
+                   p.refinement.spheres = r.integer(v, key, 0, 32);
+                 else if (k == "radius")
+                   p.refinement.radius = r.number(v, key, 0.01, 100);
+                 else if (k == "cone_ratio")
+                   p.refinement.cone_ratio = r.number(v, key, 0.05, 1);
+                 else if (k == "separation")
+                   p.refinement.separation = r.number(v, key, 0.5, 4);
+                 else if (k == "junction")
+                   p.junction = r.vector(v, key);
+                 else
+                   return false;
+                 return true;
+               });
 }
 
 double primitive_volume(const VolumePrimitive& s) {

@@ -17,90 +17,91 @@ Equation read_equation(const TomlReader& r, const toml::node& n, const std::stri
   const toml::table& t = r.table(n, key);
   Equation e;
   bool has_form = false;
-  for (auto&& [k, v] : t) {
-    const std::string sub = key + "." + std::string(k.str());
-    if (k == "form") {
-      const auto name = v.value<std::string>();
-      if (!name || !parse_form(*name, e.form))
-        r.refuse(v, sub, "\"lin\", \"quad\", \"cub\" or \"loglogw1\" (the database's model forms)");
-      has_form = true;
-    } else if (k == "a")
-      e.a = r.number(v, sub, -1e6, 1e6);
-    else if (k == "b")
-      e.b = r.number(v, sub, -1e6, 1e6);
-    else if (k == "c")
-      e.c = r.number(v, sub, -1e6, 1e6);
-    else if (k == "d")
-      e.d = r.number(v, sub, -1e6, 1e6);
-    else if (k == "min")
-      e.min = r.number(v, sub, -1e6, 1e6);
-    else if (k == "max")
-      e.max = r.number(v, sub, -1e6, 1e6);
-    else
-      r.refuse(v, sub, "one of form, a, b, c, d, min, max");
-  }
+  r.read_table(t, key, "form, a, b, c, d, min, max",
+               [&](const std::string& k, const std::string& sub, const toml::node& v) {
+                 if (k == "form") {
+                   const auto name = v.value<std::string>();
+                   if (!name || !parse_form(*name, e.form))
+                     r.refuse(v, sub,
+                              "\"lin\", \"quad\", \"cub\" or \"loglogw1\" (the database's model "
+                              "forms)");
+                   has_form = true;
+                 } else if (k == "a")
+                   e.a = r.number(v, sub, -1e6, 1e6);
+                 else if (k == "b")
+                   e.b = r.number(v, sub, -1e6, 1e6);
+                 else if (k == "c")
+                   e.c = r.number(v, sub, -1e6, 1e6);
+                 else if (k == "d")
+                   e.d = r.number(v, sub, -1e6, 1e6);
+                 else if (k == "min")
+                   e.min = r.number(v, sub, -1e6, 1e6);
+                 else if (k == "max")
+                   e.max = r.number(v, sub, -1e6, 1e6);
+                 else
+                   return false;
+                 return true;
+               });
   if (!has_form) r.refuse(t, key + ".form", "the model form");
   if (!(e.min < e.max)) r.refuse(t, key + ".max", "a range with min < max");
   return e;
 }
 
 void read_allometry(const TomlReader& r, const toml::table& t, Allometry& a) {
-  for (auto&& [k, v] : t) {
-    const std::string key = "allometry." + std::string(k.str());
-    if (k == "dbh")
-      a.dbh = read_equation(r, v, key);
-    else if (k == "height")
-      a.height = read_equation(r, v, key);
-    else if (k == "crown_diameter")
-      a.crown_diameter = read_equation(r, v, key);
-    else if (k == "crown_height")
-      a.crown_height = read_equation(r, v, key);
-    else if (k == "leaf_area")
-      a.leaf_area = read_equation(r, v, key);
-    else
-      r.refuse(v, key, "one of dbh, height, crown_diameter, crown_height, leaf_area");
-  }
+  r.read_table(t, "allometry", "dbh, height, crown_diameter, crown_height, leaf_area",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 Equation* e = k == "dbh"              ? &a.dbh
+                               : k == "height"         ? &a.height
+                               : k == "crown_diameter" ? &a.crown_diameter
+                               : k == "crown_height"   ? &a.crown_height
+                               : k == "leaf_area"      ? &a.leaf_area
+                                                       : nullptr;
+                 if (e != nullptr) *e = read_equation(r, v, key);
+                 return e != nullptr;
+               });
   a.max_age = age_of_max_dbh(a.dbh);
 }
 
 void read_growth(const TomlReader& r, const toml::table& t, Parameters& p) {
-  for (auto&& [k, v] : t) {
-    const std::string key = "growth." + std::string(k.str());
-    if (k == "age")
-      p.age = r.number(v, key, 0, 500);
-    else if (k == "scaffold_interval")
-      p.scaffold_interval = r.number(v, key, 0.25, 20);
-    else if (k == "bifurcation_period")
-      p.bifurcation_period = r.number(v, key, 0.5, 50);
-    else if (k == "max_generations")
-      p.max_generations = r.integer(v, key, 0, 12);
-    else if (k == "min_scale")
-      p.min_scale = r.number(v, key, 0, 1);
-    else if (k == "l_max")
-      p.l_max = r.number(v, key, 0, 100);
-    else if (k == "c_dbh")
-      p.c_dbh = r.number(v, key, 0.1, 10);
-    else if (k == "divergence")
-      p.divergence = r.number(v, key, 0, 360) * kDegree;
-    else if (k == "angle_noise")
-      p.angle_noise = r.number(v, key, 0, 45) * kDegree;
-    else
-      r.refuse(v, key,
-               "one of age, scaffold_interval, bifurcation_period, max_generations, "
-               "min_scale, l_max, c_dbh, divergence, angle_noise");
-  }
+  r.read_table(t, "growth",
+               "age, scaffold_interval, bifurcation_period, max_generations, min_scale, l_max, "
+               "c_dbh, divergence, angle_noise",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "age")
+                   p.age = r.number(v, key, 0, 500);
+                 else if (k == "scaffold_interval")
+                   p.scaffold_interval = r.number(v, key, 0.25, 20);
+                 else if (k == "bifurcation_period")
+                   p.bifurcation_period = r.number(v, key, 0.5, 50);
+                 else if (k == "max_generations")
+                   p.max_generations = r.integer(v, key, 0, 12);
+                 else if (k == "min_scale")
+                   p.min_scale = r.number(v, key, 0, 1);
+                 else if (k == "l_max")
+                   p.l_max = r.number(v, key, 0, 100);
+                 else if (k == "c_dbh")
+                   p.c_dbh = r.number(v, key, 0.1, 10);
+                 else if (k == "divergence")
+                   p.divergence = r.number(v, key, 0, 360) * kDegree;
+                 else if (k == "angle_noise")
+                   p.angle_noise = r.number(v, key, 0, 45) * kDegree;
+                 else
+                   return false;
+                 return true;
+               });
 }
 
 void read_leaves(const TomlReader& r, const toml::table& t, Parameters& p) {
-  for (auto&& [k, v] : t) {
-    const std::string key = "leaves." + std::string(k.str());
-    if (k == "area")
-      p.leaf_area = r.number(v, key, 1e-4, 1);
-    else if (k == "threshold")
-      p.leaf_threshold = r.number(v, key, 1e-3, 1);
-    else
-      r.refuse(v, key, "one of area, threshold");
-  }
+  r.read_table(t, "leaves", "area, threshold",
+               [&](const std::string& k, const std::string& key, const toml::node& v) {
+                 if (k == "area")
+                   p.leaf_area = r.number(v, key, 1e-4, 1);
+                 else if (k == "threshold")
+                   p.leaf_threshold = r.number(v, key, 1e-3, 1);
+                 else
+                   return false;
+                 return true;
+               });
 }
 
 }  // namespace
