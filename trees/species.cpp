@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include "core/input_error.h"
 #include "trees/graph_paths/parameters.h"
@@ -81,21 +84,36 @@ std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
   return 1 + static_cast<std::size_t>(std::count(text.begin(), end, '\n'));
 }
 
+// The cores by their species-file name. Every core but Weber & Penn reads its own tables.
+constexpr std::pair<const char*, CoreKind> kCores[] = {
+    {"weber_penn", CoreKind::weber_penn},
+    {"graph_paths", CoreKind::graph_paths},
+    {"self_organizing", CoreKind::self_organizing},
+    {"harmonic", CoreKind::harmonic},
+    {"measured_growth", CoreKind::measured_growth}};
+
+std::optional<CoreKind> core_named(const std::optional<std::string>& name) {
+  for (const auto& [n, kind] : kCores)
+    if (name == n) return kind;
+  return std::nullopt;
+}
+
+// "\"a\", \"b\" or \"c\"": every core's name, for messages.
+std::string core_names() {
+  std::string list;
+  for (std::size_t i = 0; i < std::size(kCores); ++i)
+    list += (i == 0                       ? ""
+             : i + 1 == std::size(kCores) ? " or "
+                                          : ", ") +
+            std::string("\"") + kCores[i].first + "\"";
+  return list;
+}
+
 }  // namespace
 
 std::string core_name(CoreKind core) {
-  switch (core) {
-    case CoreKind::weber_penn:
-      return "weber_penn";
-    case CoreKind::graph_paths:
-      return "graph_paths";
-    case CoreKind::self_organizing:
-      return "self_organizing";
-    case CoreKind::harmonic:
-      return "harmonic";
-    case CoreKind::measured_growth:
-      return "measured_growth";
-  }
+  for (const auto& [n, kind] : kCores)
+    if (kind == core) return n;
   return "unknown";
 }
 
@@ -112,29 +130,16 @@ Species parse_species_toml(std::string_view text, const std::string& source) {
   s.name = std::filesystem::path(source).stem().string();
   ParamTable params;
   bool has_core = false;
-  // A graph-paths file's own tables are read by its core below, not as flat parameters.
-  const auto core_value = root["core"].value<std::string>();
-  const bool own_tables =
-      core_value == "graph_paths" || core_value == "self_organizing" || core_value == "harmonic" ||
-      core_value == "measured_growth";
+  // Other cores' own tables are read by the core below, not as flat parameters.
+  const std::optional<CoreKind> named = core_named(root["core"].value<std::string>());
+  const bool own_tables = named && *named != CoreKind::weber_penn;
   for (auto&& [key, value] : root) {
     const std::string k(key.str());
     if (k == "core") {
-      const auto core = value.value<std::string>();
-      static const std::pair<const char*, CoreKind> kCores[] = {
-          {"weber_penn", CoreKind::weber_penn},
-          {"graph_paths", CoreKind::graph_paths},
-          {"self_organizing", CoreKind::self_organizing},
-          {"harmonic", CoreKind::harmonic},
-          {"measured_growth", CoreKind::measured_growth}};
-      bool known = false;
-      for (const auto& [n, kind] : kCores)
-        if (core == n) s.core = kind, known = true;
-      if (!known)
-        throw InputError(where(source, value.source()) +
-                         ": core: expected \"weber_penn\", \"graph_paths\", "
-                         "\"self_organizing\", \"harmonic\" or \"measured_growth\" (the cores "
-                         "available)");
+      if (!named)
+        throw InputError(where(source, value.source()) + ": core: expected " + core_names() +
+                         " (the cores available)");
+      s.core = *named;
       has_core = true;
     } else if (k == "name") {
       const auto name = value.value<std::string>();
@@ -261,10 +266,10 @@ Tree generate(const Species& species, const TreeOptions& options) {
                           std::get<graph_paths::Parameters>(species.parameters), options.seed),
                       species);
   if (species.core == CoreKind::measured_growth)
-    return still_tree(measured_growth::generate_skeleton(
-                          std::get<measured_growth::Parameters>(species.parameters), options.seed,
-                          options.age),
-                      species);
+    return still_tree(
+        measured_growth::generate_skeleton(
+            std::get<measured_growth::Parameters>(species.parameters), options.seed, options.age),
+        species);
   if (species.core == CoreKind::harmonic) {
     // Level of detail for this core: fewer cross-sections per chain at lower quality.
     const int stride = std::max(1, static_cast<int>(std::lround(1.0 / options.quality)));

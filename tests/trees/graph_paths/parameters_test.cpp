@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/trees/species_shapes.h"
+#include "tests/trees/species_files.h"
 
 #include <cmath>
 #include <numbers>
@@ -18,12 +18,7 @@ const std::string kHeader = "core = \"graph_paths\"\n";
 const std::string kVolume = "[[volume]]\nkind = \"sphere\"\nradius = 1.0\n";
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_species_toml(text, "g.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return trees::testing::species_error(text, "g.toml");
 }
 
 TEST(GraphPathsSpecies, ReadsEveryTable) {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/trees/species_shapes.h"
+#include "tests/trees/species_files.h"
 
 #include <filesystem>
 #include <set>
@@ -15,12 +15,7 @@ namespace landsim::trees::harmonic {
 namespace {
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_species_toml("core = \"harmonic\"\n" + text, "h.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return trees::testing::species_error("core = \"harmonic\"\n" + text, "h.toml");
 }
 
 TEST(HarmonicLayout, HundredFloatsInSixBlocksEveryDefaultInRange) {

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/input_error.h"
+#include "tests/trees/species_files.h"
 #include "trees/measured_growth/dimensions.h"
 #include "trees/mesher.h"
 #include "trees/species.h"
@@ -100,12 +101,7 @@ TEST(MeasuredGrowth, AgesOutsideTheDataAreClamped) {
 
 TEST(MeasuredGrowth, SpeciesFileErrorsNameTheKey) {
   const auto error = [](const std::string& text) {
-    try {
-      parse_species_toml("core = \"measured_growth\"\n" + text, "p.toml");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return trees::testing::species_error("core = \"measured_growth\"\n" + text, "p.toml");
   };
   EXPECT_NE(error("[allometry.dbh]\nform = \"exp\"\n").find("allometry.dbh.form"),
             std::string::npos);

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/trees/species_shapes.h"
+#include "tests/trees/species_files.h"
 
 #include <cmath>
 #include <filesystem>
@@ -19,12 +19,7 @@ const std::string kHeader = "core = \"self_organizing\"\n";
 const std::string kSpace = "[space]\nautonomous_markers = 4\n";
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_species_toml(text, "so.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return trees::testing::species_error(text, "so.toml");
 }
 
 TEST(SelfOrganizingSpecies, ReadsEveryTable) {

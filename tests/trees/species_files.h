@@ -1,16 +1,29 @@
 #pragma once
-// Example species files of a core, each grown and checked against the size its file aims
-// at: height and crown radius within bounds, enough leaves. Shared by the cores' tests.
+// Helpers for the cores' species-file tests: the message a species text is refused with, and
+// the example files of a core grown and checked against the sizes they aim at.
 #include <gtest/gtest.h>
 
 #include <initializer_list>
 #include <string>
 
+#include "core/input_error.h"
 #include "tests/support/temp_dir.h"
 #include "trees/species.h"
 
 namespace landsim::trees::testing {
 
+// The InputError message parsing `text` (a species TOML named `source`) gives; "" if none.
+inline std::string species_error(const std::string& text, const std::string& source) {
+  try {
+    parse_species_toml(text, source);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Each file (in data/species) grown with `seed`: height and crown radius within bounds, and
+// more than `min_leaves` leaves.
 struct ExpectedShape {
   const char* file;  // in data/species
   double min_height, max_height, min_crown, max_crown;
