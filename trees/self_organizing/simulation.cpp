@@ -31,11 +31,11 @@ class Simulation {
   // One step; false when nothing grew and no markers can still come.
   bool step(int s) {
     prune(s);
-    add_markers(s);
     const std::vector<BudRef> buds = plant_.buds();
     std::vector<Vec3> positions(buds.size()), directions(buds.size());
     for (std::size_t b = 0; b < buds.size(); ++b)
       positions[b] = plant_[buds[b].internode].tip, directions[b] = plant_.bud_direction(buds[b]);
+    add_markers(s, positions, directions);
     const double l = p_.internode_length;
     markers_.consume(positions, p_.space.occupancy * l);
     const std::vector<BudSpace> space =
@@ -67,16 +67,16 @@ class Simulation {
     }
   }
 
-  void add_markers(int s) {
+  // This step's markers; autonomous ones in the cones of the buds at `positions`.
+  void add_markers(int s, const std::vector<Vec3>& positions, const std::vector<Vec3>& directions) {
     markers_.expire(s);
     for (const BrushStroke& stroke : p_.strokes)
       add_stroke_markers(stroke, s, marker_rng_, markers_);
     if (p_.space.autonomous_markers > 0) {
       const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
-      for (const BudRef& bud : plant_.buds())
-        add_cone_markers(plant_[bud.internode].tip, plant_.bud_direction(bud),
-                         p_.space.perception_angle, radius, p_.space.autonomous_markers, s,
-                         marker_rng_, markers_);
+      for (std::size_t b = 0; b < positions.size(); ++b)
+        add_cone_markers(positions[b], directions[b], p_.space.perception_angle, radius,
+                         p_.space.autonomous_markers, s, marker_rng_, markers_);
     }
     if (markers_.size() > p_.max_markers)
       throw InputError("self-organising growth would hold more than " +
