@@ -1,6 +1,9 @@
 #include "renderer/embree_scene.h"
 
+#include "renderer/detail/prototype_levels.h"
 #include "renderer/grass_patch.h"
+#include "renderer/stochastic_lod.h"
+#include "trees/degradation.h"
 
 #include <embree3/rtcore.h>
 #include <tbb/blocked_range.h>
@@ -50,7 +53,7 @@ RTCGeometry make_mesh(RTCDevice device, const std::vector<Vec3f>& vertices,
   return geom;
 }
 
-RTCRay to_rtc(const Ray& ray, float t_near, float t_far) {
+RTCRay to_rtc(const Ray& ray, float t_near, float t_far, std::uint32_t mask = kAllBuckets) {
   RTCRay r{};
   r.org_x = ray.origin.x;
   r.org_y = ray.origin.y;
@@ -60,7 +63,7 @@ RTCRay to_rtc(const Ray& ray, float t_near, float t_far) {
   r.dir_z = ray.direction.z;
   r.tnear = t_near;
   r.tfar = t_far;
-  r.mask = 0xffffffffu;
+  r.mask = mask;
   return r;
 }
 
@@ -88,45 +91,55 @@ Vec3f rotate_z(const Vec3f& v, double angle) {
   return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
+// A triangle hit's vertex normal (attribute 0), turned by `rotation` about z; `fallback`
+// where the interpolation degenerates.
+Vec3f interpolated_normal(RTCGeometry geom, const RTCHit& hit, double rotation,
+                          const Vec3f& fallback) {
+  float n[3];
+  rtcInterpolate0(geom, hit.primID, hit.u, hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, n, 3);
+  const Vec3f shading = rotate_z(Vec3f{n[0], n[1], n[2]}, rotation);
+  const float len = length(shading);
+  return len > 0.0f ? shading / len : fallback;
+}
+
 }  // namespace
+
+// What a top-level geometry is: a tree instance at one level, a grass patch, or the ground.
+struct TopLevelEntry {
+  std::int32_t instance = -1;   // tree instance, or -1
+  std::int32_t level = -1;      // the prototype's level (PrototypeLevels index)
+  std::uint8_t step = 0;        // the ladder step drawn (the lod AOV)
+  std::uint8_t grass_type = 0;  // 1-3 for grass patches
+};
 
 struct EmbreeScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  std::vector<RTCScene> prototypes;
+  std::vector<std::unique_ptr<detail::PrototypeLevels>> prototypes;
   std::vector<RTCScene> grass_patches;  // type (0-2) x level
-  // Top-level geometry ID -> grass type (1-3) for grass instances, else 0.
-  std::vector<std::uint8_t> grass_of;
-  // For each prototype, the object class of each of its geometries (by geometry ID).
-  std::vector<std::vector<ObjectClass>> prototype_classes;
-  // Top-level geometry ID -> tree instance index (-1 for the ground).
-  std::vector<std::int32_t> instance_of;
+  std::vector<TopLevelEntry> top;       // by top-level geometry ID
   const Scene* source = nullptr;
 
   ~Impl() {
-    for (RTCScene s : prototypes) rtcReleaseScene(s);
+    prototypes.clear();
     for (RTCScene s : grass_patches)
       if (s) rtcReleaseScene(s);
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
   }
 
-  void add_prototype(const TreePrototype& proto) {
-    RTCScene s = rtcNewScene(device);
-    std::vector<ObjectClass> classes;
-    for (int g = 0; g < trees::kGroupCount; ++g) {
-      const trees::TriangleSet& t = proto.geometry.groups[static_cast<std::size_t>(g)].triangles;
-      if (t.indices.empty()) continue;
-      RTCGeometry geom = make_mesh(device, t.vertices, t.normals, t.indices, &t.uvs);
-      const unsigned id = rtcAttachGeometry(s, geom);
-      rtcReleaseGeometry(geom);
-      classes.resize(id + 1);
-      classes[id] =
-          g == static_cast<int>(trees::Group::leaves) ? ObjectClass::leaf : ObjectClass::bark;
-    }
-    rtcCommitScene(s);
-    prototypes.push_back(s);
-    prototype_classes.push_back(std::move(classes));
+  unsigned attach_instance(RTCScene instanced, const std::array<float, 12>& m, std::uint32_t mask,
+                           const TopLevelEntry& entry) {
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geom, instanced);
+    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m.data());
+    rtcSetGeometryMask(geom, mask);
+    rtcCommitGeometry(geom);
+    const unsigned id = rtcAttachGeometry(scene, geom);
+    rtcReleaseGeometry(geom);
+    if (top.size() <= id) top.resize(id + 1);
+    top[id] = entry;
+    return id;
   }
 
   void add_grass_patches(const GrassCover& cover) {
@@ -153,35 +166,60 @@ struct EmbreeScene::Impl {
     }
   }
 
-  // Patches within the grass range of `view`, at the level its distance asks for.
-  void add_grass(const GrassCover& cover, const View& view) {
+  // Patches within the grass range of `view`, at the levels their distance asks for (two
+  // neighbouring levels with complementary ray masks where it falls between them).
+  void add_grass(const GrassCover& cover, const View& view, bool blend) {
     if (cover.cols == 0) return;
     add_grass_patches(cover);
-    for_each_grass_patch(cover, view, [&](int type, int level, const std::array<float, 12>& m) {
-      RTCScene patch = grass_patches[static_cast<std::size_t>((type - 1) * kGrassLevels + level)];
+    for_each_grass_patch(cover, view, blend, [&](const GrassPatchPlacement& p) {
+      RTCScene patch =
+          grass_patches[static_cast<std::size_t>((p.type - 1) * kGrassLevels + p.level)];
       if (patch == nullptr) return;
-      RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-      rtcSetGeometryInstancedScene(geom, patch);
-      rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m.data());
-      rtcCommitGeometry(geom);
-      const unsigned id = rtcAttachGeometry(scene, geom);
-      rtcReleaseGeometry(geom);
-      instance_of.resize(id + 1, -1);
-      grass_of.resize(id + 1, 0);
-      grass_of[id] = static_cast<std::uint8_t>(type);
+      TopLevelEntry entry;
+      entry.grass_type = static_cast<std::uint8_t>(p.type);
+      attach_instance(patch, p.frame, p.mask, entry);
     });
   }
 
-  void add_instance(const TreeInstance& inst, std::int32_t index) {
-    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geom, prototypes.at(inst.prototype));
+  // Every prototype at the levels its instances need for `view` (all at full detail without
+  // a view or with degradation off); returns each instance's ladder position.
+  std::vector<LadderPosition> build_prototypes(const Scene& s, const View* view) {
+    const bool degrade = view != nullptr && s.settings.degradation;
+    prototypes.reserve(s.prototypes.size());
+    for (const TreePrototype& p : s.prototypes)
+      prototypes.push_back(std::make_unique<detail::PrototypeLevels>(device, p, degrade));
+    std::vector<LadderPosition> positions(s.instances.size());
+    for (std::size_t i = 0; i < s.instances.size(); ++i) {
+      const TreeInstance& inst = s.instances[i];
+      if (degrade) positions[i] = ladder_position(instance_r2(s, inst, *view));
+      detail::PrototypeLevels& levels = *prototypes.at(inst.prototype);
+      levels.level_for_step(positions[i].step);
+      if (positions[i].weight > 0.0) levels.level_for_step(positions[i].step + 1);
+    }
+    tbb::parallel_for(std::size_t{0}, prototypes.size(),
+                      [&](std::size_t k) { prototypes[k]->build(); });
+    return positions;
+  }
+
+  // The calibrated range of an instance from the view's camera, to its crown's middle.
+  static double instance_r2(const Scene& s, const TreeInstance& inst, const View& view) {
+    const std::array<Vec3f, 2> b = s.prototypes[inst.prototype].geometry.bounds();
+    const Vec3 centre = inst.position + Vec3(0.0, 0.0, 0.5 * (b[0].z + b[1].z) * inst.scale);
+    return trees::calibrated_range(length(centre - view.position), view.height, view.fov_y_deg);
+  }
+
+  void add_instance(const TreeInstance& inst, std::int32_t index, const LadderPosition& at) {
+    detail::PrototypeLevels& levels = *prototypes.at(inst.prototype);
     const std::array<float, 12> m = instance_matrix(inst);
-    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m.data());
-    rtcCommitGeometry(geom);
-    const unsigned id = rtcAttachGeometry(scene, geom);
-    rtcReleaseGeometry(geom);
-    instance_of.resize(id + 1, -1);
-    instance_of[id] = index;
+    const LevelMasks masks = level_masks(at.weight, static_cast<std::uint64_t>(index));
+    const int steps[2] = {at.step, at.step + 1};
+    const std::uint32_t mask[2] = {masks.lower, masks.upper};
+    for (int k = 0; k < 2; ++k) {
+      if (mask[k] == 0) continue;
+      const int level = levels.level_for_step(steps[k]);
+      attach_instance(levels.level(level).scene, m, mask[k],
+                      {index, level, static_cast<std::uint8_t>(steps[k]), 0});
+    }
   }
 };
 
@@ -196,14 +234,13 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
                                    scene.ground.mesh.normals, scene.ground.mesh.indices);
     const unsigned id = rtcAttachGeometry(impl_->scene, ground);
     rtcReleaseGeometry(ground);
-    impl_->instance_of.resize(id + 1, -1);
+    impl_->top.resize(id + 1);
   }
-  for (const TreePrototype& p : scene.prototypes) impl_->add_prototype(p);
+  const std::vector<LadderPosition> positions = impl_->build_prototypes(scene, view);
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-    impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i));
+    impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i), positions[i]);
   }
-  if (view != nullptr) impl_->add_grass(scene.grass, *view);
-  impl_->grass_of.resize(impl_->instance_of.size(), 0);
+  if (view != nullptr) impl_->add_grass(scene.grass, *view, scene.settings.degradation);
   rtcCommitScene(impl_->scene);
 }
 
@@ -238,12 +275,13 @@ double EmbreeScene::trace_raw(const std::vector<RecordedRay>& rays, int threads)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_far) const {
+std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_far,
+                                          std::uint32_t mask) const {
   if (recorder_ != nullptr) record(ray, t_far, false);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
-  rh.ray = to_rtc(ray, t_near, t_far);
+  rh.ray = to_rtc(ray, t_near, t_far, mask);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(impl_->scene, &context, &rh);
@@ -252,52 +290,57 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
   Hit hit;
   hit.t = rh.ray.tfar;
   hit.primitive = rh.hit.primID;
-  RTCScene owner = impl_->scene;
-  double rotation = 0.0;
-  if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID && impl_->grass_of[rh.hit.instID[0]] != 0) {
+  const Vec3f ng{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+  if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
+    hit.object = ObjectClass::ground;
+    hit.geometric_normal = normalize(ng);
+    hit.shading_normal = interpolated_normal(rtcGetGeometry(impl_->scene, rh.hit.geomID), rh.hit,
+                                             0.0, hit.geometric_normal);
+    return hit;
+  }
+  const TopLevelEntry& entry = impl_->top[rh.hit.instID[0]];
+  if (entry.grass_type != 0) {
     // Grass: Embree's curve normal is in the patch's space; the patch is tilted only
     // slightly, so the object-space normal serves for shading.
     hit.object = ObjectClass::grass;
-    hit.grass_type = impl_->grass_of[rh.hit.instID[0]];
-    hit.geometric_normal = normalize(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
+    hit.grass_type = entry.grass_type;
+    hit.geometric_normal = normalize(ng);
     hit.shading_normal = hit.geometric_normal;
     return hit;
   }
-  if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
-    hit.instance = impl_->instance_of[rh.hit.instID[0]];
-    const TreeInstance& inst = impl_->source->instances[static_cast<std::size_t>(hit.instance)];
-    hit.prototype = static_cast<std::int32_t>(inst.prototype);
-    owner = impl_->prototypes[inst.prototype];
-    hit.object = impl_->prototype_classes[inst.prototype][rh.hit.geomID];
-    rotation = inst.rotation;
-    if (hit.object == ObjectClass::bark && impl_->source->prototypes[inst.prototype].bark_texture) {
-      float uv[2];
-      rtcInterpolate0(rtcGetGeometry(owner, rh.hit.geomID), rh.hit.primID, rh.hit.u, rh.hit.v,
-                      RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, uv, 2);
-      hit.u = uv[0];
-      hit.v = uv[1];
-    }
-  } else {
-    hit.object = ObjectClass::ground;
-  }
+  hit.instance = entry.instance;
+  hit.level = entry.step;
+  const TreeInstance& inst = impl_->source->instances[static_cast<std::size_t>(hit.instance)];
+  hit.prototype = static_cast<std::int32_t>(inst.prototype);
+  const detail::PrototypeLevel& level = impl_->prototypes[inst.prototype]->level(entry.level);
+  const detail::LevelGeometry& info = level.geometries[rh.hit.geomID];
+  hit.object = info.group == trees::Group::leaves ? ObjectClass::leaf : ObjectClass::bark;
+  hit.primitive = info.first + rh.hit.primID;
+  hit.far_primitive = info.kind != detail::PrimitiveKind::triangles;
   // Instanced hits report normals in the prototype's space: turn them into the world's
   // (the instance transform is a rotation about z and a uniform scale).
-  hit.geometric_normal =
-      normalize(rotate_z(Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z}, rotation));
-  float n[3];
-  rtcInterpolate0(rtcGetGeometry(owner, rh.hit.geomID), rh.hit.primID, rh.hit.u, rh.hit.v,
-                  RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, n, 3);
-  const Vec3f shading = rotate_z(Vec3f{n[0], n[1], n[2]}, rotation);
-  const float len = length(shading);
-  hit.shading_normal = len > 0.0f ? shading / len : hit.geometric_normal;
+  hit.geometric_normal = normalize(rotate_z(ng, inst.rotation));
+  if (hit.far_primitive) {
+    hit.shading_normal = hit.geometric_normal;  // lines and discs: their own normal
+    return hit;
+  }
+  RTCGeometry owner = rtcGetGeometry(level.scene, rh.hit.geomID);
+  hit.shading_normal = interpolated_normal(owner, rh.hit, inst.rotation, hit.geometric_normal);
+  if (hit.object == ObjectClass::bark && impl_->source->prototypes[inst.prototype].bark_texture) {
+    float uv[2];
+    rtcInterpolate0(owner, rh.hit.primID, rh.hit.u, rh.hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1,
+                    uv, 2);
+    hit.u = uv[0];
+    hit.v = uv[1];
+  }
   return hit;
 }
 
-bool EmbreeScene::occluded(const Ray& ray, float t_near, float t_far) const {
+bool EmbreeScene::occluded(const Ray& ray, float t_near, float t_far, std::uint32_t mask) const {
   if (recorder_ != nullptr) record(ray, t_far, true);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay r = to_rtc(ray, t_near, t_far);
+  RTCRay r = to_rtc(ray, t_near, t_far, mask);
   rtcOccluded1(impl_->scene, &context, &r);
   return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }

@@ -10,6 +10,7 @@
 #include "core/vec3.h"
 #include "renderer/camera.h"
 #include "renderer/scene.h"
+#include "renderer/stochastic_lod.h"
 
 namespace landsim::renderer {
 
@@ -26,6 +27,11 @@ struct Hit {
   std::uint32_t primitive = 0;  // triangle of the ground, for its material
   std::uint8_t grass_type = 0;  // 1-3 for grass
   float u = 0.0f, v = 0.0f;     // texture coordinates (bark of textured prototypes)
+  // Trees: the ladder step of range degradation drawn (0 = full detail), and whether the hit
+  // is a far primitive (a stem line or a leaf disc; `primitive` is then the stored line or
+  // point, which for leaves is also the stored leaf) rather than a triangle.
+  std::uint8_t level = 0;
+  bool far_primitive = false;
 };
 
 // A ray as traced, for measuring Embree's raw rate on exactly the rays a render used.
@@ -37,14 +43,19 @@ struct RecordedRay {
 
 class EmbreeScene {
  public:
-  // `view`, when given, chooses range-dependent detail (grass patches) for that camera.
+  // `view`, when given, chooses range-dependent detail for that camera: grass patches, and
+  // with scene.settings.degradation each tree's level (Weber & Penn section 5, blended
+  // stochastically between ladder steps; see renderer/stochastic_lod.h).
   explicit EmbreeScene(const Scene& scene, const View* view = nullptr);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  std::optional<Hit> intersect(const Ray& ray, float t_near, float t_far) const;
-  bool occluded(const Ray& ray, float t_near, float t_far) const;
+  // `mask`: the ray's pixel bucket (pixel_ray_mask), which picks between an object's two
+  // blended levels; every ray of a pixel's paths carries the same one.
+  std::optional<Hit> intersect(const Ray& ray, float t_near, float t_far,
+                               std::uint32_t mask = kAllBuckets) const;
+  bool occluded(const Ray& ray, float t_near, float t_far, std::uint32_t mask = kAllBuckets) const;
 
   // Benchmarks only: while set, every traced ray is appended to the list of the calling
   // TBB worker (`lists` must hold one per possible worker index).

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "core/counter_rng.h"
+#include "renderer/stochastic_lod.h"
 
 namespace landsim::renderer {
 namespace {
@@ -56,9 +57,28 @@ std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal
   return {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, centre.x, centre.y, centre.z};
 }
 
-void for_each_grass_patch(
-    const GrassCover& cover, const View& view,
-    const std::function<void(int, int, const std::array<float, 12>&)>& visit) {
+GrassBlend grass_blend(double distance, int image_height, double fov_y_deg) {
+  const double r2 = distance * 1000.0 / image_height * fov_y_deg / 60.0;
+  GrassBlend b;
+  for (int level = 0; level < kGrassLevels; ++level) {
+    // log4 of r2 over the level's end: the band [-1/4, 1/4] blends into the next level.
+    const double t = std::log(r2 / kLevelEnd[level]) / std::log(4.0);
+    if (t < -0.25) {
+      b.lower = level;
+      return b;
+    }
+    if (t < 0.25) {
+      b.lower = level;
+      b.upper = level + 1 < kGrassLevels ? level + 1 : -1;
+      b.upper_weight = (t + 0.25) / 0.5;
+      return b;
+    }
+  }
+  return b;  // beyond the last level: no blades
+}
+
+void for_each_grass_patch(const GrassCover& cover, const View& view, bool blend,
+                          const std::function<void(const GrassPatchPlacement&)>& visit) {
   for (int r = 0; r < cover.rows; ++r) {
     for (int c = 0; c < cover.cols; ++c) {
       const std::size_t k = static_cast<std::size_t>(r) * cover.cols + c;
@@ -67,9 +87,17 @@ void for_each_grass_patch(
       const Vec3f centre{static_cast<float>(cover.corner.x + (c + 0.5) * cover.tile),
                          static_cast<float>(cover.corner.y + (r + 0.5) * cover.tile),
                          cover.height[k]};
-      const int level =
-          grass_level(length(Vec3(centre) - view.position), view.height, view.fov_y_deg);
-      if (level >= 0) visit(type, level, grass_patch_frame(centre, cover.normal[k]));
+      const double distance = length(Vec3(centre) - view.position);
+      const std::array<float, 12> frame = grass_patch_frame(centre, cover.normal[k]);
+      if (!blend) {
+        const int level = grass_level(distance, view.height, view.fov_y_deg);
+        if (level >= 0) visit({type, level, frame, kAllBuckets});
+        continue;
+      }
+      const GrassBlend b = grass_blend(distance, view.height, view.fov_y_deg);
+      const LevelMasks masks = level_masks(b.upper_weight, k);
+      if (b.lower >= 0 && masks.lower != 0) visit({type, b.lower, frame, masks.lower});
+      if (b.upper >= 0 && masks.upper != 0) visit({type, b.upper, frame, masks.upper});
     }
   }
 }

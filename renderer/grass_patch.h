@@ -35,8 +35,27 @@ int grass_level(double distance, int image_height, double fov_y_deg);
 // x kept as close to east as the tilt allows.
 std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal);
 
-// Calls visit(type 1-3, level, frame) for every grass tile `view` draws blades on.
-void for_each_grass_patch(const GrassCover& cover, const View& view,
-                          const std::function<void(int, int, const std::array<float, 12>&)>& visit);
+// With stochastic blending: near each level's end (from r2 / sqrt 2 to r2 x sqrt 2) a patch
+// is drawn at both neighbouring levels (or fades to none past the last), `upper_weight` of
+// the rays seeing the upper one.
+struct GrassBlend {
+  int lower = -1;  // -1: no blades
+  int upper = -1;
+  double upper_weight = 0.0;
+};
+GrassBlend grass_blend(double distance, int image_height, double fov_y_deg);
+
+// One patch instance: its type (1-3), level, frame and the ray mask that sees it.
+struct GrassPatchPlacement {
+  int type = 0;
+  int level = 0;
+  std::array<float, 12> frame{};
+  std::uint32_t mask = 0xffffffffu;
+};
+
+// Calls visit for every patch `view` draws: with `blend`, tiles near a level's end give two
+// placements with complementary masks; without, one per tile at grass_level's level.
+void for_each_grass_patch(const GrassCover& cover, const View& view, bool blend,
+                          const std::function<void(const GrassPatchPlacement&)>& visit);
 
 }  // namespace landsim::renderer

@@ -63,9 +63,10 @@ float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
 }  // namespace
 
 struct PathTracer::Vertex {
-  Vec3f p;   // on the surface
-  Vec3f n;   // shading normal, facing the incoming ray
-  Vec3f ng;  // geometric normal, same side
+  Vec3f p;             // on the surface
+  Vec3f n;             // shading normal, facing the incoming ray
+  Vec3f ng;            // geometric normal, same side
+  std::uint32_t mask;  // the pixel's ray mask (stochastic level of detail)
 };
 
 PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree, TraceOptions options)
@@ -94,11 +95,16 @@ SurfaceMaterial PathTracer::material(const Hit& hit) const {
   }
   const TreePrototype& proto = scene_.prototypes[static_cast<std::size_t>(hit.prototype)];
   if (hit.object == ObjectClass::leaf) {
-    const Vec3f tint = proto.leaf_tint(
-        proto.geometry.group(trees::Group::leaves).vigour_of_triangle(hit.primitive));
+    // A leaf disc's point is its leaf's stored index; a triangle belongs to one.
+    const trees::GroupGeometry& leaves = proto.geometry.group(trees::Group::leaves);
+    const Vec3f tint =
+        proto.leaf_tint(hit.far_primitive ? leaves.vigour_of_item(hit.primitive)
+                                          : leaves.vigour_of_triangle(hit.primitive));
     return {proto.leaf_reflectance * tint, proto.leaf_transmittance * tint};
   }
-  if (proto.bark_texture) return {proto.bark_albedo * proto.bark_texture->factor(hit.u, hit.v), {}};
+  // Far stem lines carry no texture coordinates: the texture's mean (1) stands for it.
+  if (proto.bark_texture && !hit.far_primitive)
+    return {proto.bark_albedo * proto.bark_texture->factor(hit.u, hit.v), {}};
   return {proto.bark_albedo, {}};
 }
 
@@ -122,7 +128,7 @@ Vec3f PathTracer::sun_light(const Vertex& v, const SurfaceMaterial& m, float u1,
   if (max_component(f) <= 0.0f) return {};
   ++rays;
   const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
-  if (embree_.occluded({origin, l}, 0.0f, kInfinity)) return {};
+  if (embree_.occluded({origin, l}, 0.0f, kInfinity, v.mask)) return {};
   // POV-Ray's fog does not dim light sources: neither does the comparable mode.
   const float t_haze =
       options_.fog_colour
@@ -147,14 +153,15 @@ Vec3f PathTracer::sky_light(const Vertex& v, const SurfaceMaterial& m, float u1,
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
   ++rays;
   const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
-  if (embree_.occluded({origin, l}, 0.0f, kInfinity)) return {};
+  if (embree_.occluded({origin, l}, 0.0f, kInfinity, v.mask)) return {};
   const float weight = options_.interreflection ? power_heuristic(pdf, bsdf_pdf(v, m, l)) : 1.0f;
   const auto t_haze =
       static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
   return f * sky_.radiance(l) * (weight * t_haze / pdf);
 }
 
-Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, std::uint32_t& rays) const {
+Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, std::uint32_t mask,
+                                  std::uint32_t& rays) const {
   if (!haze_.enabled()) return {};
   const Vec3 o(ray.origin), d(ray.direction);
   const double scattered = -std::expm1(-haze_.optical_depth(o, d, t));  // 1 - T over the segment
@@ -165,7 +172,7 @@ Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, std::uint32
   const auto phase = static_cast<float>(haze_.phase(dot(ray.direction, sun_direction_)));
   Vec3f sun{};
   ++rays;
-  if (!embree_.occluded({p, sun_direction_}, 0.0f, kInfinity)) {
+  if (!embree_.occluded({p, sun_direction_}, 0.0f, kInfinity, mask)) {
     sun = scene_.sun.irradiance * phase *
           static_cast<float>(haze_.transmittance(Vec3(p), Vec3(sun_direction_), kInfiniteDistance));
   }
@@ -186,7 +193,8 @@ Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, std::uint32
   return a * (ambient + sun) * static_cast<float>(scattered);
 }
 
-PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const {
+PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
+                             std::uint32_t mask) const {
   PathSample out;
   out.first.depth = kInfinity;
   Ray ray = camera_ray;
@@ -197,7 +205,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
   for (int bounce = 0; bounce <= scene_.settings.max_bounces; ++bounce) {
     const std::uint32_t dim = kFirstBounceDim + kDimsPerBounce * static_cast<std::uint32_t>(bounce);
     ++out.rays;
-    const auto hit = embree_.intersect(ray, 0.0f, kInfinity);
+    const auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask);
     // Haze lies over segments that end on the scene and on rays leaving below the horizon
     // (the plain beyond the terrain); the sky model already holds the atmosphere above.
     if (hit || ray.direction.z <= 0.0f) {
@@ -212,7 +220,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
         // POV-comparable: fog of one colour, as POV-Ray's.
         out.radiance += throughput * *options_.fog_colour * (1.0f - transmitted);
       } else {
-        out.radiance += throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), out.rays);
+        out.radiance +=
+            throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), mask, out.rays);
       }
       throughput = throughput * transmitted;
     }
@@ -224,7 +233,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
       break;
     }
     // Face both normals toward where the ray came from.
-    Vertex v{ray.origin + ray.direction * hit->t, hit->shading_normal, hit->geometric_normal};
+    Vertex v{ray.origin + ray.direction * hit->t, hit->shading_normal, hit->geometric_normal, mask};
     if (dot(v.ng, ray.direction) > 0.0f) v.ng = -v.ng;
     if (dot(v.n, v.ng) < 0.0f) v.n = -v.n;
     SurfaceMaterial m = material(*hit);
@@ -233,8 +242,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng) const
       const std::int32_t species =
           hit->prototype >= 0 ? scene_.prototypes[static_cast<std::size_t>(hit->prototype)].species
                               : -1;
-      out.first = {hit->t,      v.n,           m.reflectance + m.transmittance,
-                   hit->object, hit->instance, species};
+      out.first = {hit->t,  v.n,       m.reflectance + m.transmittance, hit->object, hit->instance,
+                   species, hit->level};
     }
 
     float fresnel = 0.0f;

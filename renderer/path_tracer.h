@@ -23,6 +23,7 @@ struct FirstHit {
   ObjectClass object = ObjectClass::sky;
   std::int32_t instance = -1;  // tree instance, or -1
   std::int32_t species = -1;   // species index of that tree, or -1
+  std::uint8_t level = 0;      // degradation ladder step drawn (trees), 0 = full detail
 };
 
 struct PathSample {
@@ -55,8 +56,11 @@ class PathTracer {
  public:
   PathTracer(const Scene& scene, const EmbreeScene& embree, TraceOptions options = {});
 
-  // Random dimensions 0 and 1 of `rng` are left to the caller (pixel jitter).
-  PathSample trace(const Ray& camera_ray, const CounterRng& rng) const;
+  // Random dimensions 0 and 1 of `rng` are left to the caller (pixel jitter). `mask` is the
+  // pixel's ray mask (pixel_ray_mask): every ray of the path carries it, so shadows and
+  // bounces see the same level of each tree as the camera ray.
+  PathSample trace(const Ray& camera_ray, const CounterRng& rng,
+                   std::uint32_t mask = kAllBuckets) const;
 
   const SkyModel& sky() const { return sky_; }
   const HazeModel& haze() const { return haze_; }
@@ -69,7 +73,8 @@ class PathTracer {
   Vec3f sky_light(const Vertex& v, const SurfaceMaterial& m, float u1, float u2,
                   std::uint32_t& rays) const;
   // Sunlight scattered toward the viewer by haze along a segment; `t` may be infinite.
-  Vec3f haze_in_scatter(const Ray& ray, double t, float u, std::uint32_t& rays) const;
+  Vec3f haze_in_scatter(const Ray& ray, double t, float u, std::uint32_t mask,
+                        std::uint32_t& rays) const;
   float bsdf_pdf(const Vertex& v, const SurfaceMaterial& m, const Vec3f& dir) const;
 
   const Scene& scene_;

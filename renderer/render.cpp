@@ -15,6 +15,7 @@
 #include "renderer/embree_scene.h"
 #include "renderer/image_output.h"
 #include "renderer/path_tracer.h"
+#include "renderer/stochastic_lod.h"
 
 #include <spdlog/spdlog.h>
 
@@ -55,12 +56,13 @@ std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const 
                          static_cast<std::uint64_t>(x);
       Vec3f sum{};
       FirstHit first;
+      const std::uint32_t mask = pixel_ray_mask(pixel);
       for (int s = 0; s < settings.spp; ++s) {
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
         const bool centre = centre_first && s == 0;
         const Ray ray = camera.ray(static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0)),
                                    static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1)));
-        const PathSample sample = tracer.trace(ray, rng);
+        const PathSample sample = tracer.trace(ray, rng, mask);
         sum += sample.radiance;
         rays += sample.rays;
         if (s == 0) first = sample.first;  // AOVs from the first sample: no blending of ids
@@ -72,6 +74,7 @@ std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const 
       aovs.object = static_cast<std::uint32_t>(first.object);
       if (first.instance >= 0) aovs.instance = static_cast<std::uint32_t>(first.instance);
       if (first.species >= 0) aovs.species = static_cast<std::uint32_t>(first.species);
+      aovs.level = first.level;
       film.set(x, y, sum * (1.0f / static_cast<float>(settings.spp)), aovs);
     }
   }
@@ -103,10 +106,15 @@ int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) 
   return tiles;
 }
 
-// Grass detail depends on the camera, so scenes with grass get an Embree scene per view.
+// Grass detail and (with degradation) tree detail depend on the camera, so such scenes get
+// an Embree scene per view.
+static bool detail_per_view(const Scene& scene) {
+  return scene.grass.cols > 0 || (scene.settings.degradation && !scene.instances.empty());
+}
+
 Renderer::Renderer(const Scene& scene)
     : scene_(scene),
-      embree_(scene.grass.cols == 0 ? std::make_unique<EmbreeScene>(scene) : nullptr) {}
+      embree_(detail_per_view(scene) ? nullptr : std::make_unique<EmbreeScene>(scene)) {}
 
 Renderer::~Renderer() = default;
 

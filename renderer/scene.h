@@ -13,6 +13,7 @@
 
 #include "core/vec3.h"
 #include "terrain/ground_mesh.h"
+#include "trees/degradation.h"
 #include "trees/geometry.h"
 
 namespace landsim::renderer {
@@ -95,6 +96,9 @@ struct RenderSettings {
   std::uint64_t seed = 1;
   int max_bounces = 4;
   double exposure_ev = 0.0;  // applied to the preview PNG only; the EXR stays linear
+  // Range degradation (Weber & Penn section 5) of trees, and stochastic blending of tree and
+  // grass levels; off: every tree at full detail, grass levels switched abruptly.
+  bool degradation = true;
 };
 
 // One unique tree (a species variant), stored once and instanced many times.
@@ -113,6 +117,8 @@ struct TreePrototype {
     return leaf_weak_tint + (Vec3f{1.0f, 1.0f, 1.0f} - leaf_weak_tint) * vigour;
   }
   std::uint16_t species = 0;  // index in the scenario's species table
+  // The paper's s and d for this tree (quality, season, evergreen).
+  trees::DegradationFactors degradation;
 };
 
 struct TreeInstance {

@@ -162,6 +162,8 @@ CrosscheckReport crosscheck(const Scenario& scenario, const renderer::Scene& sce
   // landsim in the comparable mode, first sample at the pixel centre as POV-Ray samples.
   renderer::Scene comparable = scene;
   comparable.settings.spp = o.spp;
+  // POV-Ray draws every tree at full detail: so does the comparable render.
+  comparable.settings.degradation = false;
   renderer::RenderOptions ro;
   ro.threads = o.threads;
   ro.centre_first_sample = true;

@@ -213,13 +213,14 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     for (const renderer::TreeInstance& t : scene.instances) {
       out.print("object {{ LS_Tree_{} {} }}\n", t.prototype, instance_matrix(t));
     }
-    // Grass: the same patches at the same levels landsim draws for this view; the mask
-    // counts grass as ground, as landsim's comparison does.
+    // Grass: the same patches at the same levels landsim draws for this view without
+    // degradation's blending (POV-Ray has no stochastic levels); the mask counts grass as
+    // ground, as landsim's comparison does.
     renderer::for_each_grass_patch(
-        scene.grass, view, [&](int type, int level, const std::array<float, 12>& m) {
-          const renderer::GrassType& g = scene.grass.types[static_cast<std::size_t>(type - 1)];
-          out.print("object {{ LS_Grass_{}_{} LS_Texture(<1, 0, 0>, {}) {} }}\n", type - 1, level,
-                    colour_vector(g.reflectance), pov_matrix(m));
+        scene.grass, view, false, [&](const renderer::GrassPatchPlacement& p) {
+          const renderer::GrassType& g = scene.grass.types[static_cast<std::size_t>(p.type - 1)];
+          out.print("object {{ LS_Grass_{}_{} LS_Texture(<1, 0, 0>, {}) {} }}\n", p.type - 1,
+                    p.level, colour_vector(g.reflectance), pov_matrix(p.frame));
         });
   }
   file.commit();

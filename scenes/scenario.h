@@ -59,6 +59,8 @@ struct RenderSection {
   std::vector<double> frames{0.0};   // seconds; wind sway is evaluated at each
   double checkpoint_seconds = 60.0;  // 0: no checkpoints
   std::string season = "summer";     // spring, summer, autumn, winter (leafless)
+  bool degradation = true;           // range degradation of trees (Weber & Penn section 5)
+  double quality = 1.0;              // the paper's quality factor, (0, 1]
 };
 
 struct WindSettings {

@@ -194,6 +194,8 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.exposure_ev = r.number("exposure", Range{-20.0, 20.0}, 0.0);
   s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, 60.0);
   s.season = r.choice("season", {"spring", "summer", "autumn", "winter"}, "summer");
+  s.degradation = r.boolean("degradation", true);
+  s.quality = r.number("quality", Range{0.0, 1.0, true, false}, 1.0);
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");
     const toml::array* a = n->as_array();
@@ -264,15 +266,6 @@ const toml::array* tables(const toml::table& root, std::string_view key, const s
   return a;
 }
 
-// The optional boolean `evergreen` of a [[species]] table.
-const toml::node* t_evergreen(TableReader& r, const toml::table& t) {
-  r.allow("evergreen");
-  const toml::node* n = t.get("evergreen");
-  if (n != nullptr && !n->is_boolean())
-    r.fail("evergreen", "expected true or false, got " + detail::type_name(*n));
-  return n;
-}
-
 // The optional `age` of a [[species]] table: years, or [youngest, oldest] across variants;
 // only measured-growth species grow with age.
 void read_age(TableReader& r, const toml::table& t, SpeciesSettings& s) {
@@ -325,8 +318,7 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     }
     r.allow("bark_texture");
     read_age(r, *a->get(i)->as_table(), s);
-    if (const toml::node* e = t_evergreen(r, *a->get(i)->as_table()))
-      s.evergreen = *e->value<bool>();
+    s.evergreen = r.boolean("evergreen", false);
     r.finish();
     out.push_back(std::move(s));
   }

@@ -37,21 +37,25 @@ std::uint64_t variant_seed(std::uint64_t seed, int bit, std::uint32_t variant) {
 }
 
 renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t species_index,
-                                       std::uint32_t variant, std::uint64_t seed, double time,
-                                       const WindSettings& wind, const std::string& season) {
+                                       std::uint32_t variant, double time, const Scenario& s) {
   renderer::TreePrototype p;
-  const std::uint64_t vs = variant_seed(seed, sp.bit, variant);
+  const std::uint64_t vs = variant_seed(s.render.seed, sp.bit, variant);
+  const std::string& season = s.render.season;
   trees::TreeOptions options;
   options.seed = vs;
   options.time = time;
+  options.quality = s.render.quality;
   // Measured-growth ages: evenly from the youngest to the oldest across the variants.
   if (sp.age_min >= 0.0)
-    options.age = sp.variants > 1 ? sp.age_min + (sp.age_max - sp.age_min) * variant /
-                                                     (sp.variants - 1)
-                                  : sp.age_min;
-  options.wind_speed = wind.speed;
-  options.wind_gust = wind.gust;
+    options.age = sp.variants > 1
+                      ? sp.age_min + (sp.age_max - sp.age_min) * variant / (sp.variants - 1)
+                      : sp.age_min;
+  options.wind_speed = s.wind.speed;
+  options.wind_gust = s.wind.gust;
   p.geometry = trees::generate(sp.species, options).geometry;
+  p.degradation = trees::degradation_factors(
+      s.render.quality, trees::season_from_name(season).value_or(trees::Season::summer),
+      sp.evergreen);
   p.species = static_cast<std::uint16_t>(species_index);
   p.bark_albedo = sp.species.colours.bark;
   // Per-variant colour variation: one brightness factor and a slight hue shift.
@@ -111,8 +115,7 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   scene.prototypes.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     const auto [species, variant] = keys[i];
-    scene.prototypes[i] =
-        make_prototype(s.species[species], species, variant, seed, time, s.wind, s.render.season);
+    scene.prototypes[i] = make_prototype(s.species[species], species, variant, time, s);
   });
   for (std::size_t i = 0; i < keys.size(); ++i)
     scene.prototypes[i].bark_texture = textures[keys[i].first];
@@ -281,6 +284,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time) {
   scene.settings.seed = scenario.render.seed;
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev = scenario.render.exposure_ev;
+  scene.settings.degradation = scenario.render.degradation;
   if (scenario.featuremaps) {
     const FeatureMapSettings& f = *scenario.featuremaps;
     std::optional<featuremaps::VegetationMap> map;

@@ -54,7 +54,10 @@ std::size_t GroupGeometry::item_of_triangle(std::uint32_t triangle) const {
 
 float GroupGeometry::vigour_of_triangle(std::uint32_t triangle) const {
   if (item_vigour.empty()) return 1.0f;
-  const std::size_t item = item_of_triangle(triangle);
+  return vigour_of_item(item_of_triangle(triangle));
+}
+
+float GroupGeometry::vigour_of_item(std::size_t item) const {
   return item < item_vigour.size() ? item_vigour[item] : 1.0f;
 }
 

@@ -4,8 +4,8 @@
 //
 // Every group holds every representation the degradation needs: stems as triangle tubes
 // (near) and as line segments with radii (far); leaves as polygons (near) and as points
-// (far). Items (a stem, or a leaf) are stored mass-rank-major: items are grouped in masses
-// of `mass_size` consecutive items (16 stems, 4 leaves), and the arrays hold rank 0 of every
+// (far). Items (a stem segment, or a leaf) are stored mass-rank-major: items are grouped in
+// masses of `mass_size` consecutive items (16 segments, 4 leaves), and the arrays hold rank 0 of every
 // mass, then rank 1 of every mass, and so on. "Draw the first n items of every mass" then is
 // a prefix of each array, so one buffer serves every level of detail.
 #include <array>
@@ -55,7 +55,10 @@ struct PointSet {
 };
 
 // One group. For stem groups `lines` is filled and `points` empty; for leaves `points` is
-// filled and `lines` empty. item_*_end[k] is where item k (in stored, rank-major order) ends
+// filled and `lines` empty. A stem group's item is a segment (the band between two
+// consecutive cross-sections and its line): its rings are shared with the neighbouring
+// segments, so vertices and line points stay in stem order and only `triangles.indices` and
+// `lines.first` are rank-major. item_*_end[k] is where item k (in stored, rank-major order) ends
 // in the respective array, counted in primitives, so a prefix of m items is
 // [0, item_*_end[m-1]).
 struct GroupGeometry {
@@ -82,6 +85,7 @@ struct GroupGeometry {
   // The stored item a triangle belongs to, and (leaves) that item's vigour, 1 without any.
   std::size_t item_of_triangle(std::uint32_t triangle) const;
   float vigour_of_triangle(std::uint32_t triangle) const;
+  float vigour_of_item(std::size_t item) const;
 };
 
 struct TreeColours {

@@ -48,12 +48,21 @@ void join_rings(std::uint32_t ia, int na, std::uint32_t ib, int nb,
   }
 }
 
-// Appends one stem's tube and line segments to its group.
-void mesh_stem(const StemSkeleton& stem, const MeshResolution& res, GroupGeometry& g) {
-  const auto vertex_base = static_cast<std::uint32_t>(g.triangles.vertices.size());
+// One stem segment (the paper's item for stems): the band between two consecutive
+// cross-sections and the line joining them. Rings are shared by the segments on either side,
+// so vertices stay in stem order; only triangles and lines are stored rank-major.
+struct Segment {
+  std::uint32_t ring_a, ring_b;  // first vertex of each ring
+  int count_a, count_b;          // vertices in each ring (1 at an apex)
+  std::uint32_t line_first;      // first point of the line segment
+};
+
+// Appends one stem's rings and line points to its group; lists its segments.
+void mesh_stem(const StemSkeleton& stem, const MeshResolution& res, GroupGeometry& g,
+               std::vector<Segment>& segments) {
   const auto point_base = static_cast<std::uint32_t>(g.lines.points.size());
   const int points = res.ring_points[static_cast<std::size_t>(std::min(stem.level, 3))];
-  std::uint32_t prev_start = vertex_base;
+  std::uint32_t prev_start = 0;
   int prev_count = 0;
   // v runs along the stem in units of its base circumference, so bark keeps its aspect.
   const double circumference = kTwoPi * std::max(stem.sections.front().radius, 1e-4);
@@ -64,14 +73,38 @@ void mesh_stem(const StemSkeleton& stem, const MeshResolution& res, GroupGeometr
     add_ring(stem.sections[i], points, stem, static_cast<float>(along / circumference),
              g.triangles);
     const int count = static_cast<int>(g.triangles.vertices.size() - start);
-    if (i > 0) join_rings(prev_start, prev_count, start, count, g.triangles.indices);
+    if (i > 0)
+      segments.push_back(
+          {prev_start, start, prev_count, count, point_base + static_cast<std::uint32_t>(i - 1)});
     prev_start = start;
     prev_count = count;
-
     g.lines.points.push_back(Vec3f(stem.sections[i].position));
     g.lines.radii.push_back(static_cast<float>(stem.sections[i].radius));
-    if (i > 0) g.lines.first.push_back(point_base + static_cast<std::uint32_t>(i - 1));
   }
+}
+
+// A stem group: rings and points in generation order, then every segment's triangles and
+// line in rank-major order (masses of 16 consecutive segments, in generation order).
+GroupGeometry assemble_stems(const std::vector<const StemSkeleton*>& stems,
+                             const MeshResolution& res) {
+  GroupGeometry group;
+  group.mass_size = kStemMassSize;
+  std::vector<Segment> segments;
+  for (const StemSkeleton* stem : stems) mesh_stem(*stem, res, group, segments);
+  group.item_count = segments.size();
+  std::vector<const Segment*> stored(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    stored[rank_major_position(i, segments.size(), kStemMassSize)] = &segments[i];
+  group.item_triangle_end.reserve(segments.size());
+  group.item_line_end.reserve(segments.size());
+  group.item_point_end.assign(segments.size(), 0);
+  for (const Segment* s : stored) {
+    join_rings(s->ring_a, s->count_a, s->ring_b, s->count_b, group.triangles.indices);
+    group.lines.first.push_back(s->line_first);
+    group.item_triangle_end.push_back(static_cast<std::uint32_t>(group.triangles.triangle_count()));
+    group.item_line_end.push_back(static_cast<std::uint32_t>(group.lines.segment_count()));
+  }
+  return group;
 }
 
 struct LeafMesh {
@@ -117,11 +150,11 @@ void mesh_leaf(const LeafSkeleton& leaf, const LeafMesh& m, GroupGeometry& g) {
   g.points.normals.push_back(Vec3f(leaf.normal));
 }
 
-// Meshes items (given in generation order) straight into rank-major storage, recording
+// Meshes leaves (given in generation order) straight into rank-major storage, recording
 // where each stored item ends.
 template <typename Item, typename MeshOne>
 GroupGeometry assemble(const std::vector<const Item*>& items, int mass_size, MeshOne mesh_one,
-                       std::size_t vertices_per_item = 0, std::size_t indices_per_item = 0) {
+                       std::size_t vertices_per_item, std::size_t indices_per_item) {
   GroupGeometry group;
   // Known sizes (leaves) are reserved up front: growing 20,000-leaf arrays costs more than
   // meshing them.
@@ -170,9 +203,7 @@ TreeGeometry mesh_tree(const TreeSkeleton& skeleton, const MeshResolution& resol
   }
   TreeGeometry geometry;
   for (std::size_t g = 0; g < stems.size(); ++g) {
-    geometry.groups[g] =
-        assemble(stems[g], kStemMassSize,
-                 [&](const StemSkeleton& s, GroupGeometry& out) { mesh_stem(s, resolution, out); });
+    geometry.groups[g] = assemble_stems(stems[g], resolution);
   }
   const LeafMesh leaf_mesh = prepare_leaf(skeleton.leaf_shape);
   std::vector<const LeafSkeleton*> leaves;

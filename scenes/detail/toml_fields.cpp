@@ -135,6 +135,13 @@ std::string TableReader::string(std::string_view key, std::optional<std::string>
   return std::string(*n->value<std::string_view>());
 }
 
+bool TableReader::boolean(std::string_view key, bool fallback) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return fallback;
+  if (!n->is_boolean()) fail(key, "expected true or false, got " + type_name(*n));
+  return *n->value<bool>();
+}
+
 std::string TableReader::choice(std::string_view key, const std::vector<std::string>& choices,
                                 std::string fallback) {
   const std::string v = string(key, fallback);

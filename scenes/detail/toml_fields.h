@@ -35,6 +35,7 @@ class TableReader {
   std::int64_t integer(std::string_view key, std::int64_t lo, std::int64_t hi,
                        std::optional<std::int64_t> fallback = std::nullopt);
   std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt);
+  bool boolean(std::string_view key, bool fallback);
   // One of `choices`.
   std::string choice(std::string_view key, const std::vector<std::string>& choices,
                      std::string fallback);

@@ -12,6 +12,7 @@
 #include "renderer/haze.h"
 #include "renderer/render.h"
 #include "terrain/ground_mesh.h"
+#include "tests/support/single_item.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::renderer {
@@ -114,6 +115,7 @@ TEST(Physics, SunShadowFallsWhereGeometryPutsIt) {
   t.vertices = {{0, -1, 0}, {0, 1, 0}, {0, 1, 4}, {0, -1, 4}};
   t.normals.assign(4, Vec3f{1, 0, 0});
   t.indices = {0, 1, 2, 0, 2, 3};
+  test::make_single_item(panel.geometry.group(trees::Group::trunk));
   s.prototypes.push_back(panel);
   s.instances.push_back({0, {}, 0.0, 1.0});
   // Straight down from 30 m over (2, 0), 20 m of ground in view.
@@ -185,6 +187,9 @@ TEST(Physics, AovsAgreeWithTheScene) {
   t.vertices = {{0, -3, 0}, {0, 3, 0}, {0, 3, 6}, {0, -3, 6}};
   t.normals.assign(4, Vec3f{1, 0, 0});
   t.indices = {0, 1, 2, 0, 2, 3};
+  test::make_single_item(box.geometry.group(trees::Group::leaves));
+  // A hand-made leaf has no disc for far ranges: drawn at full detail.
+  s.settings.degradation = false;
   box.species = 7;
   s.prototypes = {box};
   s.instances = {{0, {40.0, 50.0, 25.0}, std::numbers::pi / 2, 1.0},

@@ -47,9 +47,12 @@ Scenario small_scene(const TempDir& dir, const std::string& species = "fanpalm.x
   return load_scenario(file);
 }
 
-// Pixels of the first view whose object class is a tree (stem 2 or leaf 3) in landsim's render.
+// Pixels of the first view whose object class is a tree (stem 2 or leaf 3) in landsim's
+// render at full detail (as the comparison renders it).
 int tree_pixels_in_view(const renderer::Scene& scene) {
-  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+  renderer::Scene full = scene;
+  full.settings.degradation = false;
+  const renderer::Film film = renderer::Renderer(full).render(full.views[0], {});
   int count = 0;
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x)

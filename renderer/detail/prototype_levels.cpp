@@ -1,0 +1,199 @@
+#include "renderer/detail/prototype_levels.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace landsim::renderer::detail {
+namespace {
+
+// Embree reads vertex buffers with 16-byte loads: every buffer gets that much slack.
+constexpr std::size_t kPadding = 16;
+
+RTCBuffer new_buffer(RTCDevice device, std::size_t bytes) {
+  return rtcNewBuffer(device, bytes + kPadding);
+}
+
+template <typename T>
+RTCBuffer copy_buffer(RTCDevice device, const T* data, std::size_t count) {
+  RTCBuffer b = new_buffer(device, count * sizeof(T));
+  std::memcpy(rtcGetBufferData(b), data, count * sizeof(T));
+  return b;
+}
+
+void release(RTCBuffer b) {
+  if (b) rtcReleaseBuffer(b);
+}
+
+// The largest value among the first `count` entries, plus one (0 for none).
+std::uint32_t past_largest(const std::vector<std::uint32_t>& v, std::size_t count) {
+  const auto end = v.begin() + static_cast<std::ptrdiff_t>(std::min(count, v.size()));
+  return v.begin() == end ? 0u : *std::max_element(v.begin(), end) + 1u;
+}
+
+// Interleaves points and radii (times `scale`) as Embree's FLOAT4 (x, y, z, r) curve and
+// disc vertices, for points [first, end).
+RTCBuffer float4_buffer(RTCDevice device, const std::vector<Vec3f>& points,
+                        const std::vector<float>& radii, std::size_t first, std::size_t end,
+                        float scale = 1.0f) {
+  RTCBuffer b = new_buffer(device, (end - first) * 4 * sizeof(float));
+  auto* out = static_cast<float*>(rtcGetBufferData(b));
+  for (std::size_t i = first; i < end; ++i, out += 4) {
+    out[0] = points[i].x;
+    out[1] = points[i].y;
+    out[2] = points[i].z;
+    out[3] = radii[i] * scale;
+  }
+  return b;
+}
+
+}  // namespace
+
+PrototypeLevels::PrototypeLevels(RTCDevice device, const TreePrototype& prototype, bool degradation)
+    : device_(device), prototype_(&prototype), degradation_(degradation) {
+  step_level_.fill(-1);
+}
+
+PrototypeLevels::~PrototypeLevels() {
+  for (PrototypeLevel& level : levels_)
+    if (level.scene) rtcReleaseScene(level.scene);
+}
+
+int PrototypeLevels::level_for_step(int step) {
+  step = std::clamp(step, 0, kDetailSteps - 1);
+  int& level = step_level_[static_cast<std::size_t>(step)];
+  if (level >= 0) return level;
+  const trees::TreeGeometry& g = prototype_->geometry;
+  const trees::TreeDetail detail =
+      degradation_ && step > 0 ? trees::tree_detail(g, step_r2(step), prototype_->degradation)
+                               : trees::full_detail(g);
+  const auto found = std::find(details_.begin(), details_.end(), detail);
+  level = static_cast<int>(found - details_.begin());
+  if (found == details_.end()) details_.push_back(detail);
+  return level;
+}
+
+// Each group's buffers, holding the prefix the most detailed requested level reaches.
+PrototypeLevels::Buffers PrototypeLevels::make_buffers() const {
+  Buffers buffers;
+  for (int k = 0; k < trees::kGroupCount; ++k) {
+    const auto index = static_cast<std::size_t>(k);
+    const trees::GroupGeometry& g = prototype_->geometry.groups[index];
+    GroupBuffers& b = buffers[index];
+    std::uint32_t triangles = 0, far_end = 0;
+    for (const trees::TreeDetail& d : details_) {
+      triangles = std::max(triangles, d.groups[index].triangles);
+      far_end = std::max(far_end, d.groups[index].far_only_end);
+    }
+    if (triangles > 0) {
+      const std::vector<std::uint32_t>& idx = g.triangles.indices;
+      b.vertex_count = past_largest(idx, 3u * triangles);
+      b.vertices = copy_buffer(device_, g.triangles.vertices.data(), b.vertex_count);
+      b.normals = copy_buffer(device_, g.triangles.normals.data(), b.vertex_count);
+      if (g.triangles.uvs.size() == 2 * g.triangles.vertices.size())
+        b.uvs = copy_buffer(device_, g.triangles.uvs.data(), 2u * b.vertex_count);
+      b.indices = copy_buffer(device_, idx.data(), 3u * triangles);
+    }
+    if (far_end == 0) continue;
+    if (static_cast<trees::Group>(k) == trees::Group::leaves) {
+      b.far_vertex_count = far_end;
+      b.far_vertices = float4_buffer(device_, g.points.centres, g.points.radii, 0, far_end);
+      b.far_normals = copy_buffer(device_, g.points.normals.data(), far_end);
+    } else {
+      // A line joins points first[i] and first[i] + 1.
+      b.far_vertex_count = past_largest(g.lines.first, far_end) + 1u;
+      b.far_vertices = float4_buffer(device_, g.lines.points, g.lines.radii, 0, b.far_vertex_count);
+      b.far_indices = copy_buffer(device_, g.lines.first.data(), far_end);
+    }
+  }
+  return buffers;
+}
+
+void PrototypeLevels::build() {
+  Buffers buffers = make_buffers();
+  levels_.resize(details_.size());
+  for (std::size_t i = 0; i < details_.size(); ++i) build_level(buffers, details_[i], levels_[i]);
+  // The geometries hold their own references.
+  for (GroupBuffers& b : buffers) {
+    for (RTCBuffer r :
+         {b.vertices, b.normals, b.uvs, b.indices, b.far_vertices, b.far_normals, b.far_indices})
+      release(r);
+  }
+}
+
+namespace {
+
+unsigned attach(RTCScene scene, RTCGeometry geom) {
+  rtcCommitGeometry(geom);
+  const unsigned id = rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  return id;
+}
+
+}  // namespace
+
+void PrototypeLevels::build_level(const Buffers& buffers, const trees::TreeDetail& detail,
+                                  PrototypeLevel& out) const {
+  out.scene = rtcNewScene(device_);
+  const auto record = [&](unsigned id, LevelGeometry info) {
+    if (out.geometries.size() <= id) out.geometries.resize(id + 1);
+    out.geometries[id] = info;
+  };
+  for (int k = 0; k < trees::kGroupCount; ++k) {
+    const auto index = static_cast<std::size_t>(k);
+    const auto group = static_cast<trees::Group>(k);
+    const trees::GroupDetail& d = detail.groups[index];
+    const GroupBuffers& b = buffers[index];
+    if (d.triangles > 0) {
+      RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+      rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, b.vertices, 0,
+                           sizeof(Vec3f), b.vertex_count);
+      // Attribute 0: normals; attribute 1 (when present): texture coordinates.
+      rtcSetGeometryVertexAttributeCount(geom, b.uvs ? 2 : 1);
+      rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3, b.normals,
+                           0, sizeof(Vec3f), b.vertex_count);
+      if (b.uvs)
+        rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, RTC_FORMAT_FLOAT2, b.uvs, 0,
+                             2 * sizeof(float), b.vertex_count);
+      rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, b.indices, 0,
+                           3 * sizeof(std::uint32_t), d.triangles);
+      record(attach(out.scene, geom), {group, PrimitiveKind::triangles, 0});
+    }
+    const std::uint32_t far_count = d.far_only_end - d.far_only_first;
+    if (far_count == 0) continue;
+    const trees::GroupGeometry& g = prototype_->geometry.groups[index];
+    if (group == trees::Group::leaves) {
+      // Discs of the blade's area, facing the blade's normal; widened ones (thinned far
+      // leaves) are this level's own copy of the points it draws.
+      RTCBuffer widened = d.far_scale == 1.0f
+                              ? nullptr
+                              : float4_buffer(device_, g.points.centres, g.points.radii,
+                                              d.far_only_first, d.far_only_end, d.far_scale);
+      RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
+      rtcSetGeometryBuffer(
+          geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, widened ? widened : b.far_vertices,
+          widened ? 0 : d.far_only_first * 4 * sizeof(float), 4 * sizeof(float), far_count);
+      release(widened);
+      rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, b.far_normals,
+                           d.far_only_first * sizeof(Vec3f), sizeof(Vec3f), far_count);
+      record(attach(out.scene, geom), {group, PrimitiveKind::discs, d.far_only_first});
+    } else {
+      // Stem segments as round lines of the stem's radius (widened when thinned).
+      RTCBuffer widened = d.far_scale == 1.0f
+                              ? nullptr
+                              : float4_buffer(device_, g.lines.points, g.lines.radii, 0,
+                                              b.far_vertex_count, d.far_scale);
+      RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+      rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                           widened ? widened : b.far_vertices, 0, 4 * sizeof(float),
+                           b.far_vertex_count);
+      release(widened);
+      rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, b.far_indices,
+                           d.far_only_first * sizeof(std::uint32_t), sizeof(std::uint32_t),
+                           far_count);
+      record(attach(out.scene, geom), {group, PrimitiveKind::lines, d.far_only_first});
+    }
+  }
+  rtcCommitScene(out.scene);
+}
+
+}  // namespace landsim::renderer::detail

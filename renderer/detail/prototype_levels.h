@@ -1,0 +1,70 @@
+#pragma once
+// Private to renderer/ (includes Embree): one tree prototype inside Embree at the levels of
+// range degradation its instances ask for. Every level is an Embree scene of its own, but
+// all of them read the same Embree buffers (vertices, normals, indices, curve points, disc
+// points), each level a prefix or a range of them: an extra level costs its BVH only.
+// Buffers hold only the prefix that the most detailed level in use reaches, so a forest
+// seen only from afar never copies its leaf polygons into Embree.
+#include <embree3/rtcore.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "renderer/scene.h"
+#include "renderer/stochastic_lod.h"
+#include "trees/degradation.h"
+
+namespace landsim::renderer::detail {
+
+enum class PrimitiveKind : std::uint8_t { triangles, lines, discs };
+
+// One Embree geometry of a level: which group, drawn as what; `first` is the stored index
+// of its primitive 0 (lines and discs of a level are a range that need not start at 0).
+struct LevelGeometry {
+  trees::Group group = trees::Group::trunk;
+  PrimitiveKind kind = PrimitiveKind::triangles;
+  std::uint32_t first = 0;
+};
+
+struct PrototypeLevel {
+  RTCScene scene = nullptr;
+  std::vector<LevelGeometry> geometries;  // by geometry ID
+};
+
+class PrototypeLevels {
+ public:
+  PrototypeLevels(RTCDevice device, const TreePrototype& prototype, bool degradation);
+  ~PrototypeLevels();
+  PrototypeLevels(const PrototypeLevels&) = delete;
+  PrototypeLevels& operator=(const PrototypeLevels&) = delete;
+
+  // The level drawn at ladder step `step` (equal details share one level). Not thread-safe;
+  // call build() once every step in use has been asked for.
+  int level_for_step(int step);
+  // Copies the buffers and builds every requested level's BVH.
+  void build();
+  const PrototypeLevel& level(int index) const { return levels_[static_cast<std::size_t>(index)]; }
+  std::size_t level_count() const { return levels_.size(); }
+
+ private:
+  struct GroupBuffers {
+    RTCBuffer vertices = nullptr, normals = nullptr, uvs = nullptr, indices = nullptr;
+    std::uint32_t vertex_count = 0;
+    RTCBuffer far_vertices = nullptr, far_normals = nullptr, far_indices = nullptr;
+    std::uint32_t far_vertex_count = 0;
+  };
+  using Buffers = std::array<GroupBuffers, trees::kGroupCount>;
+  Buffers make_buffers() const;
+  void build_level(const Buffers& buffers, const trees::TreeDetail& detail,
+                   PrototypeLevel& out) const;
+
+  RTCDevice device_;
+  const TreePrototype* prototype_;
+  bool degradation_;
+  std::array<int, kDetailSteps> step_level_;
+  std::vector<trees::TreeDetail> details_;
+  std::vector<PrototypeLevel> levels_;
+};
+
+}  // namespace landsim::renderer::detail
