@@ -205,7 +205,8 @@ struct EmbreeScene::Impl {
   static double instance_r2(const Scene& s, const TreeInstance& inst, const View& view) {
     const std::array<Vec3f, 2> b = s.prototypes[inst.prototype].geometry.bounds();
     const Vec3 centre = inst.position + Vec3(0.0, 0.0, 0.5 * (b[0].z + b[1].z) * inst.scale);
-    return trees::calibrated_range(length(centre - view.position), view.height, view.fov_y_deg);
+    return view.detail_range_scale *
+           trees::calibrated_range(length(centre - view.position), view.height, view.fov_y_deg);
   }
 
   void add_instance(const TreeInstance& inst, std::int32_t index, const LadderPosition& at) {

@@ -84,7 +84,8 @@ void paper_loop(std::size_t total, int mass_size, double number, Draw&& draw) {
   for (std::size_t mass = 0; mass < masses; ++mass) {
     const std::size_t start = mass * size;
     std::size_t end = start + int_number;
-    if (static_cast<double>(mass) < change) ++end;
+    // `mass < change` as the paper writes it, with room for rounding (3.6 must give 0.6).
+    if (static_cast<double>(mass) + 1e-9 < change) ++end;
     end = std::min({end, start + size, total});  // a short last mass has fewer items
     for (std::size_t index = start; index < end; ++index) draw(index);
   }

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "core/input_error.h"
+#include "degrade_command.h"
 #include "discover_command.h"
 #include "grow_command.h"
 #include "info_command.h"
@@ -52,6 +53,8 @@ int main(int argc, char** argv) {
   CLI::App* discover = landsim::app::add_discover_command(app, discover_args);
   landsim::app::GrowArgs grow_args;
   CLI::App* grow = landsim::app::add_grow_command(app, grow_args);
+  landsim::app::DegradeArgs degrade_args;
+  CLI::App* degrade = landsim::app::add_degrade_command(app, degrade_args);
 
   try {
     app.parse(argc, argv);
@@ -72,6 +75,7 @@ int main(int argc, char** argv) {
     if (featuremap_build->parsed()) return landsim::app::run_featuremap_build(featuremap_args);
     if (discover->parsed()) return landsim::app::run_discover(discover_args);
     if (grow->parsed()) return landsim::app::run_grow(grow_args);
+    if (degrade->parsed()) return landsim::app::run_degrade(degrade_args);
   } catch (const landsim::InputError& e) {
     std::cerr << "landsim: " << session.label() << "error: " << e.what() << "\n";
     // One rank failing fails the whole job: the others would wait for it forever.

@@ -1,0 +1,193 @@
+// Range degradation inside the renderer: levels chosen per instance, blended per pixel.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+
+#include "renderer/camera.h"
+#include "renderer/embree_scene.h"
+#include "renderer/render.h"
+#include "renderer/stochastic_lod.h"
+#include "trees/species.h"
+
+namespace landsim::renderer {
+namespace {
+
+// A quaking aspen (the paper's Table 2 tree) alone under the sky.
+const TreePrototype& aspen() {
+  static const TreePrototype p = [] {
+    TreePrototype t;
+    const trees::Species species =
+        trees::load_species(std::string(LANDSIM_SOURCE_DIR) + "/data/species/quaking_aspen.toml");
+    t.geometry = trees::generate(species, {}).geometry;
+    t.bark_albedo = {0.3f, 0.25f, 0.2f};
+    t.leaf_reflectance = {0.1f, 0.2f, 0.05f};
+    t.leaf_transmittance = {0.05f, 0.1f, 0.02f};
+    t.degradation = trees::degradation_factors(1.0, trees::Season::summer, false);
+    return t;
+  }();
+  return p;
+}
+
+Scene aspen_scene() {
+  Scene s;
+  s.prototypes.push_back(aspen());
+  s.instances.push_back({0, {0.0, 0.0, 0.0}, 0.3, 1.0});
+  s.sun.direction = normalize(Vec3{-0.5, -0.6, 0.8});
+  s.settings.max_bounces = 1;
+  return s;
+}
+
+// A close view framing the tree (about 14 m tall) whose degradation is that of calibrated
+// range r2: the drawn geometry is measured finely whatever range it stands for.
+View framing_view(double r2) {
+  View v{"v", {-30.0, -12.0, 7.0}, {0.0, 0.0, 7.0}, 35.0, 128, 128};
+  const double at = trees::calibrated_range(length(v.target - v.position), v.height, v.fov_y_deg);
+  v.detail_range_scale = r2 / at;
+  return v;
+}
+
+// The fraction of the frame the tree covers: 4 x 4 rays per pixel, each with its pixel's
+// mask, as the renderer traces them.
+double coverage(const EmbreeScene& embree, const View& view) {
+  const Camera camera(view);
+  int hits = 0;
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x) {
+      const std::uint32_t mask =
+          pixel_ray_mask(static_cast<std::uint64_t>(y) * view.width + static_cast<std::uint64_t>(x));
+      for (int k = 0; k < 16; ++k) {
+        const float dx = 0.125f + 0.25f * static_cast<float>(k % 4);
+        const float dy = 0.125f + 0.25f * static_cast<float>(k / 4);
+        const Ray ray = camera.ray(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
+        hits += embree.intersect(ray, 0.0f, 1e30f, mask).has_value();
+      }
+    }
+  return hits / (16.0 * view.width * view.height);
+}
+
+TEST(DegradationRender, CoverageHasNoJumpBetweenRangesOnePercentApart) {
+  const Scene s = aspen_scene();
+  double full = 0.0;
+  {
+    Scene off = s;
+    off.settings.degradation = false;
+    const View v = framing_view(1.0);
+    full = coverage(EmbreeScene(off, &v), v);
+  }
+  ASSERT_GT(full, 0.05);
+  // Around every threshold of section 5 for summer (s = 0.5, d = 200) and between them.
+  for (double r2 : {20.0, 25.0, 40.0, 50.0, 75.0, 100.0, 150.0, 200.0, 250.0, 300.0, 400.0,
+                    500.0, 600.0, 700.0, 800.0, 1000.0, 1500.0, 2000.0}) {
+    const View a = framing_view(r2 / 1.005), b = framing_view(r2 * 1.005);
+    const double ca = coverage(EmbreeScene(s, &a), a), cb = coverage(EmbreeScene(s, &b), b);
+    EXPECT_LT(std::abs(cb - ca) / full, 0.01) << "r2 " << r2 << ": " << ca << " -> " << cb;
+    // Widened far primitives keep the tree's area (measured: within 1% at every range;
+    // without widening a quarter of the leaves would remain past r2 = 600).
+    EXPECT_GT(ca, 0.95 * full) << r2;
+  }
+}
+
+// A distant view at 1080p's pixel size (40 degrees over 1080 pixels), cropped to the tree.
+View distant_view(double range) {
+  return View{"v", {-range, 0.0, 7.0}, {0.0, 0.0, 7.0}, 40.0 * 96.0 / 1080.0, 96, 96};
+}
+
+double mean_luminance(const Film& f) {
+  double sum = 0.0;
+  for (int y = 0; y < f.height(); ++y)
+    for (int x = 0; x < f.width(); ++x) sum += f.luminance(x, y);
+  return sum / static_cast<double>(f.pixel_count());
+}
+
+TEST(DegradationRender, ATreeAt600mLooksAsAtFullDetail) {
+  Scene s = aspen_scene();
+  s.settings.spp = 16;
+  const View v = distant_view(600.0);
+  const Film degraded = Renderer(s).render(v, {});
+  s.settings.degradation = false;
+  const Film full = Renderer(s).render(v, {});
+  double diff = 0.0, tree_pixels = 0.0;
+  int drawn_below_full = 0;
+  for (int y = 0; y < v.height; ++y)
+    for (int x = 0; x < v.width; ++x) {
+      diff += std::abs(degraded.luminance(x, y) - full.luminance(x, y));
+      tree_pixels += full.object(x, y) >= 2;
+      drawn_below_full += degraded.level(x, y) > 0;
+    }
+  ASSERT_GT(tree_pixels, 50.0);
+  EXPECT_GT(drawn_below_full, 50);  // it was degraded (lod layer)
+  // The bound docs/DEGRADATION.md states: the mean absolute difference over the crop is
+  // under 2% of its mean pixel value (measured: 0.43%).
+  const double mean = mean_luminance(full);
+  EXPECT_LT(diff / static_cast<double>(full.pixel_count()) / mean, 0.02);
+}
+
+TEST(DegradationRender, TheBlendIsTheSameInEveryRunAndThreadCount) {
+  Scene s = aspen_scene();
+  s.settings.spp = 2;
+  // Half way between two ladder steps, so pixels dither between two levels.
+  const View v = framing_view(0.5 * (step_r2(16) + step_r2(17)));
+  RenderOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const Film a = Renderer(s).render(v, one);
+  const Film b = Renderer(s).render(v, two);
+  int lower = 0, upper = 0;
+  for (int y = 0; y < v.height; ++y)
+    for (int x = 0; x < v.width; ++x) {
+      ASSERT_EQ(a.rgb(x, y).x, b.rgb(x, y).x);
+      ASSERT_EQ(a.level(x, y), b.level(x, y));
+      lower += a.level(x, y) == 16;
+      upper += a.level(x, y) == 17;
+    }
+  EXPECT_GT(lower, 100);
+  EXPECT_GT(upper, 100);
+  EXPECT_NEAR(static_cast<double>(upper) / (lower + upper), 0.5, 0.15);
+}
+
+TEST(DegradationRender, WithoutDegradationEveryTreeIsDrawnInFull) {
+  Scene s = aspen_scene();
+  s.settings.spp = 1;
+  s.settings.degradation = false;
+  const View v = distant_view(600.0);
+  const Film f = Renderer(s).render(v, {});
+  int trees = 0;
+  for (int y = 0; y < v.height; ++y)
+    for (int x = 0; x < v.width; ++x) {
+      trees += f.object(x, y) >= 2;
+      EXPECT_EQ(f.level(x, y), 0u);
+    }
+  EXPECT_GT(trees, 50);
+}
+
+TEST(StochasticLod, MasksSplitRaysInTheWeightsProportion) {
+  for (double w : {0.0, 0.1, 0.25, 0.5, 0.77, 1.0}) {
+    for (std::uint64_t key : {0ull, 7ull, 123456789ull}) {
+      const LevelMasks m = level_masks(w, key);
+      EXPECT_EQ(m.lower & m.upper, 0u);
+      EXPECT_EQ(m.lower | m.upper, kAllBuckets);
+      EXPECT_EQ(std::popcount(m.upper), std::lround(w * kMaskBuckets));
+      const LevelMasks again = level_masks(w, key);
+      EXPECT_EQ(again.upper, m.upper);
+    }
+  }
+  // Objects are decorrelated: the same weight picks different buckets for different keys.
+  EXPECT_NE(level_masks(0.5, 1).upper, level_masks(0.5, 2).upper);
+  // Every pixel's mask is a single bucket.
+  for (std::uint64_t p = 0; p < 100; ++p) EXPECT_EQ(std::popcount(pixel_ray_mask(p)), 1);
+}
+
+TEST(StochasticLod, LadderPositionsInterpolateBetweenSteps) {
+  EXPECT_EQ(ladder_position(0.0).step, 0);
+  EXPECT_DOUBLE_EQ(step_r2(1), 1.0);
+  EXPECT_DOUBLE_EQ(step_r2(3), 2.0);
+  const LadderPosition p = ladder_position(1.2 * step_r2(20));  // steps are sqrt 2 apart
+  EXPECT_EQ(p.step, 20);
+  EXPECT_NEAR(p.weight, 0.2 / (std::sqrt(2.0) - 1.0), 1e-9);
+  EXPECT_EQ(ladder_position(1e9).step, kDetailSteps - 1);
+  EXPECT_EQ(ladder_position(1e9).weight, 0.0);
+}
+
+}  // namespace
+}  // namespace landsim::renderer
