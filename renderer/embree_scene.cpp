@@ -182,45 +182,55 @@ struct EmbreeScene::Impl {
   }
 
   // Every prototype at the levels its instances need for `view` (all at full detail without
-  // a view or with degradation off); returns each instance's ladder position.
-  std::vector<LadderPosition> build_prototypes(const Scene& s, const View* view) {
+  // a view or with degradation off); returns where each instance is drawn.
+  std::vector<detail::LevelBlend> build_prototypes(const Scene& s, const View* view) {
     const bool degrade = view != nullptr && s.settings.degradation;
-    prototypes.reserve(s.prototypes.size());
-    for (const TreePrototype& p : s.prototypes)
-      prototypes.push_back(std::make_unique<detail::PrototypeLevels>(device, p, degrade));
-    std::vector<LadderPosition> positions(s.instances.size());
+    prototypes.resize(s.prototypes.size());
+    tbb::parallel_for(std::size_t{0}, s.prototypes.size(), [&](std::size_t k) {
+      prototypes[k] = std::make_unique<detail::PrototypeLevels>(device, s.prototypes[k], degrade);
+    });
+    // Half the height of each prototype's bounds: where its range is measured to.
+    std::vector<double> middle(s.prototypes.size(), 0.0);
+    if (degrade)
+      tbb::parallel_for(std::size_t{0}, s.prototypes.size(), [&](std::size_t k) {
+        const std::array<Vec3f, 2> b = s.prototypes[k].geometry.bounds();
+        middle[k] = 0.5 * (b[0].z + b[1].z);
+      });
+    std::vector<detail::LevelBlend> blends(s.instances.size());
     for (std::size_t i = 0; i < s.instances.size(); ++i) {
       const TreeInstance& inst = s.instances[i];
-      if (degrade) positions[i] = ladder_position(instance_r2(s, inst, *view));
-      detail::PrototypeLevels& levels = *prototypes.at(inst.prototype);
-      levels.level_for_step(positions[i].step);
-      if (positions[i].weight > 0.0) levels.level_for_step(positions[i].step + 1);
+      const double r2 = degrade ? instance_r2(inst, middle[inst.prototype], *view) : 0.0;
+      detail::LevelBlend& b = blends[i];
+      b = prototypes.at(inst.prototype)->blend_for(r2);
+      if (!s.settings.degradation_blend) {  // benchmarks: the lower level only
+        b.upper_level = b.lower_level;
+        b.upper_step = b.lower_step;
+        b.upper_weight = 0.0;
+      }
     }
     tbb::parallel_for(std::size_t{0}, prototypes.size(),
                       [&](std::size_t k) { prototypes[k]->build(); });
-    return positions;
+    return blends;
   }
 
-  // The calibrated range of an instance from the view's camera, to its crown's middle.
-  static double instance_r2(const Scene& s, const TreeInstance& inst, const View& view) {
-    const std::array<Vec3f, 2> b = s.prototypes[inst.prototype].geometry.bounds();
-    const Vec3 centre = inst.position + Vec3(0.0, 0.0, 0.5 * (b[0].z + b[1].z) * inst.scale);
+  // The calibrated range of an instance from the view's camera, to its crown's middle
+  // (`middle` metres above the base, before scaling).
+  static double instance_r2(const TreeInstance& inst, double middle, const View& view) {
+    const Vec3 centre = inst.position + Vec3(0.0, 0.0, middle * inst.scale);
     return view.detail_range_scale *
            trees::calibrated_range(length(centre - view.position), view.height, view.fov_y_deg);
   }
 
-  void add_instance(const TreeInstance& inst, std::int32_t index, const LadderPosition& at) {
-    detail::PrototypeLevels& levels = *prototypes.at(inst.prototype);
+  void add_instance(const TreeInstance& inst, std::int32_t index, const detail::LevelBlend& b) {
+    const detail::PrototypeLevels& levels = *prototypes.at(inst.prototype);
     const std::array<float, 12> m = instance_matrix(inst);
-    const LevelMasks masks = level_masks(at.weight, static_cast<std::uint64_t>(index));
-    const int steps[2] = {at.step, at.step + 1};
-    const std::uint32_t mask[2] = {masks.lower, masks.upper};
-    for (int k = 0; k < 2; ++k) {
-      if (mask[k] == 0) continue;
-      const int level = levels.level_for_step(steps[k]);
-      attach_instance(levels.level(level).scene, m, mask[k],
-                      {index, level, static_cast<std::uint8_t>(steps[k]), 0});
-    }
+    const LevelMasks masks = level_masks(b.upper_weight, static_cast<std::uint64_t>(index));
+    if (masks.lower != 0)
+      attach_instance(levels.level(b.lower_level).scene, m, masks.lower,
+                      {index, b.lower_level, static_cast<std::uint8_t>(b.lower_step), 0});
+    if (masks.upper != 0)
+      attach_instance(levels.level(b.upper_level).scene, m, masks.upper,
+                      {index, b.upper_level, static_cast<std::uint8_t>(b.upper_step), 0});
   }
 };
 
@@ -237,9 +247,9 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
     rtcReleaseGeometry(ground);
     impl_->top.resize(id + 1);
   }
-  const std::vector<LadderPosition> positions = impl_->build_prototypes(scene, view);
+  const std::vector<detail::LevelBlend> blends = impl_->build_prototypes(scene, view);
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-    impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i), positions[i]);
+    impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i), blends[i]);
   }
   if (view != nullptr) impl_->add_grass(scene.grass, *view, scene.settings.degradation);
   rtcCommitScene(impl_->scene);

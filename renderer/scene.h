@@ -102,6 +102,9 @@ struct RenderSettings {
   // Range degradation (Weber & Penn section 5) of trees, and stochastic blending of tree and
   // grass levels; off: every tree at full detail, grass levels switched abruptly.
   bool degradation = true;
+  // Benchmarks only: false snaps each tree to its ladder step's level (no blending), to
+  // measure the popping that blending removes.
+  bool degradation_blend = true;
 };
 
 // One unique tree (a species variant), stored once and instanced many times.

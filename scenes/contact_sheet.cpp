@@ -4,12 +4,21 @@
 #include <cmath>
 #include <numbers>
 
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <spdlog/spdlog.h>
+
+#include <stdexcept>
+
+#include "core/atomic_file.h"
 #include "renderer/render.h"
 #include "renderer/scene.h"
 #include "trees/mesher.h"
 
 namespace landsim::scenes {
 namespace {
+
+constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 // A flat square of ground under the tree.
 terrain::GroundMesh ground_square(float half) {
@@ -20,9 +29,10 @@ terrain::GroundMesh ground_square(float half) {
   return m;
 }
 
-// The tree alone, seen from the south-west, the whole of its bounds in view.
+// The tree alone, seen from the south-west, the whole of its bounds in view; tile k of
+// the sheet.
 renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOptions& o,
-                           renderer::View& view) {
+                           std::size_t k, renderer::View& view) {
   const auto [lo, hi] = tree.bounds();
   const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1.0f});
   renderer::Scene s = studio_scene(20.0f * size);
@@ -40,6 +50,15 @@ renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOp
   const double distance = 0.75 * size / std::tan(0.5 * fov * std::numbers::pi / 180.0);
   const Vec3 from = normalize(Vec3{-0.6, -1.0, 0.25});
   view = {"tile", centre + from * distance, centre, fov, o.tile, o.tile};
+  s.settings.degradation = k < o.detail_r2.size();
+  if (s.settings.degradation) {
+    s.prototypes[0].degradation = o.factors;
+    // The renderer measures range to the middle of the tree's height above its base.
+    const Vec3 middle{0.0, 0.0, 0.5 * (lo.z + hi.z)};
+    view.detail_range_scale =
+        o.detail_r2[k] /
+        trees::calibrated_range(length(view.position - middle), view.height, view.fov_y_deg);
+  }
   return s;
 }
 
@@ -76,7 +95,7 @@ renderer::Film render_contact_sheet(const std::vector<trees::TreeGeometry>& tree
   renderer::Film sheet(columns * o.tile, std::max(rows, 1) * o.tile);
   for (std::size_t k = 0; k < trees.size(); ++k) {
     renderer::View view;
-    const renderer::Scene scene = tile_scene(trees[k], o, view);
+    const renderer::Scene scene = tile_scene(trees[k], o, k, view);
     const renderer::Film tile = renderer::Renderer(scene).render(view, {});
     const int x0 = static_cast<int>(k) % columns * o.tile;
     const int y0 = static_cast<int>(k) / columns * o.tile;
@@ -84,6 +103,39 @@ renderer::Film render_contact_sheet(const std::vector<trees::TreeGeometry>& tree
       for (int x = 0; x < o.tile; ++x) sheet.set(x0 + x, y0 + y, tile.rgb(x, y), {});
   }
   return sheet;
+}
+
+renderer::Film render_plate(const trees::TreeGeometry& tree, const std::vector<double>& ranges,
+                            ContactSheetOptions options) {
+  options.columns = static_cast<int>(ranges.size());
+  options.detail_r2 = ranges;  // the paper's calibration: r2 is the range
+  return render_contact_sheet(std::vector<trees::TreeGeometry>(ranges.size(), tree), options);
+}
+
+void write_labelled_png(const renderer::Film& sheet, const std::vector<std::string>& labels,
+                        const ContactSheetOptions& o, const std::filesystem::path& path) {
+  OIIO::ImageBuf out(OIIO::ImageSpec(sheet.width(), sheet.height(), 3, OIIO::TypeDesc::FLOAT));
+  for (int y = 0; y < sheet.height(); ++y)
+    for (int x = 0; x < sheet.width(); ++x) {
+      const Vec3f c = sheet.rgb(x, y);
+      const float px[3] = {c.x, c.y, c.z};
+      out.setpixel(x, y, px);
+    }
+  OIIO::ImageBuf display = OIIO::ImageBufAlgo::colorconvert(out, "linear", "sRGB");
+  const int columns = std::max(1, o.columns);
+  const float white[3] = {1.0f, 1.0f, 1.0f};
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    const int x = static_cast<int>(k) % columns * o.tile + 8;
+    const int y = static_cast<int>(k) / columns * o.tile + 24;
+    // DejaVu Sans comes with Debian's fonts-dejavu-core; without a font the labels are
+    // left out, with a warning, rather than failing the image.
+    if (!OIIO::ImageBufAlgo::render_text(display, x, y, labels[k], 18, kLabelFont, white))
+      spdlog::warn("{}: no font for the labels ({})", path.string(), display.geterror());
+  }
+  AtomicFile file(path);
+  if (!display.write(file.temp_path().string(), OIIO::TypeDesc::UINT8, "png"))
+    throw std::runtime_error("cannot write " + path.string());
+  file.commit();
 }
 
 }  // namespace landsim::scenes

@@ -7,7 +7,8 @@ PACKAGES="build-essential cmake ninja-build pkg-config ccache git \
   libembree-dev libopenexr-dev libopenimageio-dev libopencolorio-dev \
   libgdal-dev gdal-bin libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev \
   libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libpugixml-dev \
-  povray povray-includes embree-tools bc clang-format openmpi-bin libopenmpi-dev"
+  povray povray-includes embree-tools bc clang-format openmpi-bin libopenmpi-dev \
+  fonts-dejavu-core"
 
 missing=""
 for p in $PACKAGES; do

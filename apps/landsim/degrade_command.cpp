@@ -55,8 +55,7 @@ void print_json(const std::string& species, const std::vector<Row>& rows) {
 }
 
 // The paper's layout: one line per item and primitive, one column per range.
-void print_table(const std::string& species, const std::vector<Row>& rows,
-                 const DegradeArgs& a) {
+void print_table(const std::string& species, const std::vector<Row>& rows, const DegradeArgs& a) {
   std::cout << fmt::format("{}: elements drawn at each range ({}, quality {}, {} px, {} deg)\n",
                            species, a.season, a.quality, a.height, a.fov);
   const auto line = [&](const char* name, auto field) {

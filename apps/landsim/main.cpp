@@ -10,6 +10,7 @@
 #include "degrade_command.h"
 #include "discover_command.h"
 #include "grow_command.h"
+#include "plate_command.h"
 #include "info_command.h"
 #include "mpi_session.h"
 #include "pov_command.h"
@@ -55,6 +56,8 @@ int main(int argc, char** argv) {
   CLI::App* grow = landsim::app::add_grow_command(app, grow_args);
   landsim::app::DegradeArgs degrade_args;
   CLI::App* degrade = landsim::app::add_degrade_command(app, degrade_args);
+  landsim::app::PlateArgs plate_args;
+  CLI::App* plate = landsim::app::add_plate_command(app, plate_args);
 
   try {
     app.parse(argc, argv);
@@ -76,6 +79,7 @@ int main(int argc, char** argv) {
     if (discover->parsed()) return landsim::app::run_discover(discover_args);
     if (grow->parsed()) return landsim::app::run_grow(grow_args);
     if (degrade->parsed()) return landsim::app::run_degrade(degrade_args);
+    if (plate->parsed()) return landsim::app::run_plate(plate_args);
   } catch (const landsim::InputError& e) {
     std::cerr << "landsim: " << session.label() << "error: " << e.what() << "\n";
     // One rank failing fails the whole job: the others would wait for it forever.

@@ -46,11 +46,58 @@ RTCBuffer float4_buffer(RTCDevice device, const std::vector<Vec3f>& points,
   return b;
 }
 
+// What a level draws of one group in Embree: triangles (a prefix) and a range of far
+// primitives. Level 2 and deeper stems (twigs, 3-point rings) are drawn as their own tubes
+// where the paper draws lines: Embree intersects a thin three-sided tube faster than a round
+// curve (measured on the forest benchmark: curves for twigs cost a third more render time,
+// docs/DEGRADATION.md), and the tubes are the prefix already stored.
+struct Drawn {
+  std::uint32_t triangles = 0, far_first = 0, far_end = 0;
+};
+
+Drawn drawn(const trees::GroupGeometry& g, trees::Group group, const trees::GroupDetail& d) {
+  if (group == trees::Group::level2 || group == trees::Group::level3plus)
+    return {g.triangles_in_prefix(std::max(d.polygon_items, d.far_items)), 0, 0};
+  return {d.triangles, d.far_only_first, d.far_only_end};
+}
+
 }  // namespace
 
 PrototypeLevels::PrototypeLevels(RTCDevice device, const TreePrototype& prototype, bool degradation)
     : device_(device), prototype_(&prototype), degradation_(degradation) {
   step_level_.fill(-1);
+  const trees::GroupGeometry& leaves = prototype.geometry.group(trees::Group::leaves);
+  for (int step = 0; step < kDetailSteps; ++step) {
+    const std::size_t polygons =
+        step == 0 || !degradation
+            ? leaves.item_count
+            : trees::tree_detail(prototype.geometry, step_r2(step), prototype.degradation)
+                  .groups[static_cast<std::size_t>(trees::Group::leaves)]
+                  .polygon_items;
+    anchor_[static_cast<std::size_t>(step)] = polygons == 0 || polygons == leaves.item_count;
+  }
+}
+
+LevelBlend PrototypeLevels::blend_for(double r2) {
+  if (!degradation_) {
+    const int full = level_for_step(0);
+    return {full, full, 0, 0, 0.0};
+  }
+  const LadderPosition at = ladder_position(r2);
+  int lower = at.step, upper = at.step + 1;
+  while (lower > 0 && !anchor_[static_cast<std::size_t>(lower)]) --lower;
+  while (upper < kDetailSteps && !anchor_[static_cast<std::size_t>(upper)]) ++upper;
+  double weight = 0.0;
+  if (upper < kDetailSteps) {
+    const double lo = step_r2(lower), hi = step_r2(upper);
+    weight = std::round(std::clamp((r2 - lo) / (hi - lo), 0.0, 1.0) * kMaskBuckets) / kMaskBuckets;
+  }
+  if (weight >= 1.0) lower = upper;
+  if (weight <= 0.0 || weight >= 1.0) {
+    const int level = level_for_step(lower);
+    return {level, level, lower, lower, 0.0};
+  }
+  return {level_for_step(lower), level_for_step(upper), lower, upper, weight};
 }
 
 PrototypeLevels::~PrototypeLevels() {
@@ -81,8 +128,9 @@ PrototypeLevels::Buffers PrototypeLevels::make_buffers() const {
     GroupBuffers& b = buffers[index];
     std::uint32_t triangles = 0, far_end = 0;
     for (const trees::TreeDetail& d : details_) {
-      triangles = std::max(triangles, d.groups[index].triangles);
-      far_end = std::max(far_end, d.groups[index].far_only_end);
+      const Drawn n = drawn(g, static_cast<trees::Group>(k), d.groups[index]);
+      triangles = std::max(triangles, n.triangles);
+      far_end = std::max(far_end, n.far_end);
     }
     if (triangles > 0) {
       const std::vector<std::uint32_t>& idx = g.triangles.indices;
@@ -141,9 +189,11 @@ void PrototypeLevels::build_level(const Buffers& buffers, const trees::TreeDetai
   for (int k = 0; k < trees::kGroupCount; ++k) {
     const auto index = static_cast<std::size_t>(k);
     const auto group = static_cast<trees::Group>(k);
+    const trees::GroupGeometry& g = prototype_->geometry.groups[index];
     const trees::GroupDetail& d = detail.groups[index];
+    const Drawn n = drawn(g, group, d);
     const GroupBuffers& b = buffers[index];
-    if (d.triangles > 0) {
+    if (n.triangles > 0) {
       RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
       rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, b.vertices, 0,
                            sizeof(Vec3f), b.vertex_count);
@@ -155,27 +205,26 @@ void PrototypeLevels::build_level(const Buffers& buffers, const trees::TreeDetai
         rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, RTC_FORMAT_FLOAT2, b.uvs, 0,
                              2 * sizeof(float), b.vertex_count);
       rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, b.indices, 0,
-                           3 * sizeof(std::uint32_t), d.triangles);
+                           3 * sizeof(std::uint32_t), n.triangles);
       record(attach(out.scene, geom), {group, PrimitiveKind::triangles, 0});
     }
-    const std::uint32_t far_count = d.far_only_end - d.far_only_first;
+    const std::uint32_t far_count = n.far_end - n.far_first;
     if (far_count == 0) continue;
-    const trees::GroupGeometry& g = prototype_->geometry.groups[index];
     if (group == trees::Group::leaves) {
       // Discs of the blade's area, facing the blade's normal; widened ones (thinned far
       // leaves) are this level's own copy of the points it draws.
       RTCBuffer widened = d.far_scale == 1.0f
                               ? nullptr
                               : float4_buffer(device_, g.points.centres, g.points.radii,
-                                              d.far_only_first, d.far_only_end, d.far_scale);
+                                              n.far_first, n.far_end, d.far_scale);
       RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
       rtcSetGeometryBuffer(
           geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, widened ? widened : b.far_vertices,
-          widened ? 0 : d.far_only_first * 4 * sizeof(float), 4 * sizeof(float), far_count);
+          widened ? 0 : n.far_first * 4 * sizeof(float), 4 * sizeof(float), far_count);
       release(widened);
       rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, b.far_normals,
-                           d.far_only_first * sizeof(Vec3f), sizeof(Vec3f), far_count);
-      record(attach(out.scene, geom), {group, PrimitiveKind::discs, d.far_only_first});
+                           n.far_first * sizeof(Vec3f), sizeof(Vec3f), far_count);
+      record(attach(out.scene, geom), {group, PrimitiveKind::discs, n.far_first});
     } else {
       // Stem segments as round lines of the stem's radius (widened when thinned).
       RTCBuffer widened = d.far_scale == 1.0f
@@ -188,9 +237,8 @@ void PrototypeLevels::build_level(const Buffers& buffers, const trees::TreeDetai
                            b.far_vertex_count);
       release(widened);
       rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, b.far_indices,
-                           d.far_only_first * sizeof(std::uint32_t), sizeof(std::uint32_t),
-                           far_count);
-      record(attach(out.scene, geom), {group, PrimitiveKind::lines, d.far_only_first});
+                           n.far_first * sizeof(std::uint32_t), sizeof(std::uint32_t), far_count);
+      record(attach(out.scene, geom), {group, PrimitiveKind::lines, n.far_first});
     }
   }
   rtcCommitScene(out.scene);

@@ -32,6 +32,14 @@ struct PrototypeLevel {
   std::vector<LevelGeometry> geometries;  // by geometry ID
 };
 
+// Where an instance is drawn: at the lower level, or (upper_weight of its pixels) at the
+// upper one; steps are the ladder steps of the two levels (the lod AOV).
+struct LevelBlend {
+  int lower_level = 0, upper_level = 0;
+  int lower_step = 0, upper_step = 0;
+  double upper_weight = 0.0;  // a multiple of 1 / kMaskBuckets
+};
+
 class PrototypeLevels {
  public:
   PrototypeLevels(RTCDevice device, const TreePrototype& prototype, bool degradation);
@@ -39,8 +47,13 @@ class PrototypeLevels {
   PrototypeLevels(const PrototypeLevels&) = delete;
   PrototypeLevels& operator=(const PrototypeLevels&) = delete;
 
-  // The level drawn at ladder step `step` (equal details share one level). Not thread-safe;
-  // call build() once every step in use has been asked for.
+  // The levels an instance at calibrated range r2 is drawn with (asking for them). Only
+  // anchor steps are drawn: a step whose leaves are partly polygons is skipped, and the
+  // blend between the anchors around it draws the same expected share of leaf polygons
+  // (the paper's share falls linearly in r2) with one leaf-polygon BVH instead of several.
+  // Not thread-safe; call build() once every instance has asked.
+  LevelBlend blend_for(double r2);
+  // The level drawn at ladder step `step` (equal details share one level).
   int level_for_step(int step);
   // Copies the buffers and builds every requested level's BVH.
   void build();
@@ -63,6 +76,7 @@ class PrototypeLevels {
   const TreePrototype* prototype_;
   bool degradation_;
   std::array<int, kDetailSteps> step_level_;
+  std::array<bool, kDetailSteps> anchor_{};
   std::vector<trees::TreeDetail> details_;
   std::vector<PrototypeLevel> levels_;
 };

@@ -54,8 +54,8 @@ double coverage(const EmbreeScene& embree, const View& view) {
   int hits = 0;
   for (int y = 0; y < view.height; ++y)
     for (int x = 0; x < view.width; ++x) {
-      const std::uint32_t mask =
-          pixel_ray_mask(static_cast<std::uint64_t>(y) * view.width + static_cast<std::uint64_t>(x));
+      const std::uint32_t mask = pixel_ray_mask(static_cast<std::uint64_t>(y) * view.width +
+                                                static_cast<std::uint64_t>(x));
       for (int k = 0; k < 16; ++k) {
         const float dx = 0.125f + 0.25f * static_cast<float>(k % 4);
         const float dy = 0.125f + 0.25f * static_cast<float>(k / 4);
@@ -77,8 +77,8 @@ TEST(DegradationRender, CoverageHasNoJumpBetweenRangesOnePercentApart) {
   }
   ASSERT_GT(full, 0.05);
   // Around every threshold of section 5 for summer (s = 0.5, d = 200) and between them.
-  for (double r2 : {20.0, 25.0, 40.0, 50.0, 75.0, 100.0, 150.0, 200.0, 250.0, 300.0, 400.0,
-                    500.0, 600.0, 700.0, 800.0, 1000.0, 1500.0, 2000.0}) {
+  for (double r2 : {20.0, 25.0, 40.0, 50.0, 75.0, 100.0, 150.0, 200.0, 250.0, 300.0, 400.0, 500.0,
+                    600.0, 700.0, 800.0, 1000.0, 1500.0, 2000.0}) {
     const View a = framing_view(r2 / 1.005), b = framing_view(r2 * 1.005);
     const double ca = coverage(EmbreeScene(s, &a), a), cb = coverage(EmbreeScene(s, &b), b);
     EXPECT_LT(std::abs(cb - ca) / full, 0.01) << "r2 " << r2 << ": " << ca << " -> " << cb;
@@ -127,7 +127,7 @@ TEST(DegradationRender, TheBlendIsTheSameInEveryRunAndThreadCount) {
   Scene s = aspen_scene();
   s.settings.spp = 2;
   // Half way between two ladder steps, so pixels dither between two levels.
-  const View v = framing_view(0.5 * (step_r2(16) + step_r2(17)));
+  const View v = framing_view(0.5 * (step_r2(20) + step_r2(21)));
   RenderOptions one, two;
   one.threads = 1;
   two.threads = 2;
@@ -138,8 +138,8 @@ TEST(DegradationRender, TheBlendIsTheSameInEveryRunAndThreadCount) {
     for (int x = 0; x < v.width; ++x) {
       ASSERT_EQ(a.rgb(x, y).x, b.rgb(x, y).x);
       ASSERT_EQ(a.level(x, y), b.level(x, y));
-      lower += a.level(x, y) == 16;
-      upper += a.level(x, y) == 17;
+      lower += a.level(x, y) == 20;
+      upper += a.level(x, y) == 21;
     }
   EXPECT_GT(lower, 100);
   EXPECT_GT(upper, 100);

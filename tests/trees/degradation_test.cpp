@@ -41,7 +41,7 @@ TEST(Degradation, TrunkLinesFrom100PolygonsThinFrom300To800) {
   EXPECT_EQ(at(99.0, kTrunk).far, 0.0);  // "can appear as seam"
   EXPECT_EQ(at(101.0, kTrunk).far, 16.0);
   EXPECT_EQ(at(299.0, kTrunk).polygons, 16.0);
-  EXPECT_DOUBLE_EQ(at(600.0, kTrunk).polygons, 8.0);     // 16 (1.5 - 1)
+  EXPECT_DOUBLE_EQ(at(600.0, kTrunk).polygons, 8.0);      // 16 (1.5 - 1)
   EXPECT_NEAR(at(700.0, kTrunk).polygons, 5.3333, 1e-4);  // 16 (1.5 - 7/6)
   EXPECT_EQ(at(801.0, kTrunk).polygons, 0.0);
   EXPECT_EQ(at(5000.0, kTrunk).far, 16.0);  // lines at every range past 100
@@ -90,8 +90,8 @@ TEST(Degradation, LoopFollowsThePapersExample) {
   const std::vector<std::size_t> items = paper_loop_items(160, 16, 5.3);
   EXPECT_EQ(items.size(), 3u * 6u + 7u * 5u);
   for (std::size_t mass = 0; mass < 10; ++mass) {
-    const auto in_mass = std::count_if(items.begin(), items.end(),
-                                       [&](std::size_t i) { return i / 16 == mass; });
+    const auto in_mass =
+        std::count_if(items.begin(), items.end(), [&](std::size_t i) { return i / 16 == mass; });
     EXPECT_EQ(in_mass, mass < 3 ? 6 : 5) << mass;
     // The first items of the mass, with no gap.
     for (std::size_t k = 0; k < static_cast<std::size_t>(in_mass); ++k)

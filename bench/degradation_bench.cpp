@@ -1,0 +1,242 @@
+// Range degradation at forest scale (issue 16). Not a Google Benchmark: peak memory is a
+// per-process figure, so each mode runs in a process of its own (bench/degradation.sh runs
+// them side by side and compares).
+//
+//   degradation_bench forest --mode on|off [--blend on|off] [--trees N] [--near M --far M]
+//                           [--width W --height H --spp S] [--seed K] [--trunks yes] --out F.exr
+//     A forest of N trees (12 variants of 3 Weber & Penn species) spread over a 50-degree
+//     sector from 100 m to 3 km in front of a camera 10 m above flat ground, hazy. Prints
+//     one JSON line: Embree build seconds, render seconds, peak resident memory.
+//   degradation_bench compare A.exr B.exr
+//     Mean absolute luminance difference of A and B over 8 x 8 pixel blocks, as a fraction
+//     of B's mean (blocks average out most of the sampling noise).
+//   degradation_bench flythrough [--frames 24]
+//     A camera gliding towards a forest edge: for every tree seen, its pixel coverage in
+//     each frame degraded (with and without blending) over its coverage at full detail;
+//     prints the largest frame-to-frame change of that ratio for both.
+//   degradation_bench tree --mode on|off --r2 R
+//     One tree framed closely at the detail of calibrated range R: the cost per ray of a level.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/counter_rng.h"
+#include "renderer/image_output.h"
+#include "renderer/render.h"
+#include "trees/species.h"
+
+namespace {
+
+using namespace landsim;
+
+constexpr double kPi = 3.14159265358979323846;
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+renderer::TreePrototype prototype(const std::string& file, std::uint64_t seed, Vec3f leaf) {
+  renderer::TreePrototype p;
+  const trees::Species species =
+      trees::load_species(std::string(LANDSIM_SOURCE_DIR) + "/data/species/" + file);
+  trees::TreeOptions o;
+  o.seed = seed;
+  p.geometry = trees::generate(species, o).geometry;
+  p.bark_albedo = species.colours.bark;
+  p.leaf_reflectance = leaf;
+  p.leaf_transmittance = leaf * 0.5f;
+  p.degradation = trees::degradation_factors(1.0, trees::Season::summer, false);
+  return p;
+}
+
+// Flat ground, 12 prototypes, sun, sky and haze.
+renderer::Scene base_scene() {
+  renderer::Scene s;
+  const float half = 8000.0f;
+  s.ground.mesh.vertices = {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}};
+  s.ground.mesh.normals.assign(4, Vec3f{0, 0, 1});
+  s.ground.mesh.indices = {0, 1, 2, 0, 2, 3};
+  s.ground.albedo = {0.12f, 0.14f, 0.07f};
+  const char* files[] = {"quaking_aspen.toml", "black_tupelo.toml", "ca_black_oak.toml"};
+  for (int k = 0; k < 12; ++k)
+    s.prototypes.push_back(
+        prototype(files[k % 3], static_cast<std::uint64_t>(k + 1),
+                  Vec3f{0.08f, 0.16f, 0.04f} * (0.8f + 0.05f * static_cast<float>(k))));
+  s.sun.direction = normalize(Vec3{-0.4, 0.6, 0.5});
+  s.haze.enabled = true;
+  s.haze.visibility = 20000.0;
+  return s;
+}
+
+// `count` trees, uniformly by area over the sector of half-angle 25 degrees about +y
+// between `near` and `far` metres from the origin.
+void plant_forest(renderer::Scene& s, std::size_t count, double near, double far) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const CounterRng r(7, i, 0);
+    const double radius = std::sqrt(near * near + (far * far - near * near) * r.uniform(0));
+    const double angle = (r.uniform(1) - 0.5) * 50.0 * kPi / 180.0;
+    s.instances.push_back({static_cast<std::uint32_t>(i % s.prototypes.size()),
+                           {radius * std::sin(angle), radius * std::cos(angle), 0.0},
+                           2.0 * kPi * r.uniform(2),
+                           0.85 + 0.3 * r.uniform(3)});
+  }
+}
+
+std::string arg(int argc, char** argv, const char* name, const char* fallback) {
+  for (int i = 1; i + 1 < argc; ++i)
+    if (std::strcmp(argv[i], name) == 0) return argv[i + 1];
+  return fallback;
+}
+
+int forest(int argc, char** argv) {
+  const bool on = arg(argc, argv, "--mode", "on") == "on";
+  renderer::Scene s = base_scene();
+  plant_forest(s, std::stoul(arg(argc, argv, "--trees", "100000")),
+               std::stod(arg(argc, argv, "--near", "100")),
+               std::stod(arg(argc, argv, "--far", "3000")));
+  // --trunks yes: every tree reduced to its trunk, to separate the crowns' cost.
+  if (arg(argc, argv, "--trunks", "no") == "yes")
+    for (auto& p : s.prototypes)
+      for (std::size_t g = 1; g < trees::kGroupCount; ++g) p.geometry.groups[g] = {};
+  s.settings.degradation = on;
+  s.settings.degradation_blend = arg(argc, argv, "--blend", "on") == "on";
+  s.settings.spp = std::stoi(arg(argc, argv, "--spp", "4"));
+  s.settings.seed = std::stoull(arg(argc, argv, "--seed", "1"));
+  s.settings.max_bounces = 2;
+  const renderer::View view{"forest",
+                            {0.0, 0.0, 10.0},
+                            {0.0, 1000.0, 5.0},
+                            40.0,
+                            std::stoi(arg(argc, argv, "--width", "1920")),
+                            std::stoi(arg(argc, argv, "--height", "1080"))};
+  const auto start = std::chrono::steady_clock::now();
+  const renderer::Renderer renderer(s);
+  const double shared_build = seconds_since(start);
+  renderer::RenderStats stats;
+  const renderer::Film film = renderer.render(view, {}, &stats);
+  renderer::write_exr(film, arg(argc, argv, "--out", "forest.exr"), {});
+  std::printf(
+      "{\"mode\":\"%s\",\"trees\":%zu,\"build_s\":%.3f,\"render_s\":%.3f,\"trace_s\":%.3f,"
+      "\"peak_rss_mb\":%.1f,\"rays_per_s\":%.0f}\n",
+      on ? "on" : "off", s.instances.size(), shared_build + stats.setup_seconds,
+      shared_build + stats.seconds, stats.seconds - stats.setup_seconds, peak_rss_mb(),
+      stats.rays_per_second());
+  return 0;
+}
+
+// One tree framed closely, drawn at the detail of calibrated range --r2: the cost per ray of
+// each level's primitives.
+int tree(int argc, char** argv) {
+  renderer::Scene s = base_scene();
+  s.prototypes.resize(1);
+  s.instances.push_back({0, {0.0, 0.0, 0.0}, 0.0, 1.0});
+  s.settings.degradation = arg(argc, argv, "--mode", "on") == "on";
+  s.settings.spp = 4;
+  renderer::View v{"tree", {-30.0, -12.0, 7.0}, {0.0, 0.0, 7.0}, 35.0, 512, 512};
+  v.detail_range_scale =
+      std::stod(arg(argc, argv, "--r2", "100")) /
+      trees::calibrated_range(length(v.target - v.position), v.height, v.fov_y_deg);
+  renderer::RenderStats stats;
+  const auto start = std::chrono::steady_clock::now();
+  renderer::Renderer(s).render(v, {}, &stats);
+  std::printf("{\"r2\":%s,\"seconds\":%.3f,\"trace_s\":%.3f,\"rays\":%llu}\n",
+              arg(argc, argv, "--r2", "100").c_str(), seconds_since(start),
+              stats.seconds - stats.setup_seconds, static_cast<unsigned long long>(stats.rays));
+  return 0;
+}
+
+int compare(const char* a_path, const char* b_path) {
+  const renderer::Film a = renderer::read_exr(a_path), b = renderer::read_exr(b_path);
+  constexpr int kBlock = 8;
+  double diff = 0.0, mean = 0.0;
+  int blocks = 0;
+  for (int by = 0; by + kBlock <= a.height(); by += kBlock)
+    for (int bx = 0; bx + kBlock <= a.width(); bx += kBlock) {
+      double la = 0.0, lb = 0.0;
+      for (int y = by; y < by + kBlock; ++y)
+        for (int x = bx; x < bx + kBlock; ++x) {
+          la += a.luminance(x, y);
+          lb += b.luminance(x, y);
+        }
+      diff += std::abs(la - lb);
+      mean += lb;
+      ++blocks;
+    }
+  std::printf("{\"mean_abs_block_diff_fraction\":%.5f,\"blocks\":%d}\n", diff / mean, blocks);
+  return 0;
+}
+
+// Pixels per tree instance in a film's instance layer.
+std::map<std::uint32_t, int> coverage(const renderer::Film& f) {
+  std::map<std::uint32_t, int> c;
+  for (int y = 0; y < f.height(); ++y)
+    for (int x = 0; x < f.width(); ++x)
+      if (f.instance(x, y) != renderer::kNoId) ++c[f.instance(x, y)];
+  return c;
+}
+
+int flythrough(int argc, char** argv) {
+  const int frames = std::stoi(arg(argc, argv, "--frames", "24"));
+  renderer::Scene s = base_scene();
+  plant_forest(s, 3000, 150.0, 700.0);  // the edge 150 m ahead
+  s.settings.spp = 1;
+  s.settings.max_bounces = 0;
+  std::vector<std::map<std::uint32_t, int>> full(frames), blend(frames), snap(frames);
+  for (int k = 0; k < frames; ++k) {
+    // From 450 m to 150 m short of the edge's far side, 12.5 m per frame.
+    const double y = -300.0 + 12.5 * k;
+    const renderer::View v{"fly", {0.0, y, 20.0}, {0.0, y + 500.0, 5.0}, 30.0, 480, 270};
+    for (int mode = 0; mode < 3; ++mode) {
+      renderer::Scene m = s;
+      m.settings.degradation = mode > 0;
+      m.settings.degradation_blend = mode == 1;
+      const renderer::Film f = renderer::Renderer(m).render(v, {});
+      (mode == 0 ? full : mode == 1 ? blend : snap)[static_cast<std::size_t>(k)] = coverage(f);
+    }
+  }
+  // Largest change from frame to frame of a tree's coverage relative to full detail, over
+  // trees of at least 30 pixels in both frames.
+  const auto worst = [&](const std::vector<std::map<std::uint32_t, int>>& degraded) {
+    double w = 0.0;
+    for (int k = 0; k + 1 < frames; ++k)
+      for (const auto& [tree, n] : full[static_cast<std::size_t>(k)]) {
+        const auto& f1 = full[static_cast<std::size_t>(k + 1)];
+        if (n < 30 || !f1.count(tree) || f1.at(tree) < 30) continue;
+        const auto ratio = [&](std::size_t frame, int reference) {
+          const auto& d = degraded[frame];
+          return d.count(tree) ? d.at(tree) / static_cast<double>(reference) : 0.0;
+        };
+        w = std::max(w, std::abs(ratio(static_cast<std::size_t>(k + 1), f1.at(tree)) -
+                                 ratio(static_cast<std::size_t>(k), n)));
+      }
+    return w;
+  };
+  std::printf("{\"frames\":%d,\"largest_change_blended\":%.4f,\"largest_change_snapped\":%.4f}\n",
+              frames, worst(blend), worst(snap));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string what = argc > 1 ? argv[1] : "";
+  if (what == "forest") return forest(argc, argv);
+  if (what == "compare" && argc == 4) return compare(argv[2], argv[3]);
+  if (what == "flythrough") return flythrough(argc, argv);
+  if (what == "tree") return tree(argc, argv);
+  std::fprintf(stderr, "usage: degradation_bench forest|compare A B|flythrough [options]\n");
+  return 2;
+}
