@@ -434,3 +434,66 @@ TEST(CliTree, GraphPathsSpeciesGenerateAndBadShapesExitTwo) {
 
 }  // namespace
 }  // namespace landsim
+
+namespace landsim {
+namespace {
+
+TEST(CliDegrade, PrintsTable2AsJsonFollowingTheEquations) {
+  TempDir dir;
+  const auto species = testing::source_file("data/species/quaking_aspen.toml").string();
+  const Result r = run("degrade " + species + " --paper --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["species"], "quaking_aspen");
+  const auto& rows = j["rows"];
+  ASSERT_EQ(rows.size(), 7u);  // the paper's seven ranges by default
+  const std::set<std::string> keys = {
+      "range_m",          "r2",           "trunk_triangles",  "trunk_lines",
+      "level1_triangles", "level1_lines", "level2_triangles", "level2_lines",
+      "leaf_triangles",   "leaf_points"};
+  for (const auto& row : rows) {
+    std::set<std::string> have;
+    for (const auto& [k, v] : row.items()) have.insert(k);
+    EXPECT_EQ(have, keys);
+    EXPECT_DOUBLE_EQ(row["r2"].get<double>(), row["range_m"].get<double>());  // --paper
+  }
+  const auto at = [&](std::size_t k, const char* key) { return rows[k][key].get<long>(); };
+  // Ranges 5, 30, 60, 120, 240, 600, 1200: Table 2's pattern.
+  EXPECT_EQ(at(2, "trunk_lines"), 0);  // r2 < 100
+  EXPECT_GT(at(3, "trunk_lines"), 0);
+  EXPECT_EQ(at(6, "trunk_triangles"), 0);  // past 800
+  EXPECT_GT(at(5, "trunk_triangles"), 0);  // 300 < r2 < 800: thinning
+  EXPECT_LT(at(5, "trunk_triangles"), at(0, "trunk_triangles"));
+  EXPECT_EQ(at(3, "level1_triangles"), 0);                          // past 200 s = 100
+  EXPECT_EQ(at(6, "level1_lines"), 0);                              // past 2000 s = 1000
+  EXPECT_EQ(at(2, "level2_triangles"), 0);                          // past 100 s = 50
+  EXPECT_EQ(at(4, "leaf_triangles"), 0);                            // past d = 200
+  EXPECT_EQ(at(6, "leaf_points"), (at(0, "leaf_points") + 3) / 4);  // one per mass of 4
+  // Without --paper, 1080 px and 40 degrees make everything happen farther away.
+  const Result hd = run("degrade " + species + " --ranges 240 --json", dir);
+  ASSERT_EQ(hd.exit_code, 0) << hd.err;
+  const auto h = nlohmann::json::parse(hd.out)["rows"][0];
+  EXPECT_NEAR(h["r2"].get<double>(), 240.0 * 1000.0 / 1080.0 * 40.0 / 60.0, 1e-6);
+  EXPECT_GT(h["leaf_triangles"].get<long>(), 0);
+  EXPECT_EQ(run("degrade " + species + " --season monsoon", dir).exit_code, 2);
+}
+
+TEST(CliPlate, WritesOnePanelPerRange) {
+  TempDir dir;
+  const auto species = testing::source_file("data/species/quaking_aspen.toml").string();
+  const auto out = dir / "plate.png";
+  const Result r = run(
+      "plate " + species + " --out " + out.string() + " --ranges 60,600 --tile 64 --spp 1", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 128);
+  EXPECT_EQ(in->spec().height, 64);
+  EXPECT_EQ(
+      run("plate " + species + " --out " + (dir / "x.png").string() + " --tile 0", dir).exit_code,
+      2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+}  // namespace
+}  // namespace landsim

@@ -78,7 +78,8 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "120.0]\n"
          "fov = 35.0\nwidth = 64\nheight = 32\n\n"
          "[render]\nspp = 2\nseed = 5\nthreads = 1\nmax_bounces = 2\nexposure = 0.5\nframes = "
-         "[0.0, 1.5]\nseason = \"autumn\"\ncheckpoint_seconds = 30.0\n";
+         "[0.0, 1.5]\nseason = \"autumn\"\ncheckpoint_seconds = 30.0\ndegradation = false\n"
+         "quality = 0.8\n";
 }
 
 struct Fixture {
@@ -129,6 +130,8 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(s.render.frames, (std::vector<double>{0.0, 1.5}));
   EXPECT_EQ(s.render.season, "autumn");
   EXPECT_DOUBLE_EQ(s.render.checkpoint_seconds, 30.0);
+  EXPECT_FALSE(s.render.degradation);
+  EXPECT_DOUBLE_EQ(s.render.quality, 0.8);
   EXPECT_TRUE(s.species[0].evergreen);
   EXPECT_DOUBLE_EQ(s.species[1].age_min, 15.0);
   EXPECT_DOUBLE_EQ(s.species[1].age_max, 40.0);

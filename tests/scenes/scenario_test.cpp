@@ -129,6 +129,24 @@ TEST(Scenario, NegativeSppIsRefused) {
   EXPECT_NE(msg.find("got -4"), std::string::npos) << msg;
 }
 
+TEST(Scenario, DegradationKeysAreReadAndChecked) {
+  TempDir dir;
+  const Scenario defaults = load_scenario(dir.write("a.toml", scenario_text()));
+  EXPECT_TRUE(defaults.render.degradation);
+  EXPECT_DOUBLE_EQ(defaults.render.quality, 1.0);
+  const Scenario off = load_scenario(
+      dir.write("b.toml", scenario_text("", "", "degradation = false\nquality = 0.4")));
+  EXPECT_FALSE(off.render.degradation);
+  EXPECT_DOUBLE_EQ(off.render.quality, 0.4);
+  const std::string wrong = error_of(scenario_text("", "", "degradation = 1"));
+  EXPECT_NE(wrong.find("[render] degradation"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("expected true or false"), std::string::npos) << wrong;
+  EXPECT_NE(error_of(scenario_text("", "", "quality = 0")).find("[render] quality"),
+            std::string::npos);
+  EXPECT_NE(error_of(scenario_text("", "", "quality = 1.5")).find("[render] quality"),
+            std::string::npos);
+}
+
 TEST(Scenario, OutOfRangeNumbersAreRefused) {
   EXPECT_NE(error_of(scenario_text("", "fov = 180")).find("[views[0]] fov"), std::string::npos);
   std::string sun_below = scenario_text();
