@@ -3,9 +3,11 @@
 
 #include <bit>
 #include <cmath>
+#include <map>
 
 #include "renderer/camera.h"
 #include "renderer/embree_scene.h"
+#include "renderer/grass_patch.h"
 #include "renderer/render.h"
 #include "renderer/stochastic_lod.h"
 #include "trees/species.h"
@@ -187,6 +189,64 @@ TEST(StochasticLod, LadderPositionsInterpolateBetweenSteps) {
   EXPECT_NEAR(p.weight, 0.2 / (std::sqrt(2.0) - 1.0), 1e-9);
   EXPECT_EQ(ladder_position(1e9).step, kDetailSteps - 1);
   EXPECT_EQ(ladder_position(1e9).weight, 0.0);
+}
+
+}  // namespace
+}  // namespace landsim::renderer
+
+namespace landsim::renderer {
+namespace {
+
+// Calibrated range r2 at 1000 pixels and 60 degrees is the distance itself.
+GrassBlend blend_at(double r2) { return grass_blend(r2, 1000, 60.0); }
+
+TEST(GrassBlend, LevelsBlendAroundEachLevelsEndAndFadeAfterTheLast) {
+  EXPECT_EQ(blend_at(10.0).lower, 0);
+  EXPECT_EQ(blend_at(10.0).upper_weight, 0.0);
+  // Half way at each end (40, 160, 640), none of the next level a factor sqrt 2 before it.
+  for (int level = 0; level < kGrassLevels; ++level) {
+    const double end = 40.0 * std::pow(4.0, level);
+    const GrassBlend mid = blend_at(end);
+    EXPECT_EQ(mid.lower, level);
+    EXPECT_EQ(mid.upper, level + 1 < kGrassLevels ? level + 1 : -1);
+    EXPECT_NEAR(mid.upper_weight, 0.5, 1e-9);
+    EXPECT_NEAR(blend_at(end / std::sqrt(2.0) * 1.0001).upper_weight, 0.0, 1e-3);
+    EXPECT_NEAR(blend_at(end * std::sqrt(2.0) * 0.9999).upper_weight, 1.0, 1e-3);
+  }
+  EXPECT_EQ(blend_at(2000.0).lower, -1);  // past the last level: no blades
+  // The weight grows continuously with range: no jump between ranges 1% apart.
+  double previous = 0.0;
+  for (double r2 = 29.0; r2 < 56.0; r2 *= 1.01) {
+    const double w = blend_at(r2).upper_weight;
+    EXPECT_LT(std::abs(w - previous), 0.05) << r2;
+    previous = w;
+  }
+}
+
+TEST(GrassBlend, BlendedTilesGetTwoPatchesWithComplementaryMasks) {
+  GrassCover cover;
+  cover.tile = 4.0;
+  cover.cols = 40;
+  cover.rows = 1;
+  cover.type.assign(40, 1);
+  cover.height.assign(40, 0.0f);
+  cover.normal.assign(40, Vec3f{0, 0, 1});
+  const View view{"v", {-2.0, 2.0, 1.5}, {100.0, 2.0, 0.0}, 60.0, 100, 1000};
+  std::map<std::pair<float, float>, std::uint32_t> masks;  // per tile centre: OR of masks
+  int tiles_twice = 0;
+  std::map<std::pair<float, float>, int> count;
+  for_each_grass_patch(cover, view, true, [&](const GrassPatchPlacement& p) {
+    const std::pair<float, float> at{p.frame[9], p.frame[10]};
+    EXPECT_EQ(masks[at] & p.mask, 0u);  // no bucket sees two levels
+    masks[at] |= p.mask;
+    tiles_twice += ++count[at] == 2;
+  });
+  EXPECT_GT(tiles_twice, 3);
+  // Within 160 m every tile is drawn for every ray, at one level or the other.
+  for (const auto& [at, m] : masks) EXPECT_EQ(m, kAllBuckets) << at.first;
+  // Without blending: one patch per tile, seen by every ray.
+  for_each_grass_patch(cover, view, false,
+                       [&](const GrassPatchPlacement& p) { EXPECT_EQ(p.mask, kAllBuckets); });
 }
 
 }  // namespace

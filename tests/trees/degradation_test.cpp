@@ -7,6 +7,7 @@
 #include <set>
 
 #include "trees/mesher.h"
+#include "trees/species.h"
 
 namespace landsim::trees {
 namespace {
@@ -177,6 +178,41 @@ TEST(Degradation, FullDetailDrawsEveryTriangleAndNoFarPrimitive) {
   EXPECT_EQ(d.groups[kTrunk].triangles, g.group(Group::trunk).triangles.triangle_count());
   EXPECT_EQ(d.groups[kTrunk].far_only_end, 0u);
   EXPECT_EQ(tree_detail(g, 10.0, kSummer).groups[kTrunk].triangles, d.groups[kTrunk].triangles);
+}
+
+}  // namespace
+}  // namespace landsim::trees
+
+namespace landsim::trees {
+namespace {
+
+// One species of every core: the same degradation applies to whatever the core produced.
+TEST(Degradation, EveryCoresTreeDegradesTheSameWay) {
+  for (const char* file : {"quaking_aspen.toml", "graph_bush.toml", "so_upright.toml",
+                           "harmonic_cherry.toml", "london_plane.toml"}) {
+    const Species species = load_species(std::string(LANDSIM_SOURCE_DIR) + "/data/species/" + file);
+    const TreeGeometry g = generate(species, {}).geometry;
+    const TreeDetail full = full_detail(g);
+    std::uint32_t previous = ~0u;
+    for (double r2 : {1.0, 40.0, 120.0, 400.0, 1500.0, 5000.0}) {
+      const TreeDetail d = tree_detail(g, r2, kSummer);
+      std::uint32_t triangles = 0;
+      for (const GroupDetail& group : d.groups) triangles += group.triangles;
+      EXPECT_LE(triangles, previous) << file << " r2 " << r2;  // never more with range
+      previous = triangles;
+      const GroupDetail& leaves = d.groups[kLeaves];
+      const GroupGeometry& lg = g.group(Group::leaves);
+      if (lg.item_count > 0) {
+        EXPECT_GE(leaves.far_items, lg.mass_count()) << file;  // a point per mass at least
+      }
+    }
+    const TreeDetail near = tree_detail(g, 1.0, kSummer);  // r2 = 1: every polygon, no far form
+    for (std::size_t k = 0; k < kGroupCount; ++k) {
+      EXPECT_EQ(near.groups[k].triangles, full.groups[k].triangles) << file << " group " << k;
+      EXPECT_EQ(near.groups[k].far_only_first, near.groups[k].far_only_end) << file;
+    }
+    EXPECT_EQ(previous, 0u) << file;  // r2 = 5000: no polygon left
+  }
 }
 
 }  // namespace
