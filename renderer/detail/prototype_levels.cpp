@@ -74,7 +74,10 @@ PrototypeLevels::PrototypeLevels(RTCDevice device, const TreePrototype& prototyp
             : trees::tree_detail(prototype.geometry, step_r2(step), prototype.degradation)
                   .groups[static_cast<std::size_t>(trees::Group::leaves)]
                   .polygon_items;
-    anchor_[static_cast<std::size_t>(step)] = polygons == 0 || polygons == leaves.item_count;
+    // Where leaves are discs only, widening keeps every level's area, so octaves (odd steps)
+    // suffice: half the levels' BVHs, the blend spans the rest.
+    anchor_[static_cast<std::size_t>(step)] =
+        polygons == leaves.item_count || (polygons == 0 && step % 2 == 1);
   }
 }
 
@@ -97,7 +100,10 @@ LevelBlend PrototypeLevels::blend_for(double r2) {
     const int level = level_for_step(lower);
     return {level, level, lower, lower, 0.0};
   }
-  return {level_for_step(lower), level_for_step(upper), lower, upper, weight};
+  const int lower_level = level_for_step(lower), upper_level = level_for_step(upper);
+  // Equal details (past the last change, for instance) need no second instance.
+  if (lower_level == upper_level) return {lower_level, lower_level, lower, lower, 0.0};
+  return {lower_level, upper_level, lower, upper, weight};
 }
 
 PrototypeLevels::~PrototypeLevels() {

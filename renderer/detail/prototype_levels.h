@@ -50,7 +50,8 @@ class PrototypeLevels {
   // The levels an instance at calibrated range r2 is drawn with (asking for them). Only
   // anchor steps are drawn: a step whose leaves are partly polygons is skipped, and the
   // blend between the anchors around it draws the same expected share of leaf polygons
-  // (the paper's share falls linearly in r2) with one leaf-polygon BVH instead of several.
+  // (the paper's share falls linearly in r2) with one leaf-polygon BVH instead of several;
+  // where leaves are discs only, every other step (octaves) is an anchor.
   // Not thread-safe; call build() once every instance has asked.
   LevelBlend blend_for(double r2);
   // The level drawn at ladder step `step` (equal details share one level).
