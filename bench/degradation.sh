@@ -20,3 +20,12 @@ echo "on against off:"
 echo "noise floor (off, seed 2 against seed 1):"
 "$BENCH" compare "$OUT/forest_off_seed2.exr" "$OUT/forest_off.exr"
 "$BENCH" flythrough --frames 24
+echo "a million trees, 1 spp:"
+for run in $(seq 1 "$RUNS"); do
+  for mode in off on; do
+    "$BENCH" forest --mode "$mode" --trees 1000000 --spp 1 --out "$OUT/million_$mode.exr"
+  done
+done
+echo "one tree, cost of each level (4 spp, 512 x 512):"
+"$BENCH" tree --mode off
+for r2 in 30 60 100 150 250 400 700 1200; do "$BENCH" tree --r2 "$r2"; done

@@ -13,9 +13,11 @@
 #include <spdlog/spdlog.h>
 #include <chrono>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -189,20 +191,30 @@ struct EmbreeScene::Impl {
     tbb::parallel_for(std::size_t{0}, s.prototypes.size(), [&](std::size_t k) {
       prototypes[k] = std::make_unique<detail::PrototypeLevels>(device, s.prototypes[k], degrade);
     });
-    // Half the height of each prototype's bounds: where its range is measured to.
-    std::vector<double> middle(s.prototypes.size(), 0.0);
+    // Each prototype's bounds: its range is measured to their middle height.
+    std::vector<std::array<Vec3f, 2>> bounds(s.prototypes.size());
     if (degrade)
-      tbb::parallel_for(std::size_t{0}, s.prototypes.size(), [&](std::size_t k) {
-        const std::array<Vec3f, 2> b = s.prototypes[k].geometry.bounds();
-        middle[k] = 0.5 * (b[0].z + b[1].z);
-      });
+      tbb::parallel_for(std::size_t{0}, s.prototypes.size(),
+                        [&](std::size_t k) { bounds[k] = s.prototypes[k].geometry.bounds(); });
     std::vector<detail::LevelBlend> blends(s.instances.size());
     for (std::size_t i = 0; i < s.instances.size(); ++i) {
       const TreeInstance& inst = s.instances[i];
-      const double r2 = degrade ? instance_r2(inst, middle[inst.prototype], *view) : 0.0;
       detail::LevelBlend& b = blends[i];
-      b = prototypes.at(inst.prototype)->blend_for(r2);
-      if (!s.settings.degradation_blend) {  // benchmarks: the lower level only
+      if (!degrade) {
+        b = prototypes.at(inst.prototype)->blend_for(0.0);
+        continue;
+      }
+      const InstanceView at = instance_view(inst, bounds[inst.prototype], *view);
+      b = prototypes.at(inst.prototype)->blend_for(at.r2);
+      const bool per_pixel = at.pixels >= kPerPixelBlendMinPixels;
+      if (!s.settings.degradation_blend || (!per_pixel && b.upper_weight > 0.0)) {
+        // One level for the whole tree (benchmarks without blending: the lower one).
+        const bool upper = s.settings.degradation_blend &&
+                           object_takes_upper(b.upper_weight, static_cast<std::uint64_t>(i));
+        if (upper) {
+          b.lower_level = b.upper_level;
+          b.lower_step = b.upper_step;
+        }
         b.upper_level = b.lower_level;
         b.upper_step = b.lower_step;
         b.upper_weight = 0.0;
@@ -213,12 +225,21 @@ struct EmbreeScene::Impl {
     return blends;
   }
 
-  // The calibrated range of an instance from the view's camera, to its crown's middle
-  // (`middle` metres above the base, before scaling).
-  static double instance_r2(const TreeInstance& inst, double middle, const View& view) {
-    const Vec3 centre = inst.position + Vec3(0.0, 0.0, middle * inst.scale);
-    return view.detail_range_scale *
-           trees::calibrated_range(length(centre - view.position), view.height, view.fov_y_deg);
+  // How an instance stands in the view: its calibrated range (to the middle of its height,
+  // as scaled by the view's detail_range_scale) and its size on screen in pixels.
+  struct InstanceView {
+    double r2 = 0.0;
+    double pixels = 0.0;
+  };
+  static InstanceView instance_view(const TreeInstance& inst, const std::array<Vec3f, 2>& b,
+                                    const View& view) {
+    const Vec3 centre = inst.position + Vec3(0.0, 0.0, 0.5 * (b[0].z + b[1].z) * inst.scale);
+    const double distance = std::max(length(centre - view.position), 1e-6);
+    const double size = std::max({b[1].x - b[0].x, b[1].y - b[0].y, b[1].z - b[0].z}) * inst.scale;
+    const double tan_half = std::tan(0.5 * view.fov_y_deg * std::numbers::pi / 180.0);
+    return {
+        view.detail_range_scale * trees::calibrated_range(distance, view.height, view.fov_y_deg),
+        size / (2.0 * distance * tan_half) * view.height};
   }
 
   void add_instance(const TreeInstance& inst, std::int32_t index, const detail::LevelBlend& b) {

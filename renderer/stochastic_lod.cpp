@@ -47,4 +47,9 @@ LevelMasks level_masks(double upper_weight, std::uint64_t object_key) {
   return m;
 }
 
+bool object_takes_upper(double upper_weight, std::uint64_t object_key) {
+  const double u = static_cast<double>(mix64(object_key ^ kObjectSalt) >> 11) * 0x1.0p-53;
+  return u < upper_weight;
+}
+
 }  // namespace landsim::renderer

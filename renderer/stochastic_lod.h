@@ -42,4 +42,14 @@ struct LevelMasks {
 };
 LevelMasks level_masks(double upper_weight, std::uint64_t object_key);
 
+// Objects smaller than this on screen (pixels, the larger of width and height) take one of
+// the two levels for all their pixels, by a hash of the object: a second Embree instance per
+// object costs as much as the first (the forest benchmark ran twice as long with every tree
+// doubled), while one few-pixel tree changing a step (its area kept by widening) is not seen,
+// and trees change at different ranges, so no wave runs through the forest.
+inline constexpr double kPerPixelBlendMinPixels = 160.0;
+// Whether an object drawn per object takes the upper level: true for `upper_weight` of
+// objects, the same one in every run.
+bool object_takes_upper(double upper_weight, std::uint64_t object_key);
+
 }  // namespace landsim::renderer

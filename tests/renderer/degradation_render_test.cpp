@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <numbers>
+#include <set>
 
 #include "renderer/camera.h"
 #include "renderer/embree_scene.h"
@@ -42,8 +44,10 @@ Scene aspen_scene() {
 
 // A close view framing the tree (about 14 m tall) whose degradation is that of calibrated
 // range r2: the drawn geometry is measured finely whatever range it stands for.
-View framing_view(double r2) {
-  View v{"v", {-30.0, -12.0, 7.0}, {0.0, 0.0, 7.0}, 35.0, 128, 128};
+// At 128 pixels the tree is about 105 pixels tall (drawn at one level per tree); at 256,
+// 210 (blended pixel by pixel).
+View framing_view(double r2, int pixels = 128) {
+  View v{"v", {-30.0, -12.0, 7.0}, {0.0, 0.0, 7.0}, 35.0, pixels, pixels};
   const double at = trees::calibrated_range(length(v.target - v.position), v.height, v.fov_y_deg);
   v.detail_range_scale = r2 / at;
   return v;
@@ -130,7 +134,7 @@ TEST(DegradationRender, TheBlendIsTheSameInEveryRunAndThreadCount) {
   s.settings.spp = 2;
   // Half way between two anchor steps (octaves where leaves are discs only), so pixels
   // dither between two levels.
-  const View v = framing_view(0.5 * (step_r2(19) + step_r2(21)));
+  const View v = framing_view(0.5 * (step_r2(19) + step_r2(21)), 256);
   RenderOptions one, two;
   one.threads = 1;
   two.threads = 2;
@@ -147,6 +151,40 @@ TEST(DegradationRender, TheBlendIsTheSameInEveryRunAndThreadCount) {
   EXPECT_GT(lower, 100);
   EXPECT_GT(upper, 100);
   EXPECT_NEAR(static_cast<double>(upper) / (lower + upper), 0.5, 0.15);
+}
+
+TEST(DegradationRender, SmallTreesTakeOneLevelEachInProportion) {
+  // 100 trees about 7 pixels tall on an arc 700 m around the camera, all half way between
+  // two anchors (octaves 19 and 21).
+  Scene s = aspen_scene();
+  s.instances.clear();
+  for (int k = 0; k < 100; ++k) {
+    const double a = (k - 49.5) / 49.5 * 30.0 * std::numbers::pi / 180.0;
+    s.instances.push_back({0, {700.0 * std::cos(a), 700.0 * std::sin(a), -1.5}, 0.0, 1.0});
+  }
+  View v{"v", {0.0, 0.0, 7.0}, {700.0, 0.0, 7.0}, 70.0, 400, 400};
+  const double at = trees::calibrated_range(700.0, v.height, v.fov_y_deg);
+  v.detail_range_scale = 0.5 * (step_r2(19) + step_r2(21)) / at;
+  const EmbreeScene embree(s, &v);
+  const Camera camera(v);
+  std::map<std::int32_t, std::set<int>> levels;  // per tree, the levels its pixels show
+  for (int y = 0; y < v.height; ++y)
+    for (int x = 0; x < v.width; ++x) {
+      const auto hit = embree.intersect(
+          camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f), 0.0f, 1e30f,
+          pixel_ray_mask(static_cast<std::uint64_t>(y * v.width + x)));
+      if (hit && hit->instance >= 0) levels[hit->instance].insert(hit->level);
+    }
+  ASSERT_GT(levels.size(), 80u);
+  int upper = 0;
+  for (const auto& [tree, seen] : levels) {
+    EXPECT_EQ(seen.size(), 1u) << "tree " << tree;  // one level for all its pixels
+    upper += *seen.begin() == 21;
+    EXPECT_TRUE(*seen.begin() == 19 || *seen.begin() == 21);
+  }
+  // Half of them at the upper level, within 4 standard deviations.
+  const double n = static_cast<double>(levels.size());
+  EXPECT_NEAR(upper / n, 0.5, 4.0 * std::sqrt(0.25 / n));
 }
 
 TEST(DegradationRender, WithoutDegradationEveryTreeIsDrawnInFull) {
