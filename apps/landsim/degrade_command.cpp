@@ -7,7 +7,6 @@
 #include <iostream>
 
 #include "trees/degradation.h"
-#include "trees/species.h"
 
 namespace landsim::app {
 namespace {
@@ -57,7 +56,7 @@ void print_json(const std::string& species, const std::vector<Row>& rows) {
 // The paper's layout: one line per item and primitive, one column per range.
 void print_table(const std::string& species, const std::vector<Row>& rows, const DegradeArgs& a) {
   std::cout << fmt::format("{}: elements drawn at each range ({}, quality {}, {} px, {} deg)\n",
-                           species, a.season, a.quality, a.height, a.fov);
+                           species, a.tree.season, a.tree.quality, a.height, a.fov);
   const auto line = [&](const char* name, auto field) {
     std::cout << fmt::format("{:<18}", name);
     for (const Row& r : rows) std::cout << fmt::format("{:>9}", field(r));
@@ -80,48 +79,31 @@ void print_table(const std::string& species, const std::vector<Row>& rows, const
 CLI::App* add_degrade_command(CLI::App& app, DegradeArgs& args) {
   CLI::App* cmd =
       app.add_subcommand("degrade", "Print Weber & Penn's Table 2 (range degradation) for a tree");
-  cmd->add_option("species", args.species, "Species file (.toml, or Arbaro .xml)")->required();
-  cmd->add_option("--ranges", args.ranges, "Ranges in metres")
-      ->delimiter(',')
-      ->check(CLI::Range(0.0, 1e7));
-  cmd->add_option("--season", args.season, "spring, summer, autumn or winter")
-      ->check(CLI::IsMember({"spring", "summer", "autumn", "winter"}));
-  cmd->add_option("--quality", args.quality, "The paper's quality factor (0, 1]")
-      ->check(CLI::Range(0.001, 1.0));
+  add_degraded_tree_options(*cmd, args.tree);
   cmd->add_option("--height", args.height, "Image height, pixels")->check(CLI::Range(1, 65536));
   cmd->add_option("--fov", args.fov, "Vertical field of view, degrees")
       ->check(CLI::Range(0.01, 179.0));
   cmd->add_flag("--paper", args.paper,
                 "The paper's calibration (1000 pixels, 60 degrees: r2 = range)");
-  cmd->add_flag("--evergreen", args.evergreen, "The tree keeps its leaves (s = quality / 2)");
-  cmd->add_option("--seed", args.seed, "Variant seed")->capture_default_str();
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
   return cmd;
 }
 
 int run_degrade(const DegradeArgs& args) {
-  const trees::Species species = trees::load_species(args.species);
-  trees::TreeOptions options;
-  options.seed = args.seed;
-  options.quality = args.quality;
-  trees::TreeGeometry tree = trees::generate(species, options).geometry;
-  const trees::Season season = *trees::season_from_name(args.season);
-  if (season == trees::Season::winter && !args.evergreen)
-    tree.group(trees::Group::leaves) = trees::GroupGeometry{};  // leafless, as scenes draw it
-  const trees::DegradationFactors f =
-      trees::degradation_factors(args.quality, season, args.evergreen);
+  const DegradedTree tree = load_degraded_tree(args.tree);
   const int height = args.paper ? 1000 : args.height;
   const double fov = args.paper ? 60.0 : args.fov;
   std::vector<Row> rows;
-  for (double range : args.ranges)
-    rows.push_back(table_row(tree, range, trees::calibrated_range(range, height, fov), f));
+  for (double range : args.tree.ranges)
+    rows.push_back(
+        table_row(tree.geometry, range, trees::calibrated_range(range, height, fov), tree.factors));
   if (args.json) {
-    print_json(species.name, rows);
+    print_json(tree.name, rows);
   } else {
     DegradeArgs shown = args;
     shown.height = height;
     shown.fov = fov;
-    print_table(species.name, rows, shown);
+    print_table(tree.name, rows, shown);
   }
   return 0;
 }

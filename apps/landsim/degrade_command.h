@@ -2,9 +2,7 @@
 // `landsim degrade SPECIES_FILE [--ranges 5,30,...] [--season S] [--quality Q] [--height H]
 //  [--fov F] [--paper] [--evergreen] [--seed N] [--json]`: Weber & Penn's Table 2 for one
 // tree: how many triangles, lines and points range degradation draws at each range.
-#include <cstdint>
-#include <string>
-#include <vector>
+#include "degraded_tree.h"
 
 namespace CLI {
 class App;
@@ -13,15 +11,10 @@ class App;
 namespace landsim::app {
 
 struct DegradeArgs {
-  std::string species;
-  std::vector<double> ranges{5, 30, 60, 120, 240, 600, 1200};
-  std::string season = "summer";
-  double quality = 1.0;
+  DegradedTreeArgs tree{"", {5, 30, 60, 120, 240, 600, 1200}};
   int height = 1080;
   double fov = 40.0;
   bool paper = false;  // the paper's calibration: 1000 pixels, 60 degrees (r2 = range)
-  bool evergreen = false;
-  std::uint64_t seed = 1;
   bool json = false;
 };
 

@@ -4,7 +4,8 @@
 // one tree at each range's degradation, every panel framed alike, labelled with the range.
 #include <cstdint>
 #include <string>
-#include <vector>
+
+#include "degraded_tree.h"
 
 namespace CLI {
 class App;
@@ -13,13 +14,8 @@ class App;
 namespace landsim::app {
 
 struct PlateArgs {
-  std::string species;
+  DegradedTreeArgs tree{"", {30, 60, 120, 240, 600, 1200}};
   std::string out;
-  std::vector<double> ranges{30, 60, 120, 240, 600, 1200};
-  std::string season = "summer";
-  double quality = 1.0;
-  bool evergreen = false;
-  std::uint64_t seed = 1;
   int tile = 320;
   int spp = 16;
 };
