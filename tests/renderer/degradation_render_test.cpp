@@ -11,6 +11,7 @@
 #include "renderer/embree_scene.h"
 #include "renderer/grass_patch.h"
 #include "renderer/render.h"
+#include "tests/renderer/film_stats.h"
 #include "renderer/stochastic_lod.h"
 #include "trees/species.h"
 
@@ -99,12 +100,7 @@ View distant_view(double range) {
   return View{"v", {-range, 0.0, 7.0}, {0.0, 0.0, 7.0}, 40.0 * 96.0 / 1080.0, 96, 96};
 }
 
-double mean_luminance(const Film& f) {
-  double sum = 0.0;
-  for (int y = 0; y < f.height(); ++y)
-    for (int x = 0; x < f.width(); ++x) sum += f.luminance(x, y);
-  return sum / static_cast<double>(f.pixel_count());
-}
+using test::mean_luminance;
 
 TEST(DegradationRender, ATreeAt600mLooksAsAtFullDetail) {
   Scene s = aspen_scene();

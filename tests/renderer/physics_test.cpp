@@ -11,6 +11,7 @@
 #include "renderer/embree_scene.h"
 #include "renderer/haze.h"
 #include "renderer/render.h"
+#include "tests/renderer/film_stats.h"
 #include "terrain/ground_mesh.h"
 #include "tests/support/single_item.h"
 #include "tests/support/temp_dir.h"
@@ -35,12 +36,7 @@ Sky uniform_sky(float l) {
   return s;
 }
 
-double mean_luminance(const Film& f) {
-  double sum = 0.0;
-  for (int y = 0; y < f.height(); ++y)
-    for (int x = 0; x < f.width(); ++x) sum += f.luminance(x, y);
-  return sum / static_cast<double>(f.pixel_count());
-}
+using test::mean_luminance;
 
 TEST(Physics, WhiteFurnace) {
   // Albedo 1 under a uniform sky of radiance L, no sun: every surface returns L.
