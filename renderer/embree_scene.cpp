@@ -205,16 +205,12 @@ struct EmbreeScene::Impl {
         continue;
       }
       const InstanceView at = instance_view(inst, bounds[inst.prototype], *view);
-      b = prototypes.at(inst.prototype)->blend_for(at.r2);
+      // Small trees take one level each; without blending (benchmarks), the lower one.
       const bool per_pixel = at.pixels >= kPerPixelBlendMinPixels;
-      if (!s.settings.degradation_blend || (!per_pixel && b.upper_weight > 0.0)) {
-        // One level for the whole tree (benchmarks without blending: the lower one).
-        const bool upper = s.settings.degradation_blend &&
-                           object_takes_upper(b.upper_weight, static_cast<std::uint64_t>(i));
-        if (upper) {
-          b.lower_level = b.upper_level;
-          b.lower_step = b.upper_step;
-        }
+      std::optional<std::uint64_t> one_level;
+      if (!per_pixel && s.settings.degradation_blend) one_level = static_cast<std::uint64_t>(i);
+      b = prototypes.at(inst.prototype)->blend_for(at.r2, one_level);
+      if (!s.settings.degradation_blend) {
         b.upper_level = b.lower_level;
         b.upper_step = b.lower_step;
         b.upper_weight = 0.0;

@@ -69,11 +69,7 @@ PrototypeLevels::PrototypeLevels(RTCDevice device, const TreePrototype& prototyp
   const trees::GroupGeometry& leaves = prototype.geometry.group(trees::Group::leaves);
   for (int step = 0; step < kDetailSteps; ++step) {
     const std::size_t polygons =
-        step == 0 || !degradation
-            ? leaves.item_count
-            : trees::tree_detail(prototype.geometry, step_r2(step), prototype.degradation)
-                  .groups[static_cast<std::size_t>(trees::Group::leaves)]
-                  .polygon_items;
+        detail_for_step(step).groups[static_cast<std::size_t>(trees::Group::leaves)].polygon_items;
     // Where leaves are discs only, widening keeps every level's area, so octaves (odd steps)
     // suffice: half the levels' BVHs, the blend spans the rest.
     anchor_[static_cast<std::size_t>(step)] =
@@ -81,7 +77,7 @@ PrototypeLevels::PrototypeLevels(RTCDevice device, const TreePrototype& prototyp
   }
 }
 
-LevelBlend PrototypeLevels::blend_for(double r2) {
+LevelBlend PrototypeLevels::blend_for(double r2, std::optional<std::uint64_t> one_level_key) {
   if (!degradation_) {
     const int full = level_for_step(0);
     return {full, full, 0, 0, 0.0};
@@ -95,15 +91,18 @@ LevelBlend PrototypeLevels::blend_for(double r2) {
     const double lo = step_r2(lower), hi = step_r2(upper);
     weight = std::round(std::clamp((r2 - lo) / (hi - lo), 0.0, 1.0) * kMaskBuckets) / kMaskBuckets;
   }
+  // Equal details (past the last change, for instance) need no second level.
+  if (weight > 0.0 && weight < 1.0 && detail_for_step(lower) == detail_for_step(upper))
+    weight = 0.0;
+  // One level for the whole object: the upper one for `weight` of objects.
+  if (one_level_key && weight > 0.0 && weight < 1.0)
+    weight = object_takes_upper(weight, *one_level_key) ? 1.0 : 0.0;
   if (weight >= 1.0) lower = upper;
   if (weight <= 0.0 || weight >= 1.0) {
     const int level = level_for_step(lower);
     return {level, level, lower, lower, 0.0};
   }
-  const int lower_level = level_for_step(lower), upper_level = level_for_step(upper);
-  // Equal details (past the last change, for instance) need no second instance.
-  if (lower_level == upper_level) return {lower_level, lower_level, lower, lower, 0.0};
-  return {lower_level, upper_level, lower, upper, weight};
+  return {level_for_step(lower), level_for_step(upper), lower, upper, weight};
 }
 
 PrototypeLevels::~PrototypeLevels() {
@@ -111,14 +110,21 @@ PrototypeLevels::~PrototypeLevels() {
     if (level.scene) rtcReleaseScene(level.scene);
 }
 
+const trees::TreeDetail& PrototypeLevels::detail_for_step(int step) {
+  std::optional<trees::TreeDetail>& d = step_detail_[static_cast<std::size_t>(step)];
+  if (!d) {
+    const trees::TreeGeometry& g = prototype_->geometry;
+    d = degradation_ && step > 0 ? trees::tree_detail(g, step_r2(step), prototype_->degradation)
+                                 : trees::full_detail(g);
+  }
+  return *d;
+}
+
 int PrototypeLevels::level_for_step(int step) {
   step = std::clamp(step, 0, kDetailSteps - 1);
   int& level = step_level_[static_cast<std::size_t>(step)];
   if (level >= 0) return level;
-  const trees::TreeGeometry& g = prototype_->geometry;
-  const trees::TreeDetail detail =
-      degradation_ && step > 0 ? trees::tree_detail(g, step_r2(step), prototype_->degradation)
-                               : trees::full_detail(g);
+  const trees::TreeDetail& detail = detail_for_step(step);
   const auto found = std::find(details_.begin(), details_.end(), detail);
   level = static_cast<int>(found - details_.begin());
   if (found == details_.end()) details_.push_back(detail);

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "renderer/scene.h"
@@ -53,7 +54,9 @@ class PrototypeLevels {
   // (the paper's share falls linearly in r2) with one leaf-polygon BVH instead of several;
   // where leaves are discs only, every other step (octaves) is an anchor.
   // Not thread-safe; call build() once every instance has asked.
-  LevelBlend blend_for(double r2);
+  // With `one_level_key`, the object takes one of the two levels, by a hash of the key
+  // (object_takes_upper), and only that level is built.
+  LevelBlend blend_for(double r2, std::optional<std::uint64_t> one_level_key = std::nullopt);
   // The level drawn at ladder step `step` (equal details share one level).
   int level_for_step(int step);
   // Copies the buffers and builds every requested level's BVH.
@@ -70,6 +73,7 @@ class PrototypeLevels {
   };
   using Buffers = std::array<GroupBuffers, trees::kGroupCount>;
   Buffers make_buffers() const;
+  const trees::TreeDetail& detail_for_step(int step);
   void build_level(const Buffers& buffers, const trees::TreeDetail& detail,
                    PrototypeLevel& out) const;
 
@@ -78,6 +82,7 @@ class PrototypeLevels {
   bool degradation_;
   std::array<int, kDetailSteps> step_level_;
   std::array<bool, kDetailSteps> anchor_{};
+  std::array<std::optional<trees::TreeDetail>, kDetailSteps> step_detail_;
   std::vector<trees::TreeDetail> details_;
   std::vector<PrototypeLevel> levels_;
 };
