@@ -1,5 +1,6 @@
 #include "renderer/embree_scene.h"
 
+#include "renderer/detail/embree_errors.h"
 #include "renderer/detail/prototype_levels.h"
 #include "renderer/grass_patch.h"
 #include "renderer/stochastic_lod.h"
@@ -24,8 +25,15 @@
 namespace landsim::renderer {
 namespace {
 
-void report_embree_error(void*, RTCError code, const char* message) {
-  spdlog::error("Embree error {}: {}", static_cast<int>(code), message ? message : "");
+// rtcSetNewGeometryBuffer, refusing to go on when Embree could not allocate (it returns
+// null and reports the reason to EmbreeErrors).
+void* new_geometry_buffer(RTCGeometry geom, RTCBufferType type, unsigned slot, RTCFormat format,
+                          std::size_t stride, std::size_t count) {
+  void* data = rtcSetNewGeometryBuffer(geom, type, slot, format, stride, count);
+  if (data == nullptr && count > 0)
+    throw std::runtime_error("Embree could not allocate a geometry buffer of " +
+                             std::to_string(stride * count) + " bytes");
+  return data;
 }
 
 // A triangle mesh with per-vertex normals (attribute 0), copied into Embree's own buffers
@@ -34,22 +42,22 @@ RTCGeometry make_mesh(RTCDevice device, const std::vector<Vec3f>& vertices,
                       const std::vector<Vec3f>& normals, const std::vector<std::uint32_t>& indices,
                       const std::vector<float>* uvs = nullptr) {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                    sizeof(Vec3f), vertices.size());
+  auto* v = new_geometry_buffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3f),
+                                vertices.size());
   std::memcpy(v, vertices.data(), vertices.size() * sizeof(Vec3f));
   // Attribute 0: normals; attribute 1 (when given): texture coordinates.
   const bool with_uvs = uvs != nullptr && uvs->size() == 2 * vertices.size();
   rtcSetGeometryVertexAttributeCount(geom, with_uvs ? 2 : 1);
-  auto* n = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3,
-                                    sizeof(Vec3f), normals.size());
+  auto* n = new_geometry_buffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3,
+                                sizeof(Vec3f), normals.size());
   std::memcpy(n, normals.data(), normals.size() * sizeof(Vec3f));
   if (with_uvs) {
-    auto* t = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, RTC_FORMAT_FLOAT2,
-                                      2 * sizeof(float), vertices.size());
+    auto* t = new_geometry_buffer(geom, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, RTC_FORMAT_FLOAT2,
+                                  2 * sizeof(float), vertices.size());
     std::memcpy(t, uvs->data(), uvs->size() * sizeof(float));
   }
-  auto* i = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                    3 * sizeof(std::uint32_t), indices.size() / 3);
+  auto* i = new_geometry_buffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(std::uint32_t), indices.size() / 3);
   std::memcpy(i, indices.data(), indices.size() * sizeof(std::uint32_t));
   rtcCommitGeometry(geom);
   return geom;
@@ -115,6 +123,7 @@ struct TopLevelEntry {
 };
 
 struct EmbreeScene::Impl {
+  detail::EmbreeErrors errors;  // outlives the device (members are destroyed in reverse)
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::unique_ptr<detail::PrototypeLevels>> prototypes;
@@ -153,11 +162,11 @@ struct EmbreeScene::Impl {
         if (blades.first.empty()) continue;
         RTCScene s = rtcNewScene(device);
         RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
-        auto* v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
-                                          4 * sizeof(float), blades.points.size() / 4);
+        auto* v = new_geometry_buffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                      4 * sizeof(float), blades.points.size() / 4);
         std::memcpy(v, blades.points.data(), blades.points.size() * sizeof(float));
-        auto* i = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
-                                          sizeof(std::uint32_t), blades.first.size());
+        auto* i = new_geometry_buffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
+                                      sizeof(std::uint32_t), blades.first.size());
         std::memcpy(i, blades.first.data(), blades.first.size() * sizeof(std::uint32_t));
         rtcCommitGeometry(geom);
         rtcAttachGeometry(s, geom);
@@ -255,7 +264,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
   impl_->source = &scene;
   impl_->device = rtcNewDevice(nullptr);
   if (impl_->device == nullptr) throw std::runtime_error("Embree: could not create a device");
-  rtcSetDeviceErrorFunction(impl_->device, report_embree_error, nullptr);
+  impl_->errors.watch(impl_->device);
   impl_->scene = rtcNewScene(impl_->device);
   if (scene.ground.mesh.triangle_count() > 0) {
     RTCGeometry ground = make_mesh(impl_->device, scene.ground.mesh.vertices,
@@ -265,11 +274,14 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
     impl_->top.resize(id + 1);
   }
   const std::vector<detail::LevelBlend> blends = impl_->build_prototypes(scene, view);
+  impl_->errors.check("building the tree prototypes");
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i), blends[i]);
   }
   if (view != nullptr) impl_->add_grass(scene.grass, *view, scene.settings.degradation);
+  impl_->errors.check("adding the instances and grass patches");
   rtcCommitScene(impl_->scene);
+  impl_->errors.check("building the instance scene");
 }
 
 EmbreeScene::~EmbreeScene() = default;

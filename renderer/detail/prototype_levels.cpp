@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace landsim::renderer::detail {
 namespace {
@@ -10,7 +12,12 @@ namespace {
 constexpr std::size_t kPadding = 16;
 
 RTCBuffer new_buffer(RTCDevice device, std::size_t bytes) {
-  return rtcNewBuffer(device, bytes + kPadding);
+  RTCBuffer b = rtcNewBuffer(device, bytes + kPadding);
+  // Embree reports the reason through the device's error callback (EmbreeErrors).
+  if (b == nullptr)
+    throw std::runtime_error("Embree could not allocate a buffer of " + std::to_string(bytes) +
+                             " bytes");
+  return b;
 }
 
 template <typename T>
