@@ -432,12 +432,6 @@ TEST(CliTree, GraphPathsSpeciesGenerateAndBadShapesExitTwo) {
   EXPECT_FALSE(std::filesystem::exists(dir / "t.obj"));
 }
 
-}  // namespace
-}  // namespace landsim
-
-namespace landsim {
-namespace {
-
 TEST(CliDegrade, PrintsTable2AsJsonFollowingTheEquations) {
   TempDir dir;
   const auto species = testing::source_file("data/species/quaking_aspen.toml").string();

@@ -11,8 +11,8 @@
 #include "renderer/embree_scene.h"
 #include "renderer/grass_patch.h"
 #include "renderer/render.h"
-#include "tests/renderer/film_stats.h"
 #include "renderer/stochastic_lod.h"
+#include "tests/renderer/film_stats.h"
 #include "trees/species.h"
 
 namespace landsim::renderer {
@@ -225,12 +225,6 @@ TEST(StochasticLod, LadderPositionsInterpolateBetweenSteps) {
   EXPECT_EQ(ladder_position(1e9).step, kDetailSteps - 1);
   EXPECT_EQ(ladder_position(1e9).weight, 0.0);
 }
-
-}  // namespace
-}  // namespace landsim::renderer
-
-namespace landsim::renderer {
-namespace {
 
 // Calibrated range r2 at 1000 pixels and 60 degrees is the distance itself.
 GrassBlend blend_at(double r2) { return grass_blend(r2, 1000, 60.0); }

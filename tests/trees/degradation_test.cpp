@@ -180,12 +180,6 @@ TEST(Degradation, FullDetailDrawsEveryTriangleAndNoFarPrimitive) {
   EXPECT_EQ(tree_detail(g, 10.0, kSummer).groups[kTrunk].triangles, d.groups[kTrunk].triangles);
 }
 
-}  // namespace
-}  // namespace landsim::trees
-
-namespace landsim::trees {
-namespace {
-
 // One species of every core: the same degradation applies to whatever the core produced.
 TEST(Degradation, EveryCoresTreeDegradesTheSameWay) {
   for (const char* file : {"quaking_aspen.toml", "graph_bush.toml", "so_upright.toml",
