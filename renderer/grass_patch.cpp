@@ -5,6 +5,7 @@
 
 #include "core/counter_rng.h"
 #include "renderer/stochastic_lod.h"
+#include "trees/degradation.h"
 
 namespace landsim::renderer {
 namespace {
@@ -43,7 +44,7 @@ GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std:
 }
 
 int grass_level(double distance, int image_height, double fov_y_deg) {
-  const double r2 = distance * 1000.0 / image_height * fov_y_deg / 60.0;
+  const double r2 = trees::calibrated_range(distance, image_height, fov_y_deg);
   for (int level = 0; level < kGrassLevels; ++level) {
     if (r2 < kLevelEnd[level]) return level;
   }
@@ -58,7 +59,7 @@ std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal
 }
 
 GrassBlend grass_blend(double distance, int image_height, double fov_y_deg) {
-  const double r2 = distance * 1000.0 / image_height * fov_y_deg / 60.0;
+  const double r2 = trees::calibrated_range(distance, image_height, fov_y_deg);
   GrassBlend b;
   for (int level = 0; level < kGrassLevels; ++level) {
     // log4 of r2 over the level's end: the band [-1/4, 1/4] blends into the next level.
@@ -88,15 +89,17 @@ void for_each_grass_patch(const GrassCover& cover, const View& view, bool blend,
                          static_cast<float>(cover.corner.y + (r + 0.5) * cover.tile),
                          cover.height[k]};
       const double distance = length(Vec3(centre) - view.position);
-      const std::array<float, 12> frame = grass_patch_frame(centre, cover.normal[k]);
-      if (!blend) {
-        const int level = grass_level(distance, view.height, view.fov_y_deg);
-        if (level >= 0) visit({type, level, frame, kAllBuckets});
-        continue;
+      GrassBlend b;
+      if (blend) {
+        b = grass_blend(distance, view.height, view.fov_y_deg);
+      } else {
+        b.lower = grass_level(distance, view.height, view.fov_y_deg);
       }
-      const GrassBlend b = grass_blend(distance, view.height, view.fov_y_deg);
+      // Most tiles of a large cover lie beyond the grass range: no frame for those.
+      if (b.lower < 0) continue;
+      const std::array<float, 12> frame = grass_patch_frame(centre, cover.normal[k]);
       const LevelMasks masks = level_masks(b.upper_weight, k);
-      if (b.lower >= 0 && masks.lower != 0) visit({type, b.lower, frame, masks.lower});
+      if (masks.lower != 0) visit({type, b.lower, frame, masks.lower});
       if (b.upper >= 0 && masks.upper != 0) visit({type, b.upper, frame, masks.upper});
     }
   }

@@ -9,6 +9,8 @@
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <sstream>
@@ -20,6 +22,8 @@ namespace OCIO = OCIO_NAMESPACE;
 
 namespace landsim::renderer {
 namespace {
+
+constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 // Scene-linear Rec.709 in, the sRGB display out (the sRGB curve: exponent 2.4, offset 0.055).
 constexpr const char* kOcioConfig = R"(ocio_profile_version: 2
@@ -151,7 +155,8 @@ Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata) {
   return film;
 }
 
-void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev) {
+void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev,
+                       const std::vector<ImageLabel>& labels) {
   AtomicFile out(path);
   std::istringstream config_text(kOcioConfig);
   const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromStream(config_text);
@@ -169,7 +174,13 @@ void write_preview_png(const Film& film, const std::filesystem::path& path, doub
   cpu->apply(image);
 
   const OIIO::ImageSpec spec(film.width(), film.height(), 3, OIIO::TypeDesc::FLOAT);
-  const OIIO::ImageBuf display(spec, pixels.data());
+  OIIO::ImageBuf display(spec, pixels.data());
+  const float white[3] = {1.0f, 1.0f, 1.0f};
+  for (const ImageLabel& label : labels) {
+    if (!OIIO::ImageBufAlgo::render_text(display, label.x, label.y, label.text, 18, kLabelFont,
+                                         white))
+      spdlog::warn("{}: no font for the labels ({})", path.string(), display.geterror());
+  }
   if (!display.write(out.temp_path().string(), OIIO::TypeDesc::UINT8, "png")) {
     throw std::runtime_error("writing " + path.string() + " failed: " + display.geterror());
   }

@@ -33,9 +33,18 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
 // string attributes. Throws std::runtime_error on a file that is not one of ours.
 Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata = nullptr);
 
+// White text drawn on a preview, its baseline starting at pixel (x, y).
+struct ImageLabel {
+  int x = 0, y = 0;
+  std::string text;
+};
+
 // Scales by 2^exposure_ev, then applies the OpenColorIO display transform (display sRGB,
-// view Standard) of the project's embedded config, and writes an 8-bit PNG.
-void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev);
+// view Standard) of the project's embedded config, draws `labels`, and writes an 8-bit PNG.
+// Labels need DejaVu Sans (Debian's fonts-dejavu-core); without it they are left out with a
+// warning rather than failing the image.
+void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev,
+                       const std::vector<ImageLabel>& labels = {});
 
 // The embedded OpenColorIO config (YAML), for users who want to reproduce the preview.
 const char* ocio_config_text();

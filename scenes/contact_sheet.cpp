@@ -4,21 +4,13 @@
 #include <cmath>
 #include <numbers>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <spdlog/spdlog.h>
-
-#include <stdexcept>
-
-#include "core/atomic_file.h"
+#include "renderer/image_output.h"
 #include "renderer/render.h"
 #include "renderer/scene.h"
 #include "trees/mesher.h"
 
 namespace landsim::scenes {
 namespace {
-
-constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 // A flat square of ground under the tree.
 terrain::GroundMesh ground_square(float half) {
@@ -114,28 +106,12 @@ renderer::Film render_plate(const trees::TreeGeometry& tree, const std::vector<d
 
 void write_labelled_png(const renderer::Film& sheet, const std::vector<std::string>& labels,
                         const ContactSheetOptions& o, const std::filesystem::path& path) {
-  OIIO::ImageBuf out(OIIO::ImageSpec(sheet.width(), sheet.height(), 3, OIIO::TypeDesc::FLOAT));
-  for (int y = 0; y < sheet.height(); ++y)
-    for (int x = 0; x < sheet.width(); ++x) {
-      const Vec3f c = sheet.rgb(x, y);
-      const float px[3] = {c.x, c.y, c.z};
-      out.setpixel(x, y, px);
-    }
-  OIIO::ImageBuf display = OIIO::ImageBufAlgo::colorconvert(out, "linear", "sRGB");
   const int columns = std::max(1, o.columns);
-  const float white[3] = {1.0f, 1.0f, 1.0f};
-  for (std::size_t k = 0; k < labels.size(); ++k) {
-    const int x = static_cast<int>(k) % columns * o.tile + 8;
-    const int y = static_cast<int>(k) / columns * o.tile + 24;
-    // DejaVu Sans comes with Debian's fonts-dejavu-core; without a font the labels are
-    // left out, with a warning, rather than failing the image.
-    if (!OIIO::ImageBufAlgo::render_text(display, x, y, labels[k], 18, kLabelFont, white))
-      spdlog::warn("{}: no font for the labels ({})", path.string(), display.geterror());
-  }
-  AtomicFile file(path);
-  if (!display.write(file.temp_path().string(), OIIO::TypeDesc::UINT8, "png"))
-    throw std::runtime_error("cannot write " + path.string());
-  file.commit();
+  std::vector<renderer::ImageLabel> placed;
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    placed.push_back({static_cast<int>(k) % columns * o.tile + 8,
+                      static_cast<int>(k) / columns * o.tile + 24, labels[k]});
+  renderer::write_preview_png(sheet, path, 0.0, placed);
 }
 
 }  // namespace landsim::scenes

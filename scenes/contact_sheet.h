@@ -33,7 +33,8 @@ renderer::Film render_contact_sheet(const std::vector<trees::TreeGeometry>& tree
 renderer::Film render_plate(const trees::TreeGeometry& tree, const std::vector<double>& ranges,
                             ContactSheetOptions options);
 
-// The sheet as a PNG (sRGB) with a label at the top left of each tile; written atomically.
+// The sheet as a preview PNG (renderer::write_preview_png) with a label at the top left of
+// each tile.
 void write_labelled_png(const renderer::Film& sheet, const std::vector<std::string>& labels,
                         const ContactSheetOptions& options, const std::filesystem::path& path);
 

@@ -48,6 +48,15 @@ void join_rings(std::uint32_t ia, int na, std::uint32_t ib, int nb,
   }
 }
 
+// Items given in generation order, as pointers in their stored (mass-rank-major) order.
+template <typename Item>
+std::vector<const Item*> stored_order(const std::vector<const Item*>& items, int mass_size) {
+  std::vector<const Item*> stored(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i)
+    stored[rank_major_position(i, items.size(), mass_size)] = items[i];
+  return stored;
+}
+
 // One stem segment (the paper's item for stems): the band between two consecutive
 // cross-sections and the line joining them. Rings are shared by the segments on either side,
 // so vertices stay in stem order; only triangles and lines are stored rank-major.
@@ -92,13 +101,13 @@ GroupGeometry assemble_stems(const std::vector<const StemSkeleton*>& stems,
   std::vector<Segment> segments;
   for (const StemSkeleton* stem : stems) mesh_stem(*stem, res, group, segments);
   group.item_count = segments.size();
-  std::vector<const Segment*> stored(segments.size());
-  for (std::size_t i = 0; i < segments.size(); ++i)
-    stored[rank_major_position(i, segments.size(), kStemMassSize)] = &segments[i];
+  std::vector<const Segment*> in_order;
+  in_order.reserve(segments.size());
+  for (const Segment& s : segments) in_order.push_back(&s);
   group.item_triangle_end.reserve(segments.size());
   group.item_line_end.reserve(segments.size());
   group.item_point_end.assign(segments.size(), 0);
-  for (const Segment* s : stored) {
+  for (const Segment* s : stored_order(in_order, kStemMassSize)) {
     join_rings(s->ring_a, s->count_a, s->ring_b, s->count_b, group.triangles.indices);
     group.lines.first.push_back(s->line_first);
     group.item_triangle_end.push_back(static_cast<std::uint32_t>(group.triangles.triangle_count()));
@@ -164,14 +173,10 @@ GroupGeometry assemble(const std::vector<const Item*>& items, int mass_size, Mes
   group.triangles.indices.reserve(items.size() * indices_per_item);
   group.mass_size = mass_size;
   group.item_count = items.size();
-  std::vector<const Item*> stored(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    stored[rank_major_position(i, items.size(), mass_size)] = items[i];
-  }
   group.item_triangle_end.reserve(items.size());
   group.item_line_end.reserve(items.size());
   group.item_point_end.reserve(items.size());
-  for (const Item* item : stored) {
+  for (const Item* item : stored_order(items, mass_size)) {
     mesh_one(*item, group);
     group.item_triangle_end.push_back(static_cast<std::uint32_t>(group.triangles.triangle_count()));
     group.item_line_end.push_back(static_cast<std::uint32_t>(group.lines.segment_count()));

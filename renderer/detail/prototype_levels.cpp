@@ -73,6 +73,7 @@ Drawn drawn(const trees::GroupGeometry& g, trees::Group group, const trees::Grou
 PrototypeLevels::PrototypeLevels(RTCDevice device, const TreePrototype& prototype, bool degradation)
     : device_(device), prototype_(&prototype), degradation_(degradation) {
   step_level_.fill(-1);
+  if (!degradation) return;  // every instance is drawn at full detail: no anchors to find
   const trees::GroupGeometry& leaves = prototype.geometry.group(trees::Group::leaves);
   for (int step = 0; step < kDetailSteps; ++step) {
     const std::size_t polygons =
