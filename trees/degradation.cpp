@@ -114,20 +114,6 @@ std::optional<Season> season_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-std::string season_name(Season season) {
-  switch (season) {
-    case Season::spring:
-      return "spring";
-    case Season::summer:
-      return "summer";
-    case Season::autumn:
-      return "autumn";
-    case Season::winter:
-      return "winter";
-  }
-  return "summer";
-}
-
 DegradationFactors degradation_factors(double quality, Season season, bool evergreen) {
   DegradationFactors f;
   const bool leafy = evergreen || season == Season::summer || season == Season::autumn;

@@ -10,7 +10,6 @@
 #include <array>
 #include <cstddef>
 #include <optional>
-#include <string>
 #include <string_view>
 #include <vector>
 
@@ -20,7 +19,6 @@ namespace landsim::trees {
 
 enum class Season { spring, summer, autumn, winter };
 std::optional<Season> season_from_name(std::string_view name);
-std::string season_name(Season season);
 
 // The paper's general scaling factors, from the parent program's quality factor.
 struct DegradationFactors {
