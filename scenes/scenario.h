@@ -61,6 +61,8 @@ struct RenderSection {
   std::string season = "summer";     // spring, summer, autumn, winter (leafless)
   bool degradation = true;           // range degradation of trees (Weber & Penn section 5)
   double quality = 1.0;              // the paper's quality factor, (0, 1]
+  // The memory budget in bytes ("8 GB" in the file); empty: a share of physical memory.
+  std::optional<std::uint64_t> max_memory;
 };
 
 struct WindSettings {

@@ -196,6 +196,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.season = r.choice("season", {"spring", "summer", "autumn", "winter"}, "summer");
   s.degradation = r.boolean("degradation", true);
   s.quality = r.number("quality", Range{0.0, 1.0, true, false}, 1.0);
+  s.max_memory = r.byte_size("max_memory");
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");
     const toml::array* a = n->as_array();

@@ -8,83 +8,17 @@
 #include <map>
 #include <numbers>
 
-#include "core/counter_rng.h"
 #include "core/input_error.h"
-#include "featuremaps/class_mapping.h"
 #include "featuremaps/placement.h"
 #include "renderer/bark_texture.h"
 #include "renderer/sky.h"
+#include "scenes/detail/grass_cover.h"
+#include "scenes/detail/tree_variant.h"
+#include "scenes/detail/vegetation_input.h"
 #include "terrain/ground_mesh.h"
 
 namespace landsim::scenes {
 namespace {
-
-// Leaves transmit a little less than they reflect (typical broadleaf spectra).
-constexpr float kLeafTransmittanceRatio = 0.8f;
-
-featuremaps::VegetationMap vegetation_map(const FeatureMapSettings& f, std::uint64_t seed) {
-  if (!f.vegetation.empty()) return featuremaps::load_vegetation_map(f.vegetation, f.placement);
-  terrain::DemOptions options;
-  options.cell_size = f.placement.cell_size;
-  options.origin = f.placement.origin;
-  const terrain::ElevationGrid classes = terrain::load_elevation(f.classes, options);
-  return featuremaps::build_vegetation_map(classes, featuremaps::load_class_mapping(f.class_map),
-                                           seed);
-}
-
-std::uint64_t variant_seed(std::uint64_t seed, int bit, std::uint32_t variant) {
-  return hash_combine(hash_combine(seed, static_cast<std::uint64_t>(bit)), variant);
-}
-
-renderer::TreePrototype make_prototype(const SpeciesSettings& sp, std::uint32_t species_index,
-                                       std::uint32_t variant, double time, const Scenario& s) {
-  renderer::TreePrototype p;
-  const std::uint64_t vs = variant_seed(s.render.seed, sp.bit, variant);
-  const std::string& season = s.render.season;
-  trees::TreeOptions options;
-  options.seed = vs;
-  options.time = time;
-  options.quality = s.render.quality;
-  // Measured-growth ages: evenly from the youngest to the oldest across the variants.
-  if (sp.age_min >= 0.0)
-    options.age = sp.variants > 1
-                      ? sp.age_min + (sp.age_max - sp.age_min) * variant / (sp.variants - 1)
-                      : sp.age_min;
-  options.wind_speed = s.wind.speed;
-  options.wind_gust = s.wind.gust;
-  p.geometry = trees::generate(sp.species, options).geometry;
-  p.degradation = trees::degradation_factors(
-      s.render.quality, trees::season_from_name(season).value_or(trees::Season::summer),
-      sp.evergreen);
-  p.species = static_cast<std::uint16_t>(species_index);
-  p.bark_albedo = sp.species.colours.bark;
-  // Per-variant colour variation: one brightness factor and a slight hue shift.
-  const CounterRng r(vs, 17, 0);
-  const auto v = static_cast<float>(sp.colour_variation);
-  const Vec3f factor{1.0f + v * (2.0f * r.uniform(0) - 1.0f),
-                     1.0f + v * (2.0f * r.uniform(1) - 1.0f),
-                     1.0f + v * (2.0f * r.uniform(2) - 1.0f)};
-  const float brightness = 1.0f + v * (2.0f * r.uniform(3) - 1.0f);
-  p.leaf_reflectance = sp.species.colours.leaf * factor * brightness;
-  if (!sp.evergreen) {
-    if (season == "spring") {
-      p.leaf_reflectance = p.leaf_reflectance * Vec3f{1.25f, 1.3f, 0.7f};  // young, yellower green
-    } else if (season == "autumn") {
-      // Each variant turns its own way between yellow, orange and red.
-      static constexpr Vec3f kAutumn[3] = {
-          {0.45f, 0.35f, 0.05f}, {0.45f, 0.18f, 0.03f}, {0.35f, 0.07f, 0.03f}};
-      p.leaf_reflectance = kAutumn[std::min(2, static_cast<int>(r.uniform(4) * 3.0f))] * brightness;
-    } else if (season == "winter") {
-      p.geometry.group(trees::Group::leaves) = trees::GroupGeometry{};  // leafless
-    }
-  }
-  p.leaf_transmittance = p.leaf_reflectance * kLeafTransmittanceRatio;
-  const Vec3f& leaf = sp.species.colours.leaf;
-  const Vec3f& weak = sp.species.colours.leaf_weak;
-  p.leaf_weak_tint = {leaf.x > 0 ? weak.x / leaf.x : 1.0f, leaf.y > 0 ? weak.y / leaf.y : 1.0f,
-                      leaf.z > 0 ? weak.z / leaf.z : 1.0f};
-  return p;
-}
 
 void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
                const terrain::ElevationGrid& grid, double time, renderer::Scene& scene) {
@@ -115,7 +49,7 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   scene.prototypes.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     const auto [species, variant] = keys[i];
-    scene.prototypes[i] = make_prototype(s.species[species], species, variant, time, s);
+    scene.prototypes[i] = detail::make_tree_variant(s, species, variant, time);
   });
   for (std::size_t i = 0; i < keys.size(); ++i)
     scene.prototypes[i].bark_texture = textures[keys[i].first];
@@ -124,63 +58,6 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
     scene.instances.push_back({prototype_of.at({t.species, t.variant}),
                                Vec3{t.x, t.y, t.z} - scene.origin, t.rotation, t.scale});
   }
-}
-
-// A feature map that misses the terrain entirely is almost certainly misplaced.
-void check_overlap(const featuremaps::VegetationMap& map, const terrain::ElevationGrid& grid,
-                   const std::string& path) {
-  const std::array<double, 4> b = map.bounds();
-  const double west = grid.transform().origin_x, north = grid.transform().origin_y;
-  const double east = west + grid.cols() * grid.transform().cell_size_x;
-  const double south = north - grid.rows() * grid.transform().cell_size_y;
-  if (b[2] <= west || b[0] >= east || b[3] <= south || b[1] >= north) {
-    throw InputError(fmt::format(
-        "{}: feature map ({:.1f}, {:.1f})-({:.1f}, {:.1f}) does not overlap the terrain "
-        "({:.1f}, {:.1f})-({:.1f}, {:.1f}); check its georeferencing or [featuremaps] origin",
-        path, b[0], b[1], b[2], b[3], west, south, east, north));
-  }
-}
-
-// Grass patches cover square tiles of this side (metres).
-constexpr double kGrassTile = 4.0;
-
-void add_grass(const Scenario& s, const featuremaps::VegetationMap& map,
-               const terrain::ElevationGrid& grid, renderer::Scene& scene) {
-  renderer::GrassCover& cover = scene.grass;
-  std::array<bool, 3> defined{};
-  for (const GrassSettings& g : s.grass) {
-    renderer::GrassType& t = cover.types[static_cast<std::size_t>(g.type - 1)];
-    t.reflectance = g.colour;
-    t.transmittance = g.colour * kLeafTransmittanceRatio;
-    t.density_per_m2 = g.density_per_m2;
-    t.blade_length = g.blade_length;
-    t.blade_width = g.blade_width;
-    t.curvature = g.curvature;
-    defined[static_cast<std::size_t>(g.type - 1)] = true;
-  }
-  const std::array<double, 4> b = map.bounds();
-  cover.tile = kGrassTile;
-  cover.corner = Vec3{b[0], b[1], 0.0} - Vec3{scene.origin.x, scene.origin.y, 0.0};
-  cover.cols = static_cast<int>(std::ceil((b[2] - b[0]) / kGrassTile));
-  cover.rows = static_cast<int>(std::ceil((b[3] - b[1]) / kGrassTile));
-  const auto tiles = static_cast<std::size_t>(cover.cols) * static_cast<std::size_t>(cover.rows);
-  cover.type.assign(tiles, 0);
-  cover.height.assign(tiles, 0.0f);
-  cover.normal.assign(tiles, Vec3f{0.0f, 0.0f, 1.0f});
-  tbb::parallel_for(0, cover.rows, [&](int r) {
-    for (int c = 0; c < cover.cols; ++c) {
-      const double x = b[0] + (c + 0.5) * kGrassTile, y = b[1] + (r + 0.5) * kGrassTile;
-      const auto cell = map.cell_at(x, y);
-      const auto z = grid.height(x, y);
-      if (!cell || !z || cell->grass_type() == 0 ||
-          !defined[static_cast<std::size_t>(cell->grass_type() - 1)])
-        continue;
-      const std::size_t k = static_cast<std::size_t>(r) * cover.cols + c;
-      cover.type[k] = static_cast<std::uint8_t>(cell->grass_type());
-      cover.height[k] = static_cast<float>(*z - scene.origin.z);
-      cover.normal[k] = Vec3f(*grid.normal(x, y));
-    }
-  });
 }
 
 // A ground feature map: a raster whose non-zero cells carry one material.
@@ -286,21 +163,10 @@ renderer::Scene build_scene(const Scenario& scenario, double time) {
   scene.settings.exposure_ev = scenario.render.exposure_ev;
   scene.settings.degradation = scenario.render.degradation;
   if (scenario.featuremaps) {
-    const FeatureMapSettings& f = *scenario.featuremaps;
-    std::optional<featuremaps::VegetationMap> map;
-    if (!f.vegetation.empty() || !f.classes.empty()) {
-      map = vegetation_map(f, scenario.render.seed);
-      check_overlap(*map, grid, f.vegetation.empty() ? f.classes : f.vegetation);
-      if (const std::size_t multi = map->multi_species_cells(); multi > 0) {
-        spdlog::warn("{} feature-map cells select several tree species; the lowest bit wins",
-                     multi);
-      }
-    } else if (!scenario.species.empty() || !scenario.grass.empty()) {
-      throw InputError(scenario.source +
-                       ": [[species]] and [[grass]] need [featuremaps] vegetation or classes");
-    }
+    const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(scenario, grid);
     if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, time, scene);
-    if (map && !scenario.grass.empty()) add_grass(scenario, *map, grid, scene);
+    if (map && !scenario.grass.empty())
+      scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin);
     add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);
   }
   return scene;

@@ -4,20 +4,21 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iostream>
 
 #include "featuremaps/class_mapping.h"
 #include "scenes/default_scenario.h"
 #include "scenes/obj_export.h"
 #include "scenes/scene_builder.h"
-#include "scenes/scene_summary.h"
+#include "scenes/memory_estimate.h"
 #include "terrain/dem_loader.h"
 
 namespace landsim::app {
 
 CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
   CLI::App* cmd = app.add_subcommand(
-      "info", "Build a scenario's scene and describe it (instances, triangles, memory)");
+      "info", "Describe a scenario's scene without building it: expected trees, triangles, memory");
   cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
   return cmd;
@@ -26,18 +27,23 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
 int run_info(const InfoArgs& args) {
   const scenes::Scenario scenario =
       args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
-  const renderer::Scene scene = scenes::build_scene(scenario);
-  const scenes::SceneSummary s = scenes::summarize(scenario, scene);
+  const scenes::MemoryEstimate e = scenes::estimate_memory(scenario);
+  const auto count = [](double n) { return static_cast<std::size_t>(std::llround(n)); };
   if (args.json) {
     nlohmann::json per_species = nlohmann::json::object();
-    for (const auto& [name, n] : s.instances_per_species) per_species[name] = n;
-    std::cout << nlohmann::json{{"instances", s.instances},
+    for (const auto& [name, n] : e.instances_per_species) per_species[name] = count(n);
+    nlohmann::json parts = nlohmann::json::object();
+    for (const scenes::MemoryPart& p : e.parts) parts[p.name] = p.bytes;
+    parts["program"] = e.program_bytes;
+    std::cout << nlohmann::json{{"instances", count(e.instances)},
                                 {"instances_per_species", per_species},
-                                {"unique_variants", s.unique_variants},
-                                {"triangles_stored", s.triangles_stored},
-                                {"triangles_instanced", s.triangles_instanced},
-                                {"grass_tiles", s.grass_tiles},
-                                {"memory_estimate_bytes", s.memory_estimate_bytes},
+                                {"unique_variants", e.unique_variants},
+                                {"triangles_stored", count(e.triangles_stored)},
+                                {"triangles_instanced", count(e.triangles_instanced)},
+                                {"grass_tiles", e.grass_tiles},
+                                {"grass_patches_drawn", e.grass_patches_drawn},
+                                {"memory_estimate_bytes", e.total_bytes()},
+                                {"memory_parts_bytes", parts},
                                 // The image set: what a job array needs to size itself.
                                 {"views", scenario.views.size()},
                                 {"frames", scenario.render.frames.size()},
@@ -46,14 +52,18 @@ int run_info(const InfoArgs& args) {
               << "\n";
     return 0;
   }
-  std::cout << fmt::format("{}\n  instances           {}\n", scenario.source, s.instances);
-  for (const auto& [name, n] : s.instances_per_species)
-    std::cout << fmt::format("    {:<18}{}\n", name, n);
+  std::cout << fmt::format("{}\n  trees (expected)    {}\n", scenario.source, count(e.instances));
+  for (const auto& [name, n] : e.instances_per_species)
+    std::cout << fmt::format("    {:<20}{}\n", name, count(n));
   std::cout << fmt::format(
       "  unique variants     {}\n  triangles stored    {}\n  triangles instanced {}\n"
-      "  grass tiles         {}\n  memory estimate     {:.1f} MB\n",
-      s.unique_variants, s.triangles_stored, s.triangles_instanced, s.grass_tiles,
-      static_cast<double>(s.memory_estimate_bytes) / 1e6);
+      "  grass tiles         {}\n  memory estimate     {:.0f} MB at the peak\n",
+      e.unique_variants, count(e.triangles_stored), count(e.triangles_instanced), e.grass_tiles,
+      static_cast<double>(e.total_bytes()) / 1e6);
+  std::cout << fmt::format("    {:<38}{:>6.0f} MB\n", "program",
+                           static_cast<double>(e.program_bytes) / 1e6);
+  for (const scenes::MemoryPart& p : e.parts)
+    std::cout << fmt::format("    {:<38}{:>6.0f} MB\n", p.name, static_cast<double>(p.bytes) / 1e6);
   return 0;
 }
 

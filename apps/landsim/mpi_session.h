@@ -16,6 +16,8 @@ class MpiSession {
   int rank() const { return rank_; }
   int size() const { return size_; }
   bool distributed() const { return size_ > 1; }
+  // Ranks on this machine (they share its memory).
+  int ranks_on_node() const { return ranks_on_node_; }
   // "rank 3 of 8: ", or "" in a world of one: the prefix of logs and messages.
   std::string label() const;
   // Ends every rank's process (mpirun then fails the job) after a fatal error on this one.
@@ -24,6 +26,7 @@ class MpiSession {
  private:
   int rank_ = 0;
   int size_ = 1;
+  int ranks_on_node_ = 1;
   bool initialised_ = false;
 };
 

@@ -13,11 +13,13 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "core/process_memory.h"
 #include "mpi_session.h"
 #include "renderer/camera.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
 #include "scenes/default_scenario.h"
+#include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
 #ifdef LANDSIM_HAVE_MPI
 #include "distributed_render.h"
@@ -100,6 +102,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--task-index", args.task_index,
                   "Render only image N of the set (frame-major), e.g. SLURM_ARRAY_TASK_ID")
       ->check(CLI::Range(0, 1000000));
+  cmd->add_option("--max-memory", args.max_memory,
+                  "Refuse a scene estimated to need more, e.g. 8GB (default: [render] "
+                  "max_memory, else 80% of physical memory shared by the ranks on a node)")
+      ->transform(CLI::AsSizeValue(true));
   cmd->add_flag("--check", args.check,
                 "Render nothing: check every image of the set is in --out, write the manifest");
   return cmd;
@@ -179,6 +185,37 @@ int check_image_set(const scenes::Scenario& scenario, const std::filesystem::pat
 
 }  // namespace
 
+namespace {
+
+// The memory budget, before anything expensive is built: the estimate against --max-memory,
+// [render] max_memory, or a share of this machine's memory (InputError when over).
+scenes::MemoryEstimate check_memory(const scenes::Scenario& scenario, const RenderArgs& args,
+                                    const MpiSession* session) {
+  const auto start = std::chrono::steady_clock::now();
+  scenes::MemoryEstimate estimate = scenes::estimate_memory(scenario);
+  std::size_t budget = 0;
+  std::string source;
+  if (args.max_memory) {
+    budget = *args.max_memory;
+    source = "--max-memory";
+  } else if (scenario.render.max_memory) {
+    budget = *scenario.render.max_memory;
+    source = scenario.source + ": [render] max_memory";
+  } else {
+    const int ranks = session != nullptr ? session->ranks_on_node() : 1;
+    budget = scenes::default_memory_budget(ranks);
+    source = ranks > 1 ? fmt::format("this machine's memory shared by {} ranks", ranks)
+                       : std::string("this machine's memory (80%)");
+  }
+  scenes::check_memory_budget(estimate, budget, source);
+  spdlog::info("memory: an estimated {:.0f} MB of a {:.0f} MB budget ({:.2f} s)",
+               static_cast<double>(estimate.total_bytes()) / 1e6,
+               static_cast<double>(budget) / 1e6, seconds_since(start));
+  return estimate;
+}
+
+}  // namespace
+
 int run_render(const RenderArgs& args) {
   scenes::Scenario scenario =
       args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
@@ -196,6 +233,7 @@ int run_render(const RenderArgs& args) {
   // Without wind every frame shows the same geometry: build the scene once.
   const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
   const auto start = std::chrono::steady_clock::now();
+  const scenes::MemoryEstimate estimate = check_memory(scenario, args, session);
   const std::size_t first_frame =
       args.task_index ? static_cast<std::size_t>(*args.task_index) / scenario.views.size() : 0;
   std::optional<renderer::Scene> scene = scenes::build_scene(scenario, frames[first_frame]);
@@ -280,9 +318,18 @@ int run_render(const RenderArgs& args) {
       }
     }
   }
+  // The estimate's honesty, visible on every render (docs/PERFORMANCE.md "Memory budget").
+  spdlog::info("peak memory {:.0f} MB (estimated {:.0f} MB)",
+               static_cast<double>(peak_resident_bytes()) / 1e6,
+               static_cast<double>(estimate.total_bytes()) / 1e6);
   if (!writer) return 0;
   if (!args.task_index) write_manifest(out_dir / "manifest.json", scenario, manifest_images);
-  if (args.json) std::cout << nlohmann::json{{"images", images}}.dump() << "\n";
+  if (args.json)
+    std::cout << nlohmann::json{{"images", images},
+                                {"memory_estimate_bytes", estimate.total_bytes()},
+                                {"peak_memory_bytes", peak_resident_bytes()}}
+                     .dump()
+              << "\n";
   return 0;
 }
 

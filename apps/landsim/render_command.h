@@ -1,7 +1,9 @@
 #pragma once
 // `landsim render [SCENARIO] [--out DIR] [--view NAME] [--spp N] [--threads N]
-//                 [--width W] [--height H] [--json] [--resume] [--task-index N] [--check]`
+//                 [--width W] [--height H] [--json] [--resume] [--task-index N] [--check]
+//                 [--max-memory SIZE]`
 // Under mpirun every rank renders each image's tiles; rank 0 writes (docs/CLUSTER.md).
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -26,6 +28,9 @@ struct RenderArgs {
   std::optional<int> task_index;
   // Render nothing: check that every image of the set is in --out, then write the manifest.
   bool check = false;
+  // Refuse, before building anything, a scene estimated to need more (bytes); overrides
+  // [render] max_memory.
+  std::optional<std::uint64_t> max_memory;
 };
 
 // Registers the subcommand; `args` is filled when it parses.

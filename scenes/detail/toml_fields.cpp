@@ -1,5 +1,8 @@
 #include "scenes/detail/toml_fields.h"
 
+#include <CLI/Error.hpp>
+#include <CLI/Validators.hpp>
+
 #include <cmath>
 #include <sstream>
 
@@ -133,6 +136,20 @@ std::string TableReader::string(std::string_view key, std::optional<std::string>
   }
   if (!n->is_string()) fail(key, "expected a string, got " + type_name(*n));
   return std::string(*n->value<std::string_view>());
+}
+
+std::optional<std::uint64_t> TableReader::byte_size(std::string_view key) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  std::string text;
+  if (n->is_integer()) text = std::to_string(*n->value<std::int64_t>());
+  if (n->is_string()) text = std::string(*n->value<std::string_view>());
+  const std::string error = text.empty() ? "empty" : CLI::AsSizeValue(true)(text);
+  if (!error.empty() || text.empty() || text.front() == '-')
+    fail(key, "expected a size such as \"8 GB\" or \"512 MiB\" (or a number of bytes)");
+  const std::uint64_t bytes = std::stoull(text);
+  if (bytes == 0) fail(key, "expected a size above zero");
+  return bytes;
 }
 
 bool TableReader::boolean(std::string_view key, bool fallback) {

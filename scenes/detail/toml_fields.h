@@ -36,6 +36,9 @@ class TableReader {
                        std::optional<std::int64_t> fallback = std::nullopt);
   std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt);
   bool boolean(std::string_view key, bool fallback);
+  // A size in bytes with a unit ("8 GB", "512 MiB"; SI units are powers of 1000), read by
+  // CLI11's converter so the file and the command line agree.
+  std::optional<std::uint64_t> byte_size(std::string_view key);
   // One of `choices`.
   std::string choice(std::string_view key, const std::vector<std::string>& choices,
                      std::string fallback);

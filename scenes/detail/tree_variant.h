@@ -1,0 +1,18 @@
+#pragma once
+// One seeded variant of a species as the renderer draws it: its geometry at a frame time,
+// its season's colours and its degradation factors. Shared by the scene builder and the
+// memory estimate, which generates one variant per species to size the rest.
+#include <cstdint>
+
+#include "renderer/scene.h"
+#include "scenes/scenario.h"
+
+namespace landsim::scenes::detail {
+
+// Leaves transmit a little less than they reflect (typical broadleaf spectra).
+inline constexpr float kLeafTransmittanceRatio = 0.8f;
+
+renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t species_index,
+                                          std::uint32_t variant, double time);
+
+}  // namespace landsim::scenes::detail

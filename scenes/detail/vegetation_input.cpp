@@ -1,0 +1,55 @@
+#include "scenes/detail/vegetation_input.h"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "core/input_error.h"
+#include "featuremaps/class_mapping.h"
+
+namespace landsim::scenes::detail {
+namespace {
+
+featuremaps::VegetationMap vegetation_map(const FeatureMapSettings& f, std::uint64_t seed) {
+  if (!f.vegetation.empty()) return featuremaps::load_vegetation_map(f.vegetation, f.placement);
+  terrain::DemOptions options;
+  options.cell_size = f.placement.cell_size;
+  options.origin = f.placement.origin;
+  const terrain::ElevationGrid classes = terrain::load_elevation(f.classes, options);
+  return featuremaps::build_vegetation_map(classes, featuremaps::load_class_mapping(f.class_map),
+                                           seed);
+}
+
+// A feature map that misses the terrain entirely is almost certainly misplaced.
+void check_overlap(const featuremaps::VegetationMap& map, const terrain::ElevationGrid& grid,
+                   const std::string& path) {
+  const std::array<double, 4> b = map.bounds();
+  const double west = grid.transform().origin_x, north = grid.transform().origin_y;
+  const double east = west + grid.cols() * grid.transform().cell_size_x;
+  const double south = north - grid.rows() * grid.transform().cell_size_y;
+  if (b[2] <= west || b[0] >= east || b[3] <= south || b[1] >= north) {
+    throw InputError(fmt::format(
+        "{}: feature map ({:.1f}, {:.1f})-({:.1f}, {:.1f}) does not overlap the terrain "
+        "({:.1f}, {:.1f})-({:.1f}, {:.1f}); check its georeferencing or [featuremaps] origin",
+        path, b[0], b[1], b[2], b[3], west, south, east, north));
+  }
+}
+
+}  // namespace
+
+std::optional<featuremaps::VegetationMap> scene_vegetation(const Scenario& s,
+                                                            const terrain::ElevationGrid& grid) {
+  if (!s.featuremaps) return std::nullopt;
+  const FeatureMapSettings& f = *s.featuremaps;
+  if (f.vegetation.empty() && f.classes.empty()) {
+    if (!s.species.empty() || !s.grass.empty())
+      throw InputError(s.source + ": [[species]] and [[grass]] need [featuremaps] vegetation or classes");
+    return std::nullopt;
+  }
+  featuremaps::VegetationMap map = vegetation_map(f, s.render.seed);
+  check_overlap(map, grid, f.vegetation.empty() ? f.classes : f.vegetation);
+  if (const std::size_t multi = map.multi_species_cells(); multi > 0)
+    spdlog::warn("{} feature-map cells select several tree species; the lowest bit wins", multi);
+  return map;
+}
+
+}  // namespace landsim::scenes::detail

@@ -1,0 +1,289 @@
+#include "scenes/memory_estimate.h"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/input_error.h"
+#include "core/process_memory.h"
+#include "featuremaps/placement.h"
+#include "renderer/grass_patch.h"
+#include "renderer/memory_model.h"
+#include "scenes/detail/grass_cover.h"
+#include "scenes/detail/tree_variant.h"
+#include "scenes/detail/vegetation_input.h"
+#include "terrain/dem_loader.h"
+#include "trees/degradation.h"
+
+namespace landsim::scenes {
+namespace {
+
+namespace mm = renderer::memory;
+
+template <typename T>
+double bytes_of(const std::vector<T>& v) {
+  return static_cast<double>(v.capacity() * sizeof(T));
+}
+
+// One generated variant: our arrays' bytes and its primitives by kind.
+struct VariantSize {
+  double bytes = 0.0;
+  double triangles = 0.0, segments = 0.0, discs = 0.0;
+};
+
+VariantSize variant_size(const trees::TreeGeometry& g) {
+  VariantSize v;
+  for (const trees::GroupGeometry& group : g.groups) {
+    v.bytes += bytes_of(group.triangles.vertices) + bytes_of(group.triangles.normals) +
+               bytes_of(group.triangles.uvs) + bytes_of(group.triangles.indices) +
+               bytes_of(group.lines.points) + bytes_of(group.lines.radii) +
+               bytes_of(group.lines.first) + bytes_of(group.points.centres) +
+               bytes_of(group.points.radii) + bytes_of(group.points.normals) +
+               bytes_of(group.item_triangle_end) + bytes_of(group.item_line_end) +
+               bytes_of(group.item_point_end) + bytes_of(group.item_vigour);
+    v.triangles += static_cast<double>(group.triangles.triangle_count());
+    v.segments += static_cast<double>(group.lines.segment_count());
+    v.discs += static_cast<double>(group.points.point_count());
+  }
+  return v;
+}
+
+// The ground mesh: one vertex per valid cell, two triangles per quad of four valid corners
+// (the odd three-corner triangle is not worth counting).
+struct GroundSize {
+  double cells = 0.0, vertices = 0.0, triangles = 0.0;
+};
+
+GroundSize ground_size(const terrain::ElevationGrid& grid) {
+  GroundSize g;
+  g.cells = static_cast<double>(grid.cols()) * grid.rows();
+  g.vertices = g.cells - static_cast<double>(grid.nodata_count());
+  for (int r = 0; r + 1 < grid.rows(); ++r)
+    for (int c = 0; c + 1 < grid.cols(); ++c)
+      if (grid.valid(c, r) && grid.valid(c + 1, r) && grid.valid(c, r + 1) &&
+          grid.valid(c + 1, r + 1))
+        g.triangles += 2.0;
+  return g;
+}
+
+// Where each species stands: its feature-map area (m^2, cells selecting its bit over
+// terrain) and, per view, the distance from the camera to its nearest cell.
+struct SpeciesExtent {
+  double area = 0.0;
+  std::vector<double> nearest;  // per view, metres
+};
+
+std::vector<SpeciesExtent> species_extents(const Scenario& s,
+                                           const featuremaps::VegetationMap& map,
+                                           const terrain::ElevationGrid& grid) {
+  std::vector<SpeciesExtent> extent(s.species.size());
+  for (SpeciesExtent& e : extent) e.nearest.assign(s.views.size(), 1e300);
+  const terrain::GeoTransform& t = map.transform();
+  const double cell_area = t.cell_size_x * t.cell_size_y;
+  const double half_diagonal = 0.5 * std::hypot(t.cell_size_x, t.cell_size_y);
+  for (int r = 0; r < map.rows(); ++r)
+    for (int c = 0; c < map.cols(); ++c) {
+      const std::optional<int> bit = map.at(c, r).species_bit();
+      if (!bit) continue;
+      const double x = t.origin_x + (c + 0.5) * t.cell_size_x;
+      const double y = t.origin_y - (r + 0.5) * t.cell_size_y;
+      const std::optional<double> z = grid.height(x, y);
+      if (!z) continue;
+      for (std::size_t k = 0; k < s.species.size(); ++k) {
+        if (s.species[k].bit != *bit) continue;
+        extent[k].area += cell_area;
+        for (std::size_t v = 0; v < s.views.size(); ++v) {
+          const double d = length(Vec3{x, y, *z} - s.views[v].position) - half_diagonal;
+          extent[k].nearest[v] = std::min(extent[k].nearest[v], std::max(d, 1.0));
+        }
+      }
+    }
+  return extent;
+}
+
+// Primitives Embree holds for a variant drawn down to range r2 (Weber & Penn section 5): the
+// detail of its nearest tree. Farther trees use lower levels, which share the buffers and
+// add smaller BVHs (kFartherLevels).
+double embree_level_bytes(const renderer::TreePrototype& p, std::optional<double> r2) {
+  const trees::TreeDetail detail =
+      r2 ? trees::tree_detail(p.geometry, *r2, p.degradation) : trees::full_detail(p.geometry);
+  double bytes = 0.0;
+  for (int g = 0; g < trees::kGroupCount; ++g) {
+    const trees::GroupDetail& d = detail.groups[static_cast<std::size_t>(g)];
+    bytes += d.triangles * mm::kEmbreeTreeTriangle;
+    const double far = static_cast<double>(d.far_only_end - d.far_only_first);
+    bytes += far * (g == static_cast<int>(trees::Group::leaves) ? mm::kEmbreeDisc
+                                                                : mm::kEmbreeCurveSegment);
+  }
+  return bytes;
+}
+
+// Distinct variants among n trees each picking one of v at random (expected value).
+double variants_in_use(double n, int v) {
+  return v * (1.0 - std::pow(1.0 - 1.0 / v, n));
+}
+
+// Top-level entries per tree with range degradation: only trees at least
+// kPerPixelBlendMinPixels tall on screen are drawn at two levels with complementary ray
+// masks (renderer/stochastic_lod.h); the rest take one. Measured on the calibration scenes
+// (bench/memory.sh): 1.000 to 1.001 entries per tree.
+constexpr double kEntriesPerDegradedTree = 1.0;
+// The levels below a degraded variant's nearest one: each smaller than the last.
+constexpr double kFartherLevels = 1.5;
+// Generating a variant holds its skeleton and the mesher's working arrays besides the
+// geometry it returns (measured on the calibration scenes).
+constexpr double kGenerationOverhead = 0.2;
+// Placement holds every tree twice while rows are concatenated (PlacedTree, 48 bytes).
+constexpr double kPlacementBytesPerTree = 2.0 * sizeof(featuremaps::PlacedTree);
+
+struct Parts {
+  double scene_variants = 0.0, scene_instances = 0.0, scene_ground = 0.0, scene_grass = 0.0;
+  double build_extra = 0.0;  // grid, map, placement and generation while the scene is built
+  double view_instances = 0.0, view_ground = 0.0;
+  // The largest view's (views are rendered one after the other).
+  double view_prototypes = 0.0, view_grass = 0.0, view_film = 0.0;
+};
+
+std::string mb(double bytes) { return fmt::format("{:.0f} MB", bytes / 1e6); }
+
+}  // namespace
+
+std::size_t MemoryEstimate::total_bytes() const {
+  std::size_t total = program_bytes;
+  for (const MemoryPart& p : parts) total += p.bytes;
+  return total;
+}
+
+MemoryEstimate estimate_memory(const Scenario& s) {
+  MemoryEstimate e;
+  e.program_bytes = resident_bytes();
+  const terrain::ElevationGrid grid = terrain::load_elevation(s.terrain.elevation, s.terrain.dem);
+  const Vec3 origin = grid.centre();
+  const GroundSize ground = ground_size(grid);
+  Parts p;
+  p.scene_ground = ground.vertices * 24.0 + ground.triangles * (12.0 + 1.0);
+  p.view_ground = ground.triangles * mm::kEmbreeGridTriangle;
+  p.build_extra = ground.cells * 4.0;
+  e.triangles_stored = e.triangles_instanced = ground.triangles;
+
+  const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(s, grid);
+  renderer::GrassCover cover;
+  std::vector<SpeciesExtent> extent(s.species.size());
+  std::vector<double> trees(s.species.size(), 0.0);
+  if (map) {
+    p.build_extra += static_cast<double>(map->cols()) * map->rows() * (2.0 + 4.0);
+    extent = species_extents(s, *map, grid);
+    for (std::size_t k = 0; k < s.species.size(); ++k) {
+      trees[k] = extent[k].area * s.species[k].density_per_ha / 1e4;
+      e.instances += trees[k];
+      e.instances_per_species[s.species[k].species.name] += trees[k];
+    }
+    if (!s.grass.empty()) cover = detail::grass_cover(s, *map, grid, origin);
+  }
+  // One variant per species stands for all of its variants.
+  std::vector<std::optional<renderer::TreePrototype>> variant(s.species.size());
+  tbb::parallel_for(std::size_t{0}, s.species.size(), [&](std::size_t k) {
+    if (trees[k] >= 0.5)
+      variant[k] = detail::make_tree_variant(s, static_cast<std::uint32_t>(k), 0,
+                                             s.render.frames.front());
+  });
+  const bool degrade = s.render.degradation;
+  std::vector<renderer::View> views;
+  for (const ViewSettings& v : s.views)
+    views.push_back({v.name, v.position - origin, v.target - origin, v.fov_y_deg, v.width,
+                     v.height});
+  std::vector<double> view_prototypes(views.size(), 0.0);
+  for (std::size_t k = 0; k < s.species.size(); ++k) {
+    if (!variant[k]) continue;
+    const VariantSize size = variant_size(variant[k]->geometry);
+    const double used = variants_in_use(trees[k], s.species[k].variants);
+    e.unique_variants += static_cast<std::size_t>(std::ceil(used - 1e-9));
+    p.scene_variants += used * size.bytes;
+    e.triangles_stored += used * size.triangles;
+    e.triangles_instanced += trees[k] * size.triangles;
+    for (std::size_t v = 0; v < views.size(); ++v) {
+      const double r2 =
+          views[v].detail_range_scale *
+          trees::calibrated_range(extent[k].nearest[v], views[v].height, views[v].fov_y_deg);
+      view_prototypes[v] += used * (degrade ? kFartherLevels * embree_level_bytes(*variant[k], r2)
+                                            : embree_level_bytes(*variant[k], std::nullopt));
+    }
+  }
+  p.build_extra += kGenerationOverhead * p.scene_variants;
+  p.scene_instances = e.instances * sizeof(renderer::TreeInstance);
+  p.build_extra += e.instances * kPlacementBytesPerTree;
+  p.view_instances = e.instances * kEntriesPerDegradedTree *
+                     (mm::kEmbreeInstance + mm::kTopLevelRecord);
+  p.scene_grass = static_cast<double>(cover.type.size()) * (1.0 + 4.0 + 12.0);
+  for (std::uint8_t t : cover.type) e.grass_tiles += t != 0 ? 1 : 0;
+  // Views are rendered one after the other: the largest sets the peak.
+  double largest_view = -1.0;
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    std::size_t patches = 0;
+    if (cover.cols > 0)
+      renderer::for_each_grass_patch(cover, views[v], degrade,
+                                     [&](const renderer::GrassPatchPlacement&) { ++patches; });
+    e.grass_patches_drawn = std::max(e.grass_patches_drawn, patches);
+    const double grass = static_cast<double>(patches) * (mm::kEmbreeInstance + mm::kTopLevelRecord);
+    const double film = static_cast<double>(views[v].width) * views[v].height * mm::kFilmPixel;
+    if (view_prototypes[v] + grass + film > largest_view) {
+      largest_view = view_prototypes[v] + grass + film;
+      p.view_prototypes = view_prototypes[v];
+      p.view_grass = grass;
+      p.view_film = film;
+    }
+  }
+
+  const auto part = [&](const std::string& name, double bytes, const std::string& remedy) {
+    if (bytes >= 1.0) e.parts.push_back({name, static_cast<std::size_t>(bytes), remedy});
+  };
+  part("tree variants", p.scene_variants + p.view_prototypes,
+       degrade ? "fewer variants per species, or a lower [render] quality"
+               : "[render] degradation = true (far trees drawn with fewer primitives), or "
+                 "fewer variants per species");
+  part("tree instances", p.scene_instances + p.view_instances,
+       "a lower density_per_ha, or a smaller feature map");
+  part("ground", p.scene_ground + p.view_ground, "a coarser elevation grid");
+  part("grass", p.scene_grass + p.view_grass, "fewer [[grass]] types, or grass on less of the map");
+  part("image", p.view_film, "a smaller --width/--height");
+  // Building the scene holds the terrain grid, the map and the placed trees besides; the
+  // peak is whichever phase is larger.
+  const double view_total =
+      p.view_prototypes + p.view_instances + p.view_ground + p.view_grass + p.view_film;
+  if (p.build_extra > view_total)
+    part("scene building (grid, map, placement)", p.build_extra - view_total,
+         "a smaller elevation grid or feature map, or fewer trees");
+  std::sort(e.parts.begin(), e.parts.end(),
+            [](const MemoryPart& a, const MemoryPart& b) { return a.bytes > b.bytes; });
+  return e;
+}
+
+std::size_t default_memory_budget(int processes_on_node) {
+  std::size_t available = physical_memory_bytes();
+  if (const std::optional<std::size_t> limit = address_space_limit())
+    available = std::min(available, *limit);
+  return static_cast<std::size_t>(0.8 * static_cast<double>(available)) /
+         static_cast<std::size_t>(std::max(1, processes_on_node));
+}
+
+void check_memory_budget(const MemoryEstimate& estimate, std::size_t budget_bytes,
+                         const std::string& budget_source) {
+  const std::size_t total = estimate.total_bytes();
+  if (total <= budget_bytes) return;
+  std::string largest;
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, estimate.parts.size()); ++i) {
+    const MemoryPart& part = estimate.parts[i];
+    largest += fmt::format("\n  {} {} (smaller with {})", mb(static_cast<double>(part.bytes)),
+                           part.name, part.remedy);
+  }
+  throw InputError(fmt::format(
+      "the scene needs an estimated {} but {} allows {}; the largest parts:{}\nnothing was "
+      "rendered (the estimate: `landsim info`; docs/PERFORMANCE.md \"Memory budget\")",
+      mb(static_cast<double>(total)), budget_source, mb(static_cast<double>(budget_bytes)),
+      largest));
+}
+
+}  // namespace landsim::scenes
