@@ -40,7 +40,8 @@ RTCScene triangles(RTCDevice device, std::size_t n) {
   auto* nrm = static_cast<float*>(
       buffer(g, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, RTC_FORMAT_FLOAT3, 12, verts));
   for (std::size_t i = 0; i < 3 * verts; ++i) nrm[i] = 0.577f;
-  auto* idx = static_cast<std::uint32_t*>(buffer(g, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT3, 12, n));
+  auto* idx =
+      static_cast<std::uint32_t*>(buffer(g, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT3, 12, n));
   for (std::size_t t = 0; t < n; ++t) {
     idx[3 * t] = static_cast<std::uint32_t>(t);
     idx[3 * t + 1] = static_cast<std::uint32_t>(t + 1);
@@ -66,11 +67,13 @@ RTCScene float4_prims(RTCDevice device, RTCGeometryType type, std::size_t n, boo
     v[4 * i + 3] = 0.02f;
   }
   if (type == RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT) {
-    auto* nrm = static_cast<float*>(buffer(g, RTC_BUFFER_TYPE_NORMAL, RTC_FORMAT_FLOAT3, 12, points));
+    auto* nrm =
+        static_cast<float*>(buffer(g, RTC_BUFFER_TYPE_NORMAL, RTC_FORMAT_FLOAT3, 12, points));
     for (std::size_t i = 0; i < 3 * points; ++i) nrm[i] = 0.577f;
   }
   if (indexed) {
-    auto* idx = static_cast<std::uint32_t*>(buffer(g, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT, 4, n));
+    auto* idx =
+        static_cast<std::uint32_t*>(buffer(g, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT, 4, n));
     for (std::size_t i = 0; i < n; ++i) idx[i] = static_cast<std::uint32_t>(i);
   }
   rtcCommitGeometry(g);
@@ -87,8 +90,18 @@ RTCScene instances(RTCDevice device, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(g, proto);
-    const float m[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, static_cast<float>(i % 1000) * 5.0f,
-                         static_cast<float>(i / 1000) * 5.0f, 0};
+    const float m[12] = {1,
+                         0,
+                         0,
+                         0,
+                         1,
+                         0,
+                         0,
+                         0,
+                         1,
+                         static_cast<float>(i % 1000) * 5.0f,
+                         static_cast<float>(i / 1000) * 5.0f,
+                         0};
     rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
     rtcSetGeometryMask(g, 0xffffffffu);
     rtcCommitGeometry(g);

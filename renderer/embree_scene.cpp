@@ -263,7 +263,9 @@ struct EmbreeScene::Impl {
 EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make_unique<Impl>()) {
   impl_->source = &scene;
   impl_->device = rtcNewDevice(nullptr);
-  if (impl_->device == nullptr) throw std::runtime_error("Embree: could not create a device");
+  if (impl_->device == nullptr)
+    throw std::runtime_error("Embree failed while creating its device: " +
+                             detail::embree_error_name(rtcGetDeviceError(nullptr)));
   impl_->errors.watch(impl_->device);
   impl_->scene = rtcNewScene(impl_->device);
   if (scene.ground.mesh.triangle_count() > 0) {

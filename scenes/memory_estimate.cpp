@@ -76,8 +76,7 @@ struct SpeciesExtent {
   std::vector<double> nearest;  // per view, metres
 };
 
-std::vector<SpeciesExtent> species_extents(const Scenario& s,
-                                           const featuremaps::VegetationMap& map,
+std::vector<SpeciesExtent> species_extents(const Scenario& s, const featuremaps::VegetationMap& map,
                                            const terrain::ElevationGrid& grid) {
   std::vector<SpeciesExtent> extent(s.species.size());
   for (SpeciesExtent& e : extent) e.nearest.assign(s.views.size(), 1e300);
@@ -122,9 +121,7 @@ double embree_level_bytes(const renderer::TreePrototype& p, std::optional<double
 }
 
 // Distinct variants among n trees each picking one of v at random (expected value).
-double variants_in_use(double n, int v) {
-  return v * (1.0 - std::pow(1.0 - 1.0 / v, n));
-}
+double variants_in_use(double n, int v) { return v * (1.0 - std::pow(1.0 - 1.0 / v, n)); }
 
 // Top-level entries per tree with range degradation: only trees at least
 // kPerPixelBlendMinPixels tall on screen are drawn at two levels with complementary ray
@@ -159,6 +156,7 @@ std::size_t MemoryEstimate::total_bytes() const {
 
 MemoryEstimate estimate_memory(const Scenario& s) {
   MemoryEstimate e;
+  e.scenario = s.source;
   e.program_bytes = resident_bytes();
   const terrain::ElevationGrid grid = terrain::load_elevation(s.terrain.elevation, s.terrain.dem);
   const Vec3 origin = grid.centre();
@@ -187,14 +185,14 @@ MemoryEstimate estimate_memory(const Scenario& s) {
   std::vector<std::optional<renderer::TreePrototype>> variant(s.species.size());
   tbb::parallel_for(std::size_t{0}, s.species.size(), [&](std::size_t k) {
     if (trees[k] >= 0.5)
-      variant[k] = detail::make_tree_variant(s, static_cast<std::uint32_t>(k), 0,
-                                             s.render.frames.front());
+      variant[k] =
+          detail::make_tree_variant(s, static_cast<std::uint32_t>(k), 0, s.render.frames.front());
   });
   const bool degrade = s.render.degradation;
   std::vector<renderer::View> views;
   for (const ViewSettings& v : s.views)
-    views.push_back({v.name, v.position - origin, v.target - origin, v.fov_y_deg, v.width,
-                     v.height});
+    views.push_back(
+        {v.name, v.position - origin, v.target - origin, v.fov_y_deg, v.width, v.height});
   std::vector<double> view_prototypes(views.size(), 0.0);
   for (std::size_t k = 0; k < s.species.size(); ++k) {
     if (!variant[k]) continue;
@@ -215,8 +213,8 @@ MemoryEstimate estimate_memory(const Scenario& s) {
   p.build_extra += kGenerationOverhead * p.scene_variants;
   p.scene_instances = e.instances * sizeof(renderer::TreeInstance);
   p.build_extra += e.instances * kPlacementBytesPerTree;
-  p.view_instances = e.instances * kEntriesPerDegradedTree *
-                     (mm::kEmbreeInstance + mm::kTopLevelRecord);
+  p.view_instances =
+      e.instances * kEntriesPerDegradedTree * (mm::kEmbreeInstance + mm::kTopLevelRecord);
   p.scene_grass = static_cast<double>(cover.type.size()) * (1.0 + 4.0 + 12.0);
   for (std::uint8_t t : cover.type) e.grass_tiles += t != 0 ? 1 : 0;
   // Views are rendered one after the other: the largest sets the peak.
@@ -244,8 +242,8 @@ MemoryEstimate estimate_memory(const Scenario& s) {
        degrade ? "fewer variants per species, or a lower [render] quality"
                : "[render] degradation = true (far trees drawn with fewer primitives), or "
                  "fewer variants per species");
-  part("tree instances", p.scene_instances + p.view_instances,
-       "a lower density_per_ha, or a smaller feature map");
+  part(fmt::format("tree instances ({:.0f} trees)", e.instances),
+       p.scene_instances + p.view_instances, "a lower density_per_ha, or a smaller feature map");
   part("ground", p.scene_ground + p.view_ground, "a coarser elevation grid");
   part("grass", p.scene_grass + p.view_grass, "fewer [[grass]] types, or grass on less of the map");
   part("image", p.view_film, "a smaller --width/--height");
@@ -261,12 +259,20 @@ MemoryEstimate estimate_memory(const Scenario& s) {
   return e;
 }
 
-std::size_t default_memory_budget(int processes_on_node) {
+MemoryBudget default_memory_budget(int ranks_on_node) {
   std::size_t available = physical_memory_bytes();
-  if (const std::optional<std::size_t> limit = address_space_limit())
-    available = std::min(available, *limit);
-  return static_cast<std::size_t>(0.8 * static_cast<double>(available)) /
-         static_cast<std::size_t>(std::max(1, processes_on_node));
+  std::string what = "this machine's memory";
+  if (const std::optional<std::size_t> limit = address_space_limit(); limit && *limit < available) {
+    available = *limit;
+    what = "the address-space limit (ulimit -v)";
+  }
+  const int ranks = std::max(1, ranks_on_node);
+  MemoryBudget budget;
+  budget.bytes = static_cast<std::size_t>(0.8 * static_cast<double>(available)) /
+                 static_cast<std::size_t>(ranks);
+  budget.source = ranks > 1 ? fmt::format("80% of {} shared by {} ranks", what, ranks)
+                            : fmt::format("80% of {}", what);
+  return budget;
 }
 
 void check_memory_budget(const MemoryEstimate& estimate, std::size_t budget_bytes,
@@ -280,10 +286,10 @@ void check_memory_budget(const MemoryEstimate& estimate, std::size_t budget_byte
                            part.name, part.remedy);
   }
   throw InputError(fmt::format(
-      "the scene needs an estimated {} but {} allows {}; the largest parts:{}\nnothing was "
+      "{}: the scene needs an estimated {} but {} allows {}; the largest parts:{}\nnothing was "
       "rendered (the estimate: `landsim info`; docs/PERFORMANCE.md \"Memory budget\")",
-      mb(static_cast<double>(total)), budget_source, mb(static_cast<double>(budget_bytes)),
-      largest));
+      estimate.scenario, mb(static_cast<double>(total)), budget_source,
+      mb(static_cast<double>(budget_bytes)), largest));
 }
 
 }  // namespace landsim::scenes

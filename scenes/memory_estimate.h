@@ -16,12 +16,13 @@
 namespace landsim::scenes {
 
 struct MemoryPart {
-  std::string name;    // "tree instances", "tree variants", ...
+  std::string name;  // "tree instances", "tree variants", ...
   std::size_t bytes = 0;
   std::string remedy;  // what would make it smaller, for the refusal message
 };
 
 struct MemoryEstimate {
+  std::string scenario;           // its source, for messages
   std::size_t program_bytes = 0;  // this process before the scene: code and libraries
   std::vector<MemoryPart> parts;  // at the peak, largest first
   std::size_t total_bytes() const;
@@ -39,9 +40,14 @@ struct MemoryEstimate {
 // Loads the terrain and feature map and generates one variant per species; places nothing.
 MemoryEstimate estimate_memory(const Scenario& scenario);
 
-// The default budget: 80% of physical memory (or of the address-space limit, if lower),
-// shared by `processes_on_node` ranks.
-std::size_t default_memory_budget(int processes_on_node = 1);
+struct MemoryBudget {
+  std::size_t bytes = 0;
+  std::string source;  // where it comes from, for messages
+};
+
+// The default budget: 80% of physical memory (or of the address-space limit, ulimit -v, if
+// lower), shared by the `ranks_on_node` processes of an MPI job on this machine.
+MemoryBudget default_memory_budget(int ranks_on_node = 1);
 
 // InputError when the estimate exceeds `budget_bytes`: names the largest parts and what
 // would bring each down. `budget_source` says where the budget came from (for the message).

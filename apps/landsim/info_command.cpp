@@ -9,9 +9,9 @@
 
 #include "featuremaps/class_mapping.h"
 #include "scenes/default_scenario.h"
+#include "scenes/memory_estimate.h"
 #include "scenes/obj_export.h"
 #include "scenes/scene_builder.h"
-#include "scenes/memory_estimate.h"
 #include "terrain/dem_loader.h"
 
 namespace landsim::app {
@@ -31,11 +31,15 @@ int run_info(const InfoArgs& args) {
   const auto count = [](double n) { return static_cast<std::size_t>(std::llround(n)); };
   if (args.json) {
     nlohmann::json per_species = nlohmann::json::object();
-    for (const auto& [name, n] : e.instances_per_species) per_species[name] = count(n);
+    std::size_t instances = 0;  // the sum of the species' rounded counts
+    for (const auto& [name, n] : e.instances_per_species) {
+      per_species[name] = count(n);
+      instances += count(n);
+    }
     nlohmann::json parts = nlohmann::json::object();
     for (const scenes::MemoryPart& p : e.parts) parts[p.name] = p.bytes;
     parts["program"] = e.program_bytes;
-    std::cout << nlohmann::json{{"instances", count(e.instances)},
+    std::cout << nlohmann::json{{"instances", instances},
                                 {"instances_per_species", per_species},
                                 {"unique_variants", e.unique_variants},
                                 {"triangles_stored", count(e.triangles_stored)},

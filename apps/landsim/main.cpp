@@ -5,14 +5,15 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <new>
 
 #include "core/input_error.h"
 #include "degrade_command.h"
 #include "discover_command.h"
 #include "grow_command.h"
-#include "plate_command.h"
 #include "info_command.h"
 #include "mpi_session.h"
+#include "plate_command.h"
 #include "pov_command.h"
 #include "render_command.h"
 #include "tree_command.h"
@@ -85,6 +86,12 @@ int main(int argc, char** argv) {
     // One rank failing fails the whole job: the others would wait for it forever.
     if (session.distributed()) session.abort(kBadInput);
     return kBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "landsim: " << session.label()
+              << "error: out of memory: the scene needs more than this process may use (its "
+                 "estimate: landsim info; docs/PERFORMANCE.md \"Memory budget\")\n";
+    if (session.distributed()) session.abort(1);
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "landsim: " << session.label() << "internal error: " << e.what() << "\n";
     if (session.distributed()) session.abort(1);

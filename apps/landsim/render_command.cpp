@@ -202,15 +202,15 @@ scenes::MemoryEstimate check_memory(const scenes::Scenario& scenario, const Rend
     budget = *scenario.render.max_memory;
     source = scenario.source + ": [render] max_memory";
   } else {
-    const int ranks = session != nullptr ? session->ranks_on_node() : 1;
-    budget = scenes::default_memory_budget(ranks);
-    source = ranks > 1 ? fmt::format("this machine's memory shared by {} ranks", ranks)
-                       : std::string("this machine's memory (80%)");
+    const scenes::MemoryBudget fallback =
+        scenes::default_memory_budget(session != nullptr ? session->ranks_on_node() : 1);
+    budget = fallback.bytes;
+    source = fallback.source;
   }
   scenes::check_memory_budget(estimate, budget, source);
   spdlog::info("memory: an estimated {:.0f} MB of a {:.0f} MB budget ({:.2f} s)",
-               static_cast<double>(estimate.total_bytes()) / 1e6,
-               static_cast<double>(budget) / 1e6, seconds_since(start));
+               static_cast<double>(estimate.total_bytes()) / 1e6, static_cast<double>(budget) / 1e6,
+               seconds_since(start));
   return estimate;
 }
 
@@ -240,7 +240,6 @@ int run_render(const RenderArgs& args) {
   spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(start),
                scene->instances.size(), scene->prototypes.size());
 
-  if (writer) std::filesystem::create_directories(out_dir);
   nlohmann::json images = nlohmann::json::array();
   nlohmann::json manifest_images = nlohmann::json::array();
   for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -255,8 +254,13 @@ int run_render(const RenderArgs& args) {
       const scenes::ViewSettings& vs = scenario.views[i];
       renderer::RenderOptions options;
       options.threads = scenario.render.threads;
-      if (images.empty())
-        options.started = [&] { spdlog::info("first pixel after {:.2f} s", seconds_since(start)); };
+      // The output directory appears once the scene is built and tracing starts: a render
+      // refused or failed before that leaves nothing behind.
+      const bool first_image = images.empty();
+      options.started = [&, first_image] {
+        if (writer) std::filesystem::create_directories(out_dir);
+        if (first_image) spdlog::info("first pixel after {:.2f} s", seconds_since(start));
+      };
       const auto view_start = std::chrono::steady_clock::now();
       options.progress = [&](double p) {
         const double elapsed = seconds_since(view_start);

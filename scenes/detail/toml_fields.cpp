@@ -144,8 +144,13 @@ std::optional<std::uint64_t> TableReader::byte_size(std::string_view key) {
   std::string text;
   if (n->is_integer()) text = std::to_string(*n->value<std::int64_t>());
   if (n->is_string()) text = std::string(*n->value<std::string_view>());
-  const std::string error = text.empty() ? "empty" : CLI::AsSizeValue(true)(text);
-  if (!error.empty() || text.empty() || text.front() == '-')
+  std::string error = text.empty() ? "empty" : "";
+  try {
+    if (error.empty()) error = CLI::AsSizeValue(true)(text);
+  } catch (const CLI::ValidationError& e) {
+    error = e.what();
+  }
+  if (!error.empty() || text.front() == '-')
     fail(key, "expected a size such as \"8 GB\" or \"512 MiB\" (or a number of bytes)");
   const std::uint64_t bytes = std::stoull(text);
   if (bytes == 0) fail(key, "expected a size above zero");

@@ -37,12 +37,13 @@ void check_overlap(const featuremaps::VegetationMap& map, const terrain::Elevati
 }  // namespace
 
 std::optional<featuremaps::VegetationMap> scene_vegetation(const Scenario& s,
-                                                            const terrain::ElevationGrid& grid) {
+                                                           const terrain::ElevationGrid& grid) {
   if (!s.featuremaps) return std::nullopt;
   const FeatureMapSettings& f = *s.featuremaps;
   if (f.vegetation.empty() && f.classes.empty()) {
     if (!s.species.empty() || !s.grass.empty())
-      throw InputError(s.source + ": [[species]] and [[grass]] need [featuremaps] vegetation or classes");
+      throw InputError(s.source +
+                       ": [[species]] and [[grass]] need [featuremaps] vegetation or classes");
     return std::nullopt;
   }
   featuremaps::VegetationMap map = vegetation_map(f, s.render.seed);

@@ -13,6 +13,6 @@ namespace landsim::scenes::detail {
 // Empty when the scenario names no feature map; InputError when it has species or grass but
 // no map, or when the map misses the terrain.
 std::optional<featuremaps::VegetationMap> scene_vegetation(const Scenario& s,
-                                                            const terrain::ElevationGrid& grid);
+                                                           const terrain::ElevationGrid& grid);
 
 }  // namespace landsim::scenes::detail

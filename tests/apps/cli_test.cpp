@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -324,6 +325,74 @@ TEST(Cli, InfoDescribesTheDefaultScene) {
   EXPECT_LE(j["unique_variants"].get<long>(), 7);  // 4 aspen + 3 oak variants at most
   EXPECT_GT(j["triangles_instanced"].get<long>(), 100 * j["triangles_stored"].get<long>());
   EXPECT_GT(j["memory_estimate_bytes"].get<long>(), 0);
+}
+
+// The Kagwene example with every species at 99000 trees per hectare (inside the documented
+// ranges): about ninety million trees, which no machine here could hold.
+std::string huge_kagwene(const TempDir& dir) {
+  std::string text = testing::read_file(testing::source_file("scenes/examples/kagwene.toml"));
+  text = std::regex_replace(text, std::regex("density_per_ha = \\d+"), "density_per_ha = 99000");
+  text = std::regex_replace(text, std::regex("min_spacing = [0-9.]+"), "min_spacing = 0.0");
+  text = std::regex_replace(text, std::regex("\"\\.\\./\\.\\./"),
+                            "\"" + testing::source_file(".").string() + "/");
+  text = std::regex_replace(
+      text, std::regex("\"kagwene_classes"),
+      "\"" + testing::source_file("scenes/examples").string() + "/kagwene_classes");
+  return dir.write("huge.toml", text).string();
+}
+
+TEST(Cli, InfoEstimatesAHugeSceneWithoutBuildingIt) {
+  TempDir dir;
+  const Result r = run("info --json " + huge_kagwene(dir), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["instances"].get<double>(), 5e7);
+  EXPECT_GT(j["memory_estimate_bytes"].get<double>(), 1e10);
+  EXPECT_GT(j["memory_parts_bytes"].size(), 3u);
+}
+
+TEST(Cli, RenderRefusesASceneOverItsMemoryBudgetBeforeBuildingIt) {
+  TempDir dir;
+  const auto out = dir / "out";
+  // The default budget, under a 16 GB address-space limit whatever the machine has.
+  const Result huge =
+      testing::run_command("ulimit -v 16000000; exec " + std::string(LANDSIM_BINARY) + " render " +
+                               huge_kagwene(dir) + " --out " + out.string(),
+                           dir);
+  EXPECT_EQ(huge.exit_code, 2) << huge.err;
+  EXPECT_NE(huge.err.find("80% of the address-space limit"), std::string::npos) << huge.err;
+  EXPECT_NE(huge.err.find("tree instances"), std::string::npos) << huge.err;
+  EXPECT_NE(huge.err.find("density_per_ha"), std::string::npos) << huge.err;
+  EXPECT_EQ(huge.err.find("scene built"), std::string::npos) << huge.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const Result small = run("render --max-memory 100MB --out " + out.string(), dir);
+  EXPECT_EQ(small.exit_code, 2) << small.err;
+  EXPECT_NE(small.err.find("--max-memory allows 100 MB"), std::string::npos) << small.err;
+  EXPECT_NE(small.err.find("tree variants"), std::string::npos) << small.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const auto file = dir.write("s.toml", scenario("", "", "max_memory = \"1 MB\""));
+  const Result scenario_budget = run("render " + file.string() + " --out " + out.string(), dir);
+  EXPECT_EQ(scenario_budget.exit_code, 2) << scenario_budget.err;
+  EXPECT_NE(scenario_budget.err.find("[render] max_memory allows 1 MB"), std::string::npos)
+      << scenario_budget.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(run("render --max-memory lots --out " + out.string(), dir).exit_code, 2);
+}
+
+// Under an address-space limit the default scene passes a generous --max-memory, then runs
+// out of memory while it is built or handed to Embree: a clean exit 1 with a message, no
+// signal, no output. 750 MB leaves the program room to load (about 400 MB of libraries)
+// but not to render (about 1 GB of address space).
+TEST(Cli, RenderOutOfMemoryUnderAnAddressSpaceLimitFailsCleanly) {
+  TempDir dir;
+  const auto out = dir / "out";
+  const Result r = testing::run_command(
+      "ulimit -v 750000; exec " + std::string(LANDSIM_BINARY) +
+          " render --max-memory 100GB --spp 1 --threads 2 --out " + out.string(),
+      dir);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("error: "), std::string::npos) << r.err;
+  EXPECT_FALSE(has_files(out)) << r.err;
 }
 
 TEST(Cli, FeaturemapBuildWritesA16BitMap) {

@@ -1,0 +1,140 @@
+#include "scenes/memory_estimate.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <regex>
+
+#include "core/input_error.h"
+#include "core/process_memory.h"
+#include "scenes/default_scenario.h"
+#include "scenes/scene_builder.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+// The part whose name starts with `prefix` ("tree instances (2194 trees)").
+std::size_t part(const MemoryEstimate& e, const std::string& prefix) {
+  for (const MemoryPart& p : e.parts)
+    if (p.name.rfind(prefix, 0) == 0) return p.bytes;
+  return 0;
+}
+
+TEST(MemoryEstimate, CountsWhatTheBuilderPlacesWithoutPlacingIt) {
+  const Scenario s = default_scenario();
+  const MemoryEstimate e = estimate_memory(s);
+  const renderer::Scene scene = build_scene(s);
+  const auto placed = static_cast<double>(scene.instances.size());
+  EXPECT_NEAR(e.instances, placed, 0.1 * placed);
+  std::vector<double> per_species(s.species.size(), 0.0);
+  for (const renderer::TreeInstance& t : scene.instances)
+    per_species[scene.prototypes[t.prototype].species] += 1.0;
+  for (std::size_t k = 0; k < s.species.size(); ++k)
+    EXPECT_NEAR(e.instances_per_species.at(s.species[k].species.name), per_species[k],
+                0.1 * per_species[k])
+        << s.species[k].species.name;
+  EXPECT_EQ(e.unique_variants, scene.prototypes.size());
+  std::size_t tiles = 0;
+  for (std::uint8_t t : scene.grass.type) tiles += t != 0 ? 1 : 0;
+  EXPECT_EQ(e.grass_tiles, tiles);
+  double triangles = static_cast<double>(scene.ground.mesh.triangle_count());
+  for (const renderer::TreePrototype& p : scene.prototypes)
+    triangles += static_cast<double>(p.geometry.triangle_count());
+  EXPECT_NEAR(e.triangles_stored, triangles, 0.25 * triangles);
+}
+
+TEST(MemoryEstimate, PartsScaleWithWhatTheyCount) {
+  const Scenario s = default_scenario();
+  const MemoryEstimate base = estimate_memory(s);
+  Scenario dense = s;
+  for (SpeciesSettings& sp : dense.species) {
+    sp.density_per_ha *= 10.0;
+    sp.min_spacing = 0.0;
+  }
+  const MemoryEstimate e = estimate_memory(dense);
+  EXPECT_NEAR(e.instances / base.instances, 10.0, 0.5);
+  const double ratio = static_cast<double>(part(e, "tree instances")) /
+                       static_cast<double>(part(base, "tree instances"));
+  EXPECT_NEAR(ratio, 10.0, 0.5);
+  Scenario large = s;
+  large.views[0].width *= 4;
+  large.views[0].height *= 4;
+  const double film = static_cast<double>(part(estimate_memory(large), "image")) /
+                      static_cast<double>(part(base, "image"));
+  EXPECT_NEAR(film, 16.0, 0.1);
+}
+
+// The default view sees its trees from afar: degraded, their variants hold a fraction of
+// their full-detail primitives in Embree.
+TEST(MemoryEstimate, DegradationOffHoldsEveryVariantAtFullDetail) {
+  Scenario s = default_scenario();
+  const std::size_t on = part(estimate_memory(s), "tree variants");
+  s.render.degradation = false;
+  const std::size_t off = part(estimate_memory(s), "tree variants");
+  EXPECT_GT(off, on + on / 2);
+}
+
+TEST(MemoryEstimate, PartsAreListedLargestFirstAndSumToTheTotal) {
+  const MemoryEstimate e = estimate_memory(default_scenario());
+  ASSERT_GE(e.parts.size(), 4u);
+  EXPECT_TRUE(
+      std::is_sorted(e.parts.begin(), e.parts.end(),
+                     [](const MemoryPart& a, const MemoryPart& b) { return a.bytes > b.bytes; }));
+  std::size_t sum = e.program_bytes;
+  for (const MemoryPart& p : e.parts) sum += p.bytes;
+  EXPECT_EQ(e.total_bytes(), sum);
+  EXPECT_GT(e.program_bytes, 0u);
+}
+
+TEST(MemoryBudget, RefusesAnEstimateOverItNamingTheLargestParts) {
+  const MemoryEstimate e = estimate_memory(default_scenario());
+  EXPECT_NO_THROW(check_memory_budget(e, e.total_bytes(), "--max-memory"));
+  try {
+    check_memory_budget(e, e.total_bytes() - 1, "--max-memory");
+    FAIL() << "an estimate over the budget passed";
+  } catch (const InputError& error) {
+    const std::string m = error.what();
+    EXPECT_NE(m.find(e.scenario), std::string::npos) << m;
+    EXPECT_NE(m.find("--max-memory"), std::string::npos) << m;
+    EXPECT_NE(m.find(e.parts.front().name), std::string::npos) << m;
+    EXPECT_NE(m.find(e.parts.front().remedy), std::string::npos) << m;
+  }
+}
+
+TEST(MemoryBudget, DefaultIsAShareOfPhysicalMemoryPerRank) {
+  const MemoryBudget one = default_memory_budget(1);
+  EXPECT_GT(one.bytes, 0u);
+  EXPECT_LE(one.bytes, physical_memory_bytes());
+  const MemoryBudget four = default_memory_budget(4);
+  EXPECT_NEAR(static_cast<double>(four.bytes), static_cast<double>(one.bytes) / 4.0, 1.0);
+  EXPECT_NE(four.source.find("4 ranks"), std::string::npos) << four.source;
+}
+
+TEST(MemoryBudget, ScenarioSizesTakeUnits) {
+  const std::string dem = landsim::testing::source_file("data/terrain/volcano.asc").string();
+  const auto max_memory = [&](const std::string& value) {
+    return parse_scenario("[terrain]\nelevation = \"" + dem +
+                              "\"\n[sun]\nelevation = 30\nazimuth = 90\n[[views]]\nname = \"v\"\n"
+                              "position = [0.0, 0.0, 10.0]\ntarget = [1.0, 1.0, 0.0]\n"
+                              "[render]\nmax_memory = " +
+                              value + "\n",
+                          "s.toml", ".")
+        .render.max_memory;
+  };
+  EXPECT_EQ(max_memory("\"8 GB\""), 8'000'000'000u);
+  EXPECT_EQ(max_memory("\"512MiB\""), 512u * 1024u * 1024u);
+  EXPECT_EQ(max_memory("1000000"), 1'000'000u);
+  for (const std::string bad : {"\"lots\"", "0", "-5", "1.5"}) {
+    try {
+      max_memory(bad);
+      FAIL() << bad << " was accepted";
+    } catch (const InputError& error) {
+      EXPECT_TRUE(std::regex_search(error.what(), std::regex("s\\.toml:\\d+:\\d+.*max_memory")))
+          << error.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace landsim::scenes
