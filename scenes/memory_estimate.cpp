@@ -154,7 +154,7 @@ std::size_t MemoryEstimate::total_bytes() const {
   return total;
 }
 
-MemoryEstimate estimate_memory(const Scenario& s) {
+MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   MemoryEstimate e;
   e.scenario = s.source;
   e.program_bytes = resident_bytes();
@@ -238,6 +238,11 @@ MemoryEstimate estimate_memory(const Scenario& s) {
   const auto part = [&](const std::string& name, double bytes, const std::string& remedy) {
     if (bytes >= 1.0) e.parts.push_back({name, static_cast<std::size_t>(bytes), remedy});
   };
+  if (keep != nullptr)
+    for (std::size_t k = 0; k < s.species.size(); ++k)
+      if (variant[k])
+        keep->insert_or_assign({static_cast<std::uint32_t>(k), 0, s.render.frames.front()},
+                               std::move(*variant[k]));
   part("tree variants", p.scene_variants + p.view_prototypes,
        degrade ? "fewer variants per species, or a lower [render] quality"
                : "[render] degradation = true (far trees drawn with fewer primitives), or "

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scenes/scenario.h"
+#include "scenes/variant_cache.h"
 
 namespace landsim::scenes {
 
@@ -38,7 +39,8 @@ struct MemoryEstimate {
 };
 
 // Loads the terrain and feature map and generates one variant per species; places nothing.
-MemoryEstimate estimate_memory(const Scenario& scenario);
+// The variants are left in `keep`, when given, for build_scene to reuse.
+MemoryEstimate estimate_memory(const Scenario& scenario, VariantCache* keep = nullptr);
 
 struct MemoryBudget {
   std::size_t bytes = 0;

@@ -21,7 +21,8 @@ namespace landsim::scenes {
 namespace {
 
 void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
-               const terrain::ElevationGrid& grid, double time, renderer::Scene& scene) {
+               const terrain::ElevationGrid& grid, double time, VariantCache* reuse,
+               renderer::Scene& scene) {
   const std::uint64_t seed = s.render.seed;
   std::vector<featuremaps::SpeciesPlacement> placements;
   for (const SpeciesSettings& sp : s.species) {
@@ -49,6 +50,13 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   scene.prototypes.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     const auto [species, variant] = keys[i];
+    if (reuse != nullptr) {
+      const auto found = reuse->find({species, variant, time});
+      if (found != reuse->end()) {
+        scene.prototypes[i] = std::move(found->second);
+        return;
+      }
+    }
     scene.prototypes[i] = detail::make_tree_variant(s, species, variant, time);
   });
   for (std::size_t i = 0; i < keys.size(); ++i)
@@ -130,7 +138,7 @@ Vec3 sun_direction(double elevation_deg, double azimuth_deg) {
   return {std::sin(az) * std::cos(el), std::cos(az) * std::cos(el), std::sin(el)};
 }
 
-renderer::Scene build_scene(const Scenario& scenario, double time) {
+renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache* reuse) {
   const terrain::ElevationGrid grid =
       terrain::load_elevation(scenario.terrain.elevation, scenario.terrain.dem);
   renderer::Scene scene;
@@ -164,7 +172,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time) {
   scene.settings.degradation = scenario.render.degradation;
   if (scenario.featuremaps) {
     const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(scenario, grid);
-    if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, time, scene);
+    if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, time, reuse, scene);
     if (map && !scenario.grass.empty())
       scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin);
     add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);

@@ -79,7 +79,7 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "fov = 35.0\nwidth = 64\nheight = 32\n\n"
          "[render]\nspp = 2\nseed = 5\nthreads = 1\nmax_bounces = 2\nexposure = 0.5\nframes = "
          "[0.0, 1.5]\nseason = \"autumn\"\ncheckpoint_seconds = 30.0\ndegradation = false\n"
-         "quality = 0.8\n";
+         "quality = 0.8\nmax_memory = \"12 GB\"\n";
 }
 
 struct Fixture {
@@ -132,6 +132,7 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(s.render.checkpoint_seconds, 30.0);
   EXPECT_FALSE(s.render.degradation);
   EXPECT_DOUBLE_EQ(s.render.quality, 0.8);
+  EXPECT_EQ(s.render.max_memory, 12'000'000'000u);
   EXPECT_TRUE(s.species[0].evergreen);
   EXPECT_DOUBLE_EQ(s.species[1].age_min, 15.0);
   EXPECT_DOUBLE_EQ(s.species[1].age_max, 40.0);

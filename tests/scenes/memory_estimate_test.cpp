@@ -87,6 +87,57 @@ TEST(MemoryEstimate, PartsAreListedLargestFirstAndSumToTheTotal) {
   EXPECT_GT(e.program_bytes, 0u);
 }
 
+// The scene builder takes the estimate's variants instead of generating them again, and
+// builds the same scene.
+TEST(MemoryEstimate, ItsVariantsAreTheOnesTheBuilderWouldGenerate) {
+  const Scenario s = default_scenario();
+  VariantCache variants;
+  estimate_memory(s, &variants);
+  ASSERT_EQ(variants.size(), s.species.size());
+  const renderer::Scene reused = build_scene(s, 0.0, &variants);
+  const renderer::Scene fresh = build_scene(s, 0.0);
+  ASSERT_EQ(reused.prototypes.size(), fresh.prototypes.size());
+  for (std::size_t i = 0; i < fresh.prototypes.size(); ++i) {
+    const trees::TreeGeometry& a = reused.prototypes[i].geometry;
+    const trees::TreeGeometry& b = fresh.prototypes[i].geometry;
+    for (int g = 0; g < trees::kGroupCount; ++g) {
+      const auto k = static_cast<std::size_t>(g);
+      EXPECT_EQ(a.groups[k].triangles.vertices, b.groups[k].triangles.vertices);
+      EXPECT_EQ(a.groups[k].triangles.indices, b.groups[k].triangles.indices);
+    }
+    EXPECT_EQ(reused.prototypes[i].leaf_reflectance, fresh.prototypes[i].leaf_reflectance);
+  }
+  // Taken (moved out), not generated again.
+  for (const auto& [key, variant] : variants)
+    EXPECT_EQ(variant.geometry.triangle_count(), 0u) << "species " << key.species;
+}
+
+// docs/PERFORMANCE.md records the estimate against the measured peak (bench/memory.sh): the
+// three calibration scenes must be there, each within 25%, ratios consistent with the sizes.
+TEST(MemoryEstimate, RecordedPeaksAreWithinAQuarterOfTheEstimate) {
+  const std::string doc =
+      landsim::testing::read_file(landsim::testing::source_file("docs/PERFORMANCE.md"));
+  const std::size_t section = doc.find("## Memory budget");
+  ASSERT_NE(section, std::string::npos);
+  const std::regex row(R"(\| ([^|]+) \| [0-9,]+ \| (\d+) MB \| (\d+) MB \| ([0-9.]+) \|)");
+  std::vector<std::string> scenes;
+  const std::string text = doc.substr(section);
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), row); it != std::sregex_iterator();
+       ++it) {
+    const std::smatch& m = *it;
+    const double estimate = std::stod(m[2]), peak = std::stod(m[3]), ratio = std::stod(m[4]);
+    EXPECT_NEAR(ratio, estimate / peak, 0.006) << m[1];
+    EXPECT_GE(ratio, 0.75) << m[1];
+    EXPECT_LE(ratio, 1.25) << m[1];
+    scenes.push_back(m[1]);
+  }
+  for (const char* name : {"default", "Kagwene", "100 k trees"})
+    EXPECT_NE(std::find_if(scenes.begin(), scenes.end(),
+                           [&](const std::string& s) { return s.rfind(name, 0) == 0; }),
+              scenes.end())
+        << name << " is not in the table";
+}
+
 TEST(MemoryBudget, RefusesAnEstimateOverItNamingTheLargestParts) {
   const MemoryEstimate e = estimate_memory(default_scenario());
   EXPECT_NO_THROW(check_memory_budget(e, e.total_bytes(), "--max-memory"));
