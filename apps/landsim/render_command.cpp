@@ -247,7 +247,10 @@ int run_render(const RenderArgs& args) {
   nlohmann::json manifest_images = nlohmann::json::array();
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (args.task_index && f != first_frame) continue;
-    if (f != first_frame && sway) scene = scenes::build_scene(scenario, frames[f]);
+    if (f != first_frame && sway) {
+      scene.reset();  // one scene at a time: the memory estimate counts one
+      scene = scenes::build_scene(scenario, frames[f]);
+    }
     const renderer::Renderer renderer(*scene);
     for (std::size_t i = 0; i < scene->views.size(); ++i) {
       if (args.task_index &&
