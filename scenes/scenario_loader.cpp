@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
-#include "scenes/detail/toml_fields.h"
+#include "params/table_reader.h"
 #include "scenes/scenario.h"
 #include "scenes/solar_position.h"
 #include "terrain/raster_files.h"
@@ -15,8 +15,8 @@
 namespace landsim::scenes {
 namespace {
 
-using detail::Range;
-using detail::TableReader;
+using params::Range;
+using params::TableReader;
 
 constexpr Range kUnit{0.0, 1.0};
 constexpr Range kPositive{0.0, 1e12, true};
@@ -42,7 +42,7 @@ const toml::table& sub_table(const toml::table& root, std::string_view name,
   if (!n->is_table()) {
     const auto& b = n->source().begin;
     throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": " +
-                     std::string(name) + ": expected a table, got " + detail::type_name(*n));
+                     std::string(name) + ": expected a table, got " + params::type_name(*n));
   }
   return *n->as_table();
 }
@@ -394,7 +394,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   try {
     root = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
-    throw InputError(detail::parse_error_message(e, source));
+    throw InputError(params::parse_error_message(e, source));
   }
   refuse_unknown_tables(root, source);
   Scenario s;

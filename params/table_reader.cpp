@@ -1,4 +1,4 @@
-#include "scenes/detail/toml_fields.h"
+#include "params/table_reader.h"
 
 #include <CLI/Error.hpp>
 #include <CLI/Validators.hpp>
@@ -8,16 +8,12 @@
 
 #include "core/input_error.h"
 
-namespace landsim::scenes::detail {
-namespace {
-
+namespace landsim::params {
 std::string format_number(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
 }
-
-}  // namespace
 
 bool Range::contains(double v) const {
   if (!std::isfinite(v)) return false;
@@ -66,31 +62,85 @@ std::string parse_error_message(const toml::parse_error& e, const std::string& f
          ": not valid TOML: " + std::string(e.description());
 }
 
-TableReader::TableReader(const toml::table& table, std::string path, std::string file)
-    : table_(table), path_(std::move(path)), file_(std::move(file)) {}
+TableReader::TableReader(const toml::table& table, std::string path, std::string file,
+                         Declarations* declared)
+    : table_(&table), path_(std::move(path)), file_(std::move(file)), declared_(declared) {}
+
+TableReader TableReader::table(std::string_view key, bool required) {
+  static const toml::table kEmpty;
+  const std::string path = path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (required) missing(key);
+    return TableReader(kEmpty, path, file_, declared_);
+  }
+  if (!n->is_table()) fail(key, "expected a table, got " + type_name(*n));
+  return TableReader(*n->as_table(), path, file_, declared_);
+}
+
+std::vector<TableReader> TableReader::tables(std::string_view key) {
+  std::vector<TableReader> out;
+  const std::string path = path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  const toml::node* n = node(key);
+  if (n == nullptr) return out;
+  const toml::array* a = n->as_array();
+  if (a == nullptr || !a->is_array_of_tables())
+    fail(key, "expected [[" + std::string(key) + "]] tables, got " + type_name(*n));
+  for (std::size_t i = 0; i < a->size(); ++i)
+    out.emplace_back(*a->get(i)->as_table(), path + "[" + std::to_string(i) + "]", file_,
+                     declared_);
+  return out;
+}
+
+const toml::node* TableReader::value(std::string_view key, const std::string& expected,
+                                     const std::string& fallback) {
+  declare(key, expected, fallback);
+  return node(key);
+}
+
+void TableReader::declare(std::string_view key, const std::string& expected,
+                          const std::string& fallback) {
+  if (declared_ == nullptr) return;
+  // Tables of an array declare under "name[]", whichever element read them.
+  std::string table = path_;
+  if (const auto open = table.rfind('['); open != std::string::npos && table.back() == ']')
+    table = table.substr(0, open) + "[]";
+  for (const KeyDeclaration& d : *declared_)
+    if (d.table == table && d.key == key) return;
+  declared_->push_back({table, std::string(key), expected, fallback});
+}
+
+std::string TableReader::prefix(std::string_view key) const {
+  return path_.empty() ? std::string(key) : "[" + path_ + "] " + std::string(key);
+}
 
 std::string TableReader::location(const toml::node* node) const {
-  const toml::source_region& src = node != nullptr ? node->source() : table_.source();
+  const toml::source_region& src = node != nullptr ? node->source() : table_->source();
   if (src.begin.line == 0) return file_;
   return file_ + ":" + std::to_string(src.begin.line) + ":" + std::to_string(src.begin.column);
 }
 
 void TableReader::fail(std::string_view key, const std::string& message) const {
-  const toml::node* n = table_.get(key);
-  throw InputError(location(n) + ": [" + path_ + "] " + std::string(key) + ": " + message);
+  const toml::node* n = table_->get(key);
+  throw InputError(location(n) + ": " + prefix(key) + ": " + message);
+}
+
+void TableReader::fail_at(const toml::node& node, std::string_view key,
+                          const std::string& message) const {
+  throw InputError(location(&node) + ": " + prefix(key) + ": " + message);
 }
 
 void TableReader::missing(std::string_view key) const {
-  throw InputError(location(nullptr) + ": [" + path_ + "] " + std::string(key) +
-                   ": required key is missing");
+  throw InputError(location(nullptr) + ": " + prefix(key) + ": required key is missing");
 }
 
 const toml::node* TableReader::node(std::string_view key) {
   read_.emplace(key);
-  return table_.get(key);
+  return table_->get(key);
 }
 
 double TableReader::number(std::string_view key, Range range, std::optional<double> fallback) {
+  declare(key, "a number " + range.describe(), fallback ? format_number(*fallback) : "");
   const toml::node* n = node(key);
   if (n == nullptr) {
     if (!fallback) missing(key);
@@ -107,6 +157,7 @@ double TableReader::number(std::string_view key, Range range, std::optional<doub
 
 std::optional<double> TableReader::optional_number(std::string_view key, Range range) {
   if (!has(key)) {
+    declare(key, "a number " + range.describe(), "");
     read_.emplace(key);
     return std::nullopt;
   }
@@ -115,6 +166,8 @@ std::optional<double> TableReader::optional_number(std::string_view key, Range r
 
 std::int64_t TableReader::integer(std::string_view key, std::int64_t lo, std::int64_t hi,
                                   std::optional<std::int64_t> fallback) {
+  declare(key, "an integer from " + std::to_string(lo) + " to " + std::to_string(hi),
+          fallback ? std::to_string(*fallback) : "");
   const toml::node* n = node(key);
   const std::string expected =
       "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
@@ -129,6 +182,7 @@ std::int64_t TableReader::integer(std::string_view key, std::int64_t lo, std::in
 }
 
 std::string TableReader::string(std::string_view key, std::optional<std::string> fallback) {
+  declare(key, "a string", fallback ? "\"" + *fallback + "\"" : "");
   const toml::node* n = node(key);
   if (n == nullptr) {
     if (!fallback) missing(key);
@@ -139,6 +193,7 @@ std::string TableReader::string(std::string_view key, std::optional<std::string>
 }
 
 std::optional<std::uint64_t> TableReader::byte_size(std::string_view key) {
+  declare(key, "a size", "");
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
   std::string text;
@@ -158,6 +213,7 @@ std::optional<std::uint64_t> TableReader::byte_size(std::string_view key) {
 }
 
 bool TableReader::boolean(std::string_view key, bool fallback) {
+  declare(key, "true or false", fallback ? "true" : "false");
   const toml::node* n = node(key);
   if (n == nullptr) return fallback;
   if (!n->is_boolean()) fail(key, "expected true or false, got " + type_name(*n));
@@ -166,6 +222,9 @@ bool TableReader::boolean(std::string_view key, bool fallback) {
 
 std::string TableReader::choice(std::string_view key, const std::vector<std::string>& choices,
                                 std::string fallback) {
+  std::string names;
+  for (const std::string& c : choices) names += (names.empty() ? "\"" : ", \"") + c + "\"";
+  declare(key, "one of " + names, "\"" + fallback + "\"");
   const std::string v = string(key, fallback);
   for (const std::string& c : choices) {
     if (c == v) return v;
@@ -177,6 +236,11 @@ std::string TableReader::choice(std::string_view key, const std::vector<std::str
 
 std::vector<double> TableReader::numbers(std::string_view key, std::size_t count, Range range,
                                          std::optional<std::vector<double>> fallback) {
+  std::string fallback_text;
+  if (fallback)
+    for (double v : *fallback) fallback_text += (fallback_text.empty() ? "" : ", ") + format_number(v);
+  declare(key, "an array of " + std::to_string(count) + " numbers, each " + range.describe(),
+          fallback ? "[" + fallback_text + "]" : "");
   const toml::node* n = node(key);
   if (n == nullptr) {
     if (!fallback) missing(key);
@@ -202,6 +266,7 @@ std::vector<double> TableReader::numbers(std::string_view key, std::size_t count
 std::optional<std::vector<double>> TableReader::optional_numbers(std::string_view key,
                                                                  std::size_t n, Range range) {
   if (!has(key)) {
+    declare(key, "an array of " + std::to_string(n) + " numbers, each " + range.describe(), "");
     read_.emplace(key);
     return std::nullopt;
   }
@@ -216,13 +281,14 @@ Vec3 TableReader::vec3(std::string_view key, Range range, std::optional<Vec3> fa
 }
 
 void TableReader::finish() const {
-  for (auto&& [key, value] : table_) {
+  for (auto&& [key, value] : *table_) {
     if (read_.count(key.str()) != 0) continue;
     std::string known;
     for (const std::string& k : read_) known += (known.empty() ? "" : ", ") + k;
-    throw InputError(location(&value) + ": [" + path_ + "] unknown key '" + std::string(key.str()) +
-                     "' (expected one of: " + known + ")");
+    throw InputError(location(&value) + ": " + (path_.empty() ? "" : "[" + path_ + "] ") +
+                     "unknown key '" + std::string(key.str()) + "' (expected one of: " + known +
+                     ")");
   }
 }
 
-}  // namespace landsim::scenes::detail
+}  // namespace landsim::params

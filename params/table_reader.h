@@ -1,7 +1,9 @@
 #pragma once
-// Private to scenes/ (.cpp files only: toml++ is a heavy header). Reads the keys of one
-// TOML table with validation, so every scenario error names file:line:column, the key, and
-// what was expected; keys never read are reported as unknown.
+// The one reader of TOML parameters (scenarios and species files alike; include it from .cpp
+// files only: toml++ is a heavy header). Every key is declared where it is read, with its
+// type, range and default; every error names file:line:column, the [table] and key, and what
+// was expected, in one format; keys never read are reported as unknown (finish). A
+// Declarations sink, when given, collects the declarations (docs are tested against them).
 #include <toml++/toml.h>
 
 #include <cstdint>
@@ -13,7 +15,7 @@
 
 #include "core/vec3.h"
 
-namespace landsim::scenes::detail {
+namespace landsim::params {
 
 // An interval for numbers; open ends exclude the bound.
 struct Range {
@@ -24,12 +26,35 @@ struct Range {
   std::string describe() const;
 };
 
+// One declared key: the table's path ("graph", "volume[]"), the key, what it takes and its
+// default as text ("" when required or when absence means "off").
+struct KeyDeclaration {
+  std::string table;
+  std::string key;
+  std::string expected;
+  std::string fallback;
+};
+using Declarations = std::vector<KeyDeclaration>;
+
 class TableReader {
  public:
-  // `path` names the table in messages ("terrain", "views[2]"); `file` the scenario file.
-  TableReader(const toml::table& table, std::string path, std::string file);
+  // `path` names the table in messages ("terrain", "views[2]"; "" for a file's top level);
+  // `file` the file. Declarations go to `declared` when it is given.
+  TableReader(const toml::table& table, std::string path, std::string file,
+              Declarations* declared = nullptr);
 
-  bool has(std::string_view key) const { return table_.contains(key); }
+  // The sub-table `key` (an empty one when absent and not required); refuses a non-table.
+  TableReader table(std::string_view key, bool required = false);
+  // The tables of the array `key` ([[key]]), each named "key[i]"; none when absent.
+  std::vector<TableReader> tables(std::string_view key);
+  // The raw value of `key` for shapes the typed reads do not cover (nullptr when absent),
+  // declared with what it takes; errors inside it go through fail_at.
+  const toml::node* value(std::string_view key, const std::string& expected,
+                          const std::string& fallback = "");
+  [[noreturn]] void fail_at(const toml::node& node, std::string_view key,
+                            const std::string& message) const;
+
+  bool has(std::string_view key) const { return table_->contains(key); }
   double number(std::string_view key, Range range, std::optional<double> fallback = std::nullopt);
   std::optional<double> optional_number(std::string_view key, Range range);
   std::int64_t integer(std::string_view key, std::int64_t lo, std::int64_t hi,
@@ -63,13 +88,19 @@ class TableReader {
 
  private:
   const toml::node* node(std::string_view key);
+  void declare(std::string_view key, const std::string& expected, const std::string& fallback);
   [[noreturn]] void missing(std::string_view key) const;
+  std::string prefix(std::string_view key) const;  // "[table] key" or "key"
 
-  const toml::table& table_;
+  const toml::table* table_;
   std::string path_;
   std::string file_;
+  Declarations* declared_;
   std::set<std::string, std::less<>> read_;
 };
+
+// A number as a short decimal: 0.5, not 0.500000.
+std::string format_number(double v);
 
 // Name of a TOML value's type, for "expected ..., got a string" messages.
 std::string type_name(const toml::node& node);
@@ -77,4 +108,4 @@ std::string type_name(const toml::node& node);
 // Error text for a file that fails to parse as TOML at all.
 std::string parse_error_message(const toml::parse_error& e, const std::string& file);
 
-}  // namespace landsim::scenes::detail
+}  // namespace landsim::params
