@@ -155,6 +155,12 @@ double TableReader::number(std::string_view key, Range range, std::optional<doub
   return v;
 }
 
+double TableReader::angle(std::string_view key, Range degrees, double fallback_radians) {
+  constexpr double kDegree = 3.14159265358979323846 / 180.0;
+  const double v = number(key, degrees, fallback_radians / kDegree);
+  return has(key) ? v * kDegree : fallback_radians;
+}
+
 std::optional<double> TableReader::optional_number(std::string_view key, Range range) {
   if (!has(key)) {
     declare(key, "a number " + range.describe(), "");
@@ -221,10 +227,10 @@ bool TableReader::boolean(std::string_view key, bool fallback) {
 }
 
 std::string TableReader::choice(std::string_view key, const std::vector<std::string>& choices,
-                                std::string fallback) {
+                                std::optional<std::string> fallback) {
   std::string names;
   for (const std::string& c : choices) names += (names.empty() ? "\"" : ", \"") + c + "\"";
-  declare(key, "one of " + names, "\"" + fallback + "\"");
+  declare(key, "one of " + names, fallback ? "\"" + *fallback + "\"" : "");
   const std::string v = string(key, fallback);
   for (const std::string& c : choices) {
     if (c == v) return v;
@@ -238,7 +244,8 @@ std::vector<double> TableReader::numbers(std::string_view key, std::size_t count
                                          std::optional<std::vector<double>> fallback) {
   std::string fallback_text;
   if (fallback)
-    for (double v : *fallback) fallback_text += (fallback_text.empty() ? "" : ", ") + format_number(v);
+    for (double v : *fallback)
+      fallback_text += (fallback_text.empty() ? "" : ", ") + format_number(v);
   declare(key, "an array of " + std::to_string(count) + " numbers, each " + range.describe(),
           fallback ? "[" + fallback_text + "]" : "");
   const toml::node* n = node(key);

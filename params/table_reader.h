@@ -57,6 +57,9 @@ class TableReader {
   bool has(std::string_view key) const { return table_->contains(key); }
   double number(std::string_view key, Range range, std::optional<double> fallback = std::nullopt);
   std::optional<double> optional_number(std::string_view key, Range range);
+  // An angle written in degrees (within `degrees`), returned in radians; when the key is
+  // absent the fallback (radians) is returned exactly as given.
+  double angle(std::string_view key, Range degrees, double fallback_radians);
   std::int64_t integer(std::string_view key, std::int64_t lo, std::int64_t hi,
                        std::optional<std::int64_t> fallback = std::nullopt);
   std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt);
@@ -66,7 +69,7 @@ class TableReader {
   std::optional<std::uint64_t> byte_size(std::string_view key);
   // One of `choices`.
   std::string choice(std::string_view key, const std::vector<std::string>& choices,
-                     std::string fallback);
+                     std::optional<std::string> fallback = std::nullopt);
   // An array of `N` numbers, each in `range`.
   std::vector<double> numbers(std::string_view key, std::size_t n, Range range,
                               std::optional<std::vector<double>> fallback = std::nullopt);

@@ -273,7 +273,7 @@ void read_age(TableReader& r, const toml::table& t, SpeciesSettings& s) {
   r.allow("age");
   const toml::node* n = t.get("age");
   if (n == nullptr) return;
-  if (s.species.core != trees::CoreKind::measured_growth)
+  if (!trees::uses_core<trees::measured_growth::Parameters>(s.species))
     r.fail("age", "only measured-growth species (core = \"measured_growth\") take an age");
   const auto years = [&](const toml::node& v) {
     const auto x = v.value<double>();

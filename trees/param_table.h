@@ -3,6 +3,7 @@
 // with where each value was found, so that errors can point at the file and line.
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 
 namespace landsim::trees {
@@ -14,5 +15,16 @@ struct RawParam {
 };
 
 using ParamTable = std::map<std::string, RawParam, std::less<>>;
+
+// The number a parameter's text spells (blanks around it allowed), if it is one.
+inline std::optional<double> param_number(const std::string& text) {
+  std::istringstream in(text);
+  double v = 0.0;
+  in >> v;
+  if (in.fail()) return std::nullopt;
+  std::string rest;
+  if (!in.eof() && (in >> rest, !rest.empty())) return std::nullopt;
+  return v;
+}
 
 }  // namespace landsim::trees

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/input_error.h"
+#include "params/table_reader.h"
 #include "trees/graph_paths/parameters.h"
 #include "trees/harmonic/generator.h"
 #include "trees/measured_growth/generator.h"
@@ -31,51 +32,12 @@ std::string read_text(const std::filesystem::path& file) {
   return s.str();
 }
 
-std::optional<double> to_number(const std::string& text) {
-  std::istringstream in(text);
-  double v = 0.0;
-  in >> v;
-  if (in.fail() || !in.eof()) {
-    // Allow trailing blanks, nothing else.
-    std::string rest;
-    if (in.fail() || (in >> rest, !rest.empty())) return std::nullopt;
-  }
-  return v;
-}
-
-std::string where(const std::string& source, const toml::source_region& r) {
-  return source + ":" + std::to_string(r.begin.line) + ":" + std::to_string(r.begin.column);
-}
-
-Vec3f read_colour(const toml::node& node, const std::string& source, const std::string& key) {
-  const toml::array* a = node.as_array();
-  const std::string msg =
-      where(source, node.source()) + ": colours." + key + ": expected [r, g, b], each 0 to 1";
-  if (a == nullptr || a->size() != 3) throw InputError(msg);
-  std::array<float, 3> c{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    const auto v = a->get(i)->value<double>();
-    if (!v || *v < 0.0 || *v > 1.0) throw InputError(msg);
-    c[i] = static_cast<float>(*v);
-  }
-  return {c[0], c[1], c[2]};
-}
-
-void read_colours(const toml::node& node, const std::string& source, TreeColours& colours) {
-  const toml::table* t = node.as_table();
-  if (t == nullptr) throw InputError(where(source, node.source()) + ": colours: expected a table");
-  for (auto&& [key, value] : *t) {
-    if (key.str() == "bark") {
-      colours.bark = read_colour(value, source, "bark");
-    } else if (key.str() == "leaf") {
-      colours.leaf = read_colour(value, source, "leaf");
-    } else if (key.str() == "leaf_weak") {
-      colours.leaf_weak = read_colour(value, source, "leaf_weak");
-    } else {
-      throw InputError(where(source, key.source()) + ": colours: unknown key '" +
-                       std::string(key.str()) + "' (expected bark, leaf, leaf_weak)");
-    }
-  }
+void read_colours(params::TableReader t, TreeColours& colours) {
+  constexpr params::Range kUnit{0.0, 1.0};
+  colours.bark = Vec3f(t.vec3("bark", kUnit, Vec3(colours.bark)));
+  colours.leaf = Vec3f(t.vec3("leaf", kUnit, Vec3(colours.leaf)));
+  colours.leaf_weak = Vec3f(t.vec3("leaf_weak", kUnit, Vec3(colours.leaf_weak)));
+  t.finish();
 }
 
 std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
@@ -84,101 +46,39 @@ std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
   return 1 + static_cast<std::size_t>(std::count(text.begin(), end, '\n'));
 }
 
-// The cores by their species-file name. Every core but Weber & Penn reads its own tables.
-constexpr std::pair<const char*, CoreKind> kCores[] = {
-    {"weber_penn", CoreKind::weber_penn},
-    {"graph_paths", CoreKind::graph_paths},
-    {"self_organizing", CoreKind::self_organizing},
-    {"harmonic", CoreKind::harmonic},
-    {"measured_growth", CoreKind::measured_growth}};
-
-std::optional<CoreKind> core_named(const std::optional<std::string>& name) {
-  for (const auto& [n, kind] : kCores)
-    if (name == n) return kind;
-  return std::nullopt;
-}
-
-// "\"a\", \"b\" or \"c\"": every core's name, for messages.
-std::string core_names() {
-  std::string list;
-  for (std::size_t i = 0; i < std::size(kCores); ++i)
-    list += (i == 0                       ? ""
-             : i + 1 == std::size(kCores) ? " or "
-                                          : ", ") +
-            std::string("\"") + kCores[i].first + "\"";
-  return list;
-}
+// The cores by their species-file name, in the order of Species::parameters' alternatives.
+const std::vector<std::string> kCoreNames = {"weber_penn", "graph_paths", "self_organizing",
+                                             "harmonic", "measured_growth"};
 
 }  // namespace
 
-std::string core_name(CoreKind core) {
-  for (const auto& [n, kind] : kCores)
-    if (kind == core) return n;
-  return "unknown";
-}
+std::string core_name(const Species& species) { return kCoreNames[species.parameters.index()]; }
 
-Species parse_species_toml(std::string_view text, const std::string& source) {
+Species parse_species_toml(std::string_view text, const std::string& source,
+                           params::Declarations* declared) {
   toml::table root;
   try {
     root = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
-    throw InputError(where(source, e.source()) +
-                     ": not valid TOML: " + std::string(e.description()));
+    throw InputError(params::parse_error_message(e, source));
   }
+  params::TableReader r(root, "", source, declared);
   Species s;
   s.source = source;
-  s.name = std::filesystem::path(source).stem().string();
-  ParamTable params;
-  bool has_core = false;
-  // Other cores' own tables are read by the core below, not as flat parameters.
-  const std::optional<CoreKind> named = core_named(root["core"].value<std::string>());
-  const bool own_tables = named && *named != CoreKind::weber_penn;
-  for (auto&& [key, value] : root) {
-    const std::string k(key.str());
-    if (k == "core") {
-      if (!named)
-        throw InputError(where(source, value.source()) + ": core: expected " + core_names() +
-                         " (the cores available)");
-      s.core = *named;
-      has_core = true;
-    } else if (k == "name") {
-      const auto name = value.value<std::string>();
-      if (!name) throw InputError(where(source, value.source()) + ": name: expected a string");
-      s.name = *name;
-    } else if (k == "colours") {
-      read_colours(value, source, s.colours);
-    } else if (own_tables) {
-      continue;
-    } else {
-      RawParam raw;
-      raw.where = where(source, value.source());
-      if (value.is_number()) {
-        raw.number = value.value<double>();
-        std::ostringstream t;
-        t << *raw.number;
-        raw.text = t.str();
-      } else if (value.is_string()) {
-        raw.text = *value.value<std::string>();
-        raw.number = to_number(raw.text);
-      } else {
-        throw InputError(raw.where + ": parameter " + k +
-                         ": expected a number or a string, got another type");
-      }
-      params.emplace(k, raw);
-    }
-  }
-  if (!has_core)
-    throw InputError(source + ": required key 'core' is missing (e.g. core = \"weber_penn\")");
-  if (s.core == CoreKind::graph_paths)
-    s.parameters = graph_paths::parse_parameters(text, source);
-  else if (s.core == CoreKind::self_organizing)
-    s.parameters = self_organizing::parse_parameters(text, source);
-  else if (s.core == CoreKind::harmonic)
-    s.parameters = harmonic::parse_parameters(text, source);
-  else if (s.core == CoreKind::measured_growth)
-    s.parameters = measured_growth::parse_parameters(text, source);
+  const std::string core = r.choice("core", kCoreNames);
+  s.name = r.string("name", std::filesystem::path(source).stem().string());
+  read_colours(r.table("colours"), s.colours);
+  if (core == "graph_paths")
+    s.parameters = graph_paths::read_parameters(r, source);
+  else if (core == "self_organizing")
+    s.parameters = self_organizing::read_parameters(r, source);
+  else if (core == "harmonic")
+    s.parameters = harmonic::read_parameters(r, source);
+  else if (core == "measured_growth")
+    s.parameters = measured_growth::read_parameters(r, source);
   else
-    s.parameters = weber_penn::parse_parameters(params, source);
+    s.parameters = weber_penn::read_parameters(r, source);
+  r.finish();
   return s;
 }
 
@@ -202,7 +102,7 @@ Species parse_arbaro_xml(std::string_view text, const std::string& source) {
     RawParam raw;
     raw.where = source + ":" + std::to_string(line_of(text, node.offset_debug()));
     raw.text = node.attribute("value").as_string();
-    raw.number = to_number(raw.text);
+    raw.number = param_number(raw.text);
     if (name.empty()) throw InputError(raw.where + ": <param> without a name");
     params.emplace(name, raw);
   }
@@ -261,27 +161,18 @@ Tree still_tree(TreeSkeleton skeleton, const Species& species) {
 }  // namespace
 
 Tree generate(const Species& species, const TreeOptions& options) {
-  if (species.core == CoreKind::graph_paths)
-    return still_tree(graph_paths::generate_skeleton(
-                          std::get<graph_paths::Parameters>(species.parameters), options.seed),
-                      species);
-  if (species.core == CoreKind::measured_growth)
-    return still_tree(
-        measured_growth::generate_skeleton(
-            std::get<measured_growth::Parameters>(species.parameters), options.seed, options.age),
-        species);
-  if (species.core == CoreKind::harmonic) {
+  if (const auto* p = std::get_if<graph_paths::Parameters>(&species.parameters))
+    return still_tree(graph_paths::generate_skeleton(*p, options.seed), species);
+  if (const auto* p = std::get_if<measured_growth::Parameters>(&species.parameters))
+    return still_tree(measured_growth::generate_skeleton(*p, options.seed, options.age), species);
+  if (const auto* p = std::get_if<harmonic::Parameters>(&species.parameters)) {
     // Level of detail for this core: fewer cross-sections per chain at lower quality.
     const int stride = std::max(1, static_cast<int>(std::lround(1.0 / options.quality)));
     return still_tree(
-        harmonic::generate_skeleton(std::get<harmonic::Parameters>(species.parameters),
-                                    options.seed, {.max_level = 5, .stride = stride}),
-        species);
+        harmonic::generate_skeleton(*p, options.seed, {.max_level = 5, .stride = stride}), species);
   }
-  if (species.core == CoreKind::self_organizing)
-    return still_tree(self_organizing::generate_skeleton(
-                          std::get<self_organizing::Parameters>(species.parameters), options.seed),
-                      species);
+  if (const auto* p = std::get_if<self_organizing::Parameters>(&species.parameters))
+    return still_tree(self_organizing::generate_skeleton(*p, options.seed), species);
   const auto& params = std::get<weber_penn::Parameters>(species.parameters);
   weber_penn::GenerateOptions o;
   o.seed = options.seed;

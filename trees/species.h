@@ -15,27 +15,38 @@
 #include "trees/self_organizing/parameters.h"
 #include "trees/weber_penn/parameters.h"
 
+namespace landsim::params {
+struct KeyDeclaration;
+using Declarations = std::vector<KeyDeclaration>;
+}  // namespace landsim::params
+
 namespace landsim::trees {
 
-enum class CoreKind { weber_penn, graph_paths, self_organizing, harmonic, measured_growth };
-std::string core_name(CoreKind core);
-
+// The core is the alternative `parameters` holds.
 struct Species {
   std::string name;
   std::string source;  // the file, for messages
-  CoreKind core = CoreKind::weber_penn;
   TreeColours colours;
   std::variant<weber_penn::Parameters, graph_paths::Parameters, self_organizing::Parameters,
                harmonic::Parameters, measured_growth::Parameters>
       parameters;
 };
 
+// The core's name in species files: "weber_penn", "graph_paths", ...
+std::string core_name(const Species& species);
+template <typename CoreParameters>
+bool uses_core(const Species& species) {
+  return std::holds_alternative<CoreParameters>(species.parameters);
+}
+
 // By extension: .toml (any core) or .xml (Arbaro's Weber & Penn format). Throws InputError
 // naming the file, the line and the parameter.
 Species load_species(const std::filesystem::path& file);
 // Parses `text` as the format `source`'s extension names.
 Species parse_species(std::string_view text, const std::string& source);
-Species parse_species_toml(std::string_view text, const std::string& source);
+// `declared`, when given, collects every key the file's core declares (docs tests).
+Species parse_species_toml(std::string_view text, const std::string& source,
+                           params::Declarations* declared = nullptr);
 Species parse_arbaro_xml(std::string_view text, const std::string& source);
 
 struct TreeOptions {

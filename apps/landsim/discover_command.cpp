@@ -43,7 +43,6 @@ namespace {
 trees::Species sampled_species(std::uint64_t seed, int k) {
   trees::Species s;
   s.name = fmt::format("discovered_{:03d}", k);
-  s.core = trees::CoreKind::harmonic;
   s.parameters = trees::harmonic::sample_discovery(hash_combine(mix64(seed), k));
   return s;
 }

@@ -84,11 +84,11 @@ renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& spec
 
 int run_grow(const GrowArgs& args) {
   const trees::Species species = trees::load_species(args.species);
-  if (species.core != trees::CoreKind::measured_growth)
+  if (!trees::uses_core<trees::measured_growth::Parameters>(species))
     throw InputError(args.species +
                      ": core: `landsim grow` needs a measured-growth species "
                      "(core = \"measured_growth\"), got " +
-                     trees::core_name(species.core));
+                     trees::core_name(species));
   scenes::check_image_size(args.width, args.height, "--width/--height");
   const auto& p = std::get<trees::measured_growth::Parameters>(species.parameters);
   const std::filesystem::path out(args.out);

@@ -42,7 +42,7 @@ int run_tree(const TreeArgs& args) {
   if (args.json) {
     const nlohmann::json out = {
         {"species", species.name},
-        {"core", trees::core_name(species.core)},
+        {"core", trees::core_name(species)},
         {"seed", args.seed},
         {"stems", {{"total", total}, {"per_level", s.stems_per_level}, {"clones", s.clones}}},
         {"leaves", s.leaves},
@@ -55,7 +55,7 @@ int run_tree(const TreeArgs& args) {
   }
   std::string levels;
   for (int n : s.stems_per_level) levels += (levels.empty() ? "" : " + ") + std::to_string(n);
-  std::cout << fmt::format("{} ({}), seed {}\n", species.name, trees::core_name(species.core),
+  std::cout << fmt::format("{} ({}), seed {}\n", species.name, trees::core_name(species),
                            args.seed)
             << fmt::format("  stems     {} = {} ({} clones)\n", total, levels, s.clones)
             << fmt::format("  leaves    {}\n", s.leaves)

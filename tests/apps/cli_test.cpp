@@ -497,7 +497,7 @@ TEST(CliTree, GraphPathsSpeciesGenerateAndBadShapesExitTwo) {
   const Result b = run("tree " + bad.string() + " --obj " + (dir / "t.obj").string(), dir);
   EXPECT_EQ(b.exit_code, 2);
   EXPECT_NE(b.err.find("bad.toml:3:"), std::string::npos) << b.err;
-  EXPECT_NE(b.err.find("volume.kind"), std::string::npos) << b.err;
+  EXPECT_NE(b.err.find("[volume[0]] kind"), std::string::npos) << b.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "t.obj"));
 }
 

@@ -29,12 +29,12 @@ struct ExpectedShape {
   double min_height, max_height, min_crown, max_crown;
 };
 
-inline void expect_shapes(CoreKind core, std::initializer_list<ExpectedShape> shapes,
+inline void expect_shapes(const std::string& core, std::initializer_list<ExpectedShape> shapes,
                           std::uint64_t seed, int min_leaves) {
   for (const ExpectedShape& s : shapes) {
     const Species species =
         load_species(landsim::testing::source_file(std::string("data/species/") + s.file));
-    EXPECT_EQ(species.core, core) << s.file;
+    EXPECT_EQ(core_name(species), core) << s.file;
     const Tree t = generate(species, {.seed = seed});
     EXPECT_GE(t.stats.height, s.min_height) << s.file;
     EXPECT_LE(t.stats.height, s.max_height) << s.file;

@@ -10,198 +10,126 @@
 #include <optional>
 
 #include "core/input_error.h"
-#include "trees/toml_reader.h"
+#include "params/table_reader.h"
 
 namespace landsim::trees::graph_paths {
 namespace {
 
-using Reader = TomlReader;
+using params::Range;
+using params::TableReader;
 
-PrimitiveKind kind_of(const Reader& r, const toml::node& n) {
-  const auto s = n.value<std::string>();
+constexpr Range kCoordinate{-1e4, 1e4};
+
+PrimitiveKind kind_of(const std::string& s) {
   if (s == "cylinder") return PrimitiveKind::cylinder;
   if (s == "cone") return PrimitiveKind::cone;
   if (s == "sphere") return PrimitiveKind::sphere;
   if (s == "sphere_portion") return PrimitiveKind::sphere_portion;
   if (s == "ellipsoid") return PrimitiveKind::ellipsoid;
-  if (s == "revolution") return PrimitiveKind::revolution;
-  r.refuse(n, "volume.kind", "cylinder, cone, sphere, sphere_portion, ellipsoid or revolution");
+  return PrimitiveKind::revolution;
+}
+
+// A direction: three numbers, not all zero.
+Vec3 direction(TableReader& r, std::string_view key, const Vec3& fallback) {
+  const Vec3 v = r.vec3(key, kCoordinate, fallback);
+  if (!(length(v) > 1e-9)) r.fail(key, "expected a direction, not [0, 0, 0]");
+  return v;
 }
 
 // [[height, radius], ...]: heights strictly increasing, radii 0-1000 m.
-std::vector<ProfilePoint> read_profile(const Reader& r, const toml::node& n,
-                                       const std::string& key) {
-  const toml::array* a = n.as_array();
+std::vector<ProfilePoint> read_profile(TableReader& r) {
   const std::string expected =
       "[[height, radius], ...]: at least two points, heights strictly increasing, radii 0 to 1000";
-  if (a == nullptr || a->size() < 2) r.refuse(n, key, expected);
+  const toml::node* n = r.value("profile", expected);
   std::vector<ProfilePoint> profile;
+  if (n == nullptr) return profile;
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->size() < 2) r.fail("profile", "expected " + expected);
   for (const toml::node& point : *a) {
     const toml::array* hr = point.as_array();
-    if (hr == nullptr || hr->size() != 2) r.refuse(point, key, expected);
-    const ProfilePoint p{r.number(*hr->get(0), key, -1e3, 1e3), r.number(*hr->get(1), key, 0, 1e3)};
-    if (!profile.empty() && !(p.height > profile.back().height)) r.refuse(point, key, expected);
-    profile.push_back(p);
+    const auto h = hr != nullptr && hr->size() == 2 ? hr->get(0)->value<double>() : std::nullopt;
+    const auto rad = hr != nullptr && hr->size() == 2 ? hr->get(1)->value<double>() : std::nullopt;
+    if (!h || !rad || !(*h >= -1e3 && *h <= 1e3) || !(*rad >= 0 && *rad <= 1e3) ||
+        (!profile.empty() && !(*h > profile.back().height)))
+      r.fail_at(point, "profile", "expected " + expected);
+    profile.push_back({*h, *rad});
   }
   return profile;
 }
 
-VolumePrimitive read_primitive(const Reader& r, const toml::table& t) {
+VolumePrimitive read_primitive(TableReader& r) {
   VolumePrimitive s;
-  bool has_kind = false;
-  r.read_table(t, "volume", "kind, origin, axis, radius, height, half_angle, radii, profile",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "kind")
-                   s.kind = kind_of(r, v), has_kind = true;
-                 else if (k == "origin")
-                   s.origin = r.vector(v, key);
-                 else if (k == "axis") {
-                   s.axis = r.vector(v, key);
-                   if (!(length(s.axis) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
-                   s.axis = normalize(s.axis);
-                 } else if (k == "radius")
-                   s.radius = r.number(v, key, 1e-3, 1e3);
-                 else if (k == "height")
-                   s.height = r.number(v, key, 1e-3, 1e3);
-                 else if (k == "half_angle")
-                   s.half_angle = r.number(v, key, 1, 180) * std::numbers::pi / 180;
-                 else if (k == "radii") {
-                   s.radii = r.vector(v, key);
-                   if (!(std::min({s.radii.x, s.radii.y, s.radii.z}) >= 1e-3))
-                     r.refuse(v, key, "three semi-axes, each at least 0.001 m");
-                 } else if (k == "profile")
-                   s.profile = read_profile(r, v, key);
-                 else
-                   return false;
-                 return true;
-               });
-  if (!has_kind)
-    r.refuse(t, "volume.kind", "a kind in every [[volume]]: cylinder, cone, sphere, ...");
+  s.kind = kind_of(r.choice(
+      "kind", {"cylinder", "cone", "sphere", "sphere_portion", "ellipsoid", "revolution"}));
+  s.origin = r.vec3("origin", kCoordinate, s.origin);
+  s.axis = normalize(direction(r, "axis", s.axis));
+  s.radius = r.number("radius", {1e-3, 1e3}, s.radius);
+  s.height = r.number("height", {1e-3, 1e3}, s.height);
+  s.half_angle = r.angle("half_angle", {1, 180}, s.half_angle);
+  s.radii = r.vec3("radii", {1e-3, 1e3}, s.radii);
+  s.profile = read_profile(r);
   if (s.kind == PrimitiveKind::revolution && s.profile.size() < 2)
-    r.refuse(t, "volume.profile",
-             "[[height, radius], ...] with at least two points for a revolution");
+    r.fail("profile", "expected [[height, radius], ...] with at least two points for a revolution");
+  r.finish();
   return s;
 }
 
-void read_graph(const Reader& r, const toml::table& t, Parameters& p) {
-  r.read_table(t, "graph",
-               "spacing, policy, cone_subdivisions, search_radius, threshold, weight_noise, root, "
-               "endpoints, shell, endpoint_min_z",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "spacing")
-                   p.spacing = r.number(v, key, 1e-3, 100);
-                 else if (k == "policy") {
-                   const auto s = v.value<std::string>();
-                   if (s != "yao" && s != "threshold") r.refuse(v, key, "\"yao\" or \"threshold\"");
-                   p.policy = s == "yao" ? GraphPolicy::yao : GraphPolicy::threshold;
-                 } else if (k == "cone_subdivisions")
-                   p.cone_subdivisions = r.integer(v, key, 3, 8);
-                 else if (k == "search_radius")
-                   p.search_radius = r.number(v, key, 1.5, 10);
-                 else if (k == "threshold")
-                   p.threshold = r.number(v, key, 1.0, 10);
-                 else if (k == "weight_noise")
-                   p.weight_noise = r.number(v, key, 0, 10);
-                 else if (k == "root")
-                   p.root = r.vector(v, key);
-                 else if (k == "endpoints")
-                   p.endpoints = r.integer(v, key, 1, 100000);
-                 else if (k == "shell")
-                   p.shell = r.number(v, key, 1e-3, 100);
-                 else if (k == "endpoint_min_z")
-                   p.endpoint_min_z = r.number(v, key, -1e4, 1e4);
-                 else
-                   return false;
-                 return true;
-               });
+void read_graph(TableReader r, Parameters& p) {
+  p.spacing = r.number("spacing", {1e-3, 100}, p.spacing);
+  p.policy = r.choice("policy", {"yao", "threshold"}, "yao") == "yao" ? GraphPolicy::yao
+                                                                      : GraphPolicy::threshold;
+  p.cone_subdivisions = static_cast<int>(r.integer("cone_subdivisions", 3, 8, p.cone_subdivisions));
+  p.search_radius = r.number("search_radius", {1.5, 10}, p.search_radius);
+  p.threshold = r.number("threshold", {1.0, 10}, p.threshold);
+  p.weight_noise = r.number("weight_noise", {0, 10}, p.weight_noise);
+  p.root = r.vec3("root", kCoordinate, p.root);
+  p.endpoints = static_cast<int>(r.integer("endpoints", 1, 100000, p.endpoints));
+  p.shell = r.number("shell", {1e-3, 100}, p.shell);
+  p.endpoint_min_z = r.optional_number("endpoint_min_z", kCoordinate).value_or(p.endpoint_min_z);
+  r.finish();
 }
 
-void read_thickness(const Reader& r, const toml::table& t, SkeletonOptions& o) {
-  r.read_table(t, "thickness", "power, radius_scale, min_radius",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "power")
-                   o.thickness_power = r.number(v, key, 0.1, 5);
-                 else if (k == "radius_scale")
-                   o.radius_scale = r.number(v, key, 1e-5, 10);
-                 else if (k == "min_radius")
-                   o.min_radius = r.number(v, key, 1e-4, 1);
-                 else
-                   return false;
-                 return true;
-               });
+void read_thickness(TableReader r, SkeletonOptions& o) {
+  o.thickness_power = r.number("power", {0.1, 5}, o.thickness_power);
+  o.radius_scale = r.number("radius_scale", {1e-5, 10}, o.radius_scale);
+  o.min_radius = r.number("min_radius", {1e-4, 1}, o.min_radius);
+  r.finish();
 }
 
-void read_leaves(const Reader& r, const toml::table& t, SkeletonOptions& o) {
-  r.read_table(t, "leaves", "per_endpoint, length, width",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "per_endpoint")
-                   o.leaves_per_endpoint = r.integer(v, key, 0, 64);
-                 else if (k == "length")
-                   o.leaf_length = r.number(v, key, 1e-3, 5);
-                 else if (k == "width")
-                   o.leaf_width = r.number(v, key, 1e-3, 5);
-                 else
-                   return false;
-                 return true;
-               });
+void read_leaves(TableReader r, SkeletonOptions& o) {
+  o.leaves_per_endpoint = static_cast<int>(r.integer("per_endpoint", 0, 64, o.leaves_per_endpoint));
+  o.leaf_length = r.number("length", {1e-3, 5}, o.leaf_length);
+  o.leaf_width = r.number("width", {1e-3, 5}, o.leaf_width);
+  r.finish();
 }
 
-void read_iteration(const Reader& r, const toml::table& t, IterationParameters& it) {
-  constexpr double deg = std::numbers::pi / 180;
-  r.read_table(t, "iteration",
-               "levels, radius, size_ratio, half_angle, spacing_ratio, endpoints, shell, rotation, "
-               "lifespan, terminate_probability, power, light, light_strength",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "levels")
-                   it.levels = r.integer(v, key, 0, 6);
-                 else if (k == "radius")
-                   it.radius = r.number(v, key, 1e-3, 100);
-                 else if (k == "size_ratio")
-                   it.size_ratio = r.number(v, key, 0.05, 1);
-                 else if (k == "half_angle")
-                   it.half_angle = r.number(v, key, 5, 180) * deg;
-                 else if (k == "spacing_ratio")
-                   it.spacing_ratio = r.number(v, key, 0.05, 1);
-                 else if (k == "endpoints")
-                   it.endpoints = r.integer(v, key, 1, 64);
-                 else if (k == "shell")
-                   it.shell = r.number(v, key, 0.01, 1);
-                 else if (k == "rotation")
-                   it.rotation = r.number(v, key, -90, 90) * deg;
-                 else if (k == "lifespan")
-                   it.lifespan = r.number(v, key, 0, 20), it.use_lifespan = true;
-                 else if (k == "terminate_probability")
-                   it.terminate_probability = r.number(v, key, 0, 1);
-                 else if (k == "power")
-                   it.power = r.number(v, key, 0.1, 5);
-                 else if (k == "light") {
-                   it.light = r.vector(v, key);
-                   if (!(length(it.light) > 1e-9)) r.refuse(v, key, "a direction, not [0, 0, 0]");
-                 } else if (k == "light_strength")
-                   it.light_strength = r.number(v, key, 0, 1);
-                 else
-                   return false;
-                 return true;
-               });
+void read_iteration(TableReader r, IterationParameters& it) {
+  it.levels = static_cast<int>(r.integer("levels", 0, 6, it.levels));
+  it.radius = r.number("radius", {1e-3, 100}, it.radius);
+  it.size_ratio = r.number("size_ratio", {0.05, 1}, it.size_ratio);
+  it.half_angle = r.angle("half_angle", {5, 180}, it.half_angle);
+  it.spacing_ratio = r.number("spacing_ratio", {0.05, 1}, it.spacing_ratio);
+  it.endpoints = static_cast<int>(r.integer("endpoints", 1, 64, it.endpoints));
+  it.shell = r.number("shell", {0.01, 1}, it.shell);
+  it.rotation = r.angle("rotation", {-90, 90}, it.rotation);
+  if (const auto lifespan = r.optional_number("lifespan", {0, 20})) {
+    it.lifespan = *lifespan;
+    it.use_lifespan = true;
+  }
+  it.terminate_probability = r.number("terminate_probability", {0, 1}, it.terminate_probability);
+  it.power = r.number("power", {0.1, 5}, it.power);
+  it.light = direction(r, "light", it.light);
+  it.light_strength = r.number("light_strength", {0, 1}, it.light_strength);
+  r.finish();
 }
 
-void read_refinement(const Reader& r, const toml::table& t, Parameters& p) {
-  r.read_table(t, "refinement", "spheres, radius, cone_ratio, separation, junction",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "spheres")
-                   p.refinement.spheres = r.integer(v, key, 0, 32);
-                 else if (k == "radius")
-                   p.refinement.radius = r.number(v, key, 0.01, 100);
-                 else if (k == "cone_ratio")
-                   p.refinement.cone_ratio = r.number(v, key, 0.05, 1);
-                 else if (k == "separation")
-                   p.refinement.separation = r.number(v, key, 0.5, 4);
-                 else if (k == "junction")
-                   p.junction = r.vector(v, key);
-                 else
-                   return false;
-                 return true;
-               });
+void read_refinement(TableReader r, Parameters& p) {
+  p.refinement.spheres = static_cast<int>(r.integer("spheres", 0, 32, p.refinement.spheres));
+  p.refinement.radius = r.number("radius", {0.01, 100}, p.refinement.radius);
+  p.refinement.cone_ratio = r.number("cone_ratio", {0.05, 1}, p.refinement.cone_ratio);
+  p.refinement.separation = r.number("separation", {0.5, 4}, p.refinement.separation);
+  p.junction = r.vec3("junction", kCoordinate, p.junction);
+  r.finish();
 }
 
 double primitive_volume(const VolumePrimitive& s) {
@@ -256,32 +184,15 @@ double estimated_nodes(const Parameters& p) {
   return nodes;
 }
 
-Parameters parse_parameters(std::string_view toml_text, const std::string& source) {
-  const toml::table root = toml::parse(toml_text, source);  // species.cpp parsed it already
-  const Reader r(source);
+Parameters read_parameters(params::TableReader& root, const std::string& source) {
   Parameters p;
+  read_graph(root.table("graph"), p);
+  read_thickness(root.table("thickness"), p.skeleton);
+  read_leaves(root.table("leaves"), p.skeleton);
+  read_iteration(root.table("iteration"), p.iteration);
+  read_refinement(root.table("refinement"), p);
   std::vector<VolumePrimitive> parts;
-  for (auto&& [k, v] : root) {
-    if (k == "core" || k == "name" || k == "colours") continue;  // species.cpp's keys
-    const std::string key(k.str());
-    if (k == "graph")
-      read_graph(r, r.table(v, key), p);
-    else if (k == "thickness")
-      read_thickness(r, r.table(v, key), p.skeleton);
-    else if (k == "leaves")
-      read_leaves(r, r.table(v, key), p.skeleton);
-    else if (k == "iteration")
-      read_iteration(r, r.table(v, key), p.iteration);
-    else if (k == "refinement")
-      read_refinement(r, r.table(v, key), p);
-    else if (k == "volume")
-      for (const toml::node& t : r.tables(v, key))
-        parts.push_back(read_primitive(r, *t.as_table()));
-    else
-      r.refuse(v, key,
-               "one of core, name, colours, [graph], [thickness], [leaves], [iteration], "
-               "[refinement], [[volume]]");
-  }
+  for (TableReader& t : root.tables("volume")) parts.push_back(read_primitive(t));
   if (parts.empty()) throw InputError(source + ": at least one [[volume]] is required");
   p.volume = InitialVolume(std::move(parts));
   if (const double n = estimated_nodes(p); n > static_cast<double>(p.max_nodes))

@@ -8,8 +8,8 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "params/table_reader.h"
 #include "trees/random.h"
-#include "trees/toml_reader.h"
 
 namespace landsim::trees::harmonic {
 namespace {
@@ -25,28 +25,35 @@ double clamp_to_spec(double v, std::size_t i) {
 }
 
 // One row of a block: exactly `per_row` numbers, each in its range.
-void read_row(const TomlReader& r, const toml::node& n, const BlockShape& b, std::size_t row,
+void read_row(params::TableReader& r, const toml::node& n, const BlockShape& b, std::size_t row,
               Parameters& p) {
-  std::string key = b.key;
-  if (b.rows > 1) key.append("[").append(std::to_string(row)).append("]");
   const toml::array* a = n.as_array();
   if (a == nullptr || a->size() != b.per_row)
-    r.refuse(n, key, std::to_string(b.per_row) + " numbers (docs/HARMONIC.md)");
+    r.fail_at(n, b.key,
+              "expected " + std::string(b.rows > 1 ? "row " + std::to_string(row) + ": " : "") +
+                  std::to_string(b.per_row) + " numbers (docs/HARMONIC.md)");
   for (std::size_t k = 0; k < b.per_row; ++k) {
     const std::size_t i = b.offset + row * b.per_row + k;
     const ParameterSpec& s = parameter_specs()[i];
-    const double v = r.number(*a->get(k), parameter_label(i), s.min, s.max);
-    if (s.whole && v != std::round(v)) r.refuse(*a->get(k), parameter_label(i), "a whole number");
-    p.values[i] = v;
+    const auto v = a->get(k)->value<double>();
+    const params::Range range{s.min, s.max};
+    if (!v || !range.contains(*v) || (s.whole && *v != std::round(*v)))
+      r.fail_at(*a->get(k), b.key,
+                parameter_label(i) + ": expected " + (s.whole ? "a whole number " : "a number ") +
+                    range.describe());
+    p.values[i] = *v;
   }
 }
 
-void read_block(const TomlReader& r, const toml::node& n, const BlockShape& b, Parameters& p) {
-  if (b.rows == 1) return read_row(r, n, b, 0, p);
-  const toml::array* a = n.as_array();
-  if (a == nullptr || a->size() != b.rows)
-    r.refuse(n, b.key,
-             std::to_string(b.rows) + " rows of " + std::to_string(b.per_row) + " numbers");
+void read_block(params::TableReader& r, const BlockShape& b, Parameters& p) {
+  const std::string shape =
+      b.rows == 1 ? std::to_string(b.per_row) + " numbers"
+                  : std::to_string(b.rows) + " rows of " + std::to_string(b.per_row) + " numbers";
+  const toml::node* n = r.value(b.key, shape, "the middle of each range");
+  if (n == nullptr) return;
+  if (b.rows == 1) return read_row(r, *n, b, 0, p);
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->size() != b.rows) r.fail(b.key, "expected " + shape);
   for (std::size_t row = 0; row < b.rows; ++row) read_row(r, *a->get(row), b, row, p);
 }
 
@@ -103,19 +110,9 @@ Parameters default_parameters() {
   return p;
 }
 
-Parameters parse_parameters(std::string_view toml_text, const std::string& source) {
-  const toml::table root = toml::parse(toml_text, source);  // species.cpp parsed it already
-  const TomlReader r(source);
+Parameters read_parameters(params::TableReader& root, const std::string& /*source*/) {
   Parameters p = default_parameters();
-  for (auto&& [k, v] : root) {
-    if (k == "core" || k == "name" || k == "colours") continue;  // species.cpp's keys
-    bool known = false;
-    for (Block b : kBlocks)
-      if (k == block_shape(b).key) read_block(r, v, block_shape(b), p), known = true;
-    if (!known)
-      r.refuse(v, std::string(k.str()),
-               "one of core, name, colours, general, hierarchy, arc, wander, harmonics, semantic");
-  }
+  for (Block b : kBlocks) read_block(root, block_shape(b), p);
   return p;
 }
 

@@ -9,6 +9,10 @@
 
 #include "trees/harmonic/layout.h"
 
+namespace landsim::params {
+class TableReader;
+}
+
 namespace landsim::trees::harmonic {
 
 struct LevelParameters {
@@ -53,7 +57,7 @@ Parameters default_parameters();
 
 // Reads the core's keys (general, hierarchy, arc, wander, harmonics, semantic) of a species
 // file; throws InputError naming file, line, key, index and the expected count or range.
-Parameters parse_parameters(std::string_view toml_text, const std::string& source);
+Parameters read_parameters(params::TableReader& root, const std::string& source);
 
 // One individual: every value times (1 + variation * u), u uniform in [-1, 1] from the seed,
 // kept in range; counts rounded. Variation 0 returns the values unchanged.
@@ -63,7 +67,7 @@ Parameters vary(const Parameters& p, std::uint64_t seed);
 Parameters sample_discovery(std::uint64_t seed);
 
 // The core's keys as species-file TOML (one block per line, rows per level): what
-// parse_parameters reads back to the same values.
+// parse_species_toml reads back to the same values.
 std::string format_parameters(const Parameters& p);
 
 }  // namespace landsim::trees::harmonic

@@ -6,6 +6,10 @@
 
 #include "trees/measured_growth/allometry.h"
 
+namespace landsim::params {
+class TableReader;
+}
+
 namespace landsim::trees::measured_growth {
 
 struct Parameters {
@@ -25,6 +29,6 @@ struct Parameters {
 
 // Reads the core's tables ([allometry.*], [growth], [leaves]); InputError names file, line,
 // key and what was expected.
-Parameters parse_parameters(std::string_view toml_text, const std::string& source);
+Parameters read_parameters(params::TableReader& root, const std::string& source);
 
 }  // namespace landsim::trees::measured_growth

@@ -7,318 +7,188 @@
 #include <numbers>
 
 #include "core/input_error.h"
-#include "trees/toml_reader.h"
+#include "params/table_reader.h"
 
 namespace landsim::trees::self_organizing {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180;
 constexpr double kMaxMarkers = 5e6;  // markers one source may create: beyond, refused
 
-using Reader = TomlReader;
+using params::Range;
+using params::TableReader;
 
-void read_growth(const Reader& r, const toml::table& t, Parameters& p) {
-  r.read_table(t, "growth", "steps, age, internode_length",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "steps" || k == "age")  // one step a year
-                   p.steps = r.integer(v, key, 1, 500);
-                 else if (k == "internode_length")
-                   p.internode_length = r.number(v, key, 0.005, 2);
-                 else
-                   return false;
-                 return true;
-               });
+void read_growth(TableReader r, Parameters& p) {
+  // One step a year: `age` is the same key under the name a grower would use.
+  const char* steps = r.has("age") ? "age" : "steps";
+  p.steps = static_cast<int>(r.integer(steps, 1, 500, p.steps));
+  p.internode_length = r.number("internode_length", {0.005, 2}, p.internode_length);
+  r.finish();
 }
 
-void read_space(const Reader& r, const toml::table& t, SpaceParameters& s) {
-  r.read_table(t, "space", "occupancy, perception, perception_angle, autonomous_markers",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "occupancy")
-                   s.occupancy = r.number(v, key, 0.5, 10);
-                 else if (k == "perception")
-                   s.perception = r.number(v, key, 0.5, 20);
-                 else if (k == "perception_angle")
-                   s.perception_angle = r.number(v, key, 10, 360) * kDegree;
-                 else if (k == "autonomous_markers")
-                   s.autonomous_markers = r.integer(v, key, 0, 100);
-                 else
-                   return false;
-                 return true;
-               });
+void read_space(TableReader r, SpaceParameters& s) {
+  s.occupancy = r.number("occupancy", {0.5, 10}, s.occupancy);
+  s.perception = r.number("perception", {0.5, 20}, s.perception);
+  s.perception_angle = r.angle("perception_angle", {10, 360}, s.perception_angle);
+  s.autonomous_markers =
+      static_cast<int>(r.integer("autonomous_markers", 0, 100, s.autonomous_markers));
+  r.finish();
 }
 
-void read_light(const Reader& r, const toml::table& t, LightParameters& l) {
-  r.read_table(t, "light", "full, a, b, depth, voxel, sensitivity",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "full")
-                   l.full = r.number(v, key, 0.01, 100);
-                 else if (k == "a")
-                   l.a = r.number(v, key, 0, 100);
-                 else if (k == "b")
-                   l.b = r.number(v, key, 1.01, 100);
-                 else if (k == "depth")
-                   l.depth = r.integer(v, key, 0, 20);
-                 else if (k == "voxel")
-                   l.voxel = r.number(v, key, 0.25, 20);
-                 else if (k == "sensitivity")
-                   l.sensitivity = r.number(v, key, 0, 5);
-                 else
-                   return false;
-                 return true;
-               });
+void read_light(TableReader r, LightParameters& l) {
+  l.full = r.number("full", {0.01, 100}, l.full);
+  l.a = r.number("a", {0, 100}, l.a);
+  l.b = r.number("b", {1.01, 100}, l.b);
+  l.depth = static_cast<int>(r.integer("depth", 0, 20, l.depth));
+  l.voxel = r.number("voxel", {0.25, 20}, l.voxel);
+  l.sensitivity = r.number("sensitivity", {0, 5}, l.sensitivity);
+  r.finish();
 }
 
-void read_vigour(const Reader& r, const toml::table& t, VigourParameters& g) {
-  r.read_table(t, "vigour", "alpha, apical_control, shedding, max_shoot",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "alpha")
-                   g.alpha = r.number(v, key, 0.01, 1000);
-                 else if (k == "apical_control")
-                   g.apical_control = r.number(v, key, 0, 1);
-                 else if (k == "shedding")
-                   g.shedding = r.number(v, key, 0, 1000);
-                 else if (k == "max_shoot")
-                   g.max_shoot = r.integer(v, key, 1, 20);
-                 else
-                   return false;
-                 return true;
-               });
+void read_vigour(TableReader r, VigourParameters& g) {
+  g.alpha = r.number("alpha", {0.01, 1000}, g.alpha);
+  g.apical_control = r.number("apical_control", {0, 1}, g.apical_control);
+  g.shedding = r.number("shedding", {0, 1000}, g.shedding);
+  g.max_shoot = static_cast<int>(r.integer("max_shoot", 1, 20, g.max_shoot));
+  r.finish();
 }
 
-void read_gravimorphism(const Reader& r, const toml::table& t, Gravimorphism& g) {
-  r.read_table(t, "gravimorphism", "vertical, horizontal, offset",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "vertical")
-                   g.vertical = r.number(v, key, 0.05, 20);
-                 else if (k == "horizontal")
-                   g.horizontal = r.number(v, key, 0.05, 20);
-                 else if (k == "offset")
-                   g.offset = r.number(v, key, -20, 20);
-                 else
-                   return false;
-                 return true;
-               });
+void read_gravimorphism(TableReader r, Gravimorphism& g) {
+  g.vertical = r.number("vertical", {0.05, 20}, g.vertical);
+  g.horizontal = r.number("horizontal", {0.05, 20}, g.horizontal);
+  g.offset = r.number("offset", {-20, 20}, g.offset);
   if (!(std::abs(g.offset) < g.vertical))
-    r.refuse(t, "gravimorphism.offset",
-             "an offset smaller than gravimorphism.vertical in size (the bud inside the "
-             "ellipse), got " +
-                 Reader::text(g.offset));
+    r.fail("offset",
+           "expected an offset smaller than vertical in size (the bud inside the "
+           "ellipse), got " +
+               params::format_number(g.offset));
+  r.finish();
 }
 
-void read_direction(const Reader& r, const toml::table& t, DirectionParameters& d) {
-  r.read_table(t, "direction",
-               "heading, tropism, environment, set_point, trunk_set_point, branching, deflection, "
-               "phyllotaxis, noise",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "heading")
-                   d.heading = r.number(v, key, 0, 10);
-                 else if (k == "tropism")
-                   d.tropism = r.number(v, key, 0, 10);
-                 else if (k == "environment")
-                   d.environment = r.number(v, key, 0, 10);
-                 else if (k == "set_point")
-                   d.set_point = r.number(v, key, 0, 180) * kDegree;
-                 else if (k == "trunk_set_point")
-                   d.trunk_set_point = r.number(v, key, 0, 180) * kDegree;
-                 else if (k == "branching")
-                   d.branching = r.number(v, key, 0, 180) * kDegree;
-                 else if (k == "deflection")
-                   d.deflection = r.number(v, key, 0, 60) * kDegree;
-                 else if (k == "phyllotaxis")
-                   d.phyllotaxis = r.number(v, key, 0, 360) * kDegree;
-                 else if (k == "noise")
-                   d.noise = r.number(v, key, 0, 1);
-                 else
-                   return false;
-                 return true;
-               });
+void read_direction(TableReader r, DirectionParameters& d) {
+  d.heading = r.number("heading", {0, 10}, d.heading);
+  d.tropism = r.number("tropism", {0, 10}, d.tropism);
+  d.environment = r.number("environment", {0, 10}, d.environment);
+  d.set_point = r.angle("set_point", {0, 180}, d.set_point);
+  d.trunk_set_point = r.angle("trunk_set_point", {0, 180}, d.trunk_set_point);
+  d.branching = r.angle("branching", {0, 180}, d.branching);
+  d.deflection = r.angle("deflection", {0, 60}, d.deflection);
+  d.phyllotaxis = r.angle("phyllotaxis", {0, 360}, d.phyllotaxis);
+  d.noise = r.number("noise", {0, 1}, d.noise);
+  r.finish();
 }
 
-void read_width(const Reader& r, const toml::table& t, WidthParameters& w) {
-  r.read_table(t, "width", "tip, exponent",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "tip")
-                   w.tip = r.number(v, key, 1e-4, 0.5);
-                 else if (k == "exponent")
-                   w.exponent = r.number(v, key, 0.5, 20);
-                 else
-                   return false;
-                 return true;
-               });
+void read_width(TableReader r, WidthParameters& w) {
+  w.tip = r.number("tip", {1e-4, 0.5}, w.tip);
+  w.exponent = r.number("exponent", {0.5, 20}, w.exponent);
+  r.finish();
 }
 
-WidthConstraint read_constraint(const Reader& r, const toml::table& t) {
+WidthConstraint read_constraint(TableReader r) {
   WidthConstraint c;
-  r.read_table(t, "width_constraint", "internode, width",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "internode")
-                   c.internode = static_cast<std::uint32_t>(r.integer(v, key, 0, 100000000));
-                 else if (k == "width")
-                   c.width = r.number(v, key, 1e-4, 10);
-                 else
-                   return false;
-                 return true;
-               });
+  c.internode = static_cast<std::uint32_t>(r.integer("internode", 0, 100000000, c.internode));
+  c.width = r.number("width", {1e-4, 10}, c.width);
+  r.finish();
   return c;
 }
 
-void read_leaves(const Reader& r, const toml::table& t, LeafParameters& l) {
-  r.read_table(t, "leaves", "age, length, width",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "age")
-                   l.age = r.integer(v, key, 0, 100);
-                 else if (k == "length")
-                   l.length = r.number(v, key, 1e-3, 2);
-                 else if (k == "width")
-                   l.width = r.number(v, key, 1e-3, 2);
-                 else
-                   return false;
-                 return true;
-               });
+void read_leaves(TableReader r, LeafParameters& l) {
+  l.age = static_cast<int>(r.integer("age", 0, 100, l.age));
+  l.length = r.number("length", {1e-3, 2}, l.length);
+  l.width = r.number("width", {1e-3, 2}, l.width);
+  r.finish();
 }
 
-std::vector<std::array<double, 2>> read_silhouette(const Reader& r, const toml::node& n,
-                                                   const std::string& key) {
-  const std::string expected =
-      "[[radius, height], ...]: at least three points of a closed outline, radii 0 to 100 m";
-  const toml::array* a = n.as_array();
-  if (a == nullptr || a->size() < 3) r.refuse(n, key, expected);
-  std::vector<std::array<double, 2>> points;
+// Rows of `columns` numbers, each column in its range: silhouettes, stroke points.
+std::vector<std::vector<double>> read_rows(TableReader& r, std::string_view key,
+                                           const std::vector<Range>& columns, std::size_t min_rows,
+                                           const std::string& expected) {
+  std::vector<std::vector<double>> rows;
+  const toml::node* n = r.value(key, expected);
+  if (n == nullptr) return rows;
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->size() < min_rows) r.fail(key, "expected " + expected);
   for (const toml::node& point : *a) {
-    const toml::array* rz = point.as_array();
-    if (rz == nullptr || rz->size() != 2) r.refuse(point, key, expected);
-    points.push_back({r.number(*rz->get(0), key, 0, 100), r.number(*rz->get(1), key, -10, 200)});
+    const toml::array* q = point.as_array();
+    if (q == nullptr || q->size() != columns.size()) r.fail_at(point, key, "expected " + expected);
+    std::vector<double> row;
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      const auto v = q->get(i)->value<double>();
+      if (!v || !columns[i].contains(*v))
+        r.fail_at(*q->get(i), key,
+                  "expected " + expected + "; column " + std::to_string(i + 1) + " " +
+                      columns[i].describe());
+      row.push_back(*v);
+    }
+    rows.push_back(std::move(row));
   }
-  return points;
+  return rows;
 }
 
-void read_envelope(const Reader& r, const toml::table& t, Envelope& e) {
-  e.kind = EnvelopeKind::silhouette;
-  bool has_kind = false;
-  r.read_table(t, "envelope", "kind, silhouette, centre, radii, density, confine",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "kind") {
-                   const auto s = v.value<std::string>();
-                   if (s != "silhouette" && s != "ellipsoid")
-                     r.refuse(v, key, "\"silhouette\" or \"ellipsoid\"");
-                   e.kind = s == "silhouette" ? EnvelopeKind::silhouette : EnvelopeKind::ellipsoid;
-                   has_kind = true;
-                 } else if (k == "silhouette")
-                   e.silhouette = read_silhouette(r, v, key);
-                 else if (k == "centre")
-                   e.centre = r.vector(v, key);
-                 else if (k == "radii") {
-                   e.radii = r.vector(v, key);
-                   if (!(std::min({e.radii.x, e.radii.y, e.radii.z}) >= 0.05))
-                     r.refuse(v, key, "three semi-axes, each at least 0.05 m");
-                 } else if (k == "density")
-                   e.density = r.number(v, key, 0.1, 100000);
-                 else if (k == "confine")
-                   e.confine = r.boolean(v, key);
-                 else
-                   return false;
-                 return true;
-               });
-  if (!has_kind) r.refuse(t, "envelope.kind", "\"silhouette\" or \"ellipsoid\"");
+void read_envelope(TableReader r, Envelope& e) {
+  e.kind = r.choice("kind", {"silhouette", "ellipsoid"}) == "silhouette" ? EnvelopeKind::silhouette
+                                                                         : EnvelopeKind::ellipsoid;
+  for (const std::vector<double>& rz :
+       read_rows(r, "silhouette", {{0, 100}, {-10, 200}}, 3,
+                 "[[radius, height], ...]: at least three points of a closed outline, radii 0 "
+                 "to 100 m"))
+    e.silhouette.push_back({rz[0], rz[1]});
+  e.centre = r.vec3("centre", {-1e4, 1e4}, e.centre);
+  e.radii = r.vec3("radii", {0.05, 1e4}, e.radii);
+  e.density = r.number("density", {0.1, 100000}, e.density);
+  e.confine = r.boolean("confine", e.confine);
   if (e.kind == EnvelopeKind::silhouette && e.silhouette.size() < 3)
-    r.refuse(t, "envelope.silhouette", "[[radius, height], ...] with at least three points");
+    r.fail("silhouette", "expected [[radius, height], ...] with at least three points");
   const auto [lo, hi] = e.bounds();
   const Vec3 size = hi - lo;
   if (e.density * size.x * size.y * size.z > kMaxMarkers)
-    r.refuse(t, "envelope.density",
-             "at most " + Reader::text(kMaxMarkers) + " markers over the envelope's bounds; got " +
-                 Reader::text(e.density * size.x * size.y * size.z));
+    r.fail("density", "expected at most " + params::format_number(kMaxMarkers) +
+                          " markers over the envelope's bounds; got " +
+                          params::format_number(e.density * size.x * size.y * size.z));
+  r.finish();
 }
 
-BrushStroke read_stroke(const Reader& r, const toml::table& t) {
+BrushStroke read_stroke(TableReader r) {
   BrushStroke s;
-  r.read_table(t, "stroke", "points, start_step, points_per_step, markers_per_step, max_age",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "points") {
-                   const toml::array* a = v.as_array();
-                   const std::string expected = "[[x, y, z, radius], ...] with at least one point";
-                   if (a == nullptr || a->empty()) r.refuse(v, key, expected);
-                   for (const toml::node& point : *a) {
-                     const toml::array* q = point.as_array();
-                     if (q == nullptr || q->size() != 4) r.refuse(point, key, expected);
-                     s.points.push_back({{r.number(*q->get(0), key, -1e3, 1e3),
-                                          r.number(*q->get(1), key, -1e3, 1e3),
-                                          r.number(*q->get(2), key, -1e3, 1e3)},
-                                         r.number(*q->get(3), key, 0.01, 100)});
-                   }
-                 } else if (k == "start_step")
-                   s.start_step = r.integer(v, key, 1, 500);
-                 else if (k == "points_per_step")
-                   s.points_per_step = r.number(v, key, 0.01, 100);
-                 else if (k == "markers_per_step")
-                   s.markers_per_step = r.integer(v, key, 1, 100000);
-                 else if (k == "max_age")
-                   s.max_age = r.integer(v, key, 1, 500);
-                 else
-                   return false;
-                 return true;
-               });
-  if (s.points.empty()) r.refuse(t, "stroke.points", "[[x, y, z, radius], ...]");
+  constexpr Range kCoordinate{-1e3, 1e3};
+  for (const std::vector<double>& q :
+       read_rows(r, "points", {kCoordinate, kCoordinate, kCoordinate, {0.01, 100}}, 1,
+                 "[[x, y, z, radius], ...] with at least one point"))
+    s.points.push_back({{q[0], q[1], q[2]}, q[3]});
+  if (s.points.empty()) r.fail("points", "expected [[x, y, z, radius], ...]");
+  s.start_step = static_cast<int>(r.integer("start_step", 1, 500, s.start_step));
+  s.points_per_step = r.number("points_per_step", {0.01, 100}, s.points_per_step);
+  s.markers_per_step =
+      static_cast<int>(r.integer("markers_per_step", 1, 100000, s.markers_per_step));
+  s.max_age = static_cast<int>(r.integer("max_age", 1, 500, s.max_age));
+  r.finish();
   return s;
 }
 
-Pruning read_prune(const Reader& r, const toml::table& t) {
+Pruning read_prune(TableReader r) {
   Pruning c;
-  r.read_table(t, "prune", "step, internode",
-               [&](const std::string& k, const std::string& key, const toml::node& v) {
-                 if (k == "step")
-                   c.step = r.integer(v, key, 1, 500);
-                 else if (k == "internode")
-                   c.internode = static_cast<std::uint32_t>(r.integer(v, key, 1, 100000000));
-                 else
-                   return false;
-                 return true;
-               });
+  c.step = static_cast<int>(r.integer("step", 1, 500, c.step));
+  c.internode = static_cast<std::uint32_t>(r.integer("internode", 1, 100000000, c.internode));
+  r.finish();
   return c;
 }
 
 }  // namespace
 
-Parameters parse_parameters(std::string_view toml_text, const std::string& source) {
-  const toml::table root = toml::parse(toml_text, source);  // species.cpp parsed it already
-  const Reader r(source);
+Parameters read_parameters(params::TableReader& root, const std::string& source) {
   Parameters p;
-  for (auto&& [k, v] : root) {
-    if (k == "core" || k == "name" || k == "colours") continue;  // species.cpp's keys
-    const std::string key(k.str());
-    if (k == "growth")
-      read_growth(r, r.table(v, key), p);
-    else if (k == "space")
-      read_space(r, r.table(v, key), p.space);
-    else if (k == "light")
-      read_light(r, r.table(v, key), p.light);
-    else if (k == "vigour")
-      read_vigour(r, r.table(v, key), p.vigour);
-    else if (k == "gravimorphism")
-      read_gravimorphism(r, r.table(v, key), p.gravimorphism);
-    else if (k == "direction")
-      read_direction(r, r.table(v, key), p.direction);
-    else if (k == "width")
-      read_width(r, r.table(v, key), p.width);
-    else if (k == "leaves")
-      read_leaves(r, r.table(v, key), p.leaves);
-    else if (k == "envelope")
-      read_envelope(r, r.table(v, key), p.envelope);
-    else if (k == "width_constraint")
-      for (const toml::node& t : r.tables(v, key))
-        p.width.constraints.push_back(read_constraint(r, *t.as_table()));
-    else if (k == "stroke")
-      for (const toml::node& t : r.tables(v, key))
-        p.strokes.push_back(read_stroke(r, *t.as_table()));
-    else if (k == "prune")
-      for (const toml::node& t : r.tables(v, key))
-        p.prunings.push_back(read_prune(r, *t.as_table()));
-    else
-      r.refuse(v, key,
-               "one of core, name, colours, [growth], [space], [light], [vigour], "
-               "[gravimorphism], [direction], [width], [leaves], [envelope], "
-               "[[width_constraint]], [[stroke]], [[prune]]");
-  }
+  read_growth(root.table("growth"), p);
+  read_space(root.table("space"), p.space);
+  read_light(root.table("light"), p.light);
+  read_vigour(root.table("vigour"), p.vigour);
+  read_gravimorphism(root.table("gravimorphism"), p.gravimorphism);
+  read_direction(root.table("direction"), p.direction);
+  read_width(root.table("width"), p.width);
+  read_leaves(root.table("leaves"), p.leaves);
+  if (root.has("envelope")) read_envelope(root.table("envelope"), p.envelope);
+  for (TableReader& t : root.tables("width_constraint"))
+    p.width.constraints.push_back(read_constraint(t));
+  for (TableReader& t : root.tables("stroke")) p.strokes.push_back(read_stroke(t));
+  for (TableReader& t : root.tables("prune")) p.prunings.push_back(read_prune(t));
   if (p.envelope.kind == EnvelopeKind::none && p.strokes.empty() && p.space.autonomous_markers == 0)
     throw InputError(source +
                      ": no markers of free space: give an [envelope], a [[stroke]] or "

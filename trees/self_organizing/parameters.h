@@ -12,6 +12,10 @@
 #include "core/vec3.h"
 #include "trees/self_organizing/envelope.h"
 
+namespace landsim::params {
+class TableReader;
+}
+
 namespace landsim::trees::self_organizing {
 
 // A brush stroke: the brush moves along the polyline, `points_per_step` points per step from
@@ -120,6 +124,6 @@ struct Parameters {
 
 // The core's own tables of a species file (docs/SPECIES.md); throws InputError naming the
 // file, line, key and what was expected.
-Parameters parse_parameters(std::string_view toml_text, const std::string& source);
+Parameters read_parameters(params::TableReader& root, const std::string& source);
 
 }  // namespace landsim::trees::self_organizing

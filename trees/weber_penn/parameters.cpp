@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "params/table_reader.h"
 
 namespace landsim::trees::weber_penn {
 namespace {
@@ -197,6 +198,34 @@ Parameters parse_parameters(const ParamTable& table, const std::string& file) {
                      e.dominant);
   }
   return p;
+}
+
+Parameters read_parameters(params::TableReader& root, const std::string& file) {
+  ParamTable table;
+  // Each parameter as a number, or as text (names such as "disc1", numbers in quotes).
+  const auto take = [&](const std::string& name, const std::string& expected) {
+    const toml::node* n = root.value(name, expected);
+    if (n == nullptr) return;
+    RawParam raw;
+    raw.where = root.location(n);
+    if (n->is_number()) {
+      raw.number = n->value<double>();
+      std::ostringstream t;
+      t << *raw.number;
+      raw.text = t.str();
+    } else if (n->is_string()) {
+      raw.text = *n->value<std::string>();
+      raw.number = param_number(raw.text);
+    } else {
+      root.fail(name, "expected a number or a string, got " + params::type_name(*n));
+    }
+    table.emplace(name, raw);
+  };
+  take("LeafShape", "0-7 or a shape name");
+  for (const Spec& s : specs())
+    take(s.name, std::string(s.integer ? "an integer" : "a number") + " from " +
+                     number_text(s.min) + " to " + number_text(s.max));
+  return parse_parameters(table, file);
 }
 
 std::vector<std::string> parameter_names() {

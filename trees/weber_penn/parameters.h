@@ -8,6 +8,10 @@
 #include "trees/leaf_shape.h"
 #include "trees/param_table.h"
 
+namespace landsim::params {
+class TableReader;
+}
+
 namespace landsim::trees::weber_penn {
 
 // Per recursion level n (0 = trunk). Stems deeper than 3 use level 3's values.
@@ -61,6 +65,9 @@ inline constexpr double kMaxLeaves = 5e6;
 // InputError naming the parameter, its location and the limit), then refuses parameter
 // sets whose expected stem or leaf count exceeds the limits. `file` names the source.
 Parameters parse_parameters(const ParamTable& table, const std::string& file);
+// The same from a TOML species file's top level, through the one parameter reader (unknown
+// keys are refused by the caller's finish()).
+Parameters read_parameters(params::TableReader& root, const std::string& file);
 
 // Expected stems and leaves of a tree (used by the explosion guard; also printed in docs).
 struct SizeEstimate {

@@ -91,8 +91,7 @@ TEST(HarmonicGrowth, GirthGrowsWithAgeAndEarlierStepsDoNotChange) {
       ASSERT_GE(rb, ra);
       thicker += rb > ra ? 1 : 0;
       // Taper: along a chain, older particles are at least as thick.
-      const double previous =
-          k > 0 ? particle_radius(p, a, a.particles[k - 1], young.age) : ra;
+      const double previous = k > 0 ? particle_radius(p, a, a.particles[k - 1], young.age) : ra;
       ASSERT_LE(ra, previous);
     }
   }

@@ -103,9 +103,9 @@ TEST(MeasuredGrowth, SpeciesFileErrorsNameTheKey) {
   const auto error = [](const std::string& text) {
     return trees::testing::species_error("core = \"measured_growth\"\n" + text, "p.toml");
   };
-  EXPECT_NE(error("[allometry.dbh]\nform = \"exp\"\n").find("allometry.dbh.form"),
+  EXPECT_NE(error("[allometry.dbh]\nform = \"exp\"\n").find("[allometry.dbh] form"),
             std::string::npos);
-  EXPECT_NE(error("[growth]\nbifurcation_period = 0\n").find("growth.bifurcation_period"),
+  EXPECT_NE(error("[growth]\nbifurcation_period = 0\n").find("[growth] bifurcation_period"),
             std::string::npos);
   EXPECT_NE(error("[growth]\nscaffold_interval = 0.25\nmax_generations = 12\n").find("branches"),
             std::string::npos);
