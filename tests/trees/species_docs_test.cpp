@@ -1,0 +1,113 @@
+// docs/SPECIES.md (and HARMONIC.md for the harmonic blocks) against what the cores declare:
+// every key a core reads from its example species files is documented in its section, and
+// every documented key is one a core reads. The declarations come from the one parameter
+// reader (params::TableReader) while the files are parsed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include "params/table_reader.h"
+#include "tests/support/temp_dir.h"
+#include "trees/species.h"
+
+namespace landsim::trees {
+namespace {
+
+using landsim::testing::read_file;
+using landsim::testing::source_file;
+
+// Keys the example files of a core declare, written as docs/SPECIES.md writes them:
+// "[graph] spacing", "[[volume]] kind", "[allometry.dbh]" (equation tables as a whole), and
+// top-level values ("general") bare. The shared keys (core, name, colours) are documented
+// once, under Formats.
+std::set<std::string> declared_keys(const std::string& file_prefix) {
+  std::set<std::string> keys;
+  for (const auto& entry : std::filesystem::directory_iterator(source_file("data/species"))) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(file_prefix, 0) != 0 || entry.path().extension() != ".toml") continue;
+    params::Declarations declared;
+    parse_species_toml(read_file(entry.path()), entry.path().string(), &declared);
+    for (const params::KeyDeclaration& d : declared) {
+      if (d.table.empty() && (d.key == "core" || d.key == "name" || d.key == "colours")) continue;
+      if (d.table == "colours") continue;
+      if (d.table.rfind("allometry.", 0) == 0) {
+        keys.insert("[" + d.table + "]");
+      } else if (d.table.size() > 2 && d.table.substr(d.table.size() - 2) == "[]") {
+        keys.insert("[[" + d.table.substr(0, d.table.size() - 2) + "]] " + d.key);
+      } else if (d.table.empty()) {
+        if (d.key != "allometry") keys.insert(d.key);
+      } else {
+        keys.insert("[" + d.table + "] " + d.key);
+      }
+    }
+  }
+  return keys;
+}
+
+// The keys of the tables in the section of `doc` that starts at `heading`, one per backquoted
+// name in the first column; "[t] a, `b`" documents "[t] a" and "[t] b".
+std::set<std::string> documented_keys(const std::string& doc, const std::string& heading) {
+  const std::size_t start = doc.find(heading);
+  EXPECT_NE(start, std::string::npos) << heading;
+  const std::size_t end = doc.find("\n## ", start + heading.size());
+  std::istringstream lines(doc.substr(start, end - start));
+  std::set<std::string> keys;
+  const std::regex name("`([^`]+)`");
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("| `", 0) != 0) continue;
+    const std::string cell = line.substr(2, line.find(" |", 2) - 2);
+    std::string table;
+    for (auto it = std::sregex_iterator(cell.begin(), cell.end(), name);
+         it != std::sregex_iterator(); ++it) {
+      std::string key = (*it)[1];
+      const std::size_t space = key.rfind("] ");
+      if (space != std::string::npos) {
+        table = key.substr(0, space + 1);
+      } else if (!table.empty() && key.front() != '[') {
+        key = table + " " + key;
+      }
+      keys.insert(key);
+    }
+  }
+  return keys;
+}
+
+void expect_documented(const std::string& doc_file, const std::string& heading,
+                       const std::string& file_prefix, const std::set<std::string>& aliases = {}) {
+  const std::set<std::string> declared = declared_keys(file_prefix);
+  ASSERT_FALSE(declared.empty()) << file_prefix;
+  const std::set<std::string> documented =
+      documented_keys(read_file(source_file(doc_file)), heading);
+  for (const std::string& k : declared)
+    EXPECT_TRUE(documented.count(k)) << k << " is read but not documented in " << doc_file;
+  for (const std::string& k : documented)
+    EXPECT_TRUE(declared.count(k) || aliases.count(k))
+        << k << " is documented in " << doc_file << " but no example declares it";
+}
+
+TEST(SpeciesDocs, GraphPathsKeysAreTheDocumentedOnes) {
+  expect_documented("docs/SPECIES.md", "## Graph-paths species", "graph_");
+}
+
+// `age` is the documented other name of `steps`; the constraints, strokes and prunings are
+// documented though the examples that use them are tests' own files.
+TEST(SpeciesDocs, SelfOrganizingKeysAreTheDocumentedOnes) {
+  expect_documented("docs/SPECIES.md", "## Self-organising species", "so_",
+                    {"[growth] age", "[[width_constraint]] internode", "[[width_constraint]] width",
+                     "[[stroke]] points", "[[stroke]] start_step", "[[stroke]] points_per_step",
+                     "[[stroke]] markers_per_step", "[[stroke]] max_age", "[[prune]] step",
+                     "[[prune]] internode"});
+}
+
+TEST(SpeciesDocs, MeasuredGrowthKeysAreTheDocumentedOnes) {
+  expect_documented("docs/SPECIES.md", "## Measured-growth species", "london_plane");
+}
+
+TEST(SpeciesDocs, HarmonicBlocksAreTheDocumentedOnes) {
+  expect_documented("docs/HARMONIC.md", "| block (species-file key)", "harmonic_");
+}
+
+}  // namespace
+}  // namespace landsim::trees
