@@ -18,15 +18,21 @@
 
 namespace landsim::renderer {
 
+// The terrain's reflectance where nothing else is said (the scenario's [terrain] albedo).
+inline constexpr Vec3f kDefaultGroundAlbedo{0.18f, 0.17f, 0.12f};
+// Leaves (and grass blades) transmit a little less than they reflect (typical broadleaf
+// spectra): transmittance = this x reflectance.
+inline constexpr float kLeafTransmittanceRatio = 0.8f;
+
 // A ground material from the ground feature maps (soil, rock, water, road, grass cover).
 struct GroundMaterial {
-  Vec3f albedo{0.18f, 0.17f, 0.12f};  // Lambertian reflectance, linear RGB
-  bool water = false;                 // a Fresnel mirror over a dark diffuse body
+  Vec3f albedo = kDefaultGroundAlbedo;  // Lambertian reflectance, linear RGB
+  bool water = false;                   // a Fresnel mirror over a dark diffuse body
 };
 
 struct Ground {
   terrain::GroundMesh mesh;
-  Vec3f albedo{0.18f, 0.17f, 0.12f};            // material 0: the terrain's own
+  Vec3f albedo = kDefaultGroundAlbedo;          // material 0: the terrain's own
   std::vector<GroundMaterial> materials;        // further materials, 1-based in the ids below
   std::vector<std::uint8_t> triangle_material;  // per triangle, 0 = `albedo`; may be empty
 };
@@ -112,10 +118,10 @@ class BarkTexture;
 
 struct TreePrototype {
   trees::TreeGeometry geometry;  // tree base at the origin, z up, metres
-  Vec3f bark_albedo{0.30f, 0.24f, 0.18f};
+  Vec3f bark_albedo = trees::TreeColours{}.bark;
   std::shared_ptr<const BarkTexture> bark_texture;  // optional, modulates bark_albedo
-  Vec3f leaf_reflectance{0.10f, 0.20f, 0.05f};
-  Vec3f leaf_transmittance{0.05f, 0.12f, 0.02f};
+  Vec3f leaf_reflectance = trees::TreeColours{}.leaf;
+  Vec3f leaf_transmittance = trees::TreeColours{}.leaf * kLeafTransmittanceRatio;
   // Leaf colour factor at vigour 0 (species weak-leaf colour over leaf colour); leaves of
   // vigour v take lerp(leaf_weak_tint, 1, v) times the colours above.
   Vec3f leaf_weak_tint{1.0f, 1.0f, 1.0f};

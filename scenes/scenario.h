@@ -10,6 +10,7 @@
 
 #include "core/vec3.h"
 #include "featuremaps/vegetation_map.h"
+#include "renderer/scene.h"
 #include "terrain/dem_loader.h"
 #include "trees/species.h"
 
@@ -18,7 +19,7 @@ namespace landsim::scenes {
 struct TerrainSettings {
   std::string elevation;  // resolved path: a file, or a GDAL /vsimem/ path for embedded data
   terrain::DemOptions dem;
-  Vec3f albedo{0.18f, 0.17f, 0.12f};
+  Vec3f albedo = renderer::kDefaultGroundAlbedo;
 };
 
 struct SunSettings {
@@ -26,19 +27,6 @@ struct SunSettings {
   double azimuth_deg = 135.0;  // clockwise from north
   // On a surface facing the sun; empty: from the sky model (or 3.0 for the gradient sky).
   std::optional<Vec3f> irradiance;
-};
-
-struct SkySettings {
-  bool physical = true;  // "preetham" or "gradient"
-  double turbidity = 3.0;
-};
-
-struct HazeSettings {
-  bool enabled = false;
-  double visibility = 20000.0;
-  double scale_height = 1200.0;
-  Vec3f colour{0.95f, 0.95f, 0.95f};
-  double asymmetry = 0.7;
 };
 
 struct ViewSettings {
@@ -56,11 +44,11 @@ struct RenderSection {
   int threads = 0;  // 0: every core
   int max_bounces = 4;
   double exposure_ev = 0.0;
-  std::vector<double> frames{0.0};   // seconds; wind sway is evaluated at each
-  double checkpoint_seconds = 60.0;  // 0: no checkpoints
-  std::string season = "summer";     // spring, summer, autumn, winter (leafless)
-  bool degradation = true;           // range degradation of trees (Weber & Penn section 5)
-  double quality = 1.0;              // the paper's quality factor, (0, 1]
+  std::vector<double> frames{0.0};               // seconds; wind sway is evaluated at each
+  double checkpoint_seconds = 60.0;              // 0: no checkpoints
+  trees::Season season = trees::Season::summer;  // winter: leafless
+  bool degradation = true;  // range degradation of trees (Weber & Penn section 5)
+  double quality = 1.0;     // the paper's quality factor, (0, 1]
   // The memory budget in bytes ("8 GB" in the file); empty: a share of physical memory.
   std::optional<std::uint64_t> max_memory;
 };
@@ -123,8 +111,8 @@ struct Scenario {
   std::vector<GrassSettings> grass;
   GroundMaterials ground;
   SunSettings sun;
-  SkySettings sky;
-  HazeSettings haze;
+  renderer::Sky sky;    // [sky]: model and turbidity
+  renderer::Haze haze;  // [haze]; its base height is the terrain's lowest point
   std::vector<ViewSettings> views;
   RenderSection render;
   WindSettings wind;

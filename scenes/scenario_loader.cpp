@@ -64,7 +64,7 @@ TerrainSettings read_terrain(const toml::table& t, const std::string& file,
   s.dem.height_offset = r.number("height_offset", Range{-1e6, 1e6}, 0.0);
   const std::string nodata = r.choice("nodata", {"hole", "fill"}, "hole");
   s.dem.nodata = nodata == "fill" ? terrain::NodataPolicy::fill : terrain::NodataPolicy::hole;
-  s.albedo = to_vec3f(r.vec3("albedo", kUnit, Vec3{0.18, 0.17, 0.12}));
+  s.albedo = to_vec3f(r.vec3("albedo", kUnit, Vec3(s.albedo)));
   r.finish();
   return s;
 }
@@ -112,24 +112,24 @@ SunSettings read_sun(const toml::table& t, const std::string& file) {
   return s;
 }
 
-SkySettings read_sky(const toml::table& t, const std::string& file) {
+renderer::Sky read_sky(const toml::table& t, const std::string& file) {
   TableReader r(t, "sky", file);
-  SkySettings s;
+  renderer::Sky s;
   s.physical = r.choice("model", {"preetham", "gradient"}, "preetham") == "preetham";
-  s.turbidity = r.number("turbidity", Range{1.7, 10.0}, 3.0);
+  s.turbidity = r.number("turbidity", Range{1.7, 10.0}, s.turbidity);
   r.finish();
   return s;
 }
 
-HazeSettings read_haze(const toml::table& root, const std::string& file) {
-  HazeSettings h;
+renderer::Haze read_haze(const toml::table& root, const std::string& file) {
+  renderer::Haze h;
   if (!root.contains("haze")) return h;
   TableReader r(sub_table(root, "haze", file, true), "haze", file);
   h.enabled = true;
   h.visibility = r.number("visibility", Range{10.0, 1e7});
-  h.scale_height = r.number("scale_height", Range{10.0, 1e5}, 1200.0);
-  h.colour = to_vec3f(r.vec3("colour", kUnit, Vec3{0.95, 0.95, 0.95}));
-  h.asymmetry = r.number("asymmetry", Range{-0.95, 0.95}, 0.7);
+  h.scale_height = r.number("scale_height", Range{10.0, 1e5}, h.scale_height);
+  h.albedo = to_vec3f(r.vec3("colour", kUnit, Vec3(h.albedo)));
+  h.asymmetry = r.number("asymmetry", Range{-0.95, 0.95}, h.asymmetry);
   r.finish();
   return h;
 }
@@ -193,7 +193,8 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, 4));
   s.exposure_ev = r.number("exposure", Range{-20.0, 20.0}, 0.0);
   s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, 60.0);
-  s.season = r.choice("season", {"spring", "summer", "autumn", "winter"}, "summer");
+  s.season = *trees::season_from_name(
+      r.choice("season", {"spring", "summer", "autumn", "winter"}, "summer"));
   s.degradation = r.boolean("degradation", true);
   s.quality = r.number("quality", Range{0.0, 1.0, true, false}, 1.0);
   s.max_memory = r.byte_size("max_memory");

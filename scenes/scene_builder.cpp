@@ -146,19 +146,14 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
   scene.ground.albedo = scenario.terrain.albedo;
   scene.sun.direction = sun_direction(scenario.sun.elevation_deg, scenario.sun.azimuth_deg);
-  scene.sky.physical = scenario.sky.physical;
-  scene.sky.turbidity = scenario.sky.turbidity;
+  scene.sky = scenario.sky;
   if (scenario.sun.irradiance) {
     scene.sun.irradiance = *scenario.sun.irradiance;
   } else if (scenario.sky.physical) {
     scene.sun.irradiance =
         renderer::sun_irradiance(scenario.sun.elevation_deg, scenario.sky.turbidity);
   }
-  scene.haze.enabled = scenario.haze.enabled;
-  scene.haze.visibility = scenario.haze.visibility;
-  scene.haze.scale_height = scenario.haze.scale_height;
-  scene.haze.albedo = scenario.haze.colour;
-  scene.haze.asymmetry = scenario.haze.asymmetry;
+  scene.haze = scenario.haze;
   scene.haze.base_height =
       grid.min_height() - scene.origin.z;  // the visibility holds at the lowest ground
   for (const ViewSettings& v : scenario.views) {

@@ -4,8 +4,6 @@
 
 #include <cmath>
 
-#include "scenes/detail/tree_variant.h"
-
 namespace landsim::scenes::detail {
 
 renderer::GrassCover grass_cover(const Scenario& s, const featuremaps::VegetationMap& map,
@@ -15,7 +13,7 @@ renderer::GrassCover grass_cover(const Scenario& s, const featuremaps::Vegetatio
   for (const GrassSettings& g : s.grass) {
     renderer::GrassType& t = cover.types[static_cast<std::size_t>(g.type - 1)];
     t.reflectance = g.colour;
-    t.transmittance = g.colour * kLeafTransmittanceRatio;
+    t.transmittance = g.colour * renderer::kLeafTransmittanceRatio;
     t.density_per_m2 = g.density_per_m2;
     t.blade_length = g.blade_length;
     t.blade_width = g.blade_width;

@@ -19,7 +19,7 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
   const SpeciesSettings& sp = s.species[species_index];
   renderer::TreePrototype p;
   const std::uint64_t vs = variant_seed(s.render.seed, sp.bit, variant);
-  const std::string& season = s.render.season;
+  const trees::Season season = s.render.season;
   trees::TreeOptions options;
   options.seed = vs;
   options.time = time;
@@ -32,9 +32,7 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
   options.wind_speed = s.wind.speed;
   options.wind_gust = s.wind.gust;
   p.geometry = trees::generate(sp.species, options).geometry;
-  p.degradation = trees::degradation_factors(
-      s.render.quality, trees::season_from_name(season).value_or(trees::Season::summer),
-      sp.evergreen);
+  p.degradation = trees::degradation_factors(s.render.quality, season, sp.evergreen);
   p.species = static_cast<std::uint16_t>(species_index);
   p.bark_albedo = sp.species.colours.bark;
   // Per-variant colour variation: one brightness factor and a slight hue shift.
@@ -46,18 +44,18 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
   const float brightness = 1.0f + v * (2.0f * r.uniform(3) - 1.0f);
   p.leaf_reflectance = sp.species.colours.leaf * factor * brightness;
   if (!sp.evergreen) {
-    if (season == "spring") {
+    if (season == trees::Season::spring) {
       p.leaf_reflectance = p.leaf_reflectance * Vec3f{1.25f, 1.3f, 0.7f};  // young, yellower green
-    } else if (season == "autumn") {
+    } else if (season == trees::Season::autumn) {
       // Each variant turns its own way between yellow, orange and red.
       static constexpr Vec3f kAutumn[3] = {
           {0.45f, 0.35f, 0.05f}, {0.45f, 0.18f, 0.03f}, {0.35f, 0.07f, 0.03f}};
       p.leaf_reflectance = kAutumn[std::min(2, static_cast<int>(r.uniform(4) * 3.0f))] * brightness;
-    } else if (season == "winter") {
+    } else if (season == trees::Season::winter) {
       p.geometry.group(trees::Group::leaves) = trees::GroupGeometry{};  // leafless
     }
   }
-  p.leaf_transmittance = p.leaf_reflectance * kLeafTransmittanceRatio;
+  p.leaf_transmittance = p.leaf_reflectance * renderer::kLeafTransmittanceRatio;
   const Vec3f& leaf = sp.species.colours.leaf;
   const Vec3f& weak = sp.species.colours.leaf_weak;
   p.leaf_weak_tint = {leaf.x > 0 ? weak.x / leaf.x : 1.0f, leaf.y > 0 ? weak.y / leaf.y : 1.0f,

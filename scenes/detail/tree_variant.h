@@ -9,9 +9,6 @@
 
 namespace landsim::scenes::detail {
 
-// Leaves transmit a little less than they reflect (typical broadleaf spectra).
-inline constexpr float kLeafTransmittanceRatio = 0.8f;
-
 renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t species_index,
                                           std::uint32_t variant, double time);
 

@@ -128,7 +128,7 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_FLOAT_EQ(s.ground.rock.x, 0.4f);
   EXPECT_DOUBLE_EQ(s.wind.gust, 2.0);
   EXPECT_EQ(s.render.frames, (std::vector<double>{0.0, 1.5}));
-  EXPECT_EQ(s.render.season, "autumn");
+  EXPECT_EQ(s.render.season, trees::Season::autumn);
   EXPECT_DOUBLE_EQ(s.render.checkpoint_seconds, 30.0);
   EXPECT_FALSE(s.render.degradation);
   EXPECT_DOUBLE_EQ(s.render.quality, 0.8);
