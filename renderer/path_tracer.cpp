@@ -83,15 +83,8 @@ SurfaceMaterial PathTracer::material(const Hit& hit) const {
     return {g.reflectance, g.transmittance};
   }
   if (hit.prototype < 0) {
-    const Ground& ground = scene_.ground;
-    if (hit.primitive < ground.triangle_material.size()) {
-      const std::uint8_t id = ground.triangle_material[hit.primitive];
-      if (id > 0) {
-        const GroundMaterial& m = ground.materials[id - 1u];
-        return {m.albedo, {}, m.water};
-      }
-    }
-    return {ground.albedo, {}};
+    const GroundMaterial m = scene_.ground.material(scene_.ground.material_id(hit.primitive));
+    return {m.albedo, {}, m.water};
   }
   const TreePrototype& proto = scene_.prototypes[static_cast<std::size_t>(hit.prototype)];
   if (hit.object == ObjectClass::leaf) {

@@ -35,6 +35,15 @@ struct Ground {
   Vec3f albedo = kDefaultGroundAlbedo;          // material 0: the terrain's own
   std::vector<GroundMaterial> materials;        // further materials, 1-based in the ids below
   std::vector<std::uint8_t> triangle_material;  // per triangle, 0 = `albedo`; may be empty
+
+  // What ground triangle `t` is made of, for every renderer and exporter alike: its material
+  // id (0: the terrain's own), and the material of an id.
+  std::uint8_t material_id(std::size_t t) const {
+    return t < triangle_material.size() ? triangle_material[t] : std::uint8_t{0};
+  }
+  GroundMaterial material(std::uint8_t id) const {
+    return id == 0 ? GroundMaterial{albedo, false} : materials[id - 1u];
+  }
 };
 
 // Grass (Weber & Penn's feature-map grass types): blades as curves in square patches laid

@@ -10,8 +10,8 @@
 
 #include "core/atomic_file.h"
 #include "core/counter_rng.h"
+#include "exporters/contact_sheet.h"
 #include "renderer/image_output.h"
-#include "scenes/contact_sheet.h"
 #include "scenes/scenario.h"
 #include "trees/harmonic/parameters.h"
 #include "trees/species.h"
@@ -82,11 +82,11 @@ int run_discover(const DiscoverArgs& args) {
                      {"crown_radius_m", tree.stats.crown_radius},
                      {"leaves", tree.stats.leaves}});
   }
-  scenes::ContactSheetOptions o;
+  exporters::ContactSheetOptions o;
   o.tile = args.tile;
   o.spp = args.spp;
   o.seed = args.seed;
-  const renderer::Film sheet = scenes::render_contact_sheet(geometry, o);
+  const renderer::Film sheet = exporters::render_contact_sheet(geometry, o);
   renderer::write_preview_png(sheet, out, 0.0);
   if (args.json) {
     std::cout << nlohmann::json{{"sheet", out.string()},

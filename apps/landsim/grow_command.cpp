@@ -11,9 +11,9 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "exporters/contact_sheet.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
-#include "scenes/contact_sheet.h"
 #include "scenes/scenario.h"
 #include "trees/measured_growth/dimensions.h"
 #include "trees/measured_growth/generator.h"
@@ -59,14 +59,14 @@ nlohmann::json equations_json(const trees::measured_growth::Allometry& a, double
 // The tree and, beside it, the figure; the camera the same for every age: framing the oldest.
 renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& species,
                              double frame_size, const GrowArgs& args, renderer::View& view) {
-  renderer::Scene s = scenes::studio_scene(static_cast<float>(20.0 * frame_size));
+  renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * frame_size));
   renderer::TreePrototype t;
   t.geometry = tree.geometry;
   t.bark_albedo = species.colours.bark;
   t.leaf_reflectance = species.colours.leaf;
   t.leaf_transmittance = species.colours.leaf * 0.5f;
   renderer::TreePrototype person;
-  person.geometry = scenes::person_figure();
+  person.geometry = exporters::person_figure();
   person.bark_albedo = {0.35f, 0.12f, 0.10f};
   s.prototypes = {t, person};
   s.instances = {{0, {0, 0, 0}, 0.0, 1.0}, {1, {0.4 * frame_size, -2.0, 0}, 0.0, 1.0}};

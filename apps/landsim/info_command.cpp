@@ -7,10 +7,10 @@
 #include <cmath>
 #include <iostream>
 
+#include "exporters/obj_export.h"
 #include "featuremaps/class_mapping.h"
 #include "scenes/default_scenario.h"
 #include "scenes/memory_estimate.h"
-#include "scenes/obj_export.h"
 #include "scenes/scene_builder.h"
 #include "terrain/dem_loader.h"
 
@@ -87,7 +87,7 @@ int run_export_obj(const ExportObjArgs& args) {
       args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
   const renderer::Scene scene = scenes::build_scene(scenario);
   const renderer::View& v = scene.views.front();
-  scenes::write_scene_obj(scene, args.out, args.max_trees, v.position);
+  exporters::write_scene_obj(scene, args.out, args.max_trees, v.position);
   // The same camera for Embree's pathtracer tutorial (scene frame).
   std::cout << fmt::format(
       "pathtracer -i {} --vp {} {} {} --vi {} {} {} --vu 0 0 1 --fov {} --size {} {}\n", args.out,

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
-#include "scenes/contact_sheet.h"
+#include "exporters/contact_sheet.h"
 
 namespace landsim::app {
 
@@ -19,16 +19,16 @@ CLI::App* add_plate_command(CLI::App& app, PlateArgs& args) {
 
 int run_plate(const PlateArgs& args) {
   const DegradedTree tree = load_degraded_tree(args.tree);
-  scenes::ContactSheetOptions o;
+  exporters::ContactSheetOptions o;
   o.tile = args.tile;
   o.spp = args.spp;
   o.seed = args.tree.seed;
   o.factors = tree.factors;
-  const renderer::Film plate = scenes::render_plate(tree.geometry, args.tree.ranges, o);
+  const renderer::Film plate = exporters::render_plate(tree.geometry, args.tree.ranges, o);
   std::vector<std::string> labels;
   for (double r : args.tree.ranges) labels.push_back(fmt::format("{:g} m", r));
   o.columns = static_cast<int>(args.tree.ranges.size());
-  scenes::write_labelled_png(plate, labels, o, args.out);
+  exporters::write_labelled_png(plate, labels, o, args.out);
   return 0;
 }
 

@@ -7,10 +7,10 @@
 #include <iostream>
 
 #include "core/input_error.h"
+#include "exporters/crosscheck.h"
+#include "exporters/pov_export.h"
 #include "renderer/sky.h"
-#include "scenes/crosscheck.h"
 #include "scenes/default_scenario.h"
-#include "scenes/pov_export.h"
 #include "scenes/scene_builder.h"
 
 namespace landsim::app {
@@ -76,12 +76,12 @@ int run_export_pov(const PovArgs& args) {
   const renderer::Scene scene =
       scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]);
   const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.albedo);
-  scenes::PovExportOptions o;
+  exporters::PovExportOptions o;
   o.ambient_irradiance = sky.horizontal_irradiance();
   o.fog_colour = sky.radiance({1.0f, 0.0f, 0.02f});
   o.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
   o.sky_horizon = o.fog_colour;
-  scenes::export_pov(scene, scene.views[view_index(s, args.view)], args.out, o);
+  exporters::export_pov(scene, scene.views[view_index(s, args.view)], args.out, o);
   std::cout << fmt::format("{}/scene.pov: povray scene.pov +W{} +H{} (run in that directory)\n",
                            args.out, scene.views[view_index(s, args.view)].width,
                            scene.views[view_index(s, args.view)].height);
@@ -91,7 +91,7 @@ int run_export_pov(const PovArgs& args) {
 int run_crosscheck(const PovArgs& args) {
   const scenes::Scenario s = load(args);
   const renderer::Scene scene = scenes::build_scene(s);
-  scenes::CrosscheckOptions o;
+  exporters::CrosscheckOptions o;
   o.out_dir = args.out;
   o.view = view_index(s, args.view);
   o.spp = args.spp;
@@ -99,7 +99,7 @@ int run_crosscheck(const PovArgs& args) {
   o.min_iou = args.min_iou;
   o.max_mean_diff = args.max_mean_diff;
   o.max_region_diff = args.max_region_diff;
-  const scenes::CrosscheckReport r = scenes::crosscheck(s, scene, o);
+  const exporters::CrosscheckReport r = exporters::crosscheck(s, scene, o);
   if (args.json) {
     std::cout << nlohmann::json{{"object_iou", r.object_iou},
                                 {"luminance_mean_rel_diff", r.luminance_mean_rel_diff},

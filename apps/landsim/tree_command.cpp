@@ -7,7 +7,7 @@
 #include <chrono>
 #include <iostream>
 
-#include "scenes/obj_export.h"
+#include "exporters/obj_export.h"
 #include "trees/species.h"
 
 namespace landsim::app {
@@ -34,7 +34,7 @@ int run_tree(const TreeArgs& args) {
       trees::generate(species, {args.seed, args.time, args.wind, args.gust, args.quality});
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!args.obj.empty()) scenes::write_obj(tree.geometry, args.obj);
+  if (!args.obj.empty()) exporters::write_obj(tree.geometry, args.obj);
 
   const trees::TreeStats& s = tree.stats;
   int total = 0;
@@ -55,8 +55,7 @@ int run_tree(const TreeArgs& args) {
   }
   std::string levels;
   for (int n : s.stems_per_level) levels += (levels.empty() ? "" : " + ") + std::to_string(n);
-  std::cout << fmt::format("{} ({}), seed {}\n", species.name, trees::core_name(species),
-                           args.seed)
+  std::cout << fmt::format("{} ({}), seed {}\n", species.name, trees::core_name(species), args.seed)
             << fmt::format("  stems     {} = {} ({} clones)\n", total, levels, s.clones)
             << fmt::format("  leaves    {}\n", s.leaves)
             << fmt::format("  triangles {}\n", tree.geometry.triangle_count())

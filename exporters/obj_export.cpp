@@ -1,4 +1,4 @@
-#include "scenes/obj_export.h"
+#include "exporters/obj_export.h"
 
 #include <fmt/format.h>
 #include <fmt/os.h>
@@ -10,7 +10,7 @@
 
 #include "core/atomic_file.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 
 void write_obj(const trees::TreeGeometry& geometry, const std::filesystem::path& path) {
   static constexpr std::array<const char*, trees::kGroupCount> kNames{"trunk", "level1", "level2",
@@ -82,4 +82,4 @@ void write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& 
   out.commit();
 }
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

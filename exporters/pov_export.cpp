@@ -1,4 +1,4 @@
-#include "scenes/pov_export.h"
+#include "exporters/pov_export.h"
 
 #include <fmt/format.h>
 #include <fmt/os.h>
@@ -10,7 +10,7 @@
 #include "core/atomic_file.h"
 #include "renderer/grass_patch.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 namespace {
 
 // landsim (x east, y north, z up) -> POV-Ray (x, y up, z).
@@ -80,7 +80,7 @@ std::map<int, std::vector<std::uint32_t>> ground_by_material(const renderer::Gro
   std::map<int, std::vector<std::uint32_t>> groups;
   const std::vector<std::uint32_t>& idx = ground.mesh.indices;
   for (std::size_t t = 0; t < ground.mesh.triangle_count(); ++t) {
-    const int id = t < ground.triangle_material.size() ? ground.triangle_material[t] : 0;
+    const int id = ground.material_id(t);
     groups[id].insert(groups[id].end(), idx.begin() + static_cast<std::ptrdiff_t>(3 * t),
                       idx.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
   }
@@ -186,9 +186,7 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     }
     out.print("#else\nbackground {{ rgb 0 }}\n#end\n");
     for (const auto& [id, indices] : ground_by_material(scene.ground)) {
-      const Vec3f albedo = id == 0
-                               ? scene.ground.albedo
-                               : scene.ground.materials[static_cast<std::size_t>(id - 1)].albedo;
+      const Vec3f albedo = scene.ground.material(static_cast<std::uint8_t>(id)).albedo;
       out.print("object {{ LS_Ground_{} LS_Texture(<1, 0, 0>, {}) }}\n", id, colour_vector(albedo));
     }
     for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
@@ -226,4 +224,4 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
   file.commit();
 }
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

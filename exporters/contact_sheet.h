@@ -11,7 +11,7 @@
 #include "trees/degradation.h"
 #include "trees/geometry.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 
 struct ContactSheetOptions {
   int columns = 6;
@@ -45,4 +45,4 @@ renderer::Scene studio_scene(float half);
 // A person-sized reference figure, 1.75 m tall, standing at the origin (for scale).
 trees::TreeGeometry person_figure();
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

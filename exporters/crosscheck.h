@@ -9,7 +9,7 @@
 #include "renderer/scene.h"
 #include "scenes/scenario.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 
 struct CrosscheckOptions {
   std::filesystem::path out_dir;
@@ -36,7 +36,7 @@ struct CrosscheckReport {
 // Writes in out_dir: pov/ (the export and POV-Ray's images), landsim.exr, side_by_side.png
 // (landsim | POV-Ray | difference heat map), report.json and report.html. Throws
 // std::runtime_error when POV-Ray cannot be run.
-CrosscheckReport crosscheck(const Scenario& scenario, const renderer::Scene& scene,
+CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Scene& scene,
                             const CrosscheckOptions& options);
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

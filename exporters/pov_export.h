@@ -9,7 +9,7 @@
 
 #include "renderer/scene.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 
 struct PovExportOptions {
   // Light as landsim's POV-comparable mode renders it: the sun (irradiance / pi, POV's
@@ -31,4 +31,4 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
 // becomes '_'. For text written into POV-Ray comments.
 std::string sanitize_for_pov(const std::string& text);
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

@@ -6,7 +6,7 @@
 #include "renderer/scene.h"
 #include "trees/geometry.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 
 void write_obj(const trees::TreeGeometry& geometry, const std::filesystem::path& path);
 
@@ -15,4 +15,4 @@ void write_obj(const trees::TreeGeometry& geometry, const std::filesystem::path&
 void write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& path,
                      std::size_t max_trees, const Vec3& near);
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

@@ -1,4 +1,4 @@
-#include "scenes/crosscheck.h"
+#include "exporters/crosscheck.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -13,12 +13,12 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
+#include "exporters/pov_export.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
 #include "renderer/sky.h"
-#include "scenes/pov_export.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 namespace {
 
 constexpr int kRegions = 4;  // per side, for the per-region luminance comparison
@@ -143,7 +143,7 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
 
 }  // namespace
 
-CrosscheckReport crosscheck(const Scenario& scenario, const renderer::Scene& scene,
+CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Scene& scene,
                             const CrosscheckOptions& o) {
   (void)scenario;
   const renderer::View& view = scene.views.at(o.view);
@@ -230,4 +230,4 @@ CrosscheckReport crosscheck(const Scenario& scenario, const renderer::Scene& sce
   return r;
 }
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

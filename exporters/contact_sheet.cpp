@@ -1,4 +1,4 @@
-#include "scenes/contact_sheet.h"
+#include "exporters/contact_sheet.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "renderer/scene.h"
 #include "trees/mesher.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 namespace {
 
 // A flat square of ground under the tree.
@@ -114,4 +114,4 @@ void write_labelled_png(const renderer::Film& sheet, const std::vector<std::stri
   renderer::write_preview_png(sheet, path, 0.0, placed);
 }
 
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters

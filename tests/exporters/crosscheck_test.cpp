@@ -1,21 +1,25 @@
 // POV-Ray is installed by the project's set-up, so these tests run it: a small scene
 // (terrain, a few trees, sun, haze) exports, renders in both renderers and passes; a moved
 // camera fails; unsafe names are exported safely.
-#include "scenes/crosscheck.h"
+#include "exporters/crosscheck.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
+#include "exporters/pov_export.h"
 #include "renderer/render.h"
-#include "scenes/pov_export.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
 
-namespace landsim::scenes {
+namespace landsim::exporters {
 namespace {
+
+using scenes::build_scene;
+using scenes::load_scenario;
+using scenes::Scenario;
 
 using landsim::testing::source_file;
 using landsim::testing::TempDir;
@@ -155,4 +159,4 @@ TEST(PovExport, UnsafeNamesCannotInjectDirectives) {
 }
 
 }  // namespace
-}  // namespace landsim::scenes
+}  // namespace landsim::exporters
