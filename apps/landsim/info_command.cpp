@@ -7,12 +7,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "exporters/obj_export.h"
-#include "featuremaps/class_mapping.h"
-#include "scenes/default_scenario.h"
+#include "scenario_input.h"
 #include "scenes/memory_estimate.h"
-#include "scenes/scene_builder.h"
-#include "terrain/dem_loader.h"
 
 namespace landsim::app {
 
@@ -25,8 +21,7 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
 }
 
 int run_info(const InfoArgs& args) {
-  const scenes::Scenario scenario =
-      args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
+  const scenes::Scenario scenario = scenario_or_default(args.scenario);
   const scenes::MemoryEstimate e = scenes::estimate_memory(scenario);
   const auto count = [](double n) { return static_cast<std::size_t>(std::llround(n)); };
   if (args.json) {
@@ -68,56 +63,6 @@ int run_info(const InfoArgs& args) {
                            static_cast<double>(e.program_bytes) / 1e6);
   for (const scenes::MemoryPart& p : e.parts)
     std::cout << fmt::format("    {:<38}{:>6.0f} MB\n", p.name, static_cast<double>(p.bytes) / 1e6);
-  return 0;
-}
-
-CLI::App* add_export_obj_command(CLI::App& app, ExportObjArgs& args) {
-  CLI::App* cmd = app.add_subcommand(
-      "export-obj", "Write a scenario's scene (ground and nearest trees) as one OBJ");
-  cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
-  cmd->add_option("--out", args.out, "OBJ file")->required();
-  cmd->add_option("--max-trees", args.max_trees,
-                  "Trees nearest the first view to include, flattened")
-      ->capture_default_str();
-  return cmd;
-}
-
-int run_export_obj(const ExportObjArgs& args) {
-  const scenes::Scenario scenario =
-      args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
-  const renderer::Scene scene = scenes::build_scene(scenario);
-  const renderer::View& v = scene.views.front();
-  exporters::write_scene_obj(scene, args.out, args.max_trees, v.position);
-  // The same camera for Embree's pathtracer tutorial (scene frame).
-  std::cout << fmt::format(
-      "pathtracer -i {} --vp {} {} {} --vi {} {} {} --vu 0 0 1 --fov {} --size {} {}\n", args.out,
-      v.position.x, v.position.y, v.position.z, v.target.x, v.target.y, v.target.z, v.fov_y_deg,
-      v.width, v.height);
-  return 0;
-}
-
-CLI::App* add_featuremap_command(CLI::App& app, FeaturemapBuildArgs& args) {
-  CLI::App* fm = app.add_subcommand("featuremap", "Feature-map tools");
-  fm->require_subcommand(1);
-  CLI::App* build =
-      fm->add_subcommand("build", "Turn a land-cover class raster into a 16-bit vegetation map");
-  build->add_option("classes", args.classes, "Class raster (any format GDAL reads)")->required();
-  build->add_option("--map", args.map, "Class mapping TOML ([[class]] value, species, grass)")
-      ->required();
-  build->add_option("--out", args.out, "Output UInt16 GeoTIFF")->required();
-  build->add_option("--seed", args.seed, "Seed of the per-cell species choice")
-      ->capture_default_str();
-  return build;
-}
-
-int run_featuremap_build(const FeaturemapBuildArgs& args) {
-  const terrain::ElevationGrid classes = terrain::load_elevation(args.classes);
-  const featuremaps::ClassMapping mapping = featuremaps::load_class_mapping(args.map);
-  const featuremaps::VegetationMap map =
-      featuremaps::build_vegetation_map(classes, mapping, args.seed);
-  featuremaps::write_vegetation_map(map, args.out, classes.crs_wkt());
-  std::cout << fmt::format("{}: {} x {} cells, {} with multiple species bits\n", args.out,
-                           map.cols(), map.rows(), map.multi_species_cells());
   return 0;
 }
 

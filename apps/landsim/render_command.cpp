@@ -18,6 +18,7 @@
 #include "renderer/camera.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
+#include "scenario_input.h"
 #include "scenes/default_scenario.h"
 #include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
@@ -187,6 +188,127 @@ int check_image_set(const scenes::Scenario& scenario, const std::filesystem::pat
 
 namespace {
 
+// One image of the set: a frame of a view.
+struct Image {
+  std::size_t frame = 0;
+  std::size_t view = 0;
+  std::string stem;  // file name without extension
+};
+
+// The images this process renders, frame-major: all of the set, or --task-index's one.
+std::vector<Image> images_to_render(const scenes::Scenario& s, const RenderArgs& args) {
+  const std::size_t frames = s.render.frames.size(), views = s.views.size();
+  if (args.task_index && static_cast<std::size_t>(*args.task_index) >= frames * views)
+    throw InputError(fmt::format("--task-index {}: the image set has {} images (0 to {})",
+                                 *args.task_index, frames * views, frames * views - 1));
+  std::vector<Image> images;
+  for (std::size_t f = 0; f < frames; ++f)
+    for (std::size_t v = 0; v < views; ++v)
+      if (!args.task_index || f * views + v == static_cast<std::size_t>(*args.task_index))
+        images.push_back({f, v, image_stem(s.views[v].name, f, frames)});
+  return images;
+}
+
+// What every image of one `landsim render` shares.
+struct RenderRun {
+  const scenes::Scenario& scenario;
+  const RenderArgs& args;
+  const std::filesystem::path& out_dir;
+  const MpiSession* session;  // nullptr: no MPI world
+  std::chrono::steady_clock::time_point start;
+  bool distributed() const { return session != nullptr && session->distributed(); }
+  bool writer() const { return session == nullptr || session->rank() == 0; }
+};
+
+struct RenderedImage {
+  nlohmann::json report;    // --json
+  nlohmann::json manifest;  // manifest.json
+};
+
+renderer::RenderOptions render_options(const RenderRun& run, const renderer::View& view,
+                                       const Image& image, bool first) {
+  const scenes::Scenario& s = run.scenario;
+  const double time = s.render.frames[image.frame];
+  renderer::RenderOptions options;
+  options.threads = s.render.threads;
+  // The output directory appears once the scene is built and tracing starts: a render
+  // refused or failed before that leaves nothing behind.
+  options.started = [&run, first] {
+    if (run.writer()) std::filesystem::create_directories(run.out_dir);
+    if (first) spdlog::info("first pixel after {:.2f} s", seconds_since(run.start));
+  };
+  options.progress = [name = view.name, time,
+                      view_start = std::chrono::steady_clock::now()](double p) {
+    const double elapsed = seconds_since(view_start);
+    spdlog::info("{} t={}s: {:3.0f}%, {:.0f} s left", name, time, 100.0 * p,
+                 elapsed / p * (1.0 - p));
+  };
+  if (s.render.checkpoint_seconds > 0.0 && run.writer()) {
+    options.checkpoint = run.out_dir / (image.stem + ".checkpoint.exr");
+    options.checkpoint_seconds = s.render.checkpoint_seconds;
+  }
+  options.resume = run.args.resume;
+  options.render_key = fmt::format("{} {} {} {} {} {}x{}", s.text_hash, view.name, time,
+                                   s.render.spp, s.render.seed, view.width, view.height);
+  return options;
+}
+
+// Renders one image (with the other ranks, under MPI) and, on the writing rank, writes its
+// EXR and preview; empty on the other ranks.
+std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::Scene& scene,
+                                          const renderer::Renderer& renderer, const Image& image,
+                                          bool first) {
+  const renderer::View& view = scene.views[image.view];
+  const renderer::RenderOptions options = render_options(run, view, image, first);
+  renderer::RenderStats stats;
+  double communication = 0.0;
+#ifdef LANDSIM_HAVE_MPI
+  std::optional<renderer::Film> rendered;
+  if (run.distributed()) {
+    DistributedStats d;
+    rendered = render_distributed(renderer, view, options, *run.session, &d);
+    stats.seconds = d.seconds;
+    stats.rays = d.rays;
+    communication = d.communication_seconds;
+    if (run.writer())
+      spdlog::info("{}: {:.2f} s, {:.3f} s in communication, {} of {} tiles on rank 0", view.name,
+                   d.seconds, d.communication_seconds, d.tiles_by_rank0,
+                   renderer::tile_count(view));
+  } else {
+    rendered = renderer.render(view, options, &stats);
+  }
+  const renderer::Film& film = *rendered;
+#else
+  const renderer::Film film = renderer.render(view, options, &stats);
+#endif
+  if (!run.writer()) return std::nullopt;
+  const scenes::Scenario& s = run.scenario;
+  const double time = s.render.frames[image.frame];
+  const auto exr = run.out_dir / (image.stem + ".exr");
+  renderer::ImageMetadata meta = metadata(s, s.views[image.view], scene);
+  meta.emplace_back("time_s", fmt::format("{}", time));
+  const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
+  renderer::write_exr(film, exr, meta, &camera);
+  renderer::write_preview_png(film, run.out_dir / (image.stem + ".png"),
+                              scene.settings.exposure_ev);
+  RenderedImage out;
+  out.report = {{"path", exr.string()},
+                {"view", view.name},
+                {"frame", time},
+                {"seconds", stats.seconds},
+                {"rays_per_second", stats.rays_per_second()}};
+  if (run.distributed()) {
+    out.report["ranks"] = run.session->size();
+    out.report["communication_seconds"] = communication;
+  }
+  out.manifest = manifest_entry(s.views[image.view], image.stem, image.frame, time);
+  if (!run.args.json)
+    std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(),
+                             view.width, view.height, scene.settings.spp, stats.seconds,
+                             stats.rays_per_second() / 1e6);
+  return out;
+}
+
 // The memory budget, before anything expensive is built: the estimate against --max-memory,
 // [render] max_memory, or a share of this machine's memory (InputError when over).
 scenes::MemoryEstimate check_memory(const scenes::Scenario& scenario, const RenderArgs& args,
@@ -217,125 +339,47 @@ scenes::MemoryEstimate check_memory(const scenes::Scenario& scenario, const Rend
 }  // namespace
 
 int run_render(const RenderArgs& args) {
-  scenes::Scenario scenario =
-      args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
+  scenes::Scenario scenario = scenario_or_default(args.scenario);
   apply_overrides(scenario, args);
   const std::filesystem::path out_dir(args.out_dir);
   if (args.check) return check_image_set(scenario, out_dir);
-  const std::vector<double>& frames = scenario.render.frames;
-  const std::size_t image_count = frames.size() * scenario.views.size();
-  if (args.task_index && static_cast<std::size_t>(*args.task_index) >= image_count)
-    throw InputError(fmt::format("--task-index {}: the image set has {} images (0 to {})",
-                                 *args.task_index, image_count, image_count - 1));
-  const MpiSession* session = current_session();
-  const bool distributed = session != nullptr && session->distributed();
-  const bool writer = session == nullptr || session->rank() == 0;
-  // Without wind every frame shows the same geometry: build the scene once.
-  const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
-  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Image> images = images_to_render(scenario, args);
+  RenderRun run{scenario, args, out_dir, current_session(), std::chrono::steady_clock::now()};
   scenes::VariantCache variants;  // generated by the estimate, reused by the first scene
-  const scenes::MemoryEstimate estimate = check_memory(scenario, args, session, variants);
-  const std::size_t first_frame =
-      args.task_index ? static_cast<std::size_t>(*args.task_index) / scenario.views.size() : 0;
-  std::optional<renderer::Scene> scene =
-      scenes::build_scene(scenario, frames[first_frame], &variants);
-  variants.clear();
-  spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(start),
-               scene->instances.size(), scene->prototypes.size());
-
-  nlohmann::json images = nlohmann::json::array();
-  nlohmann::json manifest_images = nlohmann::json::array();
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    if (args.task_index && f != first_frame) continue;
-    if (f != first_frame && sway) {
+  const scenes::MemoryEstimate estimate = check_memory(scenario, args, run.session, variants);
+  // Without wind every frame shows the same geometry: the scene is built once.
+  const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
+  std::optional<renderer::Scene> scene;
+  std::optional<renderer::Renderer> renderer;
+  std::size_t scene_frame = 0;
+  nlohmann::json reports = nlohmann::json::array();
+  nlohmann::json manifest = nlohmann::json::array();
+  for (const Image& image : images) {
+    if (!scene || (sway && image.frame != scene_frame)) {
+      renderer.reset();
       scene.reset();  // one scene at a time: the memory estimate counts one
-      scene = scenes::build_scene(scenario, frames[f]);
+      scene = scenes::build_scene(scenario, scenario.render.frames[image.frame], &variants);
+      variants.clear();
+      scene_frame = image.frame;
+      if (reports.empty())
+        spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(run.start),
+                     scene->instances.size(), scene->prototypes.size());
+      renderer.emplace(*scene);
     }
-    const renderer::Renderer renderer(*scene);
-    for (std::size_t i = 0; i < scene->views.size(); ++i) {
-      if (args.task_index &&
-          f * scene->views.size() + i != static_cast<std::size_t>(*args.task_index))
-        continue;
-      const renderer::View& view = scene->views[i];
-      const scenes::ViewSettings& vs = scenario.views[i];
-      renderer::RenderOptions options;
-      options.threads = scenario.render.threads;
-      // The output directory appears once the scene is built and tracing starts: a render
-      // refused or failed before that leaves nothing behind.
-      const bool first_image = images.empty();
-      options.started = [&, first_image] {
-        if (writer) std::filesystem::create_directories(out_dir);
-        if (first_image) spdlog::info("first pixel after {:.2f} s", seconds_since(start));
-      };
-      const auto view_start = std::chrono::steady_clock::now();
-      options.progress = [&](double p) {
-        const double elapsed = seconds_since(view_start);
-        spdlog::info("{} t={}s: {:3.0f}%, {:.0f} s left", view.name, frames[f], 100.0 * p,
-                     elapsed / p * (1.0 - p));
-      };
-      const std::string stem = image_stem(view.name, f, frames.size());
-      if (scenario.render.checkpoint_seconds > 0.0 && writer) {
-        options.checkpoint = out_dir / (stem + ".checkpoint.exr");
-        options.checkpoint_seconds = scenario.render.checkpoint_seconds;
-      }
-      options.resume = args.resume;
-      options.render_key =
-          fmt::format("{} {} {} {} {} {}x{}", scenario.text_hash, view.name, frames[f],
-                      scenario.render.spp, scenario.render.seed, view.width, view.height);
-      renderer::RenderStats stats;
-      double communication = 0.0;
-#ifdef LANDSIM_HAVE_MPI
-      std::optional<renderer::Film> rendered;
-      if (distributed) {
-        DistributedStats d;
-        rendered = render_distributed(renderer, view, options, *session, &d);
-        stats.seconds = d.seconds;
-        stats.rays = d.rays;
-        communication = d.communication_seconds;
-        if (writer)
-          spdlog::info("{}: {:.2f} s, {:.3f} s in communication, {} of {} tiles on rank 0",
-                       view.name, d.seconds, d.communication_seconds, d.tiles_by_rank0,
-                       renderer::tile_count(view));
-      } else {
-        rendered = renderer.render(view, options, &stats);
-      }
-      const renderer::Film& film = *rendered;
-#else
-      const renderer::Film film = renderer.render(view, options, &stats);
-#endif
-      if (!writer) continue;
-      const auto exr = out_dir / (stem + ".exr");
-      renderer::ImageMetadata meta = metadata(scenario, vs, *scene);
-      meta.emplace_back("time_s", fmt::format("{}", frames[f]));
-      const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
-      renderer::write_exr(film, exr, meta, &camera);
-      renderer::write_preview_png(film, out_dir / (stem + ".png"), scene->settings.exposure_ev);
-      nlohmann::json entry = {{"path", exr.string()},
-                              {"view", view.name},
-                              {"frame", frames[f]},
-                              {"seconds", stats.seconds},
-                              {"rays_per_second", stats.rays_per_second()}};
-      if (distributed) {
-        entry["ranks"] = session->size();
-        entry["communication_seconds"] = communication;
-      }
-      images.push_back(entry);
-      manifest_images.push_back(manifest_entry(vs, stem, f, frames[f]));
-      if (!args.json) {
-        std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(),
-                                 view.width, view.height, scene->settings.spp, stats.seconds,
-                                 stats.rays_per_second() / 1e6);
-      }
-    }
+    const std::optional<RenderedImage> done =
+        render_image(run, *scene, *renderer, image, reports.empty());
+    if (!done) continue;
+    reports.push_back(done->report);
+    manifest.push_back(done->manifest);
   }
   // The estimate's honesty, visible on every render (docs/PERFORMANCE.md "Memory budget").
   spdlog::info("peak memory {:.0f} MB (estimated {:.0f} MB)",
                static_cast<double>(peak_resident_bytes()) / 1e6,
                static_cast<double>(estimate.total_bytes()) / 1e6);
-  if (!writer) return 0;
-  if (!args.task_index) write_manifest(out_dir / "manifest.json", scenario, manifest_images);
+  if (!run.writer()) return 0;
+  if (!args.task_index) write_manifest(out_dir / "manifest.json", scenario, manifest);
   if (args.json)
-    std::cout << nlohmann::json{{"images", images},
+    std::cout << nlohmann::json{{"images", reports},
                                 {"memory_estimate_bytes", estimate.total_bytes()},
                                 {"peak_memory_bytes", peak_resident_bytes()}}
                      .dump()

@@ -1,4 +1,4 @@
-#include "pov_command.h"
+#include "crosscheck_command.h"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -6,48 +6,18 @@
 
 #include <iostream>
 
-#include "core/input_error.h"
 #include "exporters/crosscheck.h"
-#include "exporters/pov_export.h"
-#include "renderer/sky.h"
-#include "scenes/default_scenario.h"
+#include "scenario_input.h"
 #include "scenes/scene_builder.h"
 
 namespace landsim::app {
-namespace {
 
-void add_common(CLI::App* cmd, PovArgs& args) {
+CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "crosscheck", "Render with landsim and POV-Ray and compare (docs/CROSSCHECK.md)");
   cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
   cmd->add_option("--out", args.out, "Output directory")->required();
   cmd->add_option("--view", args.view, "View name (default: the first)");
-}
-
-std::size_t view_index(const scenes::Scenario& s, const std::string& name) {
-  if (name.empty()) return 0;
-  for (std::size_t i = 0; i < s.views.size(); ++i) {
-    if (s.views[i].name == name) return i;
-  }
-  throw InputError("--view: no view named \"" + name + "\" in " + s.source);
-}
-
-scenes::Scenario load(const PovArgs& args) {
-  return args.scenario.empty() ? scenes::default_scenario() : scenes::load_scenario(args.scenario);
-}
-
-}  // namespace
-
-CLI::App* add_export_pov_command(CLI::App& app, PovArgs& args) {
-  CLI::App* cmd = app.add_subcommand(
-      "export-pov", "Write the scene as POV-Ray 3.7 files (scene.pov, meshes.inc)");
-  add_common(cmd, args);
-  cmd->add_option("--frame", args.frame, "Frame index (wind sway)")->check(CLI::NonNegativeNumber);
-  return cmd;
-}
-
-CLI::App* add_crosscheck_command(CLI::App& app, PovArgs& args) {
-  CLI::App* cmd = app.add_subcommand(
-      "crosscheck", "Render with landsim and POV-Ray and compare (docs/CROSSCHECK.md)");
-  add_common(cmd, args);
   cmd->add_option("--spp", args.spp, "Samples per pixel for both")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
@@ -68,28 +38,8 @@ CLI::App* add_crosscheck_command(CLI::App& app, PovArgs& args) {
   return cmd;
 }
 
-int run_export_pov(const PovArgs& args) {
-  const scenes::Scenario s = load(args);
-  if (args.frame >= static_cast<int>(s.render.frames.size())) {
-    throw InputError(fmt::format("--frame: {} has {} frames", s.source, s.render.frames.size()));
-  }
-  const renderer::Scene scene =
-      scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]);
-  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.albedo);
-  exporters::PovExportOptions o;
-  o.ambient_irradiance = sky.horizontal_irradiance();
-  o.fog_colour = sky.radiance({1.0f, 0.0f, 0.02f});
-  o.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
-  o.sky_horizon = o.fog_colour;
-  exporters::export_pov(scene, scene.views[view_index(s, args.view)], args.out, o);
-  std::cout << fmt::format("{}/scene.pov: povray scene.pov +W{} +H{} (run in that directory)\n",
-                           args.out, scene.views[view_index(s, args.view)].width,
-                           scene.views[view_index(s, args.view)].height);
-  return 0;
-}
-
-int run_crosscheck(const PovArgs& args) {
-  const scenes::Scenario s = load(args);
+int run_crosscheck(const CrosscheckArgs& args) {
+  const scenes::Scenario s = scenario_or_default(args.scenario);
   const renderer::Scene scene = scenes::build_scene(s);
   exporters::CrosscheckOptions o;
   o.out_dir = args.out;

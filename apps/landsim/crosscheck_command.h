@@ -1,5 +1,4 @@
 #pragma once
-// `landsim export-pov SCENARIO --out DIR [--view NAME] [--frame N]` and
 // `landsim crosscheck SCENARIO --out DIR [--view NAME] [--spp N] [--min-iou X]
 //                     [--max-mean-diff X] [--max-region-diff X] [--json]`
 #include <string>
@@ -10,11 +9,10 @@ class App;
 
 namespace landsim::app {
 
-struct PovArgs {
+struct CrosscheckArgs {
   std::string scenario;
   std::string out;
   std::string view;
-  int frame = 0;
   int spp = 16;
   int threads = 0;
   double min_iou = 0.98;
@@ -26,9 +24,7 @@ struct PovArgs {
 // Exit code of a cross-check that ran but did not pass.
 inline constexpr int kCrosscheckFailed = 3;
 
-CLI::App* add_export_pov_command(CLI::App& app, PovArgs& args);
-CLI::App* add_crosscheck_command(CLI::App& app, PovArgs& args);
-int run_export_pov(const PovArgs& args);
-int run_crosscheck(const PovArgs& args);
+CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args);
+int run_crosscheck(const CrosscheckArgs& args);
 
 }  // namespace landsim::app

@@ -1,0 +1,21 @@
+#pragma once
+// `landsim export-obj [SCENARIO] --out FILE.obj [--max-trees N]`
+#include <cstddef>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace landsim::app {
+
+struct ExportObjArgs {
+  std::string scenario;
+  std::string out;
+  std::size_t max_trees = 0;
+};
+
+CLI::App* add_export_obj_command(CLI::App& app, ExportObjArgs& args);
+int run_export_obj(const ExportObjArgs& args);
+
+}  // namespace landsim::app

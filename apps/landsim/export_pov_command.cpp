@@ -1,0 +1,46 @@
+#include "export_pov_command.h"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "core/input_error.h"
+#include "exporters/pov_export.h"
+#include "renderer/sky.h"
+#include "scenario_input.h"
+#include "scenes/scene_builder.h"
+
+namespace landsim::app {
+
+CLI::App* add_export_pov_command(CLI::App& app, ExportPovArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "export-pov", "Write the scene as POV-Ray 3.7 files (scene.pov, meshes.inc)");
+  cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
+  cmd->add_option("--out", args.out, "Output directory")->required();
+  cmd->add_option("--view", args.view, "View name (default: the first)");
+  cmd->add_option("--frame", args.frame, "Frame index (wind sway)")->check(CLI::NonNegativeNumber);
+  return cmd;
+}
+
+int run_export_pov(const ExportPovArgs& args) {
+  const scenes::Scenario s = scenario_or_default(args.scenario);
+  if (args.frame >= static_cast<int>(s.render.frames.size())) {
+    throw InputError(fmt::format("--frame: {} has {} frames", s.source, s.render.frames.size()));
+  }
+  const renderer::Scene scene =
+      scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]);
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.albedo);
+  exporters::PovExportOptions o;
+  o.ambient_irradiance = sky.horizontal_irradiance();
+  o.fog_colour = sky.radiance({1.0f, 0.0f, 0.02f});
+  o.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
+  o.sky_horizon = o.fog_colour;
+  exporters::export_pov(scene, scene.views[view_index(s, args.view)], args.out, o);
+  std::cout << fmt::format("{}/scene.pov: povray scene.pov +W{} +H{} (run in that directory)\n",
+                           args.out, scene.views[view_index(s, args.view)].width,
+                           scene.views[view_index(s, args.view)].height);
+  return 0;
+}
+
+}  // namespace landsim::app

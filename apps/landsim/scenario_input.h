@@ -1,0 +1,17 @@
+#pragma once
+// What several commands share: a scenario from a file or the embedded default, and a view
+// chosen by name.
+#include <cstddef>
+#include <string>
+
+#include "scenes/scenario.h"
+
+namespace landsim::app {
+
+// `path` empty: the embedded default scene. InputError for a bad file.
+scenes::Scenario scenario_or_default(const std::string& path);
+
+// The index of the view named `name` (empty: the first); InputError naming the views' file.
+std::size_t view_index(const scenes::Scenario& s, const std::string& name);
+
+}  // namespace landsim::app
