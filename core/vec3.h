@@ -1,6 +1,6 @@
 #pragma once
 // Small 3-vector used across landsim. Double precision for georeferenced coordinates,
-// float for geometry handed to Embree (see docs/ARCHITECTURE.md, "Coordinates and units").
+// float for geometry handed to Embree (see docs/ARCHITECTURE.md, "Coordinates").
 #include <cmath>
 
 namespace landsim {

@@ -235,29 +235,30 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
     }
   }
 
-  const auto part = [&](const std::string& name, double bytes, const std::string& remedy) {
-    if (bytes >= 1.0) e.parts.push_back({name, static_cast<std::size_t>(bytes), remedy});
+  const auto part = [&](const std::string& id, const std::string& name, double bytes,
+                        const std::string& remedy) {
+    if (bytes >= 1.0) e.parts.push_back({id, name, static_cast<std::size_t>(bytes), remedy});
   };
   if (keep != nullptr)
     for (std::size_t k = 0; k < s.species.size(); ++k)
       if (variant[k])
         keep->insert_or_assign({static_cast<std::uint32_t>(k), 0, s.render.frames.front()},
                                std::move(*variant[k]));
-  part("tree variants", p.scene_variants + p.view_prototypes,
+  part("tree_variants", "tree variants", p.scene_variants + p.view_prototypes,
        degrade ? "fewer variants per species, or a lower [render] quality"
                : "[render] degradation = true (far trees drawn with fewer primitives), or "
                  "fewer variants per species");
-  part(fmt::format("tree instances ({:.0f} trees)", e.instances),
+  part("tree_instances", fmt::format("tree instances ({:.0f} trees)", e.instances),
        p.scene_instances + p.view_instances, "a lower density_per_ha, or a smaller feature map");
-  part("ground", p.scene_ground + p.view_ground, "a coarser elevation grid");
-  part("grass", p.scene_grass + p.view_grass, "fewer [[grass]] types, or grass on less of the map");
-  part("image", p.view_film, "a smaller --width/--height");
+  part("ground", "ground", p.scene_ground + p.view_ground, "a coarser elevation grid");
+  part("grass", "grass", p.scene_grass + p.view_grass, "fewer [[grass]] types, or grass on less of the map");
+  part("image", "image", p.view_film, "a smaller --width/--height");
   // Building the scene holds the terrain grid, the map and the placed trees besides; the
   // peak is whichever phase is larger.
   const double view_total =
       p.view_prototypes + p.view_instances + p.view_ground + p.view_grass + p.view_film;
   if (p.build_extra > view_total)
-    part("scene building (grid, map, placement)", p.build_extra - view_total,
+    part("scene_building", "scene building (grid, map, placement)", p.build_extra - view_total,
          "a smaller elevation grid or feature map, or fewer trees");
   std::sort(e.parts.begin(), e.parts.end(),
             [](const MemoryPart& a, const MemoryPart& b) { return a.bytes > b.bytes; });

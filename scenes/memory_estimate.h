@@ -17,7 +17,8 @@
 namespace landsim::scenes {
 
 struct MemoryPart {
-  std::string name;  // "tree instances", "tree variants", ...
+  std::string id;    // stable: "tree_instances", "tree_variants", ... (JSON keys)
+  std::string name;  // for people: "tree instances (2194 trees)", ...
   std::size_t bytes = 0;
   std::string remedy;  // what would make it smaller, for the refusal message
 };

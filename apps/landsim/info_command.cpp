@@ -32,7 +32,7 @@ int run_info(const InfoArgs& args) {
       instances += count(n);
     }
     nlohmann::json parts = nlohmann::json::object();
-    for (const scenes::MemoryPart& p : e.parts) parts[p.name] = p.bytes;
+    for (const scenes::MemoryPart& p : e.parts) parts[p.id] = p.bytes;
     parts["program"] = e.program_bytes;
     std::cout << nlohmann::json{{"instances", instances},
                                 {"instances_per_species", per_species},
