@@ -183,8 +183,7 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   for (int wave = first_tile; wave < count; wave += kTilesPerWave) {
     const int wave_end = std::min(wave + kTilesPerWave, count);
     rays += tiles.render_tiles(wave, wave_end, film, tile_done);
-    const bool stop =
-        options.stop_after_tiles > 0 && wave_end >= options.stop_after_tiles && wave_end < count;
+    const bool stop = wave_end < count && options.stop && options.stop(wave_end);
     const auto now = std::chrono::steady_clock::now();
     if (!options.checkpoint.empty() && wave_end < count &&
         (stop || std::chrono::duration<double>(now - last_checkpoint).count() >=

@@ -36,11 +36,13 @@ struct RenderOptions {
   // The first sample of each pixel at its centre (for comparisons with renderers that
   // sample pixel centres), so the AOVs describe the centre.
   bool centre_first_sample = false;
-  // For tests: stop as if killed (after writing a checkpoint) once this many tiles are done.
-  int stop_after_tiles = 0;
+  // Asked between waves of tiles with the number of tiles done: true stops the render as if
+  // killed, after writing the checkpoint (when one is set). `landsim render` asks whether
+  // SIGTERM or SIGINT arrived (a batch system's time limit, Ctrl-C).
+  std::function<bool(int tiles_done)> stop;
 };
 
-// Thrown when a render stops at `stop_after_tiles`.
+// Thrown when `stop` stopped a render.
 struct RenderInterrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -188,6 +189,29 @@ int check_image_set(const scenes::Scenario& scenario, const std::filesystem::pat
 
 namespace {
 
+// SIGTERM (a batch system's time limit) or SIGINT (Ctrl-C) received during a render: the
+// render stops at the next wave of tiles, writes its checkpoint and exits 128 + signal.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void request_stop(int signal) { g_stop_signal = signal; }
+
+// Installs request_stop for the lifetime of a render, restoring the previous handlers.
+class StopOnSignal {
+ public:
+  StopOnSignal()
+      : term_(std::signal(SIGTERM, request_stop)), interrupt_(std::signal(SIGINT, request_stop)) {}
+  ~StopOnSignal() {
+    std::signal(SIGTERM, term_);
+    std::signal(SIGINT, interrupt_);
+  }
+  StopOnSignal(const StopOnSignal&) = delete;
+  StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+ private:
+  void (*term_)(int);
+  void (*interrupt_)(int);
+};
+
 // One image of the set: a frame of a view.
 struct Image {
   std::size_t frame = 0;
@@ -248,6 +272,7 @@ renderer::RenderOptions render_options(const RenderRun& run, const renderer::Vie
     options.checkpoint_seconds = s.render.checkpoint_seconds;
   }
   options.resume = run.args.resume;
+  options.stop = [](int) { return g_stop_signal != 0; };
   options.render_key = fmt::format("{} {} {} {} {} {}x{}", s.text_hash, view.name, time,
                                    s.render.spp, s.render.seed, view.width, view.height);
   return options;
@@ -366,8 +391,15 @@ int run_render(const RenderArgs& args) {
                      scene->instances.size(), scene->prototypes.size());
       renderer.emplace(*scene);
     }
-    const std::optional<RenderedImage> done =
-        render_image(run, *scene, *renderer, image, reports.empty());
+    std::optional<RenderedImage> done;
+    try {
+      const StopOnSignal stop_on_signal;
+      done = render_image(run, *scene, *renderer, image, reports.empty());
+    } catch (const renderer::RenderInterrupted&) {
+      spdlog::error("stopped by signal {} at {}: its checkpoint is in {}; continue with --resume",
+                    static_cast<int>(g_stop_signal), image.stem, out_dir.string());
+      return 128 + static_cast<int>(g_stop_signal);
+    }
     if (!done) continue;
     reports.push_back(done->report);
     manifest.push_back(done->manifest);

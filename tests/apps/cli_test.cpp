@@ -269,6 +269,42 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
   EXPECT_EQ(testing::read_file(out / "v.exr"), testing::read_file(whole / "v.exr"));
 }
 
+// SIGTERM (a batch system's time limit) stops a render at its next wave of tiles with a
+// checkpoint written and exit code 143; --resume finishes it to the uninterrupted image.
+TEST(Cli, TerminatedRenderWritesItsCheckpointAndResumes) {
+  TempDir dir;
+  std::string text =
+      scenario("", "width = 480\nheight = 270", "spp = 48\ncheckpoint_seconds = 1e6");
+  text.replace(text.find("width = 32\nheight = 18\n"), 22, "");
+  const auto file = dir.write("long.toml", text);
+  const auto out = dir / "out";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl(LANDSIM_BINARY, LANDSIM_BINARY, "render", file.c_str(), "--out", out.c_str(),
+            "--threads", "2", nullptr);
+    ::_exit(127);
+  }
+  // The output directory appears when tracing starts; then ask the render to stop.
+  for (int i = 0; i < 6000 && !std::filesystem::exists(out); ++i) ::usleep(1000);
+  ::usleep(100000);
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "landsim died of the signal instead of stopping";
+  ASSERT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << "the render finished before the signal";
+  EXPECT_TRUE(std::filesystem::exists(out / "v.checkpoint.exr"));
+  EXPECT_FALSE(std::filesystem::exists(out / "v.exr"));
+  const Result resumed =
+      run("render " + file.string() + " --out " + out.string() + " --threads 2 --resume", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("resuming"), std::string::npos) << resumed.err;
+  const auto whole = dir / "whole";
+  ASSERT_EQ(
+      run("render " + file.string() + " --out " + whole.string() + " --threads 2", dir).exit_code,
+      0);
+  EXPECT_EQ(testing::read_file(out / "v.exr"), testing::read_file(whole / "v.exr"));
+}
+
 TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
   TempDir dir;
   std::string classes =

@@ -11,8 +11,8 @@
 #include "renderer/embree_scene.h"
 #include "renderer/haze.h"
 #include "renderer/render.h"
-#include "tests/renderer/film_stats.h"
 #include "terrain/ground_mesh.h"
+#include "tests/renderer/film_stats.h"
 #include "tests/support/single_item.h"
 #include "tests/support/temp_dir.h"
 
@@ -222,11 +222,11 @@ TEST(Physics, KilledAndResumedEqualsUninterrupted) {
   RenderOptions first;
   first.checkpoint = dir / "v.checkpoint.exr";
   first.render_key = "ridge";
-  first.stop_after_tiles = 64;
+  first.stop = [](int tiles_done) { return tiles_done >= 64; };
   EXPECT_THROW(Renderer(s).render(v, first), RenderInterrupted);
   ASSERT_TRUE(std::filesystem::exists(first.checkpoint));
   RenderOptions second = first;
-  second.stop_after_tiles = 0;
+  second.stop = nullptr;
   second.resume = true;
   RenderStats stats;
   const Film resumed = Renderer(s).render(v, second, &stats);
