@@ -167,11 +167,7 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   renderer::RenderOptions ro;
   ro.threads = o.threads;
   ro.centre_first_sample = true;
-  ro.trace.sky_light = false;
-  ro.trace.interreflection = false;
-  ro.trace.transmission = false;
-  ro.trace.ambient_irradiance = pov_options.ambient_irradiance;
-  ro.trace.fog_colour = pov_options.fog_colour;
+  ro.comparable = renderer::ComparableLight{pov_options.ambient_irradiance, pov_options.fog_colour};
   CrosscheckReport r;
   auto start = std::chrono::steady_clock::now();
   const renderer::Film film = renderer::Renderer(comparable).render(view, ro);

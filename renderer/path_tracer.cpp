@@ -1,6 +1,6 @@
 #include "renderer/path_tracer.h"
 
-#include "renderer/bark_texture.h"
+#include "renderer/detail/sample_dimensions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,22 +10,10 @@
 namespace landsim::renderer {
 namespace {
 
+using namespace detail;  // sample dimensions
+
 constexpr float kPi = std::numbers::pi_v<float>;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
-// Random dimensions: 0-1 pixel jitter, then kDimsPerBounce per bounce.
-constexpr std::uint32_t kFirstBounceDim = 2;
-constexpr std::uint32_t kDimsPerBounce = 10;
-enum Dim : std::uint32_t {
-  kSun0 = 0,
-  kSun1,
-  kSky0,
-  kSky1,
-  kChoice,
-  kDir,
-  kRoulette,
-  kHaze,
-  kFresnel
-};
 constexpr int kRouletteAfter = 2;
 
 // Cosine-weighted direction about n (pdf cos / pi), Malley's method.
@@ -38,106 +26,34 @@ Vec3f sample_cosine(const Vec3f& n, float u1, float u2) {
   return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * z);
 }
 
-// Uniform direction in the cone of half-angle `radius` about axis (the sun's disc).
-Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2) {
-  const float cos_max = std::cos(radius);
-  const float cos_theta = 1.0f - u1 * (1.0f - cos_max);
-  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
-  const float phi = 2.0f * kPi * u2;
-  Vec3f t, b;
-  orthonormal_basis(axis, t, b);
-  return normalize(t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)) +
-                   axis * cos_theta);
-}
-
-// Pushes a point off its surface so that rays leaving it do not hit it again; the offset
-// grows with distance from the origin because float spacing does.
-Vec3f offset_point(const Vec3f& p, const Vec3f& ng) {
-  const float scale =
-      1e-4f * std::max(1.0f, max_component(Vec3f{std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
-  return p + ng * scale;
-}
-
 float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
 
 }  // namespace
 
-struct PathTracer::Vertex {
-  Vec3f p;             // on the surface
-  Vec3f n;             // shading normal, facing the incoming ray
-  Vec3f ng;            // geometric normal, same side
-  std::uint32_t mask;  // the pixel's ray mask (stochastic level of detail)
-};
-
-PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree, TraceOptions options)
+PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
     : scene_(scene),
       embree_(embree),
-      options_(options),
       sky_(scene.sky, scene.sun, scene.ground.albedo),
       haze_(scene.haze),
       sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
 
-SurfaceMaterial PathTracer::material(const Hit& hit) const {
-  if (hit.object == ObjectClass::grass) {
-    const GrassType& g = scene_.grass.types[static_cast<std::size_t>(hit.grass_type - 1)];
-    return {g.reflectance, g.transmittance};
-  }
-  if (hit.prototype < 0) {
-    const GroundMaterial m = scene_.ground.material(scene_.ground.material_id(hit.primitive));
-    return {m.albedo, {}, m.water};
-  }
-  const TreePrototype& proto = scene_.prototypes[static_cast<std::size_t>(hit.prototype)];
-  if (hit.object == ObjectClass::leaf) {
-    // A leaf disc's point is its leaf's stored index; a triangle belongs to one.
-    const trees::GroupGeometry& leaves = proto.geometry.group(trees::Group::leaves);
-    const Vec3f tint =
-        proto.leaf_tint(hit.far_primitive ? leaves.vigour_of_item(hit.primitive)
-                                          : leaves.vigour_of_triangle(hit.primitive));
-    return {proto.leaf_reflectance * tint, proto.leaf_transmittance * tint};
-  }
-  // Far stem lines carry no texture coordinates: the texture's mean (1) stands for it.
-  if (proto.bark_texture && !hit.far_primitive)
-    return {proto.bark_albedo * proto.bark_texture->factor(hit.u, hit.v), {}};
-  return {proto.bark_albedo, {}};
-}
-
-// f x cos for light arriving from `l`: reflection on the viewer's side, transmission from
-// the far side; also tells which side to leave from.
-static Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
-                     bool& front) {
-  const float cos_n = dot(n, l);
-  front = cos_n > 0.0f && dot(ng, l) > 0.0f;
-  const bool back = m.two_sided() && cos_n < 0.0f && dot(ng, l) < 0.0f;
-  if (!front && !back) return {};
-  return (front ? m.reflectance : m.transmittance) * (std::abs(cos_n) / kPi);
-}
-
-Vec3f PathTracer::sun_light(const Vertex& v, const SurfaceMaterial& m, float u1, float u2,
+Vec3f PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
                             std::uint32_t& rays) const {
-  const Vec3f l =
-      sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
-  bool front = false;
-  const Vec3f f = lambert(m, v.n, v.ng, l, front);
-  if (max_component(f) <= 0.0f) return {};
-  ++rays;
-  const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
-  if (embree_.occluded({origin, l}, 0.0f, kInfinity, v.mask)) return {};
-  // POV-Ray's fog does not dim light sources: neither does the comparable mode.
-  const float t_haze =
-      options_.fog_colour
-          ? 1.0f
-          : static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
-  return f * scene_.sun.irradiance * t_haze;
+  const SunSample sun = sample_sun(scene_, embree_, v, m, u1, u2, rays);
+  if (max_component(sun.light) <= 0.0f) return {};
+  return sun.light * static_cast<float>(haze_.transmittance(
+                         Vec3(sun.ray.origin), Vec3(sun.ray.direction), kInfiniteDistance));
 }
 
-float PathTracer::bsdf_pdf(const Vertex& v, const SurfaceMaterial& m, const Vec3f& dir) const {
+float PathTracer::bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m,
+                           const Vec3f& dir) const {
   const float r = max_component(m.reflectance), t = max_component(m.transmittance);
   if (r + t <= 0.0f) return 0.0f;
   const float c = dot(v.n, dir);
   return (c > 0.0f ? r / (r + t) : t / (r + t)) * std::abs(c) / kPi;
 }
 
-Vec3f PathTracer::sky_light(const Vertex& v, const SurfaceMaterial& m, float u1, float u2,
+Vec3f PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
                             std::uint32_t& rays) const {
   float pdf = 0.0f;
   const Vec3f l = sky_.sample(u1, u2, pdf);
@@ -147,7 +63,7 @@ Vec3f PathTracer::sky_light(const Vertex& v, const SurfaceMaterial& m, float u1,
   ++rays;
   const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
   if (embree_.occluded({origin, l}, 0.0f, kInfinity, v.mask)) return {};
-  const float weight = options_.interreflection ? power_heuristic(pdf, bsdf_pdf(v, m, l)) : 1.0f;
+  const float weight = power_heuristic(pdf, bsdf_pdf(v, m, l));
   const auto t_haze =
       static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
   return f * sky_.radiance(l) * (weight * t_haze / pdf);
@@ -203,54 +119,24 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     // (the plain beyond the terrain); the sky model already holds the atmosphere above.
     if (hit || ray.direction.z <= 0.0f) {
       const double t = hit ? hit->t : kInfiniteDistance;
-      // The POV-comparable mode uses uniform fog of the base height's density, as POV-Ray's
-      // fog_type 1 does; otherwise the exponential haze.
-      const auto transmitted = static_cast<float>(
-          options_.fog_colour
-              ? (haze_.enabled() ? std::exp(-haze_.sigma(scene_.haze.base_height) * t) : 1.0)
-              : haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
-      if (options_.fog_colour) {
-        // POV-comparable: fog of one colour, as POV-Ray's.
-        out.radiance += throughput * *options_.fog_colour * (1.0f - transmitted);
-      } else {
-        out.radiance +=
-            throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), mask, out.rays);
-      }
+      const auto transmitted =
+          static_cast<float>(haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
+      out.radiance +=
+          throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), mask, out.rays);
       throughput = throughput * transmitted;
     }
     if (!hit) {
-      if (options_.sky_light || bounce == 0) {
-        const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
-        out.radiance += throughput * sky_.radiance(ray.direction) * w;
-      }
+      const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
+      out.radiance += throughput * sky_.radiance(ray.direction) * w;
       break;
     }
-    // Face both normals toward where the ray came from.
-    Vertex v{ray.origin + ray.direction * hit->t, hit->shading_normal, hit->geometric_normal, mask};
-    if (dot(v.ng, ray.direction) > 0.0f) v.ng = -v.ng;
-    if (dot(v.n, v.ng) < 0.0f) v.n = -v.n;
-    SurfaceMaterial m = material(*hit);
-    if (!options_.transmission) m.transmittance = {};
-    if (bounce == 0) {
-      const std::int32_t species =
-          hit->prototype >= 0 ? scene_.prototypes[static_cast<std::size_t>(hit->prototype)].species
-                              : -1;
-      out.first = {hit->t,  v.n,       m.reflectance + m.transmittance, hit->object, hit->instance,
-                   species, hit->level};
-    }
-
-    float fresnel = 0.0f;
-    if (m.water) {
-      const float c = std::clamp(-dot(ray.direction, v.ng), 0.0f, 1.0f);
-      fresnel = 0.02f + 0.98f * std::pow(1.0f - c, 5.0f);
-    }
+    const ShadingPoint v = shading_point(ray, *hit, mask);
+    const SurfaceMaterial m = surface_material(scene_, *hit);
+    if (bounce == 0) out.first = first_hit(scene_, *hit, v, m);
+    const float fresnel = water_fresnel(m, ray.direction, v.ng);
     Vec3f direct = sun_light(v, m, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), out.rays);
-    if (options_.sky_light)
-      direct += sky_light(v, m, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), out.rays);
-    if (options_.ambient_irradiance)
-      direct += m.reflectance * *options_.ambient_irradiance * (1.0f / kPi);
+    direct += sky_light(v, m, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), out.rays);
     out.radiance += throughput * direct * (1.0f - fresnel);
-    if (!options_.interreflection) break;
 
     if (m.water && rng.uniform(dim + kFresnel) < fresnel) {
       // Mirror reflection off the water's (geometric) surface, chosen with probability F.

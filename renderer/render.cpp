@@ -12,6 +12,7 @@
 
 #include "core/counter_rng.h"
 #include "renderer/camera.h"
+#include "renderer/comparable_tracer.h"
 #include "renderer/embree_scene.h"
 #include "renderer/image_output.h"
 #include "renderer/path_tracer.h"
@@ -42,7 +43,7 @@ void for_each_tile_pixel(const TileGrid& grid, int tile, int width, int height, 
 }
 
 // Renders one tile into the film; returns the rays it traced.
-std::uint64_t render_tile(const PathTracer& tracer, const Camera& camera, const View& view,
+std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const View& view,
                           const RenderSettings& settings, int tile, const TileGrid& grid,
                           bool centre_first, Film& film) {
   const int x0 = (tile % grid.cols) * kTileSize;
@@ -122,7 +123,7 @@ struct ViewRenderer::State {
   explicit State(const View& view) : camera(view) {}
   Camera camera;
   std::unique_ptr<EmbreeScene> per_view;
-  std::unique_ptr<PathTracer> tracer;
+  std::unique_ptr<Integrator> tracer;
   std::unique_ptr<tbb::task_arena> arena;
 };
 
@@ -132,8 +133,11 @@ ViewRenderer::ViewRenderer(const Renderer& renderer, const View& view, const Ren
       options_(options),
       state_(std::make_unique<State>(view)) {
   if (!renderer.embree_) state_->per_view = std::make_unique<EmbreeScene>(scene_, &view);
-  state_->tracer = std::make_unique<PathTracer>(
-      scene_, renderer.embree_ ? *renderer.embree_ : *state_->per_view, options.trace);
+  const EmbreeScene& embree = renderer.embree_ ? *renderer.embree_ : *state_->per_view;
+  if (options.comparable)
+    state_->tracer = std::make_unique<ComparableTracer>(scene_, embree, *options.comparable);
+  else
+    state_->tracer = std::make_unique<PathTracer>(scene_, embree);
   const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
   state_->arena = std::make_unique<tbb::task_arena>(threads);
 }

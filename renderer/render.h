@@ -6,12 +6,13 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "renderer/comparable_tracer.h"
 #include "renderer/film.h"
-#include "renderer/path_tracer.h"
 #include "renderer/scene.h"
 
 namespace landsim::renderer {
@@ -31,8 +32,9 @@ struct RenderOptions {
   double checkpoint_seconds = 60.0;
   bool resume = false;
   std::string render_key;
-  // Light paths followed (TraceOptions{} is the full light transport).
-  TraceOptions trace;
+  // Set: the POV-comparable integrator with this light (the cross-check); empty: the
+  // physical path tracer.
+  std::optional<ComparableLight> comparable;
   // The first sample of each pixel at its centre (for comparisons with renderers that
   // sample pixel centres), so the AOVs describe the centre.
   bool centre_first_sample = false;

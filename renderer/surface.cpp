@@ -1,0 +1,104 @@
+#include "renderer/surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "renderer/bark_texture.h"
+#include "renderer/integrator.h"
+
+namespace landsim::renderer {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+}  // namespace
+
+SurfaceMaterial surface_material(const Scene& scene, const Hit& hit) {
+  if (hit.object == ObjectClass::grass) {
+    const GrassType& g = scene.grass.types[static_cast<std::size_t>(hit.grass_type - 1)];
+    return {g.reflectance, g.transmittance};
+  }
+  if (hit.prototype < 0) {
+    const GroundMaterial m = scene.ground.material(scene.ground.material_id(hit.primitive));
+    return {m.albedo, {}, m.water};
+  }
+  const TreePrototype& proto = scene.prototypes[static_cast<std::size_t>(hit.prototype)];
+  if (hit.object == ObjectClass::leaf) {
+    // A leaf disc's point is its leaf's stored index; a triangle belongs to one.
+    const trees::GroupGeometry& leaves = proto.geometry.group(trees::Group::leaves);
+    const Vec3f tint =
+        proto.leaf_tint(hit.far_primitive ? leaves.vigour_of_item(hit.primitive)
+                                          : leaves.vigour_of_triangle(hit.primitive));
+    return {proto.leaf_reflectance * tint, proto.leaf_transmittance * tint};
+  }
+  // Far stem lines carry no texture coordinates: the texture's mean (1) stands for it.
+  if (proto.bark_texture && !hit.far_primitive)
+    return {proto.bark_albedo * proto.bark_texture->factor(hit.u, hit.v), {}};
+  return {proto.bark_albedo, {}};
+}
+
+ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask) {
+  ShadingPoint v{ray.origin + ray.direction * hit.t, hit.shading_normal, hit.geometric_normal,
+                 mask};
+  if (dot(v.ng, ray.direction) > 0.0f) v.ng = -v.ng;
+  if (dot(v.n, v.ng) < 0.0f) v.n = -v.n;
+  return v;
+}
+
+FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
+                   const SurfaceMaterial& m) {
+  const std::int32_t species =
+      hit.prototype >= 0 ? scene.prototypes[static_cast<std::size_t>(hit.prototype)].species : -1;
+  return {hit.t,   v.n,      m.reflectance + m.transmittance, hit.object, hit.instance,
+          species, hit.level};
+}
+
+Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
+              bool& front) {
+  const float cos_n = dot(n, l);
+  front = cos_n > 0.0f && dot(ng, l) > 0.0f;
+  const bool back = m.two_sided() && cos_n < 0.0f && dot(ng, l) < 0.0f;
+  if (!front && !back) return {};
+  return (front ? m.reflectance : m.transmittance) * (std::abs(cos_n) / kPi);
+}
+
+float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng) {
+  if (!m.water) return 0.0f;
+  const float c = std::clamp(-dot(direction, ng), 0.0f, 1.0f);
+  return 0.02f + 0.98f * std::pow(1.0f - c, 5.0f);
+}
+
+Vec3f offset_point(const Vec3f& p, const Vec3f& ng) {
+  const float scale =
+      1e-4f * std::max(1.0f, max_component(Vec3f{std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+  return p + ng * scale;
+}
+
+Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2) {
+  const float cos_max = std::cos(radius);
+  const float cos_theta = 1.0f - u1 * (1.0f - cos_max);
+  const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+  const float phi = 2.0f * kPi * u2;
+  Vec3f t, b;
+  orthonormal_basis(axis, t, b);
+  return normalize(t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)) +
+                   axis * cos_theta);
+}
+
+SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const ShadingPoint& v,
+                     const SurfaceMaterial& m, float u1, float u2, std::uint32_t& rays) {
+  const Vec3f sun_direction(normalize(scene.sun.direction));
+  const Vec3f l = sample_cone(sun_direction, static_cast<float>(scene.sun.angular_radius), u1, u2);
+  bool front = false;
+  const Vec3f f = lambert(m, v.n, v.ng, l, front);
+  if (max_component(f) <= 0.0f) return {};
+  ++rays;
+  const Ray ray{offset_point(v.p, front ? v.ng : -v.ng), l};
+  if (embree.occluded(ray, 0.0f, kInfinity, v.mask)) return {};
+  return {f * scene.sun.irradiance, ray};
+}
+
+}  // namespace landsim::renderer

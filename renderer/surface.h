@@ -1,0 +1,67 @@
+#pragma once
+// A surface point as the integrators shade it: its material (Lambertian, two-sided for leaves
+// and grass, a Fresnel mirror for water), its normals facing the incoming ray, and sunlight
+// arriving there. Shared by PathTracer and ComparableTracer, so that both see the same
+// surfaces and the same sun sample.
+#include <cstdint>
+
+#include "core/vec3.h"
+#include "renderer/camera.h"
+#include "renderer/embree_scene.h"
+#include "renderer/scene.h"
+
+namespace landsim::renderer {
+
+// What a surface does with light: Lambertian reflection, plus (leaves, grass) Lambertian
+// transmission to the other side.
+struct SurfaceMaterial {
+  Vec3f reflectance;
+  Vec3f transmittance;  // zero for opaque surfaces
+  bool water = false;   // adds a Fresnel mirror (Schlick, F0 = 0.02) over the diffuse part
+  bool two_sided() const { return max_component(transmittance) > 0.0f; }
+};
+
+// The material of a hit: ground (by triangle), grass, bark (textured) or leaf (vigour tint).
+SurfaceMaterial surface_material(const Scene& scene, const Hit& hit);
+
+struct ShadingPoint {
+  Vec3f p;             // on the surface
+  Vec3f n;             // shading normal, facing the incoming ray
+  Vec3f ng;            // geometric normal, same side
+  std::uint32_t mask;  // the pixel's ray mask (stochastic level of detail)
+};
+
+// The hit point of `ray` with both normals turned toward where the ray came from.
+ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask);
+
+// What the first hit of a camera ray records for the film.
+struct FirstHit;
+FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
+                   const SurfaceMaterial& m);
+
+// f x cos for light arriving from `l`: reflection on the viewer's side, transmission from
+// the far side; `front` tells which side to leave from.
+Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
+              bool& front);
+
+// The Fresnel reflectance of water seen along `direction` (0 for other materials).
+float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng);
+
+// Pushes a point off its surface so that rays leaving it do not hit it again; the offset
+// grows with distance from the origin because float spacing does.
+Vec3f offset_point(const Vec3f& p, const Vec3f& ng);
+
+// Uniform direction in the cone of half-angle `radius` about axis (the sun's disc).
+Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2);
+
+// Sunlight reflected or transmitted toward the viewer at `v`, before any haze on its way:
+// one direction sampled in the sun's disc (u1, u2), a shadow ray unless the surface faces
+// away. `ray` is that shadow ray, for the caller's haze.
+struct SunSample {
+  Vec3f light;  // f x cos x irradiance; zero when shadowed or facing away
+  Ray ray;
+};
+SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const ShadingPoint& v,
+                     const SurfaceMaterial& m, float u1, float u2, std::uint32_t& rays);
+
+}  // namespace landsim::renderer
