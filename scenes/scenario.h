@@ -88,7 +88,6 @@ struct GroundMaterials {
 
 struct SpeciesSettings {
   int bit = 0;
-  std::string file;  // resolved path
   trees::Species species;
   int variants = 4;
   double density_per_ha = 200.0;

@@ -304,10 +304,10 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     s.bit = static_cast<int>(r.integer("bit", 0, featuremaps::kTreeBits - 1));
     if (!bits.insert(s.bit).second)
       r.fail("bit", "species bit " + std::to_string(s.bit) + " is used twice");
-    s.file = resolve(base_dir, r.string("file"));
-    const std::optional<std::string> text = terrain::read_text_file(s.file);
-    if (!text) r.fail("file", "species file not found: " + s.file);
-    s.species = trees::parse_species(*text, s.file);
+    const std::string species_file = resolve(base_dir, r.string("file"));
+    const std::optional<std::string> text = terrain::read_text_file(species_file);
+    if (!text) r.fail("file", "species file not found: " + species_file);
+    s.species = trees::parse_species(*text, species_file);
     s.variants = static_cast<int>(r.integer("variants", 1, 256, 4));
     s.density_per_ha = r.number("density_per_ha", Range{0.0, 100000.0, true}, 200.0);
     s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, 0.1);
