@@ -235,12 +235,28 @@ TEST(Cli, ImageSetsNameEveryFrameAndListThemInTheManifest) {
   EXPECT_NE(testing::read_file(out / "v_f0000.exr"), testing::read_file(out / "v_f0001.exr"));
 }
 
+// A 480 x 270 render of 48 spp (seconds long) writing checkpoints every `checkpoint`
+// seconds, and a child process running it into `out` with two threads.
+std::filesystem::path long_render(const TempDir& dir, const std::string& checkpoint) {
+  std::string text =
+      scenario("", "width = 480\nheight = 270", "spp = 48\ncheckpoint_seconds = " + checkpoint);
+  text.replace(text.find("width = 32\nheight = 18\n"), 22, "");
+  return dir.write("long.toml", text);
+}
+
+pid_t start_render(const std::filesystem::path& file, const std::filesystem::path& out) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl(LANDSIM_BINARY, LANDSIM_BINARY, "render", file.c_str(), "--out", out.c_str(),
+            "--threads", "2", nullptr);
+    ::_exit(127);
+  }
+  return pid;
+}
+
 TEST(Cli, KilledRenderResumesToTheSameImage) {
   TempDir dir;
-  std::string text =
-      scenario("", "width = 480\nheight = 270", "spp = 48\ncheckpoint_seconds = 0.0001");
-  text.replace(text.find("width = 32\nheight = 18\n"), 22, "");
-  const auto file = dir.write("long.toml", text);
+  const auto file = long_render(dir, "0.0001");
   const auto whole = dir / "whole";
   ASSERT_EQ(
       run("render " + file.string() + " --out " + whole.string() + " --threads 2", dir).exit_code,
@@ -248,12 +264,7 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
   // Start the same render, kill it once its first checkpoint exists, then resume it.
   const auto out = dir / "resumed";
   std::filesystem::create_directories(out);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::execl(LANDSIM_BINARY, LANDSIM_BINARY, "render", file.c_str(), "--out", out.c_str(),
-            "--threads", "2", nullptr);
-    ::_exit(127);
-  }
+  const pid_t pid = start_render(file, out);
   const auto checkpoint = out / "v.checkpoint.exr";
   for (int i = 0; i < 6000 && !std::filesystem::exists(checkpoint); ++i) ::usleep(1000);
   ::kill(pid, SIGKILL);
@@ -273,17 +284,9 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
 // checkpoint written and exit code 143; --resume finishes it to the uninterrupted image.
 TEST(Cli, TerminatedRenderWritesItsCheckpointAndResumes) {
   TempDir dir;
-  std::string text =
-      scenario("", "width = 480\nheight = 270", "spp = 48\ncheckpoint_seconds = 1e6");
-  text.replace(text.find("width = 32\nheight = 18\n"), 22, "");
-  const auto file = dir.write("long.toml", text);
+  const auto file = long_render(dir, "1e6");
   const auto out = dir / "out";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::execl(LANDSIM_BINARY, LANDSIM_BINARY, "render", file.c_str(), "--out", out.c_str(),
-            "--threads", "2", nullptr);
-    ::_exit(127);
-  }
+  const pid_t pid = start_render(file, out);
   // The output directory appears when tracing starts; then ask the render to stop.
   for (int i = 0; i < 6000 && !std::filesystem::exists(out); ++i) ::usleep(1000);
   ::usleep(100000);
