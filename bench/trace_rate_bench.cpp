@@ -11,6 +11,7 @@
 #include <chrono>
 
 #include "renderer/camera.h"
+#include "renderer/detail/ray_recorder.h"
 #include "renderer/embree_scene.h"
 #include "renderer/path_tracer.h"
 #include "scenes/default_scenario.h"
@@ -33,7 +34,6 @@ void BM_TraceRateAgainstEmbree(benchmark::State& state) {
   double path_seconds = 0.0, raw_seconds = 0.0;
   std::size_t ray_count = 0;
   for (auto _ : state) {
-    std::vector<std::vector<renderer::RecordedRay>> lists(64);
     // Pass 1: the renderer's rate (not recording: recording would slow it).
     tbb::task_arena arena(threads);
     std::atomic<std::uint64_t> rays{0};
@@ -64,13 +64,14 @@ void BM_TraceRateAgainstEmbree(benchmark::State& state) {
     trace_all();
     path_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // Pass 2: the same paths, recording every ray; then Embree alone on them.
-    const_cast<renderer::EmbreeScene&>(embree).record_rays(&lists);
-    trace_all();
-    const_cast<renderer::EmbreeScene&>(embree).record_rays(nullptr);
-    std::vector<renderer::RecordedRay> all;
-    for (auto& l : lists) all.insert(all.end(), l.begin(), l.end());
+    std::vector<renderer::detail::RecordedRay> all;
+    {
+      const renderer::detail::RayRecorder recorder(embree);
+      trace_all();
+      all = recorder.rays();
+    }
     ray_count = all.size();
-    raw_seconds = embree.trace_raw(all, threads);
+    raw_seconds = renderer::detail::RayRecorder::trace_raw(embree, all, threads);
     state.SetIterationTime(path_seconds);
   }
   state.counters["rays"] = static_cast<double>(ray_count);

@@ -2,6 +2,7 @@
 
 #include "renderer/detail/embree_errors.h"
 #include "renderer/detail/prototype_levels.h"
+#include "renderer/detail/ray_recorder.h"
 #include "renderer/grass_patch.h"
 #include "renderer/stochastic_lod.h"
 #include "trees/degradation.h"
@@ -293,7 +294,10 @@ void EmbreeScene::record(const Ray& ray, float t_far, bool occlusion) const {
   (*recorder_)[static_cast<std::size_t>(std::max(index, 0))].push_back({ray, t_far, occlusion});
 }
 
-double EmbreeScene::trace_raw(const std::vector<RecordedRay>& rays, int threads) const {
+// Defined here, where the Embree scene is visible (the recorder's other members are in
+// detail/ray_recorder.cpp).
+double detail::RayRecorder::trace_raw(const EmbreeScene& scene,
+                                      const std::vector<RecordedRay>& rays, int threads) {
   tbb::task_arena arena(threads);
   const auto start = std::chrono::steady_clock::now();
   arena.execute([&] {
@@ -304,12 +308,12 @@ double EmbreeScene::trace_raw(const std::vector<RecordedRay>& rays, int threads)
                         for (std::size_t i = r.begin(); i != r.end(); ++i) {
                           if (rays[i].occlusion) {
                             RTCRay ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far);
-                            rtcOccluded1(impl_->scene, &context, &ray);
+                            rtcOccluded1(scene.impl_->scene, &context, &ray);
                           } else {
                             RTCRayHit rh{};
                             rh.ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far);
                             rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                            rtcIntersect1(impl_->scene, &context, &rh);
+                            rtcIntersect1(scene.impl_->scene, &context, &rh);
                           }
                         }
                       });

@@ -34,12 +34,10 @@ struct Hit {
   bool far_primitive = false;
 };
 
-// A ray as traced, for measuring Embree's raw rate on exactly the rays a render used.
-struct RecordedRay {
-  Ray ray;
-  float t_far;
-  bool occlusion;  // a shadow ray (rtcOccluded1) rather than a closest hit (rtcIntersect1)
-};
+namespace detail {
+struct RecordedRay;
+class RayRecorder;
+}  // namespace detail
 
 class EmbreeScene {
  public:
@@ -57,18 +55,14 @@ class EmbreeScene {
                                std::uint32_t mask = kAllBuckets) const;
   bool occluded(const Ray& ray, float t_near, float t_far, std::uint32_t mask = kAllBuckets) const;
 
-  // Benchmarks only: while set, every traced ray is appended to the list of the calling
-  // TBB worker (`lists` must hold one per possible worker index).
-  void record_rays(std::vector<std::vector<RecordedRay>>* lists) { recorder_ = lists; }
-  // Traces `rays` with Embree alone (no shading) on `threads` workers; returns seconds.
-  double trace_raw(const std::vector<RecordedRay>& rays, int threads) const;
-
  private:
+  // Benchmarks' ray recording (detail::RayRecorder): rays traced while it is attached.
+  friend class detail::RayRecorder;
   void record(const Ray& ray, float t_far, bool occlusion) const;
 
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  std::vector<std::vector<RecordedRay>>* recorder_ = nullptr;
+  mutable std::vector<std::vector<detail::RecordedRay>>* recorder_ = nullptr;
 };
 
 }  // namespace landsim::renderer
