@@ -4,6 +4,7 @@
 // reader (params::TableReader) while the files are parsed.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <regex>
 #include <set>
@@ -107,6 +108,41 @@ TEST(SpeciesDocs, MeasuredGrowthKeysAreTheDocumentedOnes) {
 
 TEST(SpeciesDocs, HarmonicBlocksAreTheDocumentedOnes) {
   expect_documented("docs/HARMONIC.md", "| block (species-file key)", "harmonic_");
+}
+
+// Weber & Penn's parameters are documented by name, per-level ones once as "nName".
+TEST(SpeciesDocs, WeberPennParametersAreTheDocumentedOnes) {
+  params::Declarations declared;
+  const auto file = source_file("data/species/quaking_aspen.toml");
+  parse_species_toml(read_file(file), file.string(), &declared);
+  std::set<std::string> names;
+  for (const params::KeyDeclaration& d : declared) {
+    if (d.key == "core" || d.key == "name" || d.key == "colours" || !d.table.empty()) continue;
+    names.insert(std::isdigit(static_cast<unsigned char>(d.key.front())) != 0 &&
+                         d.key.find("Scale") == std::string::npos &&
+                         d.key.find("BaseSplits") == std::string::npos
+                     ? "n" + d.key.substr(1)
+                     : d.key);
+  }
+  ASSERT_GT(names.size(), 40u);
+  const std::string doc = read_file(source_file("docs/SPECIES.md"));
+  const std::size_t start = doc.find("## Weber & Penn parameters");
+  ASSERT_NE(start, std::string::npos);
+  std::istringstream lines(doc.substr(start, doc.find("\n## ", start + 1) - start));
+  std::set<std::string> documented;
+  const std::regex name(R"([A-Za-z0-9]+)");
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("| ", 0) != 0 || line.rfind("| parameter", 0) == 0 || line.rfind("|---", 0) == 0)
+      continue;
+    const std::string cell = line.substr(2, line.find(" |", 2) - 2);
+    for (auto it = std::sregex_iterator(cell.begin(), cell.end(), name);
+         it != std::sregex_iterator(); ++it)
+      documented.insert((*it)[0]);
+  }
+  for (const std::string& n : names)
+    EXPECT_TRUE(documented.count(n)) << n << " is read but not in docs/SPECIES.md";
+  for (const std::string& n : documented)
+    EXPECT_TRUE(names.count(n)) << n << " is documented but not a Weber & Penn parameter";
 }
 
 }  // namespace
