@@ -3,12 +3,53 @@
 #include <CLI/Error.hpp>
 #include <CLI/Validators.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
 #include "core/input_error.h"
 
 namespace landsim::params {
+namespace {
+
+// Edit distance with case ignored, a swap of neighbours counting as one edit (optimal
+// string alignment): "sede" is one edit from "seed".
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  const auto same = [&](std::size_t i, std::size_t j) {
+    return std::tolower(static_cast<unsigned char>(a[i])) ==
+           std::tolower(static_cast<unsigned char>(b[j]));
+  };
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min(
+          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (same(i - 1, j - 1) ? 0 : 1)});
+      if (i > 1 && j > 1 && same(i - 1, j - 2) && same(i - 2, j - 1))
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+}  // namespace
+
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates) {
+  // Close enough: a third of the name's letters wrong at most (at least one, at most three).
+  const std::size_t limit = std::clamp<std::size_t>(name.size() / 3, 1, 3);
+  std::string best;
+  std::size_t best_distance = limit + 1;
+  for (const std::string& c : candidates) {
+    const std::size_t d = edit_distance(name, c);
+    if (d < best_distance) {
+      best = c;
+      best_distance = d;
+    }
+  }
+  return best.empty() ? "" : " (did you mean '" + best + "'?)";
+}
+
 std::string format_number(double v) {
   std::ostringstream s;
   s << v;
@@ -292,9 +333,11 @@ void TableReader::finish() const {
     if (read_.count(key.str()) != 0) continue;
     std::string known;
     for (const std::string& k : read_) known += (known.empty() ? "" : ", ") + k;
+    const std::string hint =
+        did_you_mean(key.str(), std::vector<std::string>(read_.begin(), read_.end()));
     throw InputError(location(&value) + ": " + (path_.empty() ? "" : "[" + path_ + "] ") +
-                     "unknown key '" + std::string(key.str()) + "' (expected one of: " + known +
-                     ")");
+                     "unknown key '" + std::string(key.str()) + "'" + hint +
+                     " (expected one of: " + known + ")");
   }
 }
 

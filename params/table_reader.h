@@ -105,6 +105,10 @@ class TableReader {
 // A number as a short decimal: 0.5, not 0.500000.
 std::string format_number(double v);
 
+// The candidate closest to a misspelt `name` (edit distance, case ignored), if one is close
+// enough to be what was meant: " (did you mean 'x'?)", else "".
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates);
+
 // Name of a TOML value's type, for "expected ..., got a string" messages.
 std::string type_name(const toml::node& node);
 

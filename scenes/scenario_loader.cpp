@@ -367,10 +367,12 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
-    throw InputError(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                     ": unknown table or key '" + std::string(key.str()) +
-                     "' (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
-                     "haze, views, render)");
+    throw InputError(
+        file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+        ": unknown table or key '" + std::string(key.str()) + "'" +
+        params::did_you_mean(key.str(), std::vector<std::string>(kKnown.begin(), kKnown.end())) +
+        " (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
+        "haze, views, render)");
   }
 }
 

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <new>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "grow_command.h"
 #include "info_command.h"
 #include "mpi_session.h"
+#include "params/table_reader.h"
 #include "plate_command.h"
 #include "render_command.h"
 #include "tree_command.h"
@@ -58,6 +60,21 @@ int main(int argc, char** argv) {
       cmd::command(app, cmd::add_degrade_command, cmd::run_degrade),
       cmd::command(app, cmd::add_plate_command, cmd::run_plate),
   };
+
+  // A misspelt command: say which one was probably meant (CLI11 would only ask for one).
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+      names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      std::cerr << "landsim: error: unknown command '" << argv[1] << "'"
+                << landsim::params::did_you_mean(argv[1], names) << " (commands: " << list
+                << "; landsim --help)\n";
+      return kBadInput;
+    }
+  }
 
   try {
     app.parse(argc, argv);

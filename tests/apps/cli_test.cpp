@@ -380,6 +380,32 @@ std::string huge_kagwene(const TempDir& dir) {
   return dir.write("huge.toml", text).string();
 }
 
+// Misspelt commands, tables, keys and species parameters get the name that was probably
+// meant; a name close to nothing gets no guess.
+TEST(Cli, MisspeltNamesSuggestTheClosest) {
+  TempDir dir;
+  const Result command = run("rendr", dir);
+  EXPECT_EQ(command.exit_code, 2);
+  EXPECT_NE(command.err.find("unknown command 'rendr' (did you mean 'render'?)"), std::string::npos)
+      << command.err;
+  const auto table = dir.write("t.toml", scenario("", "", "spp = 1") + "[hazee]\n");
+  const Result t = run("info " + table.string(), dir);
+  EXPECT_EQ(t.exit_code, 2);
+  EXPECT_NE(t.err.find("'hazee' (did you mean 'haze'?)"), std::string::npos) << t.err;
+  const auto key = dir.write("k.toml", scenario("", "", "spp = 1\nsede = 3"));
+  const Result k = run("info " + key.string(), dir);
+  EXPECT_EQ(k.exit_code, 2);
+  EXPECT_NE(k.err.find("[render] unknown key 'sede' (did you mean 'seed'?)"), std::string::npos)
+      << k.err;
+  const auto far = dir.write("f.toml", scenario("", "", "spp = 1\nsampels = 3"));
+  const Result f = run("info " + far.string(), dir);
+  EXPECT_EQ(f.err.find("did you mean"), std::string::npos) << f.err;
+  const auto species = dir.write("s.toml", "core = \"weber_penn\"\nLeafScal = 0.2\n");
+  const Result sp = run("tree " + species.string(), dir);
+  EXPECT_EQ(sp.exit_code, 2);
+  EXPECT_NE(sp.err.find("'LeafScal' (did you mean 'LeafScale'?)"), std::string::npos) << sp.err;
+}
+
 TEST(Cli, InfoEstimatesAHugeSceneWithoutBuildingIt) {
   TempDir dir;
   const Result r = run("info --json " + huge_kagwene(dir), dir);

@@ -183,7 +183,9 @@ Parameters parse_parameters(const ParamTable& table, const std::string& file) {
     for (const Spec& s : specs()) {
       if (s.name == name) spec = &s;
     }
-    if (spec == nullptr) refuse(raw, name, "unknown Weber & Penn parameter");
+    if (spec == nullptr)
+      refuse(raw, name,
+             "unknown Weber & Penn parameter" + params::did_you_mean(name, parameter_names()));
     apply(p, *spec, raw);
   }
   const SizeEstimate e = estimate_size(p);
