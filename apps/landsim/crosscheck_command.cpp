@@ -15,9 +15,7 @@ namespace landsim::app {
 CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
   CLI::App* cmd = app.add_subcommand(
       "crosscheck", "Render with landsim and POV-Ray and compare (docs/CROSSCHECK.md)");
-  cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
-  cmd->add_option("--out", args.out, "Output directory")->required();
-  cmd->add_option("--view", args.view, "View name (default: the first)");
+  add_scene_view_options(*cmd, args.scenario, args.out, args.view);
   cmd->add_option("--spp", args.spp, "Samples per pixel for both")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();

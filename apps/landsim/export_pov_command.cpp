@@ -16,9 +16,7 @@ namespace landsim::app {
 CLI::App* add_export_pov_command(CLI::App& app, ExportPovArgs& args) {
   CLI::App* cmd = app.add_subcommand(
       "export-pov", "Write the scene as POV-Ray 3.7 files (scene.pov, meshes.inc)");
-  cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
-  cmd->add_option("--out", args.out, "Output directory")->required();
-  cmd->add_option("--view", args.view, "View name (default: the first)");
+  add_scene_view_options(*cmd, args.scenario, args.out, args.view);
   cmd->add_option("--frame", args.frame, "Frame index (wind sway)")->check(CLI::NonNegativeNumber);
   return cmd;
 }

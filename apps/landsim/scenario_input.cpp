@@ -1,9 +1,18 @@
 #include "scenario_input.h"
 
+#include <CLI/CLI.hpp>
+
 #include "core/input_error.h"
 #include "scenes/default_scenario.h"
 
 namespace landsim::app {
+
+void add_scene_view_options(CLI::App& cmd, std::string& scenario, std::string& out,
+                            std::string& view) {
+  cmd.add_option("scenario", scenario, "Scenario TOML file (default: the embedded scene)");
+  cmd.add_option("--out", out, "Output directory")->required();
+  cmd.add_option("--view", view, "View name (default: the first)");
+}
 
 scenes::Scenario scenario_or_default(const std::string& path) {
   return path.empty() ? scenes::default_scenario() : scenes::load_scenario(path);

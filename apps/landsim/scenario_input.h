@@ -6,7 +6,16 @@
 
 #include "scenes/scenario.h"
 
+namespace CLI {
+class App;
+}
+
 namespace landsim::app {
+
+// The options of commands that work on one view of a scenario's scene: the scenario
+// (positional, default the embedded scene), --out DIR (required) and --view NAME.
+void add_scene_view_options(CLI::App& cmd, std::string& scenario, std::string& out,
+                            std::string& view);
 
 // `path` empty: the embedded default scene. InputError for a bad file.
 scenes::Scenario scenario_or_default(const std::string& path);
