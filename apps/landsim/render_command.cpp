@@ -99,8 +99,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--height", args.height, "Image height in pixels")
       ->check(CLI::Range(1, scenes::kMaxImageSide));
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
-  cmd->add_flag("--resume", args.resume,
-                "Continue from the checkpoints of an interrupted render in --out");
+  cmd->add_flag(
+      "--resume", args.resume,
+      "Continue an interrupted render in --out: keep its finished images, resume from checkpoints");
   cmd->add_option("--task-index", args.task_index,
                   "Render only image N of the set (frame-major), e.g. SLURM_ARRAY_TASK_ID")
       ->check(CLI::Range(0, 1000000));
@@ -249,6 +250,31 @@ struct RenderedImage {
   nlohmann::json manifest;  // manifest.json
 };
 
+// What makes an image what it is (scenario text, view, time, samples, seed, size): a
+// checkpoint or a finished EXR with the same key holds this very image.
+std::string render_key(const scenes::Scenario& s, const Image& image) {
+  const scenes::ViewSettings& v = s.views[image.view];
+  return fmt::format("{} {} {} {} {} {}x{}", s.text_hash, v.name, s.render.frames[image.frame],
+                     s.render.spp, s.render.seed, v.width, v.height);
+}
+
+// --resume: the image's EXR is already in --out, finished from this very scenario.
+bool already_finished(const RenderRun& run, const Image& image) {
+  const std::filesystem::path exr = run.out_dir / (image.stem + ".exr");
+  if (!std::filesystem::exists(exr) ||
+      !std::filesystem::exists(run.out_dir / (image.stem + ".png")))
+    return false;
+  renderer::ImageMetadata meta;
+  try {
+    renderer::read_exr(exr, &meta);
+  } catch (const std::exception&) {
+    return false;  // unreadable: render it again
+  }
+  for (const auto& [key, value] : meta)
+    if (key == "render_key") return value == render_key(run.scenario, image);
+  return false;
+}
+
 renderer::RenderOptions render_options(const RenderRun& run, const renderer::View& view,
                                        const Image& image, bool first) {
   const scenes::Scenario& s = run.scenario;
@@ -273,8 +299,7 @@ renderer::RenderOptions render_options(const RenderRun& run, const renderer::Vie
   }
   options.resume = run.args.resume;
   options.stop = [](int) { return g_stop_signal != 0; };
-  options.render_key = fmt::format("{} {} {} {} {} {}x{}", s.text_hash, view.name, time,
-                                   s.render.spp, s.render.seed, view.width, view.height);
+  options.render_key = render_key(s, image);
   return options;
 }
 
@@ -312,6 +337,7 @@ std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::
   const auto exr = run.out_dir / (image.stem + ".exr");
   renderer::ImageMetadata meta = metadata(s, s.views[image.view], scene);
   meta.emplace_back("time_s", fmt::format("{}", time));
+  meta.emplace_back("render_key", options.render_key);
   const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
   renderer::write_exr(film, exr, meta, &camera);
   renderer::write_preview_png(film, run.out_dir / (image.stem + ".png"),
@@ -379,7 +405,15 @@ int run_render(const RenderArgs& args) {
   std::size_t scene_frame = 0;
   nlohmann::json reports = nlohmann::json::array();
   nlohmann::json manifest = nlohmann::json::array();
+  std::size_t skipped = 0;
   for (const Image& image : images) {
+    // Under MPI every rank would have to agree: finished images are skipped in one process.
+    if (args.resume && !run.distributed() && already_finished(run, image)) {
+      manifest.push_back(manifest_entry(scenario.views[image.view], image.stem, image.frame,
+                                        scenario.render.frames[image.frame]));
+      ++skipped;
+      continue;
+    }
     if (!scene || (sway && image.frame != scene_frame)) {
       renderer.reset();
       scene.reset();  // one scene at a time: the memory estimate counts one
@@ -404,6 +438,7 @@ int run_render(const RenderArgs& args) {
     reports.push_back(done->report);
     manifest.push_back(done->manifest);
   }
+  if (skipped > 0) spdlog::info("skipped {} finished images (--resume)", skipped);
   // The estimate's honesty, visible on every render (docs/PERFORMANCE.md "Memory budget").
   spdlog::info("peak memory {:.0f} MB (estimated {:.0f} MB)",
                static_cast<double>(peak_resident_bytes()) / 1e6,

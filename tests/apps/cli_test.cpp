@@ -280,6 +280,30 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
   EXPECT_EQ(testing::read_file(out / "v.exr"), testing::read_file(whole / "v.exr"));
 }
 
+// --resume renders only what is missing: finished images of the same scenario, view, time,
+// samples, seed and size are kept as they are; another sample count renders them again.
+TEST(Cli, ResumeSkipsFinishedImages) {
+  TempDir dir;
+  const auto file = dir.write("set.toml", scenario("", "", "spp = 1\nframes = [0.0, 1.0]"));
+  const auto out = dir / "out";
+  ASSERT_EQ(run("render " + file.string() + " --out " + out.string(), dir).exit_code, 0);
+  const std::string first = testing::read_file(out / "v_f0000.exr");
+  std::filesystem::remove(out / "v_f0001.exr");
+  const Result resumed =
+      run("render " + file.string() + " --out " + out.string() + " --resume", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("skipped 1 finished images"), std::string::npos) << resumed.err;
+  EXPECT_TRUE(std::filesystem::exists(out / "v_f0001.exr"));
+  EXPECT_EQ(testing::read_file(out / "v_f0000.exr"), first);
+  EXPECT_TRUE(std::filesystem::exists(out / "manifest.json"));
+  EXPECT_EQ(nlohmann::json::parse(testing::read_file(out / "manifest.json"))["images"].size(), 2u);
+  const Result other =
+      run("render " + file.string() + " --out " + out.string() + " --resume --spp 2", dir);
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_EQ(other.err.find("skipped"), std::string::npos) << other.err;
+  EXPECT_NE(testing::read_file(out / "v_f0000.exr"), first);
+}
+
 // SIGTERM (a batch system's time limit) stops a render at its next wave of tiles with a
 // checkpoint written and exit code 143; --resume finishes it to the uninterrupted image.
 TEST(Cli, TerminatedRenderWritesItsCheckpointAndResumes) {
