@@ -183,6 +183,9 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
     }
   };
   auto last_checkpoint = std::chrono::steady_clock::now();
+  // The first checkpoint comes early (a render killed in its first minute keeps something);
+  // then one every checkpoint_seconds.
+  double interval = std::min(options.first_checkpoint_seconds, options.checkpoint_seconds);
   // Waves of tiles in a fixed order: between waves the film is a consistent snapshot.
   for (int wave = first_tile; wave < count; wave += kTilesPerWave) {
     const int wave_end = std::min(wave + kTilesPerWave, count);
@@ -190,10 +193,10 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
     const bool stop = wave_end < count && options.stop && options.stop(wave_end);
     const auto now = std::chrono::steady_clock::now();
     if (!options.checkpoint.empty() && wave_end < count &&
-        (stop || std::chrono::duration<double>(now - last_checkpoint).count() >=
-                     options.checkpoint_seconds)) {
+        (stop || std::chrono::duration<double>(now - last_checkpoint).count() >= interval)) {
       write_checkpoint(options, film, wave_end);
       last_checkpoint = now;
+      interval = options.checkpoint_seconds;
     }
     if (stop)
       throw RenderInterrupted("render stopped after " + std::to_string(wave_end) + " tiles");

@@ -30,6 +30,7 @@ struct RenderOptions {
   // render bit for bit.
   std::filesystem::path checkpoint;
   double checkpoint_seconds = 60.0;
+  double first_checkpoint_seconds = 10.0;  // the first one comes this soon (if sooner)
   bool resume = false;
   std::string render_key;
   // Set: the POV-comparable integrator with this light (the cross-check); empty: the

@@ -214,6 +214,28 @@ TEST(Physics, AovsAgreeWithTheScene) {
   EXPECT_GT(leaves, 20);
 }
 
+// The first checkpoint is written soon after the start even when checkpoint_seconds is
+// long: a render killed early keeps its first waves.
+TEST(Physics, FirstCheckpointComesEarly) {
+  const Scene s = lit_ridge();
+  const View v{"v", {52.0, -60.0, 80.0}, {52.0, 50.0, 10.0}, 45.0, 200, 120};  // 104 tiles
+  landsim::testing::TempDir dir;
+  for (const double first : {0.0, 1e6}) {
+    RenderOptions o;
+    o.checkpoint = dir / "v.checkpoint.exr";
+    o.render_key = "ridge";
+    o.checkpoint_seconds = 1e6;
+    o.first_checkpoint_seconds = first;
+    bool seen = false;  // a checkpoint on disk while the render was still running
+    o.progress = [&](double p) {
+      if (p < 1.0) seen = seen || std::filesystem::exists(o.checkpoint);
+    };
+    Renderer(s).render(v, o);
+    EXPECT_EQ(seen, first == 0.0) << "first checkpoint after " << first << " s";
+    EXPECT_FALSE(std::filesystem::exists(o.checkpoint));  // removed when complete
+  }
+}
+
 TEST(Physics, KilledAndResumedEqualsUninterrupted) {
   const Scene s = lit_ridge();
   const View v{"v", {52.0, -60.0, 80.0}, {52.0, 50.0, 10.0}, 45.0, 200, 120};  // 13 x 8 = 104 tiles
