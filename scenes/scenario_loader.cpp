@@ -174,7 +174,10 @@ std::vector<ViewSettings> read_views(const toml::table& root, const std::string&
   std::vector<ViewSettings> views;
   std::set<std::string> names;
   for (std::size_t i = 0; i < a->size(); ++i) {
-    const std::string path = "views[" + std::to_string(i) + "]";
+    // A view is named by its name in messages once it has one.
+    const auto name = a->get(i)->as_table()->get("name");
+    const std::optional<std::string> text = name ? name->value<std::string>() : std::nullopt;
+    const std::string path = text ? "views \"" + *text + "\"" : "views[" + std::to_string(i) + "]";
     views.push_back(read_view(*a->get(i)->as_table(), path, file));
     if (!names.insert(views.back().name).second) {
       TableReader(*a->get(i)->as_table(), path, file)
@@ -399,6 +402,11 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   } catch (const toml::parse_error& e) {
     throw InputError(params::parse_error_message(e, source));
   }
+  if (root.contains("core"))
+    throw InputError(source +
+                     ": this is a species file (it names a tree core), not a scenario; a "
+                     "scenario has [terrain], [sun] and [[views]] (landsim tree takes species "
+                     "files)");
   refuse_unknown_tables(root, source);
   Scenario s;
   s.source = source;

@@ -62,6 +62,10 @@ Species parse_species_toml(std::string_view text, const std::string& source,
   } catch (const toml::parse_error& e) {
     throw InputError(params::parse_error_message(e, source));
   }
+  if (root.contains("terrain") || root.contains("views"))
+    throw InputError(source +
+                     ": this is a scenario, not a species file (a species file names its core: "
+                     "core = \"weber_penn\", ...); landsim render and info take scenarios");
   params::TableReader r(root, "", source, declared);
   Species s;
   s.source = source;

@@ -430,6 +430,27 @@ TEST(Cli, MisspeltNamesSuggestTheClosest) {
   EXPECT_NE(sp.err.find("'LeafScal' (did you mean 'LeafScale'?)"), std::string::npos) << sp.err;
 }
 
+// A species file given where a scenario belongs, and the reverse, is named for what it is;
+// a view's errors name the view.
+TEST(Cli, FileKindsAndViewsAreNamedInMessages) {
+  TempDir dir;
+  const Result species_as_scenario =
+      run("info " + testing::source_file("data/species/quaking_aspen.toml").string(), dir);
+  EXPECT_EQ(species_as_scenario.exit_code, 2);
+  EXPECT_NE(species_as_scenario.err.find("this is a species file"), std::string::npos)
+      << species_as_scenario.err;
+  const Result scenario_as_species =
+      run("tree " + testing::source_file("scenes/examples/default.toml").string(), dir);
+  EXPECT_EQ(scenario_as_species.exit_code, 2);
+  EXPECT_NE(scenario_as_species.err.find("this is a scenario, not a species file"),
+            std::string::npos)
+      << scenario_as_species.err;
+  const auto view = dir.write("v.toml", scenario("", "fov = 190.0", "spp = 1"));
+  const Result v = run("info " + view.string(), dir);
+  EXPECT_EQ(v.exit_code, 2);
+  EXPECT_NE(v.err.find("[views \"v\"] fov: expected"), std::string::npos) << v.err;
+}
+
 TEST(Cli, InfoEstimatesAHugeSceneWithoutBuildingIt) {
   TempDir dir;
   const Result r = run("info --json " + huge_kagwene(dir), dir);

@@ -114,7 +114,7 @@ TEST(Scenario, MissingDemNamesTheKeyAndThePath) {
 
 TEST(Scenario, ZeroSizedImageIsRefused) {
   const std::string msg = error_of(scenario_text("", "width = 0"));
-  EXPECT_NE(msg.find("[views[0]] width"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("[views \"a\"] width"), std::string::npos) << msg;
   EXPECT_NE(msg.find("got 0"), std::string::npos) << msg;
 }
 
@@ -148,7 +148,7 @@ TEST(Scenario, DegradationKeysAreReadAndChecked) {
 }
 
 TEST(Scenario, OutOfRangeNumbersAreRefused) {
-  EXPECT_NE(error_of(scenario_text("", "fov = 180")).find("[views[0]] fov"), std::string::npos);
+  EXPECT_NE(error_of(scenario_text("", "fov = 180")).find("[views \"a\"] fov"), std::string::npos);
   std::string sun_below = scenario_text();
   sun_below.replace(sun_below.find("elevation = 30.0"), 16, "elevation = -5.0");
   EXPECT_NE(error_of(sun_below).find("[sun] elevation"), std::string::npos);
@@ -159,7 +159,7 @@ TEST(Scenario, OutOfRangeNumbersAreRefused) {
 TEST(Scenario, MissingRequiredKeyAndTable) {
   std::string no_target = scenario_text();
   no_target.replace(no_target.find("target"), 6, "#arget");
-  EXPECT_NE(error_of(no_target).find("[views[0]] target: required key is missing"),
+  EXPECT_NE(error_of(no_target).find("[views \"a\"] target: required key is missing"),
             std::string::npos);
   EXPECT_NE(error_of("[terrain]\nelevation = \"" + volcano() + "\"\n").find("[sun]"),
             std::string::npos);
