@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "featuremaps/placement.h"
 #include "params/table_reader.h"
 #include "scenes/scenario.h"
 #include "scenes/solar_position.h"
@@ -316,6 +317,11 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, 0.1);
     s.colour_variation = r.number("colour_variation", Range{0.0, 0.9}, 0.0);
     s.min_spacing = r.number("min_spacing", Range{0.0, 1000.0}, 0.0);
+    // Trees stand on a jittered grid of one tree per spacing^2 (featuremaps/placement.h).
+    if (const double grid = featuremaps::grid_spacing(s.density_per_ha); s.min_spacing > grid)
+      r.fail("min_spacing", fmt::format("expected at most the grid spacing {:.3g} m of "
+                                        "density_per_ha {} (one tree per {:.3g} m square), got {}",
+                                        grid, s.density_per_ha, grid, s.min_spacing));
     if (r.has("bark_texture")) {
       s.bark_texture = resolve(base_dir, r.string("bark_texture"));
       if (!terrain::raster_file_exists(s.bark_texture))
@@ -419,11 +425,18 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.species = read_species(root, source, base_dir);
   s.grass = read_grass(root, source);
   s.ground = read_ground(root, source);
+  // Where the first [[grass]] or [[species]] table stands, for the messages below.
+  const auto where = [&](std::string_view key) {
+    const toml::array* a = root.get(key) != nullptr ? root.get(key)->as_array() : nullptr;
+    const toml::node* first = a != nullptr && !a->empty() ? a->get(0) : root.get(key);
+    const auto& b = first->source().begin;
+    return source + ":" + std::to_string(b.line) + ":" + std::to_string(b.column);
+  };
   if (!s.grass.empty() && !s.featuremaps) {
-    throw InputError(source + ": [[grass]] needs [featuremaps] to say where it grows");
+    throw InputError(where("grass") + ": [[grass]] needs [featuremaps] to say where it grows");
   }
   if (!s.species.empty() && !s.featuremaps) {
-    throw InputError(source +
+    throw InputError(where("species") +
                      ": [[species]] need [featuremaps] (vegetation, or classes with class_map) to "
                      "say where they grow");
   }

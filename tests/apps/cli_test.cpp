@@ -430,6 +430,32 @@ TEST(Cli, MisspeltNamesSuggestTheClosest) {
   EXPECT_NE(sp.err.find("'LeafScal' (did you mean 'LeafScale'?)"), std::string::npos) << sp.err;
 }
 
+// Scenario errors found after reading still point at the file and line.
+TEST(Cli, LateScenarioErrorsNameTheLine) {
+  TempDir dir;
+  const std::string species = "\n[[species]]\nbit = 0\nfile = \"" +
+                              testing::source_file("data/species/quaking_aspen.toml").string() +
+                              "\"\n";
+  const auto no_map = dir.write("n.toml", scenario("", "", "spp = 1") + species);
+  const Result n = run("info " + no_map.string(), dir);
+  EXPECT_EQ(n.exit_code, 2);
+  EXPECT_TRUE(std::regex_search(n.err, std::regex(R"(n\.toml:\d+:\d+: \[\[species\]\] need)")))
+      << n.err;
+  const auto spaced = dir.write(
+      "s.toml", scenario("", "", "spp = 1") + species +
+                    "density_per_ha = 10000\nmin_spacing = 2.0\n[featuremaps]\nclasses = \"" +
+                    testing::source_file("data/featuremaps/volcano_landcover.asc").string() +
+                    "\"\nclass_map = \"" +
+                    testing::source_file("scenes/examples/volcano_classes.toml").string() + "\"\n");
+  const Result sp = run("info " + spaced.string(), dir);
+  EXPECT_EQ(sp.exit_code, 2);
+  EXPECT_TRUE(std::regex_search(
+      sp.err,
+      std::regex(
+          R"(s\.toml:\d+:\d+: \[species\[0\]\] min_spacing: expected at most the grid spacing 1 m)")))
+      << sp.err;
+}
+
 // A species file given where a scenario belongs, and the reverse, is named for what it is;
 // a view's errors name the view.
 TEST(Cli, FileKindsAndViewsAreNamedInMessages) {
