@@ -16,9 +16,7 @@ CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
   CLI::App* cmd = app.add_subcommand(
       "crosscheck", "Render with landsim and POV-Ray and compare (docs/CROSSCHECK.md)");
   add_scene_view_options(*cmd, args.scenario, args.out, args.view);
-  cmd->add_option("--spp", args.spp, "Samples per pixel for both")
-      ->check(CLI::Range(1, 4096))
-      ->capture_default_str();
+  add_spp_option(*cmd, args.spp, "Samples per pixel for both");
   cmd->add_option("--threads", args.threads, "landsim worker threads (0: every core)")
       ->check(CLI::Range(0, 1024));
   cmd->add_option("--min-iou", args.min_iou, "Least object IoU that passes")

@@ -12,6 +12,7 @@
 #include "core/counter_rng.h"
 #include "exporters/contact_sheet.h"
 #include "renderer/image_output.h"
+#include "scenario_input.h"
 #include "scenes/scenario.h"
 #include "trees/harmonic/parameters.h"
 #include "trees/species.h"
@@ -30,9 +31,7 @@ CLI::App* add_discover_command(CLI::App& app, DiscoverArgs& args) {
   cmd->add_option("--tile", args.tile, "Tile size in pixels")
       ->check(CLI::Range(16, 2048))
       ->capture_default_str();
-  cmd->add_option("--spp", args.spp, "Samples per pixel")
-      ->check(CLI::Range(1, 1024))
-      ->capture_default_str();
+  add_spp_option(*cmd, args.spp);
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
   return cmd;
 }

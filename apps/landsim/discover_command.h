@@ -15,7 +15,7 @@ struct DiscoverArgs {
   std::string out;
   std::uint64_t seed = 1;
   int tile = 256;
-  int spp = 8;
+  int spp = 16;
   bool json = false;
 };
 

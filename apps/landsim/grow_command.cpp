@@ -14,6 +14,7 @@
 #include "exporters/contact_sheet.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
+#include "scenario_input.h"
 #include "scenes/scenario.h"
 #include "trees/measured_growth/dimensions.h"
 #include "trees/measured_growth/generator.h"
@@ -33,7 +34,7 @@ CLI::App* add_grow_command(CLI::App& app, GrowArgs& args) {
   cmd->add_option("--seed", args.seed, "Variant seed")->capture_default_str();
   cmd->add_option("--width", args.width, "Image width")->check(CLI::Range(16, 8192));
   cmd->add_option("--height", args.height, "Image height")->check(CLI::Range(16, 8192));
-  cmd->add_option("--spp", args.spp, "Samples per pixel")->check(CLI::Range(1, 4096));
+  add_spp_option(*cmd, args.spp);
   cmd->add_flag("--json", args.json, "Print growth.json on stdout too");
   return cmd;
 }

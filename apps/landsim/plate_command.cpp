@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "exporters/contact_sheet.h"
+#include "scenario_input.h"
 
 namespace landsim::app {
 
@@ -13,7 +14,7 @@ CLI::App* add_plate_command(CLI::App& app, PlateArgs& args) {
   add_degraded_tree_options(*cmd, args.tree);
   cmd->add_option("--out", args.out, "PNG file to write")->required();
   cmd->add_option("--tile", args.tile, "Panel size, pixels")->check(CLI::Range(32, 2048));
-  cmd->add_option("--spp", args.spp, "Samples per pixel")->check(CLI::Range(1, 4096));
+  add_spp_option(*cmd, args.spp);
   return cmd;
 }
 

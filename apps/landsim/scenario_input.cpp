@@ -18,6 +18,10 @@ scenes::Scenario scenario_or_default(const std::string& path) {
   return path.empty() ? scenes::default_scenario() : scenes::load_scenario(path);
 }
 
+void add_spp_option(CLI::App& cmd, int& spp, const std::string& help) {
+  cmd.add_option("--spp", spp, help)->check(CLI::Range(1, scenes::kMaxSpp))->capture_default_str();
+}
+
 std::size_t view_index(const scenes::Scenario& s, const std::string& name) {
   if (name.empty()) return 0;
   for (std::size_t i = 0; i < s.views.size(); ++i) {

@@ -20,6 +20,10 @@ void add_scene_view_options(CLI::App& cmd, std::string& scenario, std::string& o
 // `path` empty: the embedded default scene. InputError for a bad file.
 scenes::Scenario scenario_or_default(const std::string& path);
 
+// --spp for commands that render with a fixed default (16): the same range as the
+// scenario's [render] spp everywhere.
+void add_spp_option(CLI::App& cmd, int& spp, const std::string& help = "Samples per pixel");
+
 // The index of the view named `name` (empty: the first); InputError naming the views' file.
 std::size_t view_index(const scenes::Scenario& s, const std::string& name);
 

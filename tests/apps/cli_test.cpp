@@ -430,6 +430,18 @@ TEST(Cli, MisspeltNamesSuggestTheClosest) {
   EXPECT_NE(sp.err.find("'LeafScal' (did you mean 'LeafScale'?)"), std::string::npos) << sp.err;
 }
 
+// Every command that renders takes --spp in the scenario's range, 16 by default.
+TEST(Cli, SppIsTheSameOptionEverywhere) {
+  TempDir dir;
+  for (const std::string command : {"render", "crosscheck", "discover", "grow", "plate"}) {
+    const Result help = run(command + " --help", dir);
+    EXPECT_NE(help.out.find("in [1 - 1048576]"), std::string::npos) << command << help.out;
+    if (command != "render") {  // render's default is the scenario's
+      EXPECT_NE(help.out.find("[1 - 1048576]=16"), std::string::npos) << command << help.out;
+    }
+  }
+}
+
 // Scenario errors found after reading still point at the file and line.
 TEST(Cli, LateScenarioErrorsNameTheLine) {
   TempDir dir;
