@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "core/input_error.h"
@@ -197,7 +198,7 @@ double TableReader::number(std::string_view key, Range range, std::optional<doub
 }
 
 double TableReader::angle(std::string_view key, Range degrees, double fallback_radians) {
-  constexpr double kDegree = 3.14159265358979323846 / 180.0;
+  constexpr double kDegree = std::numbers::pi / 180.0;
   const double v = number(key, degrees, fallback_radians / kDegree);
   return has(key) ? v * kDegree : fallback_radians;
 }

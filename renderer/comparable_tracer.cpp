@@ -21,7 +21,8 @@ ComparableTracer::ComparableTracer(const Scene& scene, const EmbreeScene& embree
       embree_(embree),
       light_(light),
       sky_(scene.sky, scene.sun, scene.ground.albedo),
-      haze_(scene.haze) {}
+      haze_(scene.haze),
+      sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
 
 PathSample ComparableTracer::trace(const Ray& ray, const CounterRng& rng,
                                    std::uint32_t mask) const {
@@ -49,7 +50,7 @@ PathSample ComparableTracer::trace(const Ray& ray, const CounterRng& rng,
   out.first = first_hit(scene_, *hit, v, m);
   const float fresnel = water_fresnel(m, ray.direction, v.ng);
   const std::uint32_t dim = kFirstBounceDim;
-  Vec3f direct = sample_sun(scene_, embree_, v, m, rng.uniform(dim + kSun0),
+  Vec3f direct = sample_sun(scene_, embree_, sun_direction_, v, m, rng.uniform(dim + kSun0),
                             rng.uniform(dim + kSun1), out.rays)
                      .light;
   direct += m.reflectance * light_.ambient_irradiance * (1.0f / kPi);

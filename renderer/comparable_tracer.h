@@ -33,6 +33,7 @@ class ComparableTracer : public Integrator {
   ComparableLight light_;
   SkyModel sky_;
   HazeModel haze_;
+  Vec3f sun_direction_;
 };
 
 }  // namespace landsim::renderer

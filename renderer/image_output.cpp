@@ -132,6 +132,22 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
   out.commit();
 }
 
+namespace {
+
+// The "landsim/..." string attributes of a header, without the prefix.
+ImageMetadata landsim_metadata(const Imf::Header& header) {
+  ImageMetadata metadata;
+  for (auto it = header.begin(); it != header.end(); ++it) {
+    const std::string name = it.name();
+    if (name.rfind("landsim/", 0) != 0) continue;
+    if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+      metadata.emplace_back(name.substr(8), s->value());
+  }
+  return metadata;
+}
+
+}  // namespace
+
 Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata) {
   Imf::InputFile in(path.c_str());
   const Imath::Box2i dw = in.header().dataWindow();
@@ -143,16 +159,13 @@ Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata) {
   }
   in.setFrameBuffer(frame_buffer(film));
   in.readPixels(dw.min.y, dw.max.y);
-  if (metadata != nullptr) {
-    for (auto it = in.header().begin(); it != in.header().end(); ++it) {
-      const std::string name = it.name();
-      if (name.rfind("landsim/", 0) != 0) continue;
-      if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) {
-        metadata->emplace_back(name.substr(8), s->value());
-      }
-    }
-  }
+  if (metadata != nullptr) *metadata = landsim_metadata(in.header());
   return film;
+}
+
+ImageMetadata read_exr_metadata(const std::filesystem::path& path) {
+  const Imf::InputFile in(path.c_str());
+  return landsim_metadata(in.header());
 }
 
 void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev,

@@ -32,6 +32,8 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
 // Reads every channel write_exr writes back into a film of the file's size; returns the
 // string attributes. Throws std::runtime_error on a file that is not one of ours.
 Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata = nullptr);
+// Only the metadata of such an EXR (its header; no pixels are read).
+ImageMetadata read_exr_metadata(const std::filesystem::path& path);
 
 // White text drawn on a preview, its baseline starting at pixel (x, y).
 struct ImageLabel {

@@ -39,7 +39,7 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
 
 Vec3f PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
                             std::uint32_t& rays) const {
-  const SunSample sun = sample_sun(scene_, embree_, v, m, u1, u2, rays);
+  const SunSample sun = sample_sun(scene_, embree_, sun_direction_, v, m, u1, u2, rays);
   if (max_component(sun.light) <= 0.0f) return {};
   return sun.light * static_cast<float>(haze_.transmittance(
                          Vec3(sun.ray.origin), Vec3(sun.ray.direction), kInfiniteDistance));

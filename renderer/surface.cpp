@@ -88,9 +88,9 @@ Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2) {
                    axis * cos_theta);
 }
 
-SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const ShadingPoint& v,
-                     const SurfaceMaterial& m, float u1, float u2, std::uint32_t& rays) {
-  const Vec3f sun_direction(normalize(scene.sun.direction));
+SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const Vec3f& sun_direction,
+                     const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
+                     std::uint32_t& rays) {
   const Vec3f l = sample_cone(sun_direction, static_cast<float>(scene.sun.angular_radius), u1, u2);
   bool front = false;
   const Vec3f f = lambert(m, v.n, v.ng, l, front);

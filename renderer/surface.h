@@ -61,7 +61,9 @@ struct SunSample {
   Vec3f light;  // f x cos x irradiance; zero when shadowed or facing away
   Ray ray;
 };
-SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const ShadingPoint& v,
-                     const SurfaceMaterial& m, float u1, float u2, std::uint32_t& rays);
+// `sun_direction`: the scene's, normalised once by the caller (this runs at every bounce).
+SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const Vec3f& sun_direction,
+                     const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
+                     std::uint32_t& rays);
 
 }  // namespace landsim::renderer

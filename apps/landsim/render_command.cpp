@@ -266,7 +266,7 @@ bool already_finished(const RenderRun& run, const Image& image) {
     return false;
   renderer::ImageMetadata meta;
   try {
-    renderer::read_exr(exr, &meta);
+    meta = renderer::read_exr_metadata(exr);
   } catch (const std::exception&) {
     return false;  // unreadable: render it again
   }
