@@ -289,9 +289,10 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
 
 EmbreeScene::~EmbreeScene() = default;
 
-void EmbreeScene::record(const Ray& ray, float t_far, bool occlusion) const {
+void EmbreeScene::record(const Ray& ray, float t_far, std::uint32_t mask, bool occlusion) const {
   const int index = tbb::this_task_arena::current_thread_index();
-  (*recorder_)[static_cast<std::size_t>(std::max(index, 0))].push_back({ray, t_far, occlusion});
+  (*recorder_)[static_cast<std::size_t>(std::max(index, 0))].push_back(
+      {ray, t_far, mask, occlusion});
 }
 
 // Defined here, where the Embree scene is visible (the recorder's other members are in
@@ -307,11 +308,11 @@ double detail::RayRecorder::trace_raw(const EmbreeScene& scene,
                         rtcInitIntersectContext(&context);
                         for (std::size_t i = r.begin(); i != r.end(); ++i) {
                           if (rays[i].occlusion) {
-                            RTCRay ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far);
+                            RTCRay ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far, rays[i].mask);
                             rtcOccluded1(scene.impl_->scene, &context, &ray);
                           } else {
                             RTCRayHit rh{};
-                            rh.ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far);
+                            rh.ray = to_rtc(rays[i].ray, 0.0f, rays[i].t_far, rays[i].mask);
                             rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
                             rtcIntersect1(scene.impl_->scene, &context, &rh);
                           }
@@ -323,7 +324,7 @@ double detail::RayRecorder::trace_raw(const EmbreeScene& scene,
 
 std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_far,
                                           std::uint32_t mask) const {
-  if (recorder_ != nullptr) record(ray, t_far, false);
+  if (recorder_ != nullptr) record(ray, t_far, mask, false);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
@@ -383,7 +384,7 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
 }
 
 bool EmbreeScene::occluded(const Ray& ray, float t_near, float t_far, std::uint32_t mask) const {
-  if (recorder_ != nullptr) record(ray, t_far, true);
+  if (recorder_ != nullptr) record(ray, t_far, mask, true);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r = to_rtc(ray, t_near, t_far, mask);

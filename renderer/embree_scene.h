@@ -58,7 +58,7 @@ class EmbreeScene {
  private:
   // Benchmarks' ray recording (detail::RayRecorder): rays traced while it is attached.
   friend class detail::RayRecorder;
-  void record(const Ray& ray, float t_far, bool occlusion) const;
+  void record(const Ray& ray, float t_far, std::uint32_t mask, bool occlusion) const;
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -348,15 +348,18 @@ std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::
                 {"frame", time},
                 {"seconds", stats.seconds},
                 {"rays_per_second", stats.rays_per_second()}};
-  if (run.distributed()) {
+  if (!run.distributed()) {
+    out.report["bvh_seconds"] = stats.setup_seconds;
+    out.report["trace_seconds"] = stats.seconds - stats.setup_seconds;
+  } else {
     out.report["ranks"] = run.session->size();
     out.report["communication_seconds"] = communication;
   }
   out.manifest = manifest_entry(s.views[image.view], image.stem, image.frame, time);
   if (!run.args.json)
-    std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s, {:.2f} Mrays/s\n", exr.string(),
-                             view.width, view.height, scene.settings.spp, stats.seconds,
-                             stats.rays_per_second() / 1e6);
+    std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s ({:.2f} s BVH), {:.2f} Mrays/s\n",
+                             exr.string(), view.width, view.height, scene.settings.spp,
+                             stats.seconds, stats.setup_seconds, stats.rays_per_second() / 1e6);
   return out;
 }
 
@@ -406,6 +409,7 @@ int run_render(const RenderArgs& args) {
   nlohmann::json reports = nlohmann::json::array();
   nlohmann::json manifest = nlohmann::json::array();
   std::size_t skipped = 0;
+  double scene_seconds = 0.0;
   for (const Image& image : images) {
     // Under MPI every rank would have to agree: finished images are skipped in one process.
     if (args.resume && !run.distributed() && already_finished(run, image)) {
@@ -417,7 +421,9 @@ int run_render(const RenderArgs& args) {
     if (!scene || (sway && image.frame != scene_frame)) {
       renderer.reset();
       scene.reset();  // one scene at a time: the memory estimate counts one
+      const auto build_start = std::chrono::steady_clock::now();
       scene = scenes::build_scene(scenario, scenario.render.frames[image.frame], &variants);
+      scene_seconds += seconds_since(build_start);
       variants.clear();
       scene_frame = image.frame;
       if (reports.empty())
@@ -447,6 +453,7 @@ int run_render(const RenderArgs& args) {
   if (!args.task_index) write_manifest(out_dir / "manifest.json", scenario, manifest);
   if (args.json)
     std::cout << nlohmann::json{{"images", reports},
+                                {"scene_seconds", scene_seconds},
                                 {"memory_estimate_bytes", estimate.total_bytes()},
                                 {"peak_memory_bytes", peak_resident_bytes()}}
                      .dump()

@@ -2,6 +2,7 @@
 // For benchmarks (bench/trace_rate_bench.cpp), not for rendering: records every ray an
 // EmbreeScene traces while a recorder is attached, and traces such rays again with Embree
 // alone (no shading), to measure how much of a render's time is Embree's.
+#include <cstdint>
 #include <vector>
 
 #include "renderer/camera.h"
@@ -15,6 +16,7 @@ namespace landsim::renderer::detail {
 struct RecordedRay {
   Ray ray;
   float t_far;
+  std::uint32_t mask;  // the ray's mask (stochastic levels)
   bool occlusion;  // a shadow ray (rtcOccluded1) rather than a closest hit (rtcIntersect1)
 };
 
