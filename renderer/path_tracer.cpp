@@ -14,7 +14,14 @@ using namespace detail;  // sample dimensions
 
 constexpr float kPi = std::numbers::pi_v<float>;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
-constexpr int kRouletteAfter = 2;
+// Paths are rouletted (by throughput) from their second vertex on: the third and later
+// vertices add 0.4% of the forest's light but cost a quarter of its rays (docs/PERFORMANCE.md
+// "Forest scale").
+constexpr int kRouletteAfter = 1;
+// Shadow rays that would add less than this fraction of the sky's mean radiance (largest
+// component) to the pixel are rouletted (renderer/shadow_roulette.h); chosen by measurement:
+// 0.2 adds 3% to the noise of the forest benchmark, 0.5 adds 20%.
+constexpr float kShadowRouletteFraction = 0.2f;
 
 // Cosine-weighted direction about n (pdf cos / pi), Malley's method.
 Vec3f sample_cosine(const Vec3f& n, float u1, float u2) {
@@ -35,11 +42,13 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       embree_(embree),
       sky_(scene.sky, scene.sun, scene.ground.albedo),
       haze_(scene.haze),
-      sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
+      sun_direction_(Vec3f(normalize(scene.sun.direction))),
+      roulette_threshold_(kShadowRouletteFraction * max_component(sky_.mean_radiance())) {}
 
 Vec3f PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                            std::uint32_t& rays) const {
-  const SunSample sun = sample_sun(scene_, embree_, sun_direction_, v, m, u1, u2, rays);
+                            const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const {
+  const SunSample sun = sample_sun(scene_, embree_, sun_direction_, v, m, u1, u2, rays, throughput,
+                                   roulette(u_roulette));
   if (max_component(sun.light) <= 0.0f) return {};
   return sun.light * static_cast<float>(haze_.transmittance(
                          Vec3(sun.ray.origin), Vec3(sun.ray.direction), kInfiniteDistance));
@@ -54,22 +63,26 @@ float PathTracer::bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m,
 }
 
 Vec3f PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                            std::uint32_t& rays) const {
+                            const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const {
   float pdf = 0.0f;
   const Vec3f l = sky_.sample(u1, u2, pdf);
   bool front = false;
   const Vec3f f = lambert(m, v.n, v.ng, l, front);
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
+  const Vec3f light = f * sky_.radiance(l) * (power_heuristic(pdf, bsdf_pdf(v, m, l)) / pdf);
+  const float weight =
+      shadow_roulette_weight(max_component(throughput * light), roulette(u_roulette));
+  if (weight == 0.0f) return {};
   ++rays;
   const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
   if (embree_.occluded({origin, l}, 0.0f, kInfinity, v.mask)) return {};
-  const float weight = power_heuristic(pdf, bsdf_pdf(v, m, l));
   const auto t_haze =
       static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
-  return f * sky_.radiance(l) * (weight * t_haze / pdf);
+  return light * (weight * t_haze);
 }
 
-Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, std::uint32_t mask,
+Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, const Vec3f& throughput,
+                                  const ShadowRoulette& roulette, std::uint32_t mask,
                                   std::uint32_t& rays) const {
   if (!haze_.enabled()) return {};
   const Vec3 o(ray.origin), d(ray.direction);
@@ -79,11 +92,18 @@ Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, std::uint32
   const double s = haze_.sample_distance(o, d, t, u);
   const Vec3f p = ray.origin + ray.direction * static_cast<float>(s);
   const auto phase = static_cast<float>(haze_.phase(dot(ray.direction, sun_direction_)));
-  Vec3f sun{};
-  ++rays;
-  if (!embree_.occluded({p, sun_direction_}, 0.0f, kInfinity, mask)) {
-    sun = scene_.sun.irradiance * phase *
-          static_cast<float>(haze_.transmittance(Vec3(p), Vec3(sun_direction_), kInfiniteDistance));
+  const Vec3f a = haze_.albedo();
+  // Unshadowed, the sun scattered here adds a x sun x (1 - T): the roulette's contribution.
+  Vec3f sun =
+      scene_.sun.irradiance * phase *
+      static_cast<float>(haze_.transmittance(Vec3(p), Vec3(sun_direction_), kInfiniteDistance));
+  const float weight = shadow_roulette_weight(
+      max_component(throughput * a * sun) * static_cast<float>(scattered), roulette);
+  if (weight > 0.0f) {
+    ++rays;
+    sun = embree_.occluded({p, sun_direction_}, 0.0f, kInfinity, mask) ? Vec3f{} : sun * weight;
+  } else {
+    sun = {};
   }
   // Skylight (multiple scattering, which single scattering alone misses) as an ambient
   // source, sized so that an unshadowed, endless horizontal view sees exactly the sky's
@@ -95,7 +115,6 @@ Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, std::uint32
       scene_.sun.irradiance * phase *
       static_cast<float>(haze_.transmittance(Vec3{0.0, 0.0, scene_.haze.base_height},
                                              Vec3(sun_direction_), kInfiniteDistance));
-  const Vec3f a = haze_.albedo();
   const Vec3f ambient{std::max(0.0f, horizon.x / a.x - sun_at_base.x),
                       std::max(0.0f, horizon.y / a.y - sun_at_base.y),
                       std::max(0.0f, horizon.z / a.z - sun_at_base.z)};
@@ -121,8 +140,13 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       const double t = hit ? hit->t : kInfiniteDistance;
       const auto transmitted =
           static_cast<float>(haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
-      out.radiance +=
-          throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), mask, out.rays);
+      // The camera's own segment carries every pixel's haze veil: its sun ray is always
+      // traced (rouletted, the veil's noise grew by 4%); later segments are short, their
+      // rays rouletted.
+      const ShadowRoulette r =
+          bounce == 0 ? ShadowRoulette{} : roulette(rng.uniform(dim + kHazeRoulette));
+      out.radiance += throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), throughput, r,
+                                                   mask, out.rays);
       throughput = throughput * transmitted;
     }
     if (!hit) {
@@ -134,8 +158,12 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     const SurfaceMaterial m = surface_material(scene_, *hit);
     if (bounce == 0) out.first = first_hit(scene_, *hit, v, m);
     const float fresnel = water_fresnel(m, ray.direction, v.ng);
-    Vec3f direct = sun_light(v, m, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), out.rays);
-    direct += sky_light(v, m, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), out.rays);
+    // The roulette sees what reaches the pixel: the throughput and the water's share.
+    const Vec3f seen = throughput * (1.0f - fresnel);
+    Vec3f direct = sun_light(v, m, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), seen,
+                             rng.uniform(dim + kSunRoulette), out.rays);
+    direct += sky_light(v, m, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
+                        rng.uniform(dim + kSkyRoulette), out.rays);
     out.radiance += throughput * direct * (1.0f - fresnel);
 
     if (m.water && rng.uniform(dim + kFresnel) < fresnel) {

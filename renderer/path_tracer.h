@@ -3,7 +3,8 @@
 // grass) surfaces, a Fresnel water mirror; next-event estimation to the sun disc and to the
 // sky (importance-sampled, combined with the BSDF's own sampling by multiple importance
 // sampling); exponential haze with analytic transmittance and single scattering of sunlight
-// along every ray segment; Russian roulette.
+// along every ray segment; Russian roulette of paths after their second vertex and of
+// shadow rays by their contribution (renderer/shadow_roulette.h).
 #include <cstdint>
 
 #include "core/counter_rng.h"
@@ -27,13 +28,17 @@ class PathTracer : public Integrator {
   const HazeModel& haze() const { return haze_; }
 
  private:
+  // Light at a vertex, as the path's `throughput` so far will see it (the throughput
+  // decides the shadow ray's roulette; it is not applied to the result).
   Vec3f sun_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                  std::uint32_t& rays) const;
+                  const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const;
   Vec3f sky_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                  std::uint32_t& rays) const;
+                  const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const;
   // Sunlight scattered toward the viewer by haze along a segment; `t` may be infinite.
-  Vec3f haze_in_scatter(const Ray& ray, double t, float u, std::uint32_t mask,
+  Vec3f haze_in_scatter(const Ray& ray, double t, float u, const Vec3f& throughput,
+                        const ShadowRoulette& roulette, std::uint32_t mask,
                         std::uint32_t& rays) const;
+  ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
   float bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m, const Vec3f& dir) const;
 
   const Scene& scene_;
@@ -41,6 +46,7 @@ class PathTracer : public Integrator {
   SkyModel sky_;
   HazeModel haze_;
   Vec3f sun_direction_;
+  float roulette_threshold_;  // shadow rays adding less than this to a pixel are rouletted
 };
 
 }  // namespace landsim::renderer

@@ -90,15 +90,18 @@ Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2) {
 
 SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const Vec3f& sun_direction,
                      const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                     std::uint32_t& rays) {
+                     std::uint32_t& rays, const Vec3f& throughput, const ShadowRoulette& roulette) {
   const Vec3f l = sample_cone(sun_direction, static_cast<float>(scene.sun.angular_radius), u1, u2);
   bool front = false;
   const Vec3f f = lambert(m, v.n, v.ng, l, front);
   if (max_component(f) <= 0.0f) return {};
+  const Vec3f light = f * scene.sun.irradiance;
+  const float weight = shadow_roulette_weight(max_component(throughput * light), roulette);
+  if (weight == 0.0f) return {};
   ++rays;
   const Ray ray{offset_point(v.p, front ? v.ng : -v.ng), l};
   if (embree.occluded(ray, 0.0f, kInfinity, v.mask)) return {};
-  return {f * scene.sun.irradiance, ray};
+  return {light * weight, ray};
 }
 
 }  // namespace landsim::renderer

@@ -9,6 +9,7 @@
 #include "renderer/camera.h"
 #include "renderer/embree_scene.h"
 #include "renderer/scene.h"
+#include "renderer/shadow_roulette.h"
 
 namespace landsim::renderer {
 
@@ -56,7 +57,8 @@ Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2);
 
 // Sunlight reflected or transmitted toward the viewer at `v`, before any haze on its way:
 // one direction sampled in the sun's disc (u1, u2), a shadow ray unless the surface faces
-// away. `ray` is that shadow ray, for the caller's haze.
+// away or `roulette` (with the path's `throughput` so far) leaves it untraced. `ray` is that
+// shadow ray, for the caller's haze.
 struct SunSample {
   Vec3f light;  // f x cos x irradiance; zero when shadowed or facing away
   Ray ray;
@@ -64,6 +66,7 @@ struct SunSample {
 // `sun_direction`: the scene's, normalised once by the caller (this runs at every bounce).
 SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const Vec3f& sun_direction,
                      const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                     std::uint32_t& rays);
+                     std::uint32_t& rays, const Vec3f& throughput = {1.0f, 1.0f, 1.0f},
+                     const ShadowRoulette& roulette = {});
 
 }  // namespace landsim::renderer

@@ -8,7 +8,7 @@ namespace landsim::renderer::detail {
 
 // 0-1 pixel jitter, then kDimsPerBounce per bounce.
 inline constexpr std::uint32_t kFirstBounceDim = 2;
-inline constexpr std::uint32_t kDimsPerBounce = 10;
+inline constexpr std::uint32_t kDimsPerBounce = 12;
 enum Dim : std::uint32_t {
   kSun0 = 0,
   kSun1,
@@ -18,7 +18,10 @@ enum Dim : std::uint32_t {
   kDir,
   kRoulette,
   kHaze,
-  kFresnel
+  kFresnel,
+  kSunRoulette,  // shadow-ray roulette (renderer/shadow_roulette.h)
+  kSkyRoulette,
+  kHazeRoulette
 };
 
 }  // namespace landsim::renderer::detail
