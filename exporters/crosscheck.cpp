@@ -1,7 +1,5 @@
 #include "exporters/crosscheck.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -40,11 +38,17 @@ double run_povray(const std::filesystem::path& dir, const std::string& args) {
   return seconds_since(start);
 }
 
-OIIO::ImageBuf read_image(const std::filesystem::path& path) {
-  OIIO::ImageBuf buf(path.string());
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw std::runtime_error("cannot read " + path.string() + ": " + buf.geterror());
-  return buf;
+renderer::FloatImage read_image(const std::filesystem::path& path) {
+  renderer::FloatImage image;
+  std::string error;
+  if (!renderer::image_io().read(path.string(), false, image, error))
+    throw std::runtime_error("cannot read " + path.string() + ": " + error);
+  return image;
+}
+
+// The first three channels of pixel (x, y) (missing ones zero).
+void pixel3(const renderer::FloatImage& image, int x, int y, float* out) {
+  for (int c = 0; c < 3; ++c) out[c] = c < image.channels ? image.at(x, y, c) : 0.0f;
 }
 
 float luminance(const float* c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
@@ -82,27 +86,30 @@ Vec3f horizon_mean(const renderer::SkyModel& sky) {
   return sum / 64.0f;
 }
 
-void write_side_by_side(const renderer::Film& film, const OIIO::ImageBuf& pov,
+void write_side_by_side(const renderer::Film& film, const renderer::FloatImage& pov,
                         const std::vector<float>& heat, const std::filesystem::path& path) {
   const int w = film.width(), h = film.height();
-  OIIO::ImageBuf out(OIIO::ImageSpec(3 * w, h, 3, OIIO::TypeDesc::FLOAT));
+  renderer::FloatImage out{3 * w, h, 3, std::vector<float>(9 * static_cast<std::size_t>(w) * h)};
+  const auto set = [&](int x, int y, const float* rgb) {
+    std::copy(rgb, rgb + 3, out.pixels.begin() + 3 * (static_cast<std::ptrdiff_t>(y) * 3 * w + x));
+  };
   float px[3];
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const Vec3f c = film.rgb(x, y);
       const float a[3] = {c.x, c.y, c.z};
-      out.setpixel(x, y, a);
-      pov.getpixel(x, y, px, 3);
-      out.setpixel(w + x, y, px);
+      set(x, y, a);
+      pixel3(pov, x, y, px);
+      set(w + x, y, px);
       const float d = heat[static_cast<std::size_t>(y) * w + x];
       const float red[3] = {d, d * 0.1f, d * 0.1f};
-      out.setpixel(2 * w + x, y, red);
+      set(2 * w + x, y, red);
     }
   }
   AtomicFile file(path);
-  const OIIO::ImageBuf display = OIIO::ImageBufAlgo::colorconvert(out, "linear", "sRGB");
-  if (!display.write(file.temp_path().string(), OIIO::TypeDesc::UINT8, "png"))
-    throw std::runtime_error("cannot write " + path.string());
+  std::string error, warning;
+  if (!renderer::image_io().write_png(file.temp_path().string(), out, true, {}, error, warning))
+    throw std::runtime_error("cannot write " + path.string() + ": " + error);
   file.commit();
 }
 
@@ -179,8 +186,8 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   r.povray_seconds = run_povray(
       pov_dir, size + fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0", n));
   run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1");
-  const OIIO::ImageBuf pov = read_image(pov_dir / "pov.exr");
-  const OIIO::ImageBuf mask = read_image(pov_dir / "mask.png");
+  const renderer::FloatImage pov = read_image(pov_dir / "pov.exr");
+  const renderer::FloatImage mask = read_image(pov_dir / "mask.png");
 
   const int w = film.width(), h = film.height();
   std::vector<Cover> a(static_cast<std::size_t>(w) * h), b(a.size());
@@ -192,11 +199,11 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      mask.getpixel(x, y, mk, 3);
+      pixel3(mask, x, y, mk);
       a[i] = ours(film.object(x, y));
       b[i] = theirs(mk);
       if (a[i] == Cover::sky || b[i] == Cover::sky) continue;
-      pov.getpixel(x, y, px, 3);
+      pixel3(pov, x, y, px);
       const double la = film.luminance(x, y), lb = luminance(px);
       sum_a += la;
       sum_b += lb;

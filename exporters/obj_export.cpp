@@ -1,38 +1,100 @@
 #include "exporters/obj_export.h"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
-#include <fmt/os.h>
+
+#include <fstream>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
 
+#include <tbb/parallel_for.h>
+
 #include "core/atomic_file.h"
 
 namespace landsim::exporters {
+namespace {
+
+// OBJ lines formatted with compiled format strings (no parsing per line) into a buffer that
+// goes to the file a megabyte at a time: formatting is most of writing a tree's OBJ.
+class ObjFile {
+ public:
+  explicit ObjFile(const std::filesystem::path& path) : out_(path, std::ios::binary) {
+    if (!out_) throw std::runtime_error("cannot write " + path.string());
+  }
+  template <typename Format, typename... Args>
+  void print(const Format& format, const Args&... args) {
+    fmt::format_to(std::back_inserter(buffer_), format, args...);
+    if (buffer_.size() > (1u << 20)) flush();
+  }
+  // Lines 0 to count - 1, `line(buffer, i)` formatting line i: chunks formatted in parallel,
+  // written in order (the file is the same on any thread count), a batch at a time so that
+  // little of the file is held in memory.
+  template <typename Line>
+  void print_lines(std::size_t count, const Line& line) {
+    constexpr std::size_t kChunk = 8192, kBatch = 8;
+    flush();
+    std::vector<fmt::memory_buffer> chunks(kBatch);
+    for (std::size_t first = 0; first < count; first += kChunk * kBatch) {
+      const std::size_t n = std::min(kBatch, (count - first + kChunk - 1) / kChunk);
+      tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
+        chunks[k].clear();
+        const std::size_t begin = first + k * kChunk, end = std::min(count, begin + kChunk);
+        for (std::size_t i = begin; i < end; ++i) line(chunks[k], i);
+      });
+      for (std::size_t k = 0; k < n; ++k)
+        out_.write(chunks[k].data(), static_cast<std::streamsize>(chunks[k].size()));
+    }
+  }
+  // Written and closed; throws when the file could not be written.
+  void close(const std::filesystem::path& path) {
+    flush();
+    out_.close();
+    if (!out_) throw std::runtime_error("cannot write " + path.string());
+  }
+
+ private:
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+  std::ofstream out_;
+  fmt::memory_buffer buffer_;
+};
+
+}  // namespace
 
 void write_obj(const trees::TreeGeometry& geometry, const std::filesystem::path& path) {
   static constexpr std::array<const char*, trees::kGroupCount> kNames{"trunk", "level1", "level2",
                                                                       "level3plus", "leaves"};
   AtomicFile out(path);
   {
-    auto file = fmt::output_file(out.temp_path().string());
-    file.print("# landsim tree: stems and leaves, metres, z up\n");
+    ObjFile file(out.temp_path());
+    file.print(FMT_COMPILE("# landsim tree: stems and leaves, metres, z up\n"));
     std::size_t base = 1;  // OBJ indices start at 1 and run across groups
     for (std::size_t g = 0; g < geometry.groups.size(); ++g) {
       const trees::TriangleSet& t = geometry.groups[g].triangles;
       if (t.indices.empty()) continue;
-      file.print("g {}\n", kNames[g]);
-      for (const Vec3f& v : t.vertices) file.print("v {} {} {}\n", v.x, v.y, v.z);
-      for (const Vec3f& n : t.normals) file.print("vn {} {} {}\n", n.x, n.y, n.z);
-      for (std::size_t i = 0; i + 2 < t.indices.size(); i += 3) {
-        const std::size_t a = base + t.indices[i], b = base + t.indices[i + 1],
-                          c = base + t.indices[i + 2];
-        file.print("f {}//{} {}//{} {}//{}\n", a, a, b, b, c, c);
-      }
+      file.print(FMT_COMPILE("g {}\n"), kNames[g]);
+      file.print_lines(t.vertices.size(), [&](fmt::memory_buffer& b, std::size_t i) {
+        const Vec3f& v = t.vertices[i];
+        fmt::format_to(std::back_inserter(b), FMT_COMPILE("v {} {} {}\n"), v.x, v.y, v.z);
+      });
+      file.print_lines(t.normals.size(), [&](fmt::memory_buffer& b, std::size_t i) {
+        const Vec3f& n = t.normals[i];
+        fmt::format_to(std::back_inserter(b), FMT_COMPILE("vn {} {} {}\n"), n.x, n.y, n.z);
+      });
+      file.print_lines(t.indices.size() / 3, [&](fmt::memory_buffer& b, std::size_t f) {
+        const std::size_t i = 3 * f, a = base + t.indices[i], c1 = base + t.indices[i + 1],
+                          c2 = base + t.indices[i + 2];
+        fmt::format_to(std::back_inserter(b), FMT_COMPILE("f {}//{} {}//{} {}//{}\n"), a, a, c1, c1,
+                       c2, c2);
+      });
       base += t.vertices.size();
     }
+    file.close(out.temp_path());
   }  // closed (and flushed) before the rename
   out.commit();
 }
@@ -41,20 +103,22 @@ void write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& 
                      std::size_t max_trees, const Vec3& near) {
   AtomicFile out(path);
   {
-    auto file = fmt::output_file(out.temp_path().string());
-    file.print("# landsim scene: ground and {} nearest trees, scene frame, metres, z up\n",
-               max_trees);
+    ObjFile file(out.temp_path());
+    file.print(
+        FMT_COMPILE("# landsim scene: ground and {} nearest trees, scene frame, metres, z up\n"),
+        max_trees);
     std::size_t base = 1;
     const auto mesh = [&](const char* name, const std::vector<Vec3f>& vertices,
                           const std::vector<std::uint32_t>& indices, const auto& transform) {
       if (indices.empty()) return;
-      file.print("g {}\n", name);
+      file.print(FMT_COMPILE("g {}\n"), name);
       for (const Vec3f& v : vertices) {
         const Vec3f w = transform(v);
-        file.print("v {} {} {}\n", w.x, w.y, w.z);
+        file.print(FMT_COMPILE("v {} {} {}\n"), w.x, w.y, w.z);
       }
       for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-        file.print("f {} {} {}\n", base + indices[i], base + indices[i + 1], base + indices[i + 2]);
+        file.print(FMT_COMPILE("f {} {} {}\n"), base + indices[i], base + indices[i + 1],
+                   base + indices[i + 2]);
       }
       base += vertices.size();
     };
@@ -78,6 +142,7 @@ void write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& 
         mesh("tree", g.triangles.vertices, g.triangles.indices, place);
       }
     }
+    file.close(out.temp_path());
   }
   out.commit();
 }

@@ -1,8 +1,5 @@
 #include "featuremaps/vegetation_map.h"
 
-#include <cpl_error.h>
-#include <gdal.h>
-
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -10,25 +7,22 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "terrain/raster_files.h"
+#include "terrain/raster_io.h"
 
 namespace landsim::featuremaps {
 namespace {
 
-struct DatasetCloser {
-  void operator()(void* ds) const { GDALClose(static_cast<GDALDatasetH>(ds)); }
-};
-using Dataset = std::unique_ptr<void, DatasetCloser>;
-
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw InputError(path + ": " + what);
+[[noreturn]] void fail(const std::string& path, const std::string& what,
+                       const std::string& gdal = {}) {
+  throw InputError(path + ": " + what + (gdal.empty() ? "" : " (GDAL: " + gdal + ")"));
 }
 
-terrain::GeoTransform placement_of(GDALDatasetH ds, const std::string& path,
-                                   const RasterPlacement& p, int rows) {
-  double gt[6];
+terrain::GeoTransform placement_of(const terrain::RasterHeader& header, const std::string& path,
+                                   const RasterPlacement& p) {
   terrain::GeoTransform t;
-  const bool georeferenced = GDALGetGeoTransform(ds, gt) == CE_None;
-  if (georeferenced) {
+  const int rows = header.rows;
+  if (header.geotransform) {
+    const std::array<double, 6>& gt = *header.geotransform;
     if (gt[2] != 0.0 || gt[4] != 0.0 || !(gt[1] > 0.0) || !(gt[5] < 0.0))
       fail(path, "feature map is not north-up");
     t = {gt[0], gt[3], gt[1], -gt[5]};
@@ -77,56 +71,40 @@ std::size_t VegetationMap::multi_species_cells() const {
 }
 
 VegetationMap load_vegetation_map(const std::string& path, const RasterPlacement& placement) {
-  terrain::ensure_gdal_registered();
-  CPLPushErrorHandler(CPLQuietErrorHandler);
-  struct Pop {
-    ~Pop() { CPLPopErrorHandler(); }
-  } pop;
   if (!terrain::raster_file_exists(path)) fail(path, "feature map not found");
-  Dataset ds(
-      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
-  if (!ds) fail(path, "not a raster format GDAL can read");
-  GDALRasterBandH band = GDALGetRasterBand(ds.get(), 1);
-  if (band == nullptr) fail(path, "raster has no bands");
-  const GDALDataType type = GDALGetRasterDataType(band);
-  if (type != GDT_UInt16) {
-    fail(path,
-         std::string("vegetation feature maps must be 16-bit unsigned (UInt16), this one is ") +
-             GDALGetDataTypeName(type));
+  terrain::share_with_gdal(path);
+  terrain::RasterHeader header;
+  std::string error;
+  if (!terrain::raster_io().read_header(path, header, error))
+    fail(path, "not a raster format GDAL can read", error);
+  if (header.bands < 1) fail(path, "raster has no bands");
+  if (header.data_type != "UInt16") {
+    fail(path, "vegetation feature maps must be 16-bit unsigned (UInt16), this one is " +
+                   header.data_type);
   }
-  const int cols = GDALGetRasterXSize(ds.get()), rows = GDALGetRasterYSize(ds.get());
+  const int cols = header.cols, rows = header.rows;
   if (double(cols) * rows > 400e6) fail(path, "feature map larger than 400 million cells");
-  const terrain::GeoTransform t = placement_of(ds.get(), path, placement, rows);
+  const terrain::GeoTransform t = placement_of(header, path, placement);
   std::vector<std::uint16_t> cells(static_cast<std::size_t>(cols) * rows);
-  if (GDALRasterIO(band, GF_Read, 0, 0, cols, rows, cells.data(), cols, rows, GDT_UInt16, 0, 0) !=
-      CE_None) {
-    fail(path, "could not read the feature map (truncated or corrupt file?)");
-  }
+  if (!terrain::raster_io().read_band(path, terrain::CellType::uint16, cells.data(), error))
+    fail(path, "could not read the feature map (truncated or corrupt file?)", error);
   return VegetationMap(cols, rows, t, std::move(cells));
 }
 
 void write_vegetation_map(const VegetationMap& map, const std::string& path,
                           const std::string& crs_wkt) {
-  terrain::ensure_gdal_registered();
   AtomicFile out(path);
-  GDALDriverH driver = GDALGetDriverByName("GTiff");
-  char* options[] = {const_cast<char*>("COMPRESS=DEFLATE"), nullptr};
-  Dataset ds(
-      GDALCreate(driver, out.temp_path().c_str(), map.cols(), map.rows(), 1, GDT_UInt16, options));
-  if (!ds) throw std::runtime_error("could not create " + out.temp_path().string());
   const terrain::GeoTransform& t = map.transform();
-  double gt[6] = {t.origin_x, t.cell_size_x, 0.0, t.origin_y, 0.0, -t.cell_size_y};
-  GDALSetGeoTransform(ds.get(), gt);
-  if (!crs_wkt.empty()) GDALSetProjection(ds.get(), crs_wkt.c_str());
+  const std::array<double, 6> gt = {t.origin_x, t.cell_size_x, 0.0,
+                                    t.origin_y, 0.0,           -t.cell_size_y};
   std::vector<std::uint16_t> cells(static_cast<std::size_t>(map.cols()) * map.rows());
   for (int r = 0; r < map.rows(); ++r)
     for (int c = 0; c < map.cols(); ++c)
       cells[static_cast<std::size_t>(r) * map.cols() + c] = map.at(c, r).raw;
-  if (GDALRasterIO(GDALGetRasterBand(ds.get(), 1), GF_Write, 0, 0, map.cols(), map.rows(),
-                   cells.data(), map.cols(), map.rows(), GDT_UInt16, 0, 0) != CE_None) {
-    throw std::runtime_error("could not write " + path);
-  }
-  ds.reset();  // flush and close before the rename
+  std::string error;
+  if (!terrain::raster_io().write_uint16_geotiff(out.temp_path().string(), map.cols(), map.rows(),
+                                                 cells.data(), gt, crs_wkt, error))
+    throw std::runtime_error("could not write " + path + (error.empty() ? "" : ": " + error));
   out.commit();
 }
 

@@ -1,11 +1,10 @@
 #include "renderer/bark_texture.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
+#include <algorithm>
 #include <cmath>
 
 #include "core/input_error.h"
+#include "renderer/image_io.h"
 
 namespace landsim::renderer {
 
@@ -37,26 +36,19 @@ Vec3f BarkTexture::factor(float u, float v) const {
 }
 
 std::shared_ptr<const BarkTexture> load_bark_texture(const std::string& path) {
-  OIIO::ImageBuf image(path);
-  if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw InputError(path + ": cannot read bark texture: " + image.geterror());
   // 8-bit images are sRGB-encoded; float images (EXR) are taken as linear already.
-  const bool encoded = image.spec().format.basetype != OIIO::TypeDesc::FLOAT &&
-                       image.spec().format.basetype != OIIO::TypeDesc::HALF;
-  OIIO::ImageBuf linear =
-      encoded ? OIIO::ImageBufAlgo::colorconvert(image, "sRGB", "linear") : image;
-  const int w = linear.spec().width, h = linear.spec().height, channels = linear.spec().nchannels;
-  if (w < 1 || h < 1) throw InputError(path + ": empty bark texture");
+  FloatImage image;
+  std::string error;
+  if (!image_io().read(path, true, image, error))
+    throw InputError(path + ": cannot read bark texture: " + error);
+  const int w = image.width, h = image.height, channels = image.channels;
+  if (w < 1 || h < 1 || channels < 1) throw InputError(path + ": empty bark texture");
   std::vector<float> rgb(3 * static_cast<std::size_t>(w) * h);
-  std::vector<float> px(static_cast<std::size_t>(channels));
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      linear.getpixel(x, y, px.data(), channels);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c)
         rgb[3 * (static_cast<std::size_t>(y) * w + x) + c] =
-            px[static_cast<std::size_t>(std::min(c, channels - 1))];
-    }
-  }
+            image.at(x, y, std::min(c, channels - 1));
   return std::make_shared<const BarkTexture>(w, h, std::move(rgb));
 }
 

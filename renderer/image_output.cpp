@@ -1,6 +1,5 @@
 #include "renderer/image_output.h"
 
-#include <OpenColorIO/OpenColorIO.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -8,22 +7,18 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
-
-namespace OCIO = OCIO_NAMESPACE;
+#include "renderer/image_io.h"
 
 namespace landsim::renderer {
 namespace {
-
-constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 // Scene-linear Rec.709 in, the sRGB display out (the sRGB curve: exponent 2.4, offset 0.055).
 constexpr const char* kOcioConfig = R"(ocio_profile_version: 2
@@ -171,32 +166,16 @@ ImageMetadata read_exr_metadata(const std::filesystem::path& path) {
 void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev,
                        const std::vector<ImageLabel>& labels) {
   AtomicFile out(path);
-  std::istringstream config_text(kOcioConfig);
-  const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromStream(config_text);
-  const OCIO::DisplayViewTransformRcPtr transform = OCIO::DisplayViewTransform::Create();
-  transform->setSrc("scene_linear");
-  transform->setDisplay("sRGB");
-  transform->setView("Standard");
-  const OCIO::ConstCPUProcessorRcPtr cpu =
-      config->getProcessor(transform)->getDefaultCPUProcessor();
-
-  std::vector<float> pixels = film.rgb_data();
+  FloatImage image{film.width(), film.height(), 3, film.rgb_data()};
   const auto gain = static_cast<float>(std::exp2(exposure_ev));
-  for (float& v : pixels) v = std::max(0.0f, v * gain);
-  OCIO::PackedImageDesc image(pixels.data(), film.width(), film.height(), 3);
-  cpu->apply(image);
-
-  const OIIO::ImageSpec spec(film.width(), film.height(), 3, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf display(spec, pixels.data());
-  const float white[3] = {1.0f, 1.0f, 1.0f};
-  for (const ImageLabel& label : labels) {
-    if (!OIIO::ImageBufAlgo::render_text(display, label.x, label.y, label.text, 18, kLabelFont,
-                                         white))
-      spdlog::warn("{}: no font for the labels ({})", path.string(), display.geterror());
+  for (float& v : image.pixels) v = std::max(0.0f, v * gain);
+  std::string error, warning;
+  if (!image_io().display_transform(kOcioConfig, image.pixels.data(), image.width, image.height,
+                                    error) ||
+      !image_io().write_png(out.temp_path().string(), image, false, labels, error, warning)) {
+    throw std::runtime_error("writing " + path.string() + " failed: " + error);
   }
-  if (!display.write(out.temp_path().string(), OIIO::TypeDesc::UINT8, "png")) {
-    throw std::runtime_error("writing " + path.string() + " failed: " + display.geterror());
-  }
+  if (!warning.empty()) spdlog::warn("{}: {}", path.string(), warning);
   out.commit();
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "renderer/film.h"
+#include "renderer/image_io.h"
 
 namespace landsim::renderer {
 
@@ -34,12 +35,6 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
 Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata = nullptr);
 // Only the metadata of such an EXR (its header; no pixels are read).
 ImageMetadata read_exr_metadata(const std::filesystem::path& path);
-
-// White text drawn on a preview, its baseline starting at pixel (x, y).
-struct ImageLabel {
-  int x = 0, y = 0;
-  std::string text;
-};
 
 // Scales by 2^exposure_ev, then applies the OpenColorIO display transform (display sRGB,
 // view Standard) of the project's embedded config, draws `labels`, and writes an 8-bit PNG.

@@ -1,42 +1,74 @@
 #include "terrain/raster_files.h"
 
-#include <cpl_vsi.h>
-#include <gdal.h>
-
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <mutex>
+#include <sstream>
+
+#include "terrain/raster_io.h"
 
 namespace landsim::terrain {
+namespace {
 
-void ensure_gdal_registered() {
-  static std::once_flag once;
-  std::call_once(once, [] { GDALAllRegister(); });
+// The in-memory files, by path.
+class MemoryFiles {
+ public:
+  void add(const std::string& path, std::string_view bytes) {
+    const std::lock_guard lock(mutex_);
+    files_.emplace(path, bytes);
+  }
+  std::optional<std::string_view> find(const std::string& path) const {
+    const std::lock_guard lock(mutex_);
+    const auto it = files_.find(path);
+    if (it == files_.end()) return std::nullopt;
+    return it->second;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::string, std::string_view> files_;
+};
+
+MemoryFiles& memory_files() {
+  static MemoryFiles files;
+  return files;
 }
 
+// GDAL's virtual file systems are named by a /vsi prefix.
+bool is_gdal_virtual(const std::string& path) { return path.rfind("/vsi", 0) == 0; }
+
+}  // namespace
+
 void mount_memory_file(const std::string& vsi_path, std::string_view bytes) {
-  static std::mutex mutex;
-  const std::lock_guard lock(mutex);
-  if (raster_file_exists(vsi_path)) return;
-  // GDAL only reads the buffer (bTakeOwnership = FALSE), so the const_cast is safe.
-  auto* data = reinterpret_cast<GByte*>(const_cast<char*>(bytes.data()));
-  VSILFILE* f = VSIFileFromMemBuffer(vsi_path.c_str(), data, bytes.size(), FALSE);
-  if (f != nullptr) VSIFCloseL(f);
+  memory_files().add(vsi_path, bytes);
 }
 
 std::optional<std::string> read_text_file(const std::string& path) {
-  if (!raster_file_exists(path)) return std::nullopt;
-  VSILFILE* f = VSIFOpenL(path.c_str(), "rb");
-  if (f == nullptr) return std::nullopt;
-  std::string text;
-  char buffer[65536];
-  std::size_t n = 0;
-  while ((n = VSIFReadL(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-  VSIFCloseL(f);
-  return text;
+  if (const auto bytes = memory_files().find(path)) return std::string(*bytes);
+  if (is_gdal_virtual(path)) {
+    std::string bytes;  // a species file inside a zip, say
+    if (!raster_io().read_file(path, bytes)) return std::nullopt;
+    return bytes;
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 bool raster_file_exists(const std::string& path) {
-  VSIStatBufL stat{};
-  return VSIStatL(path.c_str(), &stat) == 0 && VSI_ISREG(stat.st_mode);
+  if (memory_files().find(path)) return true;
+  if (is_gdal_virtual(path)) return raster_io().file_exists(path);
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+void share_with_gdal(const std::string& path) {
+  if (const auto bytes = memory_files().find(path)) raster_io().mount_memory_file(path, *bytes);
 }
 
 }  // namespace landsim::terrain

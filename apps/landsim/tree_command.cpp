@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <malloc.h>
+
 #include <chrono>
 #include <iostream>
 
@@ -28,6 +30,12 @@ CLI::App* add_tree_command(CLI::App& app, TreeArgs& args) {
 }
 
 int run_tree(const TreeArgs& args) {
+  // One tree is a few large arrays built and freed in turn. glibc's defaults hand every freed
+  // array of 128 kB or more back to the system and fault the next one in page by page, which
+  // on a virtual machine costs a tenth of the command (docs/PERFORMANCE.md "Start-up"); a
+  // short-lived process keeps its memory instead.
+  mallopt(M_MMAP_THRESHOLD, 256 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   const trees::Species species = trees::load_species(args.species);
   const auto start = std::chrono::steady_clock::now();
   const trees::Tree tree =

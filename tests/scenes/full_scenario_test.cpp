@@ -24,7 +24,7 @@ using landsim::testing::TempDir;
 // given columns and 0 elsewhere.
 void write_grid(const std::string& path, GDALDataType type, int first_col, int last_col,
                 double value) {
-  terrain::ensure_gdal_registered();
+  landsim::testing::register_gdal();
   GDALDatasetH ds =
       GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), 61, 87, 1, type, nullptr);
   double gt[6] = {0.0, 10.0, 0.0, 870.0, 0.0, -10.0};
@@ -87,7 +87,7 @@ struct Fixture {
   std::string vegetation = (dir / "veg.tif").string();
   Fixture() {
     // Columns 0-19: species bit 2 with grass 1; 20-39: grass only; the rest bare.
-    terrain::ensure_gdal_registered();
+    landsim::testing::register_gdal();
     GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), vegetation.c_str(), 61, 87, 1,
                                  GDT_UInt16, nullptr);
     double gt[6] = {0.0, 10.0, 0.0, 870.0, 0.0, -10.0};

@@ -2,14 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include "terrain/raster_files.h"
+#include <mutex>
 
 namespace landsim::testing {
+
+void register_gdal() {
+  static std::once_flag once;
+  std::call_once(once, [] { GDALAllRegister(); });
+}
 
 void write_raster(const std::string& path, const char* driver, GDALDataType type, int cols,
                   int rows, const std::vector<double>& values, const double* geotransform,
                   const char* wkt, const double* nodata) {
-  terrain::ensure_gdal_registered();
+  register_gdal();
   GDALDatasetH mem = GDALCreate(GDALGetDriverByName("MEM"), "", cols, rows, 1, type, nullptr);
   std::vector<double> copy = values;
   ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(mem, 1), GF_Write, 0, 0, cols, rows, copy.data(), cols,

@@ -7,6 +7,10 @@
 
 namespace landsim::testing {
 
+// GDAL's drivers, registered once (the tests write rasters with GDAL directly; landsim reads
+// them through its GDAL module).
+void register_gdal();
+
 // `geotransform` (6 values), `wkt` and `nodata` are optional. Fails the test on error.
 void write_raster(const std::string& path, const char* driver, GDALDataType type, int cols,
                   int rows, const std::vector<double>& values, const double* geotransform = nullptr,

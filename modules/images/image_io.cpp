@@ -1,0 +1,91 @@
+// liblandsim_images.so: the image function table of renderer/image_io.h on OpenImageIO and
+// OpenColorIO. Loaded by landsim the first time an image file is read or a PNG written
+// (core/module_loader.h).
+#include "renderer/image_io.h"
+
+#include <OpenColorIO/OpenColorIO.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <exception>
+#include <sstream>
+
+namespace OCIO = OCIO_NAMESPACE;
+
+namespace landsim::renderer {
+namespace {
+
+constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+bool read(const std::string& path, bool to_linear, FloatImage& image, std::string& error) {
+  OIIO::ImageBuf buf(path);
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
+    error = buf.geterror();
+    return false;
+  }
+  const bool encoded = buf.spec().format.basetype != OIIO::TypeDesc::FLOAT &&
+                       buf.spec().format.basetype != OIIO::TypeDesc::HALF;
+  if (to_linear && encoded) buf = OIIO::ImageBufAlgo::colorconvert(buf, "sRGB", "linear");
+  if (buf.has_error()) {
+    error = buf.geterror();
+    return false;
+  }
+  const OIIO::ImageSpec& spec = buf.spec();
+  image.width = spec.width;
+  image.height = spec.height;
+  image.channels = spec.nchannels;
+  image.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!buf.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+    error = buf.geterror();
+    return false;
+  }
+  return true;
+}
+
+bool display_transform(const char* config_yaml, float* rgb, int width, int height,
+                       std::string& error) {
+  try {
+    std::istringstream text(config_yaml);
+    const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromStream(text);
+    const OCIO::DisplayViewTransformRcPtr transform = OCIO::DisplayViewTransform::Create();
+    transform->setSrc("scene_linear");
+    transform->setDisplay("sRGB");
+    transform->setView("Standard");
+    OCIO::PackedImageDesc image(rgb, width, height, 3);
+    config->getProcessor(transform)->getDefaultCPUProcessor()->apply(image);
+    return true;
+  } catch (const std::exception& e) {
+    error = e.what();
+    return false;
+  }
+}
+
+bool write_png(const std::string& path, const FloatImage& image, bool encode_srgb,
+               const std::vector<ImageLabel>& labels, std::string& error, std::string& warning) {
+  const OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
+  // ImageBuf wraps the caller's pixels without writing to them.
+  OIIO::ImageBuf buf(spec, const_cast<float*>(image.pixels.data()));
+  OIIO::ImageBuf display = encode_srgb ? OIIO::ImageBufAlgo::colorconvert(buf, "linear", "sRGB")
+                                       : OIIO::ImageBufAlgo::copy(buf);
+  const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  for (const ImageLabel& label : labels) {
+    if (!OIIO::ImageBufAlgo::render_text(display, label.x, label.y, label.text, 18, kLabelFont,
+                                         white))
+      warning = "no font for the labels (" + display.geterror() + ")";
+  }
+  if (!display.write(path, OIIO::TypeDesc::UINT8, "png")) {
+    error = display.geterror();
+    return false;
+  }
+  return true;
+}
+
+const ImageIo kTable{read, display_transform, write_png};
+
+}  // namespace
+}  // namespace landsim::renderer
+
+extern "C" __attribute__((visibility("default"))) const landsim::renderer::ImageIo*
+landsim_image_io() {
+  return &landsim::renderer::kTable;
+}

@@ -1,0 +1,53 @@
+#pragma once
+// Raster files through GDAL. GDAL lives in a module of its own (liblandsim_gdal.so, source in
+// modules/gdal/) loaded the first time a raster is touched, so that commands which read no
+// raster do not load its hundred-odd libraries (core/module_loader.h). This is the module's
+// function table: plain data in, plain data out, GDAL's types stay inside the module.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace landsim::terrain {
+
+// Band 1 of a raster, and the file's placement, as GDAL reports them.
+struct RasterHeader {
+  int cols = 0, rows = 0, bands = 0;
+  std::string data_type;  // GDAL's name of band 1's type: "UInt16", "Float32", ...
+  std::optional<std::array<double, 6>> geotransform;  // GDAL's order; none when absent
+  std::optional<double> nodata;                       // band 1's nodata value
+  std::string crs_wkt;                                // empty when absent
+};
+
+enum class CellType { float32, uint16 };
+
+// Every function returns false on failure and puts GDAL's last message (possibly empty) in
+// `error`; GDAL's own printing to stderr is silenced.
+struct RasterIo {
+  // Makes `bytes` readable at `path` (under /vsimem/); they must outlive every read.
+  bool (*mount_memory_file)(const std::string& path, std::string_view bytes);
+  // A regular file exists at `path` in GDAL's virtual file systems (/vsizip/, /vsimem/...).
+  bool (*file_exists)(const std::string& path);
+  // The whole content of such a file.
+  bool (*read_file)(const std::string& path, std::string& bytes);
+  // Opens `path` as a raster (false: not a raster format GDAL can read).
+  bool (*read_header)(const std::string& path, RasterHeader& header, std::string& error);
+  // Band 1, whole, converted to `type`, into `cells` (cols x rows, row-major, north first).
+  bool (*read_band)(const std::string& path, CellType type, void* cells, std::string& error);
+  // Fills the cells equal to `sentinel` from the nearest others (GDALFillNodata).
+  bool (*fill_nodata)(float* cells, int cols, int rows, float sentinel, std::string& error);
+  // A DEFLATE-compressed single-band UInt16 GeoTIFF.
+  bool (*write_uint16_geotiff)(const std::string& path, int cols, int rows,
+                               const std::uint16_t* cells,
+                               const std::array<double, 6>& geotransform,
+                               const std::string& crs_wkt, std::string& error);
+};
+
+// The module's table, loaded on first use (std::runtime_error when the module is missing).
+const RasterIo& raster_io();
+
+// The symbol liblandsim_gdal.so exports: `const RasterIo* landsim_raster_io()`.
+inline constexpr const char* kRasterIoSymbol = "landsim_raster_io";
+
+}  // namespace landsim::terrain
