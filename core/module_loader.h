@@ -18,6 +18,12 @@
 
 namespace landsim {
 
+// A module that cannot be loaded: the installation is incomplete (not a bug, not bad input).
+class ModuleError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Where modules are looked for: $LANDSIM_MODULE_DIR when set, else the running program's
 // own folder (the build writes programs and modules to one folder).
 inline std::filesystem::path module_directory() {
@@ -29,7 +35,7 @@ inline std::filesystem::path module_directory() {
 }
 
 // The table `symbol()` of liblandsim_<module>.so, loading the module on first use. Throws
-// std::runtime_error naming the file and the loader's reason when it cannot be loaded.
+// ModuleError naming the file and the loader's reason when it cannot be loaded.
 template <class Table>
 const Table& module_table(const char* module, const char* symbol) {
   static const Table* table = nullptr;
@@ -42,7 +48,7 @@ const Table& module_table(const char* module, const char* symbol) {
     const char* why = handle == nullptr ? dlerror() : nullptr;
     void* entry = handle != nullptr ? dlsym(handle, symbol) : nullptr;
     if (entry == nullptr) {
-      throw std::runtime_error("cannot load landsim's " + std::string(module) + " module " +
+      throw ModuleError("cannot load landsim's " + std::string(module) + " module " +
                                file.string() + ": " + (why != nullptr ? why : dlerror()) +
                                " (set LANDSIM_MODULE_DIR to the folder that holds it)");
     }

@@ -37,7 +37,11 @@ double HazeModel::transmittance(const Vec3& o, const Vec3& d, double t) const {
 }
 
 double HazeModel::sample_distance(const Vec3& o, const Vec3& d, double t, double u) const {
-  const double total = optical_depth(o, d, t);
+  return sample_distance(o, d, t, u, optical_depth(o, d, t));
+}
+
+double HazeModel::sample_distance(const Vec3& o, const Vec3& d, double t, double u,
+                                  double total) const {
   // The optical depth at which to stop, uniform in 1 - exp(-tau) over [0, total].
   const double tau = -std::log1p(-u * -std::expm1(-total));
   const double at_origin = sigma(o.z);

@@ -21,6 +21,9 @@ class HazeModel {
   double transmittance(const Vec3& origin, const Vec3& dir, double t) const;
   // A distance in [0, t] drawn with density sigma(s) T(s) / (1 - T(t)), from u in [0, 1).
   double sample_distance(const Vec3& origin, const Vec3& dir, double t, double u) const;
+  // The same with the segment's optical depth (optical_depth(origin, dir, t)) already known.
+  double sample_distance(const Vec3& origin, const Vec3& dir, double t, double u,
+                         double depth) const;
   // Henyey-Greenstein phase function, per steradian.
   double phase(double cos_theta) const;
   const Vec3f& albedo() const { return albedo_; }

@@ -43,7 +43,10 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       sky_(scene.sky, scene.sun, scene.ground.albedo),
       haze_(scene.haze),
       sun_direction_(Vec3f(normalize(scene.sun.direction))),
-      roulette_threshold_(kShadowRouletteFraction * max_component(sky_.mean_radiance())) {}
+      roulette_threshold_(kShadowRouletteFraction * max_component(sky_.mean_radiance())),
+      horizon_(sky_),
+      sun_transmittance_at_base_(static_cast<float>(haze_.transmittance(
+          Vec3{0.0, 0.0, scene.haze.base_height}, Vec3(sun_direction_), kInfiniteDistance))) {}
 
 Vec3f PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
                             const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const {
@@ -81,15 +84,14 @@ Vec3f PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m, flo
   return light * (weight * t_haze);
 }
 
-Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, const Vec3f& throughput,
-                                  const ShadowRoulette& roulette, std::uint32_t mask,
-                                  std::uint32_t& rays) const {
-  if (!haze_.enabled()) return {};
+Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, float u,
+                                  const Vec3f& throughput, const ShadowRoulette& roulette,
+                                  std::uint32_t mask, std::uint32_t& rays) const {
   const Vec3 o(ray.origin), d(ray.direction);
-  const double scattered = -std::expm1(-haze_.optical_depth(o, d, t));  // 1 - T over the segment
+  const double scattered = -std::expm1(-depth);  // 1 - T over the segment
   if (scattered <= 0.0) return {};
   // Sunlight scattered once, at a distance drawn in proportion to sigma x transmittance.
-  const double s = haze_.sample_distance(o, d, t, u);
+  const double s = haze_.sample_distance(o, d, t, u, depth);
   const Vec3f p = ray.origin + ray.direction * static_cast<float>(s);
   const auto phase = static_cast<float>(haze_.phase(dot(ray.direction, sun_direction_)));
   const Vec3f a = haze_.albedo();
@@ -108,13 +110,8 @@ Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, float u, const Vec3f
   // Skylight (multiple scattering, which single scattering alone misses) as an ambient
   // source, sized so that an unshadowed, endless horizontal view sees exactly the sky's
   // horizon radiance in that direction: distant ridges fade toward the horizon colour.
-  Vec3f level{ray.direction.x, ray.direction.y, 0.0f};
-  const Vec3f horizon =
-      length(level) > 1e-3f ? sky_.radiance(normalize(level)) : sky_.mean_radiance();
-  const Vec3f sun_at_base =
-      scene_.sun.irradiance * phase *
-      static_cast<float>(haze_.transmittance(Vec3{0.0, 0.0, scene_.haze.base_height},
-                                             Vec3(sun_direction_), kInfiniteDistance));
+  const Vec3f horizon = horizon_.radiance(ray.direction);
+  const Vec3f sun_at_base = scene_.sun.irradiance * phase * sun_transmittance_at_base_;
   const Vec3f ambient{std::max(0.0f, horizon.x / a.x - sun_at_base.x),
                       std::max(0.0f, horizon.y / a.y - sun_at_base.y),
                       std::max(0.0f, horizon.z / a.z - sun_at_base.z)};
@@ -136,17 +133,19 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     const auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask);
     // Haze lies over segments that end on the scene and on rays leaving below the horizon
     // (the plain beyond the terrain); the sky model already holds the atmosphere above.
-    if (hit || ray.direction.z <= 0.0f) {
+    if (haze_.enabled() && (hit || ray.direction.z <= 0.0f)) {
       const double t = hit ? hit->t : kInfiniteDistance;
-      const auto transmitted =
-          static_cast<float>(haze_.transmittance(Vec3(ray.origin), Vec3(ray.direction), t));
+      // The segment's optical depth, once: its transmittance, its scattered share, and where
+      // along it the sun is sampled all follow from it.
+      const double depth = haze_.optical_depth(Vec3(ray.origin), Vec3(ray.direction), t);
+      const auto transmitted = static_cast<float>(std::exp(-depth));
       // The camera's own segment carries every pixel's haze veil: its sun ray is always
       // traced (rouletted, the veil's noise grew by 4%); later segments are short, their
       // rays rouletted.
       const ShadowRoulette r =
           bounce == 0 ? ShadowRoulette{} : roulette(rng.uniform(dim + kHazeRoulette));
-      out.radiance += throughput * haze_in_scatter(ray, t, rng.uniform(dim + kHaze), throughput, r,
-                                                   mask, out.rays);
+      out.radiance += throughput * haze_in_scatter(ray, t, depth, rng.uniform(dim + kHaze),
+                                                   throughput, r, mask, out.rays);
       throughput = throughput * transmitted;
     }
     if (!hit) {

@@ -11,6 +11,7 @@
 #include "renderer/camera.h"
 #include "renderer/embree_scene.h"
 #include "renderer/haze.h"
+#include "renderer/horizon_radiance.h"
 #include "renderer/integrator.h"
 #include "renderer/sky.h"
 #include "renderer/surface.h"
@@ -35,7 +36,8 @@ class PathTracer : public Integrator {
   Vec3f sky_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
                   const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const;
   // Sunlight scattered toward the viewer by haze along a segment; `t` may be infinite.
-  Vec3f haze_in_scatter(const Ray& ray, double t, float u, const Vec3f& throughput,
+  // `depth`: the segment's optical depth.
+  Vec3f haze_in_scatter(const Ray& ray, double t, double depth, float u, const Vec3f& throughput,
                         const ShadowRoulette& roulette, std::uint32_t mask,
                         std::uint32_t& rays) const;
   ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
@@ -47,6 +49,8 @@ class PathTracer : public Integrator {
   HazeModel haze_;
   Vec3f sun_direction_;
   float roulette_threshold_;  // shadow rays adding less than this to a pixel are rouletted
+  HorizonRadiance horizon_;   // the haze's ambient term, by azimuth
+  float sun_transmittance_at_base_;
 };
 
 }  // namespace landsim::renderer

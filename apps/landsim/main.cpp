@@ -12,6 +12,7 @@
 
 #include "command.h"
 #include "core/input_error.h"
+#include "core/module_loader.h"
 #include "crosscheck_command.h"
 #include "degrade_command.h"
 #include "discover_command.h"
@@ -93,6 +94,10 @@ int main(int argc, char** argv) {
     // One rank failing fails the whole job: the others would wait for it forever.
     if (session.distributed()) session.abort(kBadInput);
     return kBadInput;
+  } catch (const landsim::ModuleError& e) {
+    std::cerr << "landsim: " << session.label() << "error: " << e.what() << "\n";
+    if (session.distributed()) session.abort(1);
+    return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "landsim: " << session.label()
               << "error: out of memory: the scene needs more than this process may use (its "

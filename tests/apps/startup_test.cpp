@@ -42,6 +42,7 @@ TEST(Startup, AMissingModuleIsNamed) {
   const TempDir dir;
   const auto r = run_command(kNoModules + LANDSIM_BINARY " info", dir);
   EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("landsim: error: cannot load"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("liblandsim_gdal.so"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("LANDSIM_MODULE_DIR"), std::string::npos) << r.err;
 }

@@ -1,0 +1,24 @@
+#pragma once
+// The sky's radiance at the horizon by azimuth, tabulated: the haze's ambient (multiply
+// scattered) light is sized from it on every ray segment, where evaluating the sky model
+// each time cost a tenth of a forest render (docs/PERFORMANCE.md "Forest scale"). 4096
+// azimuths, linearly interpolated: the horizon's radiance varies slowly with azimuth.
+#include <vector>
+
+#include "core/vec3.h"
+#include "renderer/sky.h"
+
+namespace landsim::renderer {
+
+class HorizonRadiance {
+ public:
+  explicit HorizonRadiance(const SkyModel& sky);
+  // At the azimuth of `direction` (any length); straight up or down, the sky's mean.
+  Vec3f radiance(const Vec3f& direction) const;
+
+ private:
+  std::vector<Vec3f> table_;  // kSteps + 1 entries, the last equal to the first
+  Vec3f mean_;
+};
+
+}  // namespace landsim::renderer
