@@ -7,18 +7,30 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "core/atomic_file.h"
 #include "renderer/image_io.h"
 
 namespace landsim::renderer {
 namespace {
+
+// OpenEXR's worker threads, one per core, started once.
+int exr_threads() {
+  static const int threads = [] {
+    const int n = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    Imf::setGlobalThreadCount(n);
+    return n;
+  }();
+  return threads;
+}
 
 // Scene-linear Rec.709 in, the sRGB display out (the sRGB curve: exponent 2.4, offset 0.055).
 constexpr const char* kOcioConfig = R"(ocio_profile_version: 2
@@ -104,10 +116,10 @@ Imath::M44f to_m44(const std::array<float, 16>& m) {
 const char* ocio_config_text() { return kOcioConfig; }
 
 void write_exr(const Film& film, const std::filesystem::path& path, const ImageMetadata& metadata,
-               const CameraMatrices* camera) {
+               const CameraMatrices* camera, bool compressed) {
   AtomicFile out(path);
   Imf::Header header(film.width(), film.height());
-  header.compression() = Imf::ZIP_COMPRESSION;
+  header.compression() = compressed ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
   for (const Channel& c : kChannels)
     header.channels().insert(c.name, Imf::Channel(c.id ? Imf::UINT : Imf::FLOAT));
   for (const auto& [key, value] : metadata)
@@ -120,7 +132,7 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
   Film& writable = const_cast<Film&>(film);
   const Imf::FrameBuffer fb = frame_buffer(writable);
   {
-    Imf::OutputFile file(out.temp_path().c_str(), header);
+    Imf::OutputFile file(out.temp_path().c_str(), header, exr_threads());
     file.setFrameBuffer(fb);
     file.writePixels(film.height());
   }  // closed before the rename

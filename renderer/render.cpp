@@ -217,7 +217,8 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
 
 void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_done) {
   write_exr(film, options.checkpoint,
-            {{"render_key", options.render_key}, {"tiles_done", std::to_string(tiles_done)}});
+            {{"render_key", options.render_key}, {"tiles_done", std::to_string(tiles_done)}},
+            nullptr, false);
 }
 
 // A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,

@@ -114,10 +114,9 @@ Vec3f SkyModel::sample(float u1, float u2, float& pdf) const {
   const float fv = w > 0.0f ? (target_cell - cdf[j]) / w : 0.5f;
   const float theta = kPi * (static_cast<float>(i) + std::clamp(fu, 0.0f, 1.0f)) / kRows;
   const float phi = 2.0f * kPi * (static_cast<float>(j) + std::clamp(fv, 0.0f, 1.0f)) / kCols;
-  // The pdf of the cell drawn (pdf(d) would find the same cell again, at the cost of an
-  // acos and an atan2 on every sky sample).
-  pdf = cell_pdf(i, j);
-  return direction_of(theta, phi);
+  const Vec3f d = direction_of(theta, phi);
+  pdf = this->pdf(d);
+  return d;
 }
 
 float SkyModel::pdf(const Vec3f& d) const {
@@ -126,10 +125,6 @@ float SkyModel::pdf(const Vec3f& d) const {
   if (phi < 0.0f) phi += 2.0f * kPi;
   const int i = std::clamp(static_cast<int>(theta / kPi * kRows), 0, kRows - 1);
   const int j = std::clamp(static_cast<int>(phi / (2.0f * kPi) * kCols), 0, kCols - 1);
-  return cell_pdf(i, j);
-}
-
-float SkyModel::cell_pdf(int i, int j) const {
   const float sin_theta = std::sin(kPi * (static_cast<float>(i) + 0.5f) / kRows);
   const float pdf_uv = weights_[static_cast<std::size_t>(i * kCols + j)] / total_ * (kRows * kCols);
   // Within a cell the table is uniform in (theta, phi): convert with the cell's sin(theta).

@@ -36,8 +36,6 @@ class SkyModel {
  private:
   Vec3f above_horizon(const Vec3f& direction) const;
   void build_table();
-  // Density per steradian of directions in table cell (i, j).
-  float cell_pdf(int i, int j) const;
 
   Sky sky_;
   std::unique_ptr<PreethamSky> preetham_;
