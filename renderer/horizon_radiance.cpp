@@ -2,30 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace landsim::renderer {
 namespace {
 
 constexpr int kSteps = 4096;
-constexpr float kTwoPi = 2.0f * std::numbers::pi_v<float>;
+
+// A pseudo-angle of (x, y) in [0, 4): monotonic in the azimuth, one division instead of an
+// atan2 (which cost 1% of a forest render). The table is uniform in it, not in degrees:
+// its 4096 steps are 0.06 to 0.11 degrees.
+float pseudo_angle(float x, float y) {
+  const float p = y / (std::abs(x) + std::abs(y));  // -1 to 1
+  return x < 0.0f ? 2.0f - p : (y < 0.0f ? 4.0f + p : p);
+}
+
+// The direction of pseudo-angle a, inverting pseudo_angle.
+Vec3f direction_of(float a) {
+  const float p = a < 1.0f ? a : (a < 3.0f ? 2.0f - a : a - 4.0f);  // y / (|x| + |y|)
+  const float x = (a < 1.0f || a >= 3.0f) ? 1.0f - std::abs(p) : -(1.0f - std::abs(p));
+  return normalize(Vec3f{x, p, 0.0f});
+}
 
 }  // namespace
 
 HorizonRadiance::HorizonRadiance(const SkyModel& sky) : mean_(sky.mean_radiance()) {
   table_.reserve(kSteps + 1);
-  for (int i = 0; i <= kSteps; ++i) {
-    const float phi = kTwoPi * static_cast<float>(i % kSteps) / kSteps;
-    table_.push_back(sky.radiance({std::cos(phi), std::sin(phi), 0.0f}));
-  }
+  for (int i = 0; i <= kSteps; ++i)
+    table_.push_back(sky.radiance(direction_of(4.0f * static_cast<float>(i % kSteps) / kSteps)));
 }
 
 Vec3f HorizonRadiance::radiance(const Vec3f& d) const {
   if (d.x * d.x + d.y * d.y <= 1e-6f) return mean_;
-  float phi = std::atan2(d.y, d.x);
-  if (phi < 0.0f) phi += kTwoPi;
-  const float x = phi / kTwoPi * kSteps;
-  const int i = std::min(static_cast<int>(x), kSteps - 1);
+  const float x = pseudo_angle(d.x, d.y) * (kSteps / 4.0f);
+  const int i = std::clamp(static_cast<int>(x), 0, kSteps - 1);
   const float f = x - static_cast<float>(i);
   return table_[static_cast<std::size_t>(i)] * (1.0f - f) +
          table_[static_cast<std::size_t>(i + 1)] * f;
