@@ -390,6 +390,19 @@ TEST(Cli, InfoDescribesTheDefaultScene) {
   EXPECT_GT(j["memory_estimate_bytes"].get<long>(), 0);
 }
 
+TEST(Cli, InfoGivesTheRendersOwnMemoryEstimate) {
+  // Both count the modules a render loads (the image module before its estimate), so the
+  // estimate `info` prints is the one `render` checks against its budget.
+  TempDir dir;
+  const Result info = run("info --json", dir);
+  const Result render = run("render --spp 1 --json --out " + (dir / "r").string(), dir);
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  ASSERT_EQ(render.exit_code, 0) << render.err;
+  const auto a = nlohmann::json::parse(info.out)["memory_estimate_bytes"].get<double>();
+  const auto b = nlohmann::json::parse(render.out)["memory_estimate_bytes"].get<double>();
+  EXPECT_NEAR(a / b, 1.0, 0.05) << a << " against " << b;
+}
+
 // The Kagwene example with every species at 99000 trees per hectare (inside the documented
 // ranges): about ninety million trees, which no machine here could hold.
 std::string huge_kagwene(const TempDir& dir) {

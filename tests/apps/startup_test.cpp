@@ -3,6 +3,7 @@
 // write no image run without the modules; one that needs a missing module says which.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "tests/support/run_program.h"
@@ -40,11 +41,18 @@ TEST(Startup, CommandsThatReadNoRasterRunWithoutTheModules) {
 
 TEST(Startup, AMissingModuleIsNamed) {
   const TempDir dir;
-  const auto r = run_command(kNoModules + LANDSIM_BINARY " info", dir);
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("landsim: error: cannot load"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("liblandsim_gdal.so"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("LANDSIM_MODULE_DIR"), std::string::npos) << r.err;
+  // export-obj reads the default scene's rasters (GDAL) and writes no image.
+  const auto gdal =
+      run_command(kNoModules + LANDSIM_BINARY " export-obj --out " + (dir / "s.obj").string(), dir);
+  EXPECT_EQ(gdal.exit_code, 1);
+  EXPECT_NE(gdal.err.find("landsim: error: cannot load"), std::string::npos) << gdal.err;
+  EXPECT_NE(gdal.err.find("liblandsim_gdal.so"), std::string::npos) << gdal.err;
+  EXPECT_NE(gdal.err.find("LANDSIM_MODULE_DIR"), std::string::npos) << gdal.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.obj"));
+  // info and render load the image module before anything else.
+  const auto images = run_command(kNoModules + LANDSIM_BINARY " info", dir);
+  EXPECT_EQ(images.exit_code, 1);
+  EXPECT_NE(images.err.find("liblandsim_images.so"), std::string::npos) << images.err;
 }
 
 }  // namespace
