@@ -4,7 +4,10 @@
 //   build/bin/memory_bench
 // Not a Google Benchmark: resident memory is per process, and each figure is one build.
 #include <embree3/rtcore.h>
+
 #include <fmt/format.h>
+#include "core/process_memory.h"
+#include "renderer/image_io.h"
 
 #include <atomic>
 #include <cstdint>
@@ -175,6 +178,12 @@ void tree_at_full_detail(const char* species_file) {
 }  // namespace
 
 int main() {
+  // First, while little else is resident: what loading the image module adds (its
+  // libraries' pages), the estimate's kImageModuleBytes.
+  const std::size_t before = landsim::resident_bytes();
+  landsim::renderer::image_io();
+  fmt::print("image module (OpenImageIO, OpenColorIO): {:.0f} MB resident\n",
+             static_cast<double>(landsim::resident_bytes() - before) / 1e6);
   fmt::print("Embree resident memory per element ({} of each):\n", kCount);
   bytes_per("triangle (indexed, normals)", [](RTCDevice d) { return triangles(d, kCount); });
   bytes_per("round linear curve segment", [](RTCDevice d) {

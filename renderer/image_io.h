@@ -42,8 +42,10 @@ struct ImageIo {
                     std::string& warning);
 };
 
-// The module's table, loaded on first use (std::runtime_error when the module is missing).
+// The module's table, loaded on first use (ModuleError when the module is missing).
 const ImageIo& image_io();
+// Whether image_io() has loaded the module in this process.
+bool image_io_loaded();
 
 // The symbol liblandsim_images.so exports: `const ImageIo* landsim_image_io()`.
 inline constexpr const char* kImageIoSymbol = "landsim_image_io";

@@ -11,6 +11,7 @@
 #include "core/process_memory.h"
 #include "featuremaps/placement.h"
 #include "renderer/grass_patch.h"
+#include "renderer/image_io.h"
 #include "renderer/memory_model.h"
 #include "scenes/detail/grass_cover.h"
 #include "scenes/detail/tree_variant.h"
@@ -157,7 +158,11 @@ std::size_t MemoryEstimate::total_bytes() const {
 MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   MemoryEstimate e;
   e.scenario = s.source;
-  e.program_bytes = resident_bytes();
+  // The program as the render will have it: with its image module (loaded by render before
+  // this estimate; counted, not loaded, by info).
+  e.program_bytes =
+      resident_bytes() +
+      (renderer::image_io_loaded() ? std::size_t{0} : static_cast<std::size_t>(mm::kImageModule));
   const terrain::ElevationGrid grid = terrain::load_elevation(s.terrain.elevation, s.terrain.dem);
   const Vec3 origin = grid.centre();
   const GroundSize ground = ground_size(grid);
@@ -251,7 +256,8 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   part("tree_instances", fmt::format("tree instances ({:.0f} trees)", e.instances),
        p.scene_instances + p.view_instances, "a lower density_per_ha, or a smaller feature map");
   part("ground", "ground", p.scene_ground + p.view_ground, "a coarser elevation grid");
-  part("grass", "grass", p.scene_grass + p.view_grass, "fewer [[grass]] types, or grass on less of the map");
+  part("grass", "grass", p.scene_grass + p.view_grass,
+       "fewer [[grass]] types, or grass on less of the map");
   part("image", "image", p.view_film, "a smaller --width/--height");
   // Building the scene holds the terrain grid, the map and the placed trees besides; the
   // peak is whichever phase is larger.

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <iostream>
 
-#include "renderer/image_io.h"
 #include "scenario_input.h"
 #include "scenes/memory_estimate.h"
 
@@ -23,9 +22,6 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
 
 int run_info(const InfoArgs& args) {
   const scenes::Scenario scenario = scenario_or_default(args.scenario);
-  // The render's estimate counts the image module it loads first (its PNG previews): so
-  // must this one, which is the same estimate.
-  renderer::image_io();
   const scenes::MemoryEstimate e = scenes::estimate_memory(scenario);
   const auto count = [](double n) { return static_cast<std::size_t>(std::llround(n)); };
   if (args.json) {

@@ -49,10 +49,12 @@ TEST(Startup, AMissingModuleIsNamed) {
   EXPECT_NE(gdal.err.find("liblandsim_gdal.so"), std::string::npos) << gdal.err;
   EXPECT_NE(gdal.err.find("LANDSIM_MODULE_DIR"), std::string::npos) << gdal.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "s.obj"));
-  // info and render load the image module before anything else.
-  const auto images = run_command(kNoModules + LANDSIM_BINARY " info", dir);
+  // render loads the image module before anything else, and writes nothing without it.
+  const auto images =
+      run_command(kNoModules + LANDSIM_BINARY " render --spp 1 --out " + (dir / "r").string(), dir);
   EXPECT_EQ(images.exit_code, 1);
   EXPECT_NE(images.err.find("liblandsim_images.so"), std::string::npos) << images.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "r"));
 }
 
 }  // namespace
