@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "terrain/raster_files.h"
 #include "terrain/raster_io.h"
+#include "terrain/raster_placement.h"
 
 namespace landsim::featuremaps {
 namespace {
@@ -20,7 +21,6 @@ namespace {
 terrain::GeoTransform placement_of(const terrain::RasterHeader& header, const std::string& path,
                                    const RasterPlacement& p) {
   terrain::GeoTransform t;
-  const int rows = header.rows;
   if (header.geotransform) {
     const std::array<double, 6>& gt = *header.geotransform;
     if (gt[2] != 0.0 || gt[4] != 0.0 || !(gt[1] > 0.0) || !(gt[5] < 0.0))
@@ -30,16 +30,7 @@ terrain::GeoTransform placement_of(const terrain::RasterHeader& header, const st
     fail(path,
          "feature map has no georeferencing (a PNG?): set [featuremaps] cell_size (and origin)");
   }
-  if (p.cell_size) {
-    const double south = t.origin_y - rows * t.cell_size_y;
-    t.cell_size_x = t.cell_size_y = *p.cell_size;
-    t.origin_y = south + rows * t.cell_size_y;
-  }
-  if (p.origin) {
-    t.origin_x = (*p.origin)[0];
-    t.origin_y = (*p.origin)[1] + rows * t.cell_size_y;
-  }
-  return t;
+  return terrain::override_placement(t, header.rows, p.cell_size, p.origin);
 }
 
 }  // namespace

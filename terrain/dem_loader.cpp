@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "terrain/raster_files.h"
 #include "terrain/raster_io.h"
+#include "terrain/raster_placement.h"
 
 namespace landsim::terrain {
 namespace {
@@ -53,18 +54,8 @@ GeoTransform placement(const RasterHeader& header, const std::string& path,
   if (!gt && !options.cell_size) {
     fail(path, "raster has no georeferencing (a PNG?): set [terrain] cell_size");
   }
-  GeoTransform t = gt.value_or(GeoTransform{});
-  const int rows = header.rows;
-  if (options.cell_size) {
-    const double south = t.origin_y - rows * t.cell_size_y;
-    t.cell_size_x = t.cell_size_y = *options.cell_size;
-    t.origin_y = south + rows * t.cell_size_y;  // keep the south-west corner in place
-  }
-  if (options.origin) {
-    t.origin_x = (*options.origin)[0];
-    t.origin_y = (*options.origin)[1] + rows * t.cell_size_y;
-  }
-  return t;
+  return override_placement(gt.value_or(GeoTransform{}), header.rows, options.cell_size,
+                            options.origin);
 }
 
 std::vector<float> read_heights(const RasterHeader& header, const std::string& path) {
