@@ -111,7 +111,7 @@ void write_labelled_png(const renderer::Film& sheet, const std::vector<std::stri
   for (std::size_t k = 0; k < labels.size(); ++k)
     placed.push_back({static_cast<int>(k) % columns * o.tile + 8,
                       static_cast<int>(k) / columns * o.tile + 24, labels[k]});
-  renderer::write_preview_png(sheet, path, 0.0, placed);
+  renderer::write_preview_png(sheet, path, std::nullopt, placed);
 }
 
 }  // namespace landsim::exporters

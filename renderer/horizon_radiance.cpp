@@ -28,7 +28,8 @@ Vec3f direction_of(float a) {
 HorizonRadiance::HorizonRadiance(const SkyModel& sky) : mean_(sky.mean_radiance()) {
   table_.reserve(kSteps + 1);
   for (int i = 0; i <= kSteps; ++i)
-    table_.push_back(sky.radiance(direction_of(4.0f * static_cast<float>(i % kSteps) / kSteps)));
+    table_.push_back(
+        sky.horizon_band_radiance(direction_of(4.0f * static_cast<float>(i % kSteps) / kSteps)));
 }
 
 Vec3f HorizonRadiance::radiance(const Vec3f& d) const {

@@ -1,8 +1,8 @@
 #pragma once
-// The sky's radiance at the horizon by azimuth, tabulated: the haze's ambient (multiply
-// scattered) light is sized from it on every ray segment, where evaluating the sky model
-// each time cost several percent of a forest render (docs/PERFORMANCE.md "Forest scale").
-// 4096 steps of about a tenth of a degree, linearly interpolated: the horizon's radiance
+// The sky's horizon band radiance (SkyModel::horizon_band_radiance) by azimuth, tabulated: the
+// haze's ambient (multiply scattered) light is sized from it on every ray segment, where evaluating
+// the sky model each time cost several percent of a forest render (docs/PERFORMANCE.md "Forest
+// scale"). 4096 steps of about a tenth of a degree, linearly interpolated: the horizon's radiance
 // varies slowly with azimuth.
 #include <vector>
 

@@ -1,5 +1,7 @@
 #include "renderer/image_output.h"
 
+#include "renderer/exposure.h"
+
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -175,11 +177,11 @@ ImageMetadata read_exr_metadata(const std::filesystem::path& path) {
   return landsim_metadata(in.header());
 }
 
-void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev,
-                       const std::vector<ImageLabel>& labels) {
+void write_preview_png(const Film& film, const std::filesystem::path& path,
+                       std::optional<double> ev100, const std::vector<ImageLabel>& labels) {
   AtomicFile out(path);
   FloatImage image{film.width(), film.height(), 3, film.rgb_data()};
-  const auto gain = static_cast<float>(std::exp2(exposure_ev));
+  const auto gain = static_cast<float>(preview_gain(exposure_ev100(film, ev100)));
   for (float& v : image.pixels) v = std::max(0.0f, v * gain);
   std::string error, warning;
   if (!image_io().display_transform(kOcioConfig, image.pixels.data(), image.width, image.height,

@@ -39,12 +39,13 @@ Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata = nullp
 // Only the metadata of such an EXR (its header; no pixels are read).
 ImageMetadata read_exr_metadata(const std::filesystem::path& path);
 
-// Scales by 2^exposure_ev, then applies the OpenColorIO display transform (display sRGB,
-// view Standard) of the project's embedded config, draws `labels`, and writes an 8-bit PNG.
+// Exposes for `ev100` (automatic when empty: renderer/exposure.h), then applies the
+// OpenColorIO display transform (display sRGB, view Standard) of the project's embedded
+// config, draws `labels`, and writes an 8-bit PNG.
 // Labels need DejaVu Sans (Debian's fonts-dejavu-core); without it they are left out with a
 // warning rather than failing the image.
-void write_preview_png(const Film& film, const std::filesystem::path& path, double exposure_ev,
-                       const std::vector<ImageLabel>& labels = {});
+void write_preview_png(const Film& film, const std::filesystem::path& path,
+                       std::optional<double> ev100, const std::vector<ImageLabel>& labels = {});
 
 // The embedded OpenColorIO config (YAML), for users who want to reproduce the preview.
 const char* ocio_config_text();

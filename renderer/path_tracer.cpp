@@ -131,9 +131,16 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     const std::uint32_t dim = kFirstBounceDim + kDimsPerBounce * static_cast<std::uint32_t>(bounce);
     ++out.rays;
     const auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask);
-    // Haze lies over segments that end on the scene and on rays leaving below the horizon
-    // (the plain beyond the terrain); the sky model already holds the atmosphere above.
-    if (haze_.enabled() && (hit || ray.direction.z <= 0.0f)) {
+    // Haze lies over every segment. Camera and mirror rays that leave upward see the haze
+    // veil over the sky too (dense fog whitens the whole sky; any haze the sky's last degrees,
+    // so the hazed ground and the sky meet at the horizon without a seam). Diffuse bounces
+    // that leave upward are only attenuated, as next-event estimation of the sky is
+    // (sky_light), so the two estimators of the same light agree under MIS.
+    const bool leaves_upward = !hit && ray.direction.z > 0.0f;
+    if (haze_.enabled() && leaves_upward && !last_specular) {
+      throughput = throughput * static_cast<float>(haze_.transmittance(
+                                    Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance));
+    } else if (haze_.enabled()) {
       const double t = hit ? hit->t : kInfiniteDistance;
       // The segment's optical depth, once: its transmittance, its scattered share, and where
       // along it the sun is sampled all follow from it.
@@ -151,6 +158,9 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     if (!hit) {
       const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
       out.radiance += throughput * sky_.radiance(ray.direction) * w;
+      // The sun's disc is seen only along specular paths: every diffuse vertex already took
+      // it by next-event estimation.
+      if (last_specular) out.radiance += throughput * sky_.sun_radiance(ray.direction);
       break;
     }
     const ShadingPoint v = shading_point(ray, *hit, mask);

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,22 +69,27 @@ struct GrassCover {
 };
 
 struct Sun {
-  Vec3 direction{0.0, 0.0, 1.0};       // toward the sun
-  Vec3f irradiance{3.0f, 2.9f, 2.7f};  // on a surface facing the sun, linear RGB
-  double angular_radius = 0.00465;     // radians; the real sun's 0.266 degrees
+  Vec3 direction{0.0, 0.0, 1.0};  // toward the sun
+  // On a surface facing the sun, linear Rec. 709 in lux (Y is illuminance): about 100 klx
+  // for a high sun in a clear sky.
+  Vec3f irradiance{100000.0f, 96667.0f, 90000.0f};
+  double angular_radius = 0.00465;  // radians; the real sun's 0.266 degrees
 };
 
-// Radiometric unit: irradiance 1.0 is 33.3 klux (so the sun overhead is about 3), radiance
-// 1.0 is that per steradian.
-inline constexpr double kKlxPerUnit = 100.0 / 3.0;
+// Photometric units: radiance is linear Rec. 709 scaled so that Y = 0.2126 R + 0.7152 G +
+// 0.0722 B is luminance in cd/m2; irradiance likewise, Y in lux (docs/ATMOSPHERE.md).
 
-// The sky: the Preetham clear-sky model (turbidity), or a gradient from horizon to zenith
-// (kept for tests: zenith = horizon is a uniform sky).
+enum class SkyKind {
+  hosek_wilkie,  // Hosek and Wilkie 2012/2013: sky dome and sun (the default)
+  preetham,      // Preetham, Shirley and Smits 1999, kept for comparison
+  gradient,      // a plain gradient from horizon to zenith (tests: zenith = horizon is uniform)
+};
+
 struct Sky {
-  bool physical = true;
+  SkyKind model = SkyKind::hosek_wilkie;
   double turbidity = 3.0;
-  Vec3f zenith_radiance{0.10f, 0.20f, 0.45f};
-  Vec3f horizon_radiance{0.45f, 0.55f, 0.70f};
+  Vec3f zenith_radiance{3333.0f, 6667.0f, 15000.0f};  // gradient only, cd/m2-scaled
+  Vec3f horizon_radiance{15000.0f, 18333.0f, 23333.0f};
 };
 
 // Exponential height fog: extinction sigma(z) = 3.912 / visibility x exp(-(z - base) /
@@ -113,7 +119,9 @@ struct RenderSettings {
   int spp = 16;
   std::uint64_t seed = 1;
   int max_bounces = 4;
-  double exposure_ev = 0.0;  // applied to the preview PNG only; the EXR stays linear
+  // The preview PNG's exposure value at ISO 100; empty: automatic (renderer/exposure.h).
+  // The EXR stays in cd/m2 either way.
+  std::optional<double> exposure_ev100;
   // Range degradation (Weber & Penn section 5) of trees, and stochastic blending of tree and
   // grass levels; off: every tree at full detail, grass levels switched abruptly.
   bool degradation = true;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/hosek_wilkie.h"
 #include "renderer/preetham.h"
 
 namespace landsim::renderer {
@@ -12,8 +13,8 @@ namespace {
 constexpr int kRows = 64;   // theta from 0 to pi
 constexpr int kCols = 128;  // phi from 0 to 2 pi
 constexpr float kPi = std::numbers::pi_v<float>;
-// Preetham's luminance is in kcd/m^2: one kilocandela per square metre in our unit.
-constexpr double kKcdToUnits = 1.0 / kKlxPerUnit;
+constexpr double kCdPerKcd = 1000.0;  // Preetham's luminance unit is kcd/m2
+constexpr int kSunDiscSteps = 64;     // the disc's radiance profile, by mu
 
 Vec3f direction_of(float theta, float phi) {
   const float s = std::sin(theta);
@@ -24,8 +25,14 @@ float luminance(const Vec3f& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f
 
 }  // namespace
 
-SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo) : sky_(sky) {
-  if (sky.physical) preetham_ = std::make_unique<PreethamSky>(sun.direction, sky.turbidity);
+SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
+    : sky_(sky), sun_direction_(normalize(Vec3f(sun.direction))) {
+  const double elevation = std::asin(std::clamp(normalize(sun.direction).z, 0.0, 1.0));
+  if (sky.model == SkyKind::preetham)
+    preetham_ = std::make_unique<PreethamSky>(sun.direction, sky.turbidity);
+  if (sky.model == SkyKind::hosek_wilkie)
+    hosek_wilkie_ = std::make_unique<HosekWilkieSky>(elevation, sky.turbidity, Vec3(ground_albedo));
+  build_sun_disc(sun);
   // E = integral over the upper hemisphere of L cos: midpoint rule on a fine grid.
   constexpr int kSteps = 96;
   Vec3f sum{};
@@ -57,11 +64,74 @@ SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo) : sky_(s
 SkyModel::~SkyModel() = default;
 SkyModel::SkyModel(SkyModel&&) noexcept = default;
 
+void SkyModel::build_sun_disc(const Sun& sun) {
+  const double r = sun.angular_radius;
+  sun_cos_radius_ = static_cast<float>(std::cos(r));
+  sun_sin_radius_ = static_cast<float>(std::sin(r));
+  // The profile's shape: Hosek-Wilkie's limb darkening per channel, else a uniform disc.
+  std::vector<Vec3> shape(kSunDiscSteps + 1, Vec3{1.0, 1.0, 1.0});
+  if (hosek_wilkie_) {
+    const double elevation = std::asin(std::clamp(normalize(sun.direction).z, 0.0, 1.0));
+    const HosekWilkieSun model(elevation, sky_.turbidity);
+    for (int i = 0; i <= kSunDiscSteps; ++i)
+      shape[static_cast<std::size_t>(i)] = model.radiance(static_cast<double>(i) / kSunDiscSteps);
+  }
+  // Scaled so that the disc gives exactly the scene's sun irradiance (which a scenario may
+  // set): integral of L cos over the disc = pi sin^2 R x 2 int_0^1 L(mu) mu dmu.
+  Vec3 integral{};
+  for (int i = 0; i < kSunDiscSteps; ++i) {
+    const double mu = (i + 0.5) / kSunDiscSteps;
+    const Vec3 mid =
+        (shape[static_cast<std::size_t>(i)] + shape[static_cast<std::size_t>(i + 1)]) * 0.5;
+    integral += mid * (2.0 * mu / kSunDiscSteps);
+  }
+  integral = integral * (std::numbers::pi * std::sin(r) * std::sin(r));
+  sun_disc_.resize(shape.size());
+  for (std::size_t i = 0; i < shape.size(); ++i) {
+    const auto channel = [&](double s, double total, float e) {
+      return total > 0.0 ? static_cast<float>(s / total * e) : 0.0f;
+    };
+    sun_disc_[i] = {channel(shape[i].x, integral.x, sun.irradiance.x),
+                    channel(shape[i].y, integral.y, sun.irradiance.y),
+                    channel(shape[i].z, integral.z, sun.irradiance.z)};
+  }
+}
+
+Vec3f SkyModel::sun_radiance(const Vec3f& d) const {
+  const float c = dot(d, sun_direction_);
+  if (c < sun_cos_radius_ || sun_sin_radius_ <= 0.0f) return {};
+  const float s = std::sqrt(std::max(0.0f, 1.0f - c * c)) / sun_sin_radius_;
+  const float mu = std::sqrt(std::max(0.0f, 1.0f - s * s));
+  const float x = mu * kSunDiscSteps;
+  const int i = std::min(static_cast<int>(x), kSunDiscSteps - 1);
+  const float f = x - static_cast<float>(i);
+  return sun_disc_[static_cast<std::size_t>(i)] * (1.0f - f) +
+         sun_disc_[static_cast<std::size_t>(i + 1)] * f;
+}
+
 Vec3f SkyModel::above_horizon(const Vec3f& d) const {
-  if (preetham_) return Vec3f(preetham_->radiance_kcd(Vec3(d)) * kKcdToUnits);
+  if (hosek_wilkie_) {
+    const float cos_gamma = std::clamp(dot(d, sun_direction_), -1.0f, 1.0f);
+    return Vec3f(hosek_wilkie_->radiance(std::acos(std::clamp(static_cast<double>(d.z), 0.0, 1.0)),
+                                         std::acos(static_cast<double>(cos_gamma))));
+  }
+  if (preetham_) return Vec3f(preetham_->radiance_kcd(Vec3(d)) * kCdPerKcd);
   // The exponent keeps a bright band near the horizon, as haze-free skies show.
   const float t = std::pow(std::clamp(d.z, 0.0f, 1.0f), 0.4f);
   return sky_.horizon_radiance * (1.0f - t) + sky_.zenith_radiance * t;
+}
+
+Vec3f SkyModel::horizon_band_radiance(const Vec3f& d) const {
+  constexpr int kSamples = 8;
+  constexpr float kBand = 2.0f * kPi / 180.0f;
+  const float h = std::sqrt(d.x * d.x + d.y * d.y);
+  const Vec3f level = h > 0.0f ? Vec3f{d.x / h, d.y / h, 0.0f} : Vec3f{1.0f, 0.0f, 0.0f};
+  Vec3f sum{};
+  for (int i = 0; i < kSamples; ++i) {
+    const float e = kBand * (static_cast<float>(i) + 0.5f) / kSamples;
+    sum += above_horizon(level * std::cos(e) + Vec3f{0.0f, 0.0f, std::sin(e)});
+  }
+  return sum * (1.0f / kSamples);
 }
 
 Vec3f SkyModel::radiance(const Vec3f& direction) const {
@@ -131,8 +201,9 @@ float SkyModel::pdf(const Vec3f& d) const {
   return pdf_uv / (2.0f * kPi * kPi * std::max(sin_theta, 1e-6f));
 }
 
-Vec3f sun_irradiance(double elevation_deg, double turbidity) {
-  if (elevation_deg <= 0.0) return {};
+namespace {
+
+Vec3f preetham_sun_irradiance(double elevation_deg, double turbidity) {
   const double zenith = 90.0 - elevation_deg;
   const double air_mass = 1.0 / (std::cos(zenith * std::numbers::pi / 180.0) +
                                  0.50572 * std::pow(96.07995 - zenith, -1.6364));
@@ -140,14 +211,29 @@ Vec3f sun_irradiance(double elevation_deg, double turbidity) {
   const double rayleigh[3] = {0.043, 0.097, 0.235};
   const double wavelength_um[3] = {0.68, 0.55, 0.44};
   const double beta = std::max(0.0, 0.04608 * turbidity - 0.04586);
-  // Extraterrestrial illuminance 128 klx.
-  const double e0 = 128.0 / kKlxPerUnit;
+  const double e0 = 128000.0;  // extraterrestrial illuminance, lux
   double e[3];
   for (int c = 0; c < 3; ++c) {
     const double aerosol = beta * std::pow(wavelength_um[c], -1.3);
     e[c] = e0 * std::exp(-air_mass * (rayleigh[c] + aerosol));
   }
   return {static_cast<float>(e[0]), static_cast<float>(e[1]), static_cast<float>(e[2])};
+}
+
+}  // namespace
+
+Vec3f sun_irradiance(const Sky& sky, double elevation_deg, double angular_radius) {
+  if (elevation_deg <= 0.0) return {};
+  switch (sky.model) {
+    case SkyKind::hosek_wilkie:
+      return Vec3f(HosekWilkieSun(elevation_deg * std::numbers::pi / 180.0, sky.turbidity)
+                       .irradiance(angular_radius));
+    case SkyKind::preetham:
+      return preetham_sun_irradiance(elevation_deg, sky.turbidity);
+    case SkyKind::gradient:
+      break;
+  }
+  return Sun{}.irradiance;
 }
 
 }  // namespace landsim::renderer

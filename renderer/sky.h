@@ -12,6 +12,7 @@
 namespace landsim::renderer {
 
 class PreethamSky;
+class HosekWilkieSky;
 
 class SkyModel {
  public:
@@ -19,10 +20,22 @@ class SkyModel {
   ~SkyModel();
   SkyModel(SkyModel&&) noexcept;
 
+  // The sun disc's radiance in `direction` (zero outside the disc): what a camera or mirror
+  // ray that meets the sun sees. Its integral over the disc is the sun's irradiance, so it
+  // agrees with next-event estimation; limb-darkened (Hosek and Wilkie 2013) under the
+  // Hosek-Wilkie sky, uniform under the others.
+  Vec3f sun_radiance(const Vec3f& direction) const;
+
   // Sky radiance above the horizon. Below it, where a ray leaves a finite terrain, the
   // radiance of an endless sunlit plain of the ground albedo, so the edge of a DEM does not
   // open onto a black void.
   Vec3f radiance(const Vec3f& direction) const;
+  // The horizon band's radiance at the azimuth of `direction`: the mean over elevations 0 to
+  // 2 degrees. What haze converges to at long range (docs/ATMOSPHERE.md): a band, because
+  // the Hosek-Wilkie fit's last half degree loses a third of its blue, which a haze layer's
+  // own multiple scattering would not.
+  Vec3f horizon_band_radiance(const Vec3f& direction) const;
+
   // Irradiance the sky alone gives a horizontal surface.
   Vec3f horizontal_irradiance() const { return sky_irradiance_; }
   // Radiance averaged over the whole sphere (sky above, the sunlit plain below): what haze
@@ -37,8 +50,14 @@ class SkyModel {
   Vec3f above_horizon(const Vec3f& direction) const;
   void build_table();
 
+  void build_sun_disc(const Sun& sun);
+
   Sky sky_;
   std::unique_ptr<PreethamSky> preetham_;
+  std::unique_ptr<HosekWilkieSky> hosek_wilkie_;
+  Vec3f sun_direction_;
+  float sun_cos_radius_ = 1.0f, sun_sin_radius_ = 0.0f;
+  std::vector<Vec3f> sun_disc_;  // radiance by mu (the cosine on the solar surface), 0 to 1
   Vec3f sky_irradiance_;
   Vec3f below_horizon_;
   Vec3f mean_radiance_;
@@ -49,8 +68,11 @@ class SkyModel {
   float total_ = 0.0f;
 };
 
-// Sun irradiance on a surface facing it, linear RGB in the renderer's unit, after Rayleigh
-// and aerosol extinction (Angstrom turbidity from Preetham's relation, Kasten-Young air mass).
-Vec3f sun_irradiance(double elevation_deg, double turbidity);
+// Irradiance from the sun on a surface facing it (lux-scaled Rec. 709) under `sky`'s model:
+// the Hosek-Wilkie solar radiance integrated over a disc of `angular_radius` and against the
+// CIE functions; Preetham's sun (128 klx outside the atmosphere, Rayleigh and aerosol
+// extinction by Angstrom turbidity from Preetham's relation, Kasten-Young air mass); or, for
+// the gradient sky, Sun's default.
+Vec3f sun_irradiance(const Sky& sky, double elevation_deg, double angular_radius);
 
 }  // namespace landsim::renderer

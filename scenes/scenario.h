@@ -43,7 +43,7 @@ struct RenderSection {
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
   int max_bounces = 4;
-  double exposure_ev = 0.0;
+  std::optional<double> exposure_ev100;  // empty: "auto"
   std::vector<double> frames{0.0};               // seconds; wind sway is evaluated at each
   double checkpoint_seconds = 60.0;              // 0: no checkpoints
   trees::Season season = trees::Season::summer;  // winter: leafless

@@ -108,6 +108,7 @@ SunSettings read_sun(const toml::table& t, const std::string& file) {
       if (r.has(k)) r.fail(k, "only used with date and time (instead of elevation and azimuth)");
     }
   }
+  // Lux (linear Rec. 709, Y the illuminance): 1e6 is ten times the brightest real sun.
   if (r.has("irradiance")) s.irradiance = to_vec3f(r.vec3("irradiance", Range{0.0, 1e6}));
   r.finish();
   return s;
@@ -116,8 +117,14 @@ SunSettings read_sun(const toml::table& t, const std::string& file) {
 renderer::Sky read_sky(const toml::table& t, const std::string& file) {
   TableReader r(t, "sky", file);
   renderer::Sky s;
-  s.physical = r.choice("model", {"preetham", "gradient"}, "preetham") == "preetham";
-  s.turbidity = r.number("turbidity", Range{1.7, 10.0}, s.turbidity);
+  const std::string model =
+      r.choice("model", {"hosek-wilkie", "preetham", "gradient"}, "hosek-wilkie");
+  s.model = model == "hosek-wilkie" ? renderer::SkyKind::hosek_wilkie
+            : model == "preetham"   ? renderer::SkyKind::preetham
+                                    : renderer::SkyKind::gradient;
+  // Hosek-Wilkie's tables span turbidity 1-10; Preetham's fit is not valid below 1.7.
+  s.turbidity = r.number(
+      "turbidity", Range{s.model == renderer::SkyKind::preetham ? 1.7 : 1.0, 10.0}, s.turbidity);
   r.finish();
   return s;
 }
@@ -188,6 +195,23 @@ std::vector<ViewSettings> read_views(const toml::table& root, const std::string&
   return views;
 }
 
+// "auto", or an exposure value at ISO 100: -6 (a moonlit night) to 24 (beyond any sunlit
+// scene), the range a photographer's exposure table spans.
+std::optional<double> read_exposure(TableReader& r) {
+  const toml::node* n = r.value("exposure", "\"auto\" or an EV100 from -6 to 24", "\"auto\"");
+  if (n == nullptr) return std::nullopt;
+  if (const auto* s = n->as_string(); s != nullptr && s->get() == "auto") return std::nullopt;
+  if (const auto* s = n->as_string())
+    r.fail_at(*n, "exposure",
+              "expected \"auto\" or an EV100 from -6 to 24, got \"" + s->get() + "\"");
+  if (!n->is_number()) r.fail_at(*n, "exposure", "expected \"auto\" or an EV100 from -6 to 24");
+  const double ev = n->value<double>().value_or(0.0);
+  if (!(ev >= -6.0 && ev <= 24.0))
+    r.fail_at(*n, "exposure",
+              fmt::format("expected \"auto\" or an EV100 from -6 to 24, got {}", ev));
+  return ev;
+}
+
 RenderSection read_render(const toml::table& t, const std::string& file) {
   TableReader r(t, "render", file);
   RenderSection s;
@@ -195,7 +219,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT64_MAX, 1));
   s.threads = static_cast<int>(r.integer("threads", 0, 1024, 0));
   s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, 4));
-  s.exposure_ev = r.number("exposure", Range{-20.0, 20.0}, 0.0);
+  s.exposure_ev100 = read_exposure(r);
   s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, 60.0);
   s.season = *trees::season_from_name(
       r.choice("season", {"spring", "summer", "autumn", "winter"}, "summer"));

@@ -149,9 +149,9 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.sky = scenario.sky;
   if (scenario.sun.irradiance) {
     scene.sun.irradiance = *scenario.sun.irradiance;
-  } else if (scenario.sky.physical) {
-    scene.sun.irradiance =
-        renderer::sun_irradiance(scenario.sun.elevation_deg, scenario.sky.turbidity);
+  } else {
+    scene.sun.irradiance = renderer::sun_irradiance(scenario.sky, scenario.sun.elevation_deg,
+                                                    scene.sun.angular_radius);
   }
   scene.haze = scenario.haze;
   scene.haze.base_height =
@@ -163,7 +163,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.spp = scenario.render.spp;
   scene.settings.seed = scenario.render.seed;
   scene.settings.max_bounces = scenario.render.max_bounces;
-  scene.settings.exposure_ev = scenario.render.exposure_ev;
+  scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;
   if (scenario.featuremaps) {
     const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(scenario, grid);

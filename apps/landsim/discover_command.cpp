@@ -86,7 +86,7 @@ int run_discover(const DiscoverArgs& args) {
   o.spp = args.spp;
   o.seed = args.seed;
   const renderer::Film sheet = exporters::render_contact_sheet(geometry, o);
-  renderer::write_preview_png(sheet, out, 0.0);
+  renderer::write_preview_png(sheet, out, std::nullopt);
   if (args.json) {
     std::cout << nlohmann::json{{"sheet", out.string()},
                                 {"columns", std::min(6, args.count)},

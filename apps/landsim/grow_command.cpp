@@ -107,7 +107,7 @@ int run_grow(const GrowArgs& args) {
     const std::string stem = fmt::format("age_{:03d}", static_cast<int>(std::lround(requested)));
     renderer::write_exr(film, out / (stem + ".exr"),
                         {{"species", species.name}, {"age_years", fmt::format("{}", age)}});
-    renderer::write_preview_png(film, out / (stem + ".png"), 0.0);
+    renderer::write_preview_png(film, out / (stem + ".png"), std::nullopt);
     rows.push_back({{"age", requested},
                     {"age_used", age},
                     {"image", stem + ".png"},

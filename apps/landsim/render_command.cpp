@@ -17,6 +17,7 @@
 #include "core/process_memory.h"
 #include "mpi_session.h"
 #include "renderer/camera.h"
+#include "renderer/exposure.h"
 #include "renderer/image_io.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
@@ -32,6 +33,18 @@ namespace landsim::app {
 namespace {
 
 std::string vec_text(const Vec3& v) { return fmt::format("{} {} {}", v.x, v.y, v.z); }
+
+std::string sky_text(const renderer::Sky& sky) {
+  switch (sky.model) {
+    case renderer::SkyKind::hosek_wilkie:
+      return fmt::format("hosek-wilkie turbidity {}", sky.turbidity);
+    case renderer::SkyKind::preetham:
+      return fmt::format("preetham turbidity {}", sky.turbidity);
+    case renderer::SkyKind::gradient:
+      break;
+  }
+  return "gradient";
+}
 
 // Command-line values win over the scenario's; a lone --width or --height keeps the aspect.
 void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
@@ -76,8 +89,7 @@ renderer::ImageMetadata metadata(const scenes::Scenario& s, const scenes::ViewSe
           {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
           {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
           {"sun_direction", vec_text(sun)},
-          {"sky", s.sky.physical ? fmt::format("preetham turbidity {}", s.sky.turbidity)
-                                 : std::string("gradient")},
+          {"sky", sky_text(s.sky)},
           {"haze", s.haze.enabled ? fmt::format("visibility {} m, scale height {} m",
                                                 s.haze.visibility, s.haze.scale_height)
                                   : std::string("none")},
@@ -340,13 +352,17 @@ std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::
   meta.emplace_back("time_s", fmt::format("{}", time));
   meta.emplace_back("render_key", options.render_key);
   const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
+  // The preview's exposure (fixed, or automatic from this image) goes in the EXR too, so a
+  // viewer can reproduce the PNG from the EXR.
+  const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
+  meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
   renderer::write_exr(film, exr, meta, &camera);
-  renderer::write_preview_png(film, run.out_dir / (image.stem + ".png"),
-                              scene.settings.exposure_ev);
+  renderer::write_preview_png(film, run.out_dir / (image.stem + ".png"), ev100);
   RenderedImage out;
   out.report = {{"path", exr.string()},
                 {"view", view.name},
                 {"frame", time},
+                {"exposure_ev100", ev100},
                 {"seconds", stats.seconds},
                 {"rays_per_second", stats.rays_per_second()}};
   if (!run.distributed()) {

@@ -1,5 +1,7 @@
 #include "renderer/image_output.h"
 
+#include <cmath>
+
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -66,7 +68,9 @@ TEST(ImageOutput, ExrRoundTripsRadianceDepthAndMetadata) {
 TEST(ImageOutput, PreviewPngIsSrgbEncoded) {
   testing::TempDir dir;
   const auto path = dir / "v.png";
-  write_preview_png(test_film(), path, 0.0);
+  // EV100 -log2(1.2): the preview's gain 1 / (1.2 x 2^EV100) is 1.
+  const double unit_gain = -std::log2(1.2);
+  write_preview_png(test_film(), path, unit_gain);
   EXPECT_EQ(file_count(dir.path()), 1);
   auto in = OIIO::ImageInput::open(path.string());
   ASSERT_TRUE(in);
@@ -76,8 +80,8 @@ TEST(ImageOutput, PreviewPngIsSrgbEncoded) {
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
   // Linear 0.5 is sRGB 188 (not 128: the transfer function is applied).
   EXPECT_NEAR(px[2], 188, 1);
-  // Exposure +1 doubles linear 0.4 to 0.8, sRGB 231.
-  write_preview_png(test_film(), path, 1.0);
+  // One EV less doubles linear 0.4 to 0.8, sRGB 231.
+  write_preview_png(test_film(), path, unit_gain - 1.0);
   in = OIIO::ImageInput::open(path.string());
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
   EXPECT_NEAR(px[(2 * 5 + 2) * 3 + 1], 231, 1);

@@ -6,8 +6,8 @@
 #include "renderer/bark_texture.h"
 #include "renderer/embree_scene.h"
 #include "renderer/render.h"
-#include "trees/mesher.h"
 #include "tests/support/single_item.h"
+#include "trees/mesher.h"
 
 namespace landsim::renderer {
 namespace {

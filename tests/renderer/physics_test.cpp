@@ -31,7 +31,7 @@ terrain::GroundMesh flat_ground(double half) {
 
 Sky uniform_sky(float l) {
   Sky s;
-  s.physical = false;
+  s.model = SkyKind::gradient;
   s.zenith_radiance = s.horizon_radiance = {l, l, l};
   return s;
 }

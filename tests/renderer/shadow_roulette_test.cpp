@@ -42,7 +42,7 @@ TEST(ShadowRoulette, DarkGroundUnderUniformSkyKeepsItsRadiance) {
   Scene s;
   s.ground.mesh = terrain::build_ground_mesh(grid, Vec3{});
   s.ground.albedo = {0.1f, 0.1f, 0.1f};
-  s.sky.physical = false;
+  s.sky.model = SkyKind::gradient;
   s.sky.zenith_radiance = s.sky.horizon_radiance = {0.5f, 0.5f, 0.5f};
   s.sun.irradiance = {0.0f, 0.0f, 0.0f};
   s.settings.spp = 256;

@@ -70,7 +70,8 @@ TEST(Scenario, LoadsEveryKey) {
   EXPECT_EQ(s.render.seed, 42u);
   EXPECT_EQ(s.render.threads, 2);
   EXPECT_EQ(s.render.max_bounces, 3);
-  EXPECT_DOUBLE_EQ(s.render.exposure_ev, 1.5);
+  ASSERT_TRUE(s.render.exposure_ev100.has_value());
+  EXPECT_DOUBLE_EQ(*s.render.exposure_ev100, 1.5);
 }
 
 TEST(Scenario, RelativePathsResolveAgainstTheScenarioFile) {
