@@ -131,8 +131,21 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
     Imf::addWorldToCamera(header, to_m44(camera->world_to_camera));
     Imf::addWorldToNDC(header, to_m44(camera->world_to_ndc));
   }
+  // Photometric units, stated the standard way (whiteLuminance: the cd/m2 of RGB (1, 1, 1);
+  // Rec. 709 primaries and white) and in words.
+  Imf::addChromaticities(header, Imf::Chromaticities());
+  Imf::addWhiteLuminance(header, 1.0f);
+  header.insert("landsim/unit", Imf::StringAttribute(kRadianceUnit));
+  // Y: luminance, for users who measure contrast or detectability in cd/m2.
+  header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+  std::vector<float> luminance(film.pixel_count());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      luminance[static_cast<std::size_t>(y) * static_cast<std::size_t>(film.width()) +
+                static_cast<std::size_t>(x)] = film.luminance(x, y);
   Film& writable = const_cast<Film&>(film);
-  const Imf::FrameBuffer fb = frame_buffer(writable);
+  Imf::FrameBuffer fb = frame_buffer(writable);
+  add_slice(fb, "Y", Imf::FLOAT, luminance, 1, 0, film.width());
   {
     Imf::OutputFile file(out.temp_path().c_str(), header, exr_threads());
     file.setFrameBuffer(fb);

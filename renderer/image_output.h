@@ -23,9 +23,13 @@ struct CameraMatrices {
   std::array<float, 16> world_to_ndc{};
 };
 
-// Channels: R, G, B (radiance); Z (depth, metres, infinity for sky); N.X, N.Y, N.Z
-// (normal); albedo.R, albedo.G, albedo.B; object, species, instance, lod (32-bit unsigned;
-// 4294967295 = none). String attributes "landsim/<key>"; OpenEXR's standard
+// What the EXR's RGB are (also its "landsim/unit" attribute; whiteLuminance is 1).
+inline constexpr const char* kRadianceUnit =
+    "scene-linear Rec. 709 radiance; Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance in cd/m2";
+
+// Channels: R, G, B (radiance, kRadianceUnit); Y (luminance, cd/m2); Z (depth, metres, infinity for
+// sky); N.X, N.Y, N.Z (normal); albedo.R, albedo.G, albedo.B; object, species, instance, lod
+// (32-bit unsigned; 4294967295 = none). String attributes "landsim/<key>"; OpenEXR's standard
 // worldToCamera and worldToNDC when `camera` is given.
 // ZIP-compressed, except checkpoints (`compressed` false): they are rewritten every minute
 // and deleted at the end, and compressing one cost the render's workers 0.9 s at 1080p.

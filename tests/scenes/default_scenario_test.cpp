@@ -59,6 +59,22 @@ TEST(DefaultScenario, RenderIsNotConstant) {
   EXPECT_GT(sky, 0);
 }
 
+TEST(DefaultScenario, SkyNearTheHorizonIsBluishWhite) {
+  // The top rows of the default view are sky: blue at least equals red there (Preetham's
+  // horizon was pink-grey, mean R 0.257 against B 0.198 of its old unit).
+  const renderer::Scene scene = small_default_scene();
+  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+  Vec3 sum{};
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      ASSERT_EQ(film.object(x, y), 0u) << "not sky at " << x << ", " << y;
+      const float* p = &film.rgb_data()[3 * (static_cast<std::size_t>(y) * film.width() + x)];
+      sum += Vec3{p[0], p[1], p[2]};
+    }
+  EXPECT_GE(sum.z, sum.x);
+  EXPECT_LT(sum.z, 1.6 * sum.x);  // bluish white, not deep blue
+}
+
 TEST(DefaultScenario, SlopeFacingTheSunIsBrighterThanSlopeFacingAway) {
   const renderer::Scene scene = small_default_scene();
   const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
