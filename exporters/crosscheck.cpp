@@ -184,7 +184,9 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(o.spp)))));
   const std::string size = fmt::format("+W{} +H{} -D -V", view.width, view.height);
   r.povray_seconds = run_povray(
-      pov_dir, size + fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0", n));
+      pov_dir,
+      size +
+          fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1", n));
   run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1");
   const renderer::FloatImage pov = read_image(pov_dir / "pov.exr");
   const renderer::FloatImage mask = read_image(pov_dir / "mask.png");

@@ -19,6 +19,8 @@ std::string pov(const Vec3f& v) { return fmt::format("<{:.6g}, {:.6g}, {:.6g}>",
 std::string rgb(const Vec3f& c) {
   return fmt::format("rgb <{:.6g}, {:.6g}, {:.6g}>", c.x, c.y, c.z);
 }
+// A light's colour, in landsim's photometric units, times the file's exposure.
+std::string light(const Vec3f& c) { return rgb(c) + " * LS_Exposure"; }
 std::string colour_vector(const Vec3f& c) {
   return fmt::format("<{:.6g}, {:.6g}, {:.6g}>", c.x, c.y, c.z);
 }
@@ -162,9 +164,12 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
                         180.0 / std::numbers::pi;
     out.print("// landsim export: view {}\n#version 3.7;\n", sanitize_for_pov(view.name));
     out.print("#ifndef (LS_Mask) #declare LS_Mask = 0; #end\n");
+    // Lights are in cd/m2 and lux; POV-Ray writes what it computes, so an 8-bit image needs
+    // the exposure (LS_Exposure=1 on the command line keeps the photometric values, for EXR).
+    out.print("#ifndef (LS_Exposure) #declare LS_Exposure = {:.6g}; #end\n", o.exposure_gain);
     out.print("global_settings {{ assumed_gamma 1.0 max_trace_level 5\n");
     out.print("  #if (LS_Mask) ambient_light rgb 1 #else ambient_light {} #end }}\n",
-              rgb(o.ambient_irradiance / std::numbers::pi_v<float>));
+              light(o.ambient_irradiance / std::numbers::pi_v<float>));
     out.print("#include \"meshes.inc\"\n");
     out.print(
         "#macro LS_Texture(Class, Albedo)\n  #if (LS_Mask) texture {{ pigment {{ rgb Class }} "
@@ -177,12 +182,12 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
         pov(view.position), pov(view.target), aspect, hfov);
     const Vec3 sun = normalize(scene.sun.direction) * 1e7;
     out.print("#if (!LS_Mask)\nlight_source {{ {} color {} parallel point_at <0, 0, 0> }}\n",
-              pov(sun), rgb(scene.sun.irradiance / std::numbers::pi_v<float>));
+              pov(sun), light(scene.sun.irradiance / std::numbers::pi_v<float>));
     out.print("sky_sphere {{ pigment {{ gradient y color_map {{ [0 {}] [1 {}] }} }} }}\n",
-              rgb(o.sky_horizon), rgb(o.sky_zenith));
+              light(o.sky_horizon), light(o.sky_zenith));
     if (scene.haze.enabled) {
       out.print("fog {{ fog_type 1 distance {:.6g} color {} }}\n", scene.haze.visibility / 3.912,
-                rgb(o.fog_colour));
+                light(o.fog_colour));
     }
     out.print("#else\nbackground {{ rgb 0 }}\n#end\n");
     for (const auto& [id, indices] : ground_by_material(scene.ground)) {

@@ -19,6 +19,9 @@ struct PovExportOptions {
   Vec3f fog_colour{};
   Vec3f sky_zenith{};
   Vec3f sky_horizon{};
+  // The default of the file's LS_Exposure, which multiplies every light: landsim's units are
+  // cd/m2 and lux, POV-Ray's output is what it computes.
+  double exposure_gain = 1.0;
 };
 
 // Writes `dir`/scene.pov and `dir`/meshes.inc for `view`. Declaring LS_Mask=1 on the POV-Ray
