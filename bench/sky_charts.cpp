@@ -115,7 +115,8 @@ int chart(const std::string& out) {
     }
   }
   for (int row = 0; row < 3; ++row)
-    labels.push_back({4, kTop + row * (kDome + kGap) + kDome / 2, fmt::format("T {:g}", turbidities[row])});
+    labels.push_back(
+        {4, kTop + row * (kDome + kGap) + kDome / 2, fmt::format("T {:g}", turbidities[row])});
   // The domes are already exposed: EV100 -log2(1.2) is a gain of 1.
   renderer::write_preview_png(film, out, -std::log2(1.2), labels);
   return 0;
@@ -123,26 +124,29 @@ int chart(const std::string& out) {
 
 int horizon_table() {
   std::printf(
-      "| model | sun elevation | turbidity | azimuth from sun | x | y | CIE 1960 uv distance from "
-      "the daylight locus |\n|---|---|---|---|---|---|---|\n");
-  for (SkyKind kind : {SkyKind::hosek_wilkie, SkyKind::preetham})
-    for (double elevation : {10.0, 30.0, 50.0, 70.0})
-      for (double turbidity : {2.0, 4.0, 6.0})
-        for (double azimuth : {45.0, 90.0, 180.0}) {
+      "| sun elevation | turbidity | azimuth from sun | Hosek-Wilkie x, y | uv distance | "
+      "Preetham x, y | uv distance |\n|---|---|---|---|---|---|---|\n");
+  for (double elevation : {10.0, 30.0, 50.0, 70.0})
+    for (double turbidity : {2.0, 4.0, 6.0})
+      for (double azimuth : {45.0, 90.0, 180.0}) {
+        std::printf("| %g | %g | %g |", elevation, turbidity, azimuth);
+        for (SkyKind kind : {SkyKind::hosek_wilkie, SkyKind::preetham}) {
           const SkyAndSun s = setting(kind, elevation, turbidity);
           const renderer::SkyModel sky(s.sky, s.sun, kGroundAlbedo);
           // The sun is in the south (azimuth 180); this view is `azimuth` degrees from it.
           const Vec3 c(sky.radiance(Vec3f(toward(4.0, 180.0 + azimuth))));
           const renderer::Chromaticity xy = renderer::chromaticity_of(renderer::rec709_to_xyz(c));
-          std::printf("| %s | %g | %g | %g | %.4f | %.4f | %+.4f |\n", name_of(kind), elevation,
-                      turbidity, azimuth, xy.x, xy.y, renderer::daylight_locus_distance(xy));
+          std::printf(" %.4f, %.4f | %+.4f |", xy.x, xy.y, renderer::daylight_locus_distance(xy));
         }
+        std::printf("\n");
+      }
   return 0;
 }
 
 int illuminance() {
-  std::printf("| model | sun elevation | turbidity | sun (horizontal), lux | sky, lux | global, lux |\n"
-              "|---|---|---|---|---|---|\n");
+  std::printf(
+      "| model | sun elevation | turbidity | sun (horizontal), lux | sky, lux | global, lux |\n"
+      "|---|---|---|---|---|---|\n");
   for (SkyKind kind : {SkyKind::hosek_wilkie, SkyKind::preetham})
     for (double elevation : {10.0, 30.0, 60.0})
       for (double turbidity : {2.5, 4.0}) {

@@ -75,7 +75,8 @@ Vec3 HosekWilkieSky::radiance(double theta, double gamma) const {
   const double cos_gamma = std::cos(gamma);
   double out[3];
   for (int c = 0; c < 3; ++c) {
-    // The extended Perez formula (the 2012 paper's equation 9), parameters in file order.
+    // The extended Perez formula of the 2012 paper (its Mie term chi(H, gamma) and the
+    // zenith term I sqrt(cos theta) added to Perez), parameters in file order.
     const auto& k = parameters_[static_cast<std::size_t>(c)];
     const double a = k[0], b = k[1], cc = k[2], d = k[3], e = k[4], f = k[5], g = k[6], i = k[7],
                  h = k[8];

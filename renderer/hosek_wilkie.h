@@ -1,6 +1,6 @@
 #pragma once
 // The Hosek-Wilkie analytic sky (Hosek and Wilkie 2012, "An Analytic Model for Full Spectral
-// Sky-Dome Radiance", section 5: the extended Perez formula F(theta, gamma) and its
+// Sky-Dome Radiance": the extended Perez formula F(theta, gamma) and its
 // parameters as quintic Beziers in solar elevation, interpolated in turbidity and ground
 // albedo) and solar radiance function (Hosek and Wilkie 2013, "Adding a Solar-Radiance
 // Function to the Hosek-Wilkie Skylight Model": piecewise cubics in solar elevation per
