@@ -148,6 +148,39 @@ TEST(Scenario, DegradationKeysAreReadAndChecked) {
             std::string::npos);
 }
 
+TEST(Scenario, ExposureIsAutoOrAnEv100) {
+  TempDir dir;
+  EXPECT_FALSE(load_scenario(dir.write("a.toml", scenario_text())).render.exposure_ev100);
+  EXPECT_FALSE(load_scenario(dir.write("b.toml", scenario_text("", "", "exposure = \"auto\"")))
+                   .render.exposure_ev100);
+  EXPECT_EQ(load_scenario(dir.write("c.toml", scenario_text("", "", "exposure = 14")))
+                .render.exposure_ev100,
+            14.0);
+  const std::string word = error_of(scenario_text("", "", "exposure = \"bright\""));
+  EXPECT_NE(word.find("scene.toml:14:12:"), std::string::npos) << word;
+  EXPECT_NE(word.find("[render] exposure: expected \"auto\" or an EV100 from -6 to 24, got "
+                      "\"bright\""),
+            std::string::npos)
+      << word;
+  EXPECT_NE(error_of(scenario_text("", "", "exposure = 30")).find("got 30"), std::string::npos);
+}
+
+TEST(Scenario, SkyModelsAndTheirTurbidityRanges) {
+  TempDir dir;
+  const auto sky = [&](const std::string& name, const std::string& table) {
+    return load_scenario(dir.write(name, scenario_text() + "\n[sky]\n" + table)).sky;
+  };
+  EXPECT_EQ(load_scenario(dir.write("d.toml", scenario_text())).sky.model,
+            renderer::SkyKind::hosek_wilkie);
+  EXPECT_EQ(sky("p.toml", "model = \"preetham\"").model, renderer::SkyKind::preetham);
+  EXPECT_EQ(sky("h.toml", "turbidity = 1.2").turbidity, 1.2);  // Hosek-Wilkie spans 1-10
+  const std::string low =
+      error_of(scenario_text() + "\n[sky]\nmodel = \"preetham\"\nturbidity = 1.2");
+  EXPECT_NE(low.find("[sky] turbidity"), std::string::npos) << low;
+  EXPECT_NE(error_of(scenario_text() + "\n[sky]\nmodel = \"perez\"").find("hosek-wilkie"),
+            std::string::npos);
+}
+
 TEST(Scenario, OutOfRangeNumbersAreRefused) {
   EXPECT_NE(error_of(scenario_text("", "fov = 180")).find("[views \"a\"] fov"), std::string::npos);
   std::string sun_below = scenario_text();
