@@ -11,3 +11,19 @@ function(landsim_embed_file out_cpp input symbol ns)
     COMMENT "Embedding ${input}"
     VERBATIM)
 endfunction()
+
+# landsim_embed_files(OUT_LIST NAMESPACE BASE "relative/path|Symbol" ...): landsim_embed_file
+# for each pair (a path relative to BASE and the symbol that holds it); the generated sources
+# are returned in OUT_LIST.
+function(landsim_embed_files out_list ns base)
+  set(sources "")
+  foreach(pair ${ARGN})
+    string(REPLACE "|" ";" parts "${pair}")
+    list(GET parts 0 relative)
+    list(GET parts 1 symbol)
+    set(out ${CMAKE_CURRENT_BINARY_DIR}/embedded_${symbol}.cpp)
+    landsim_embed_file(${out} ${base}/${relative} ${symbol} ${ns})
+    list(APPEND sources ${out})
+  endforeach()
+  set(${out_list} ${sources} PARENT_SCOPE)
+endfunction()

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "featuremaps/cover.h"
 #include "featuremaps/vegetation_map.h"
 #include "renderer/scene.h"
 #include "terrain/dem_loader.h"
@@ -43,7 +44,7 @@ struct RenderSection {
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
   int max_bounces = 4;
-  std::optional<double> exposure_ev100;  // empty: "auto"
+  std::optional<double> exposure_ev100;          // empty: "auto"
   std::vector<double> frames{0.0};               // seconds; wind sway is evaluated at each
   double checkpoint_seconds = 60.0;              // 0: no checkpoints
   trees::Season season = trees::Season::summer;  // winter: leafless
@@ -70,7 +71,8 @@ struct FeatureMapSettings {
 };
 
 struct GrassSettings {
-  int type = 1;  // 1-3, the vegetation map's bits 14-15
+  int type = 1;                             // 1-3, the vegetation map's bits 14-15
+  std::optional<featuremaps::Cover> cover;  // where it grows besides the feature map
   double density_per_m2 = 150.0;
   double blade_length = 0.3;
   double blade_width = 0.004;
@@ -88,6 +90,7 @@ struct GroundMaterials {
 
 struct SpeciesSettings {
   int bit = 0;
+  std::optional<featuremaps::Cover> cover;  // where it grows besides the feature map
   trees::Species species;
   int variants = 4;
   double density_per_ha = 200.0;
@@ -100,6 +103,10 @@ struct SpeciesSettings {
   double age_min = -1.0, age_max = -1.0;
   std::string bark_texture;  // resolved path of an image, or empty
 };
+
+struct Scenario;
+// Whether any [[species]] or [[grass]] has a cover (and so needs no feature map).
+bool has_cover(const Scenario& s);
 
 struct Scenario {
   std::string source;     // the file it came from, for messages

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
@@ -320,6 +321,71 @@ void read_age(TableReader& r, const toml::table& t, SpeciesSettings& s) {
   }
 }
 
+// cover = "everywhere" | a fraction in (0, 1] | { rectangle = [x0, y0, x1, y1] } |
+// { polygon = [[x, y], ...] }, terrain coordinates.
+featuremaps::Cover read_cover(TableReader& r) {
+  constexpr const char* kExpected =
+      "expected \"everywhere\", a fraction of the terrain in (0, 1], { rectangle = [west, "
+      "south, east, north] } or { polygon = [[x, y], ...] } in terrain coordinates";
+  const toml::node* n = r.value("cover", kExpected);
+  featuremaps::Cover c;
+  if (const auto* s = n->as_string()) {
+    if (s->get() != "everywhere")
+      r.fail_at(*n, "cover", std::string(kExpected) + ", got \"" + s->get() + "\"");
+    return c;
+  }
+  if (n->is_number()) {
+    c.kind = featuremaps::Cover::Kind::fraction;
+    c.fraction = n->value<double>().value_or(0.0);
+    if (!(c.fraction > 0.0 && c.fraction <= 1.0))
+      r.fail_at(*n, "cover", fmt::format("{}, got {}", kExpected, c.fraction));
+    return c;
+  }
+  const toml::table* t = n->as_table();
+  if (t == nullptr || t->size() != 1 || !(t->contains("rectangle") || t->contains("polygon")))
+    r.fail_at(*n, "cover", kExpected);
+  c.kind = featuremaps::Cover::Kind::polygon;
+  const toml::array* a = t->get_as<toml::array>(t->contains("rectangle") ? "rectangle" : "polygon");
+  const auto number = [&](const toml::node* v) {
+    if (v == nullptr || !v->is_number()) r.fail_at(*n, "cover", kExpected);
+    return v->value<double>().value_or(0.0);
+  };
+  if (a == nullptr) r.fail_at(*n, "cover", kExpected);
+  if (t->contains("rectangle")) {
+    if (a->size() != 4) r.fail_at(*n, "cover", "rectangle: expected [west, south, east, north]");
+    const double w = number(a->get(0)), s = number(a->get(1)), e = number(a->get(2)),
+                 no = number(a->get(3));
+    if (!(e > w && no > s))
+      r.fail_at(*n, "cover", "rectangle: expected east > west and north > south");
+    c.polygon = {{w, s}, {e, s}, {e, no}, {w, no}};
+    return c;
+  }
+  for (const toml::node& v : *a) {
+    const toml::array* p = v.as_array();
+    if (p == nullptr || p->size() != 2) r.fail_at(*n, "cover", "polygon: expected [[x, y], ...]");
+    c.polygon.push_back({number(p->get(0)), number(p->get(1))});
+  }
+  if (c.polygon.size() < 3) r.fail_at(*n, "cover", "polygon: expected at least 3 corners");
+  return c;
+}
+
+// Fraction covers share the terrain out: together at most all of it.
+template <typename Settings>
+void check_fractions(const std::vector<Settings>& items, const toml::array& tables,
+                     const std::string& name, const std::string& file) {
+  double total = 0.0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (!items[i].cover || items[i].cover->kind != featuremaps::Cover::Kind::fraction) continue;
+    total += items[i].cover->fraction;
+    if (total > 1.0 + 1e-9) {
+      TableReader r(*tables.get(i)->as_table(), name + "[" + std::to_string(i) + "]", file);
+      r.fail("cover", fmt::format("the fractions of the [[{}]] covers add up to {:.3g}; "
+                                  "expected at most 1 (they share the terrain out)",
+                                  name, total));
+    }
+  }
+}
+
 std::vector<SpeciesSettings> read_species(const toml::table& root, const std::string& file,
                                           const std::string& base_dir) {
   std::vector<SpeciesSettings> out;
@@ -354,9 +420,11 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     r.allow("bark_texture");
     read_age(r, *a->get(i)->as_table(), s);
     s.evergreen = r.boolean("evergreen", false);
+    if (r.has("cover")) s.cover = read_cover(r);
     r.finish();
     out.push_back(std::move(s));
   }
+  check_fractions(out, *a, "species", file);
   return out;
 }
 
@@ -376,9 +444,11 @@ std::vector<GrassSettings> read_grass(const toml::table& root, const std::string
     g.blade_width = r.number("blade_width", Range{0.0005, 0.05}, 0.004);
     g.curvature = r.number("curvature", Range{0.0, 1.0}, 0.3);
     g.colour = to_vec3f(r.vec3("colour", kUnit, Vec3{0.10, 0.22, 0.05}));
+    if (r.has("cover")) g.cover = read_cover(r);
     r.finish();
     out.push_back(g);
   }
+  check_fractions(out, *a, "grass", file);
   return out;
 }
 
@@ -449,27 +519,39 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.species = read_species(root, source, base_dir);
   s.grass = read_grass(root, source);
   s.ground = read_ground(root, source);
-  // Where the first [[grass]] or [[species]] table stands, for the messages below.
-  const auto where = [&](std::string_view key) {
+  // Where the i-th [[grass]] or [[species]] table stands, for the messages below.
+  const auto where = [&](std::string_view key, std::size_t i) {
     const toml::array* a = root.get(key) != nullptr ? root.get(key)->as_array() : nullptr;
-    const toml::node* first = a != nullptr && !a->empty() ? a->get(0) : root.get(key);
+    const toml::node* first = a != nullptr && a->size() > i ? a->get(i) : root.get(key);
     const auto& b = first->source().begin;
     return source + ":" + std::to_string(b.line) + ":" + std::to_string(b.column);
   };
-  if (!s.grass.empty() && !s.featuremaps) {
-    throw InputError(where("grass") + ": [[grass]] needs [featuremaps] to say where it grows");
-  }
-  if (!s.species.empty() && !s.featuremaps) {
-    throw InputError(where("species") +
-                     ": [[species]] need [featuremaps] (vegetation, or classes with class_map) to "
-                     "say where they grow");
-  }
+  // Vegetation grows where a feature map or its own cover says; with neither it would grow
+  // nowhere.
+  const bool maps =
+      s.featuremaps && (!s.featuremaps->vegetation.empty() || !s.featuremaps->classes.empty());
+  for (std::size_t i = 0; i < s.grass.size() && !maps; ++i)
+    if (!s.grass[i].cover)
+      throw InputError(where("grass", i) + ": [[grass]] type " + std::to_string(s.grass[i].type) +
+                       " grows nowhere: give it a cover (\"everywhere\", a fraction, a "
+                       "rectangle or a polygon) or add [featuremaps] vegetation or classes");
+  for (std::size_t i = 0; i < s.species.size() && !maps; ++i)
+    if (!s.species[i].cover)
+      throw InputError(where("species", i) + ": [[species]] bit " +
+                       std::to_string(s.species[i].bit) +
+                       " grows nowhere: give it a cover (\"everywhere\", a fraction, a "
+                       "rectangle or a polygon) or add [featuremaps] vegetation or classes");
   s.views = read_views(root, source);
   s.render = read_render(sub_table(root, "render", source, false), source);
   s.wind = read_wind(sub_table(root, "wind", source, false), source);
   s.sky = read_sky(sub_table(root, "sky", source, false), source);
   s.haze = read_haze(root, source);
   return s;
+}
+
+bool has_cover(const Scenario& s) {
+  return std::any_of(s.species.begin(), s.species.end(), [](const auto& k) { return k.cover; }) ||
+         std::any_of(s.grass.begin(), s.grass.end(), [](const auto& g) { return g.cover; });
 }
 
 Scenario load_scenario(const std::filesystem::path& file) {

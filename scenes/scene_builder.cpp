@@ -89,7 +89,7 @@ MaterialRaster material_raster(const std::string& path) {
 // Ground materials per triangle, by priority: road, water, rock, soil, then the grass tint.
 void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* map,
                           const terrain::ElevationGrid& grid, renderer::Scene& scene) {
-  const FeatureMapSettings& f = *s.featuremaps;
+  const FeatureMapSettings f = s.featuremaps.value_or(FeatureMapSettings{});
   const std::array<MaterialRaster, 4> rasters{material_raster(f.road), material_raster(f.water),
                                               material_raster(f.rock), material_raster(f.soil)};
   renderer::Ground& ground = scene.ground;
@@ -165,7 +165,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;
-  if (scenario.featuremaps) {
+  if (scenario.featuremaps || has_cover(scenario)) {
     const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(scenario, grid);
     if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, time, reuse, scene);
     if (map && !scenario.grass.empty())

@@ -38,19 +38,21 @@ void check_overlap(const featuremaps::VegetationMap& map, const terrain::Elevati
 
 std::optional<featuremaps::VegetationMap> scene_vegetation(const Scenario& s,
                                                            const terrain::ElevationGrid& grid) {
-  if (!s.featuremaps) return std::nullopt;
-  const FeatureMapSettings& f = *s.featuremaps;
-  if (f.vegetation.empty() && f.classes.empty()) {
-    if (!s.species.empty() || !s.grass.empty())
-      throw InputError(s.source +
-                       ": [[species]] and [[grass]] need [featuremaps] vegetation or classes");
-    return std::nullopt;
+  std::optional<featuremaps::VegetationMap> map;
+  if (s.featuremaps && (!s.featuremaps->vegetation.empty() || !s.featuremaps->classes.empty())) {
+    const FeatureMapSettings& f = *s.featuremaps;
+    map = vegetation_map(f, s.render.seed);
+    check_overlap(*map, grid, f.vegetation.empty() ? f.classes : f.vegetation);
+    if (const std::size_t multi = map->multi_species_cells(); multi > 0)
+      spdlog::warn("{} feature-map cells select several tree species; the lowest bit wins", multi);
   }
-  featuremaps::VegetationMap map = vegetation_map(f, s.render.seed);
-  check_overlap(map, grid, f.vegetation.empty() ? f.classes : f.vegetation);
-  if (const std::size_t multi = map.multi_species_cells(); multi > 0)
-    spdlog::warn("{} feature-map cells select several tree species; the lowest bit wins", multi);
-  return map;
+  // Covers fill in where the feature map (if any) selects nothing, in file order.
+  std::vector<featuremaps::CoverRequest> trees, grass;
+  for (const SpeciesSettings& k : s.species)
+    if (k.cover) trees.push_back({k.bit, *k.cover});
+  for (const GrassSettings& g : s.grass)
+    if (g.cover) grass.push_back({g.type, *g.cover});
+  return featuremaps::covered_map(map, grid, trees, grass, s.render.seed);
 }
 
 }  // namespace landsim::scenes::detail

@@ -10,8 +10,9 @@
 
 namespace landsim::scenes::detail {
 
-// Empty when the scenario names no feature map; InputError when it has species or grass but
-// no map, or when the map misses the terrain.
+// The vegetation map of the scene: the feature map (vegetation, or classes through the class
+// map) with the species' and grass types' covers added (featuremaps/cover.h); empty when there
+// is neither. InputError when the feature map misses the terrain.
 std::optional<featuremaps::VegetationMap> scene_vegetation(const Scenario& s,
                                                            const terrain::ElevationGrid& grid);
 

@@ -37,6 +37,13 @@ std::string scenario(const std::string& terrain_extra, const std::string& view_e
          view_extra + "\n[render]\n" + render + "\n";
 }
 
+// A [[species]] entry of the quaking aspen, with `extra` lines.
+std::string aspen_entry(const std::string& extra) {
+  return "\n[[species]]\nbit = 0\nfile = \"" +
+         testing::source_file("data/species/quaking_aspen.toml").string() +
+         "\"\nvariants = 1\ndensity_per_ha = 40\n" + extra + "\n";
+}
+
 bool has_files(const std::filesystem::path& dir) {
   return std::filesystem::exists(dir) && !std::filesystem::is_empty(dir);
 }
@@ -60,6 +67,14 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
            .replace(scenario("", "", "spp = 2").find("width = 32"), 10, "width = 0"),
        "width"},
       {"negative spp", scenario("", "", "spp = -1"), "spp"},
+      {"species growing nowhere", scenario("", "", "spp = 2") + aspen_entry(""),
+       "[[species]] bit 0 grows nowhere"},
+      {"cover fractions over 1",
+       scenario("", "", "spp = 2") + aspen_entry("cover = 0.7") +
+           aspen_entry("cover = 0.5").replace(aspen_entry("").find("bit = 0"), 7, "bit = 1"),
+       "[species[1]] cover: the fractions"},
+      {"unknown cover", scenario("", "", "spp = 2") + aspen_entry("cover = \"all\""),
+       "[species[0]] cover: expected \"everywhere\""},
   };
   for (const BadScenario& c : cases) {
     TempDir dir;
@@ -74,6 +89,23 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
     EXPECT_FALSE(has_files(out)) << c.name;
     EXPECT_TRUE(r.out.empty()) << c.name;
   }
+}
+
+TEST(Cli, CoverEverywherePlacesTreesAtTheDensityAskedWithoutRasters) {
+  TempDir dir;
+  const auto file = dir.write(
+      "cover.toml", scenario("", "", "spp = 1") + aspen_entry("cover = \"everywhere\"") +
+                        "[[grass]]\ntype = 1\ncover = { rectangle = [0.0, 0.0, 100.0, 100.0] }\n");
+  const Result r = run("info " + file.string() + " --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  // The volcano grid: 61 x 87 cells of 10 m, 53.07 ha; 40 trees per hectare.
+  EXPECT_NEAR(json["instances"].get<double>(), 53.07 * 40.0, 0.01 * 53.07 * 40.0);
+  // Grass on the 100 m square: 625 tiles of 4 m, the square resolved at the terrain's 10 m
+  // cells (a cell's centre decides) and the tiles' centres.
+  EXPECT_NEAR(json["grass_tiles"].get<double>(), 625.0, 0.15 * 625.0);
+  const Result render = run("render " + file.string() + " --out " + (dir / "o").string(), dir);
+  EXPECT_EQ(render.exit_code, 0) << render.err;
 }
 
 TEST(Cli, BadCommandLineValuesExitTwo) {
@@ -464,7 +496,8 @@ TEST(Cli, LateScenarioErrorsNameTheLine) {
   const auto no_map = dir.write("n.toml", scenario("", "", "spp = 1") + species);
   const Result n = run("info " + no_map.string(), dir);
   EXPECT_EQ(n.exit_code, 2);
-  EXPECT_TRUE(std::regex_search(n.err, std::regex(R"(n\.toml:\d+:\d+: \[\[species\]\] need)")))
+  EXPECT_TRUE(std::regex_search(
+      n.err, std::regex(R"(n\.toml:\d+:\d+: \[\[species\]\] bit 0 grows nowhere)")))
       << n.err;
   const auto spaced = dir.write(
       "s.toml", scenario("", "", "spp = 1") + species +

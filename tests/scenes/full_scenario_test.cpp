@@ -66,6 +66,7 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "[[grass]]\ntype = 1\ndensity_per_m2 = 50\nblade_length = 0.2\nblade_width = "
          "0.003\ncurvature = 0.5\n"
          "colour = [0.1, 0.3, 0.05]\n\n"
+         "[[grass]]\ntype = 3\ncover = { rectangle = [0.0, 0.0, 50.0, 50.0] }\n\n"
          "[ground]\nsoil = [0.3, 0.2, 0.1]\nrock = [0.4, 0.4, 0.4]\nwater = [0.01, 0.02, "
          "0.03]\nroad = [0.1, 0.1, 0.1]\n\n"
          "[wind]\nspeed = 4.0\ngust = 2.0\n\n"
@@ -123,8 +124,12 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(s.species[0].variants, 2);
   EXPECT_DOUBLE_EQ(s.species[0].min_spacing, 3.0);
   EXPECT_EQ(s.species[0].species.name, "palm");
-  ASSERT_EQ(s.grass.size(), 1u);
+  ASSERT_EQ(s.grass.size(), 2u);
   EXPECT_DOUBLE_EQ(s.grass[0].curvature, 0.5);
+  EXPECT_FALSE(s.grass[0].cover);
+  ASSERT_TRUE(s.grass[1].cover);
+  EXPECT_EQ(s.grass[1].cover->polygon.size(), 4u);  // the rectangle's corners
+  EXPECT_EQ(s.grass[1].cover->polygon[2], (std::array<double, 2>{50.0, 50.0}));
   EXPECT_FLOAT_EQ(s.ground.rock.x, 0.4f);
   EXPECT_DOUBLE_EQ(s.wind.gust, 2.0);
   EXPECT_EQ(s.render.frames, (std::vector<double>{0.0, 1.5}));
