@@ -13,6 +13,7 @@
 #include "renderer/grass_patch.h"
 #include "renderer/image_io.h"
 #include "renderer/memory_model.h"
+#include "scenes/detail/camera_check.h"
 #include "scenes/detail/grass_cover.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
@@ -164,6 +165,7 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
       resident_bytes() +
       (renderer::image_io_loaded() ? std::size_t{0} : static_cast<std::size_t>(mm::kImageModule));
   const terrain::ElevationGrid grid = terrain::load_elevation(s.terrain.elevation, s.terrain.dem);
+  detail::warn_cameras_below_ground(s, grid);
   const Vec3 origin = grid.centre();
   const GroundSize ground = ground_size(grid);
   Parts p;

@@ -32,8 +32,9 @@ struct SunSettings {
 
 struct ViewSettings {
   std::string name;
-  Vec3 position;  // terrain coordinates
-  Vec3 target;    // terrain coordinates
+  std::string location;  // "file:line:column" of its position, for messages
+  Vec3 position;         // terrain coordinates
+  Vec3 target;           // terrain coordinates
   double fov_y_deg = 40.0;
   int width = 640;
   int height = 360;
@@ -71,6 +72,7 @@ struct FeatureMapSettings {
 };
 
 struct GrassSettings {
+  std::string location;                     // "file:line:column" of its table, for messages
   int type = 1;                             // 1-3, the vegetation map's bits 14-15
   std::optional<featuremaps::Cover> cover;  // where it grows besides the feature map
   double density_per_m2 = 150.0;
@@ -89,6 +91,7 @@ struct GroundMaterials {
 };
 
 struct SpeciesSettings {
+  std::string location;  // "file:line:column" of its table, for messages
   int bit = 0;
   std::optional<featuremaps::Cover> cover;  // where it grows besides the feature map
   trees::Species species;

@@ -188,6 +188,8 @@ std::vector<ViewSettings> read_views(const toml::table& root, const std::string&
     const std::optional<std::string> text = name ? name->value<std::string>() : std::nullopt;
     const std::string path = text ? "views \"" + *text + "\"" : "views[" + std::to_string(i) + "]";
     views.push_back(read_view(*a->get(i)->as_table(), path, file));
+    const TableReader located(*a->get(i)->as_table(), path, file);
+    views.back().location = located.location(a->get(i)->as_table()->get("position"));
     if (!names.insert(views.back().name).second) {
       TableReader(*a->get(i)->as_table(), path, file)
           .fail("name", "duplicate view name \"" + views.back().name + "\"");
@@ -395,6 +397,7 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
   for (std::size_t i = 0; i < a->size(); ++i) {
     TableReader r(*a->get(i)->as_table(), "species[" + std::to_string(i) + "]", file);
     SpeciesSettings s;
+    s.location = r.location(nullptr);
     s.bit = static_cast<int>(r.integer("bit", 0, featuremaps::kTreeBits - 1));
     if (!bits.insert(s.bit).second)
       r.fail("bit", "species bit " + std::to_string(s.bit) + " is used twice");
@@ -436,6 +439,7 @@ std::vector<GrassSettings> read_grass(const toml::table& root, const std::string
   for (std::size_t i = 0; i < a->size(); ++i) {
     TableReader r(*a->get(i)->as_table(), "grass[" + std::to_string(i) + "]", file);
     GrassSettings g;
+    g.location = r.location(nullptr);
     g.type = static_cast<int>(r.integer("type", 1, 3));
     if (!types.insert(g.type).second)
       r.fail("type", "grass type " + std::to_string(g.type) + " is defined twice");

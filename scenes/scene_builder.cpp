@@ -12,6 +12,7 @@
 #include "featuremaps/placement.h"
 #include "renderer/bark_texture.h"
 #include "renderer/sky.h"
+#include "scenes/detail/camera_check.h"
 #include "scenes/detail/grass_cover.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
@@ -156,6 +157,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.haze = scenario.haze;
   scene.haze.base_height =
       grid.min_height() - scene.origin.z;  // the visibility holds at the lowest ground
+  detail::warn_cameras_below_ground(scenario, grid);
   for (const ViewSettings& v : scenario.views) {
     scene.views.push_back({v.name, v.position - scene.origin, v.target - scene.origin, v.fov_y_deg,
                            v.width, v.height});

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/input_error.h"
+#include "core/input_warnings.h"
 #include "params/table_reader.h"
 #include "trees/graph_paths/parameters.h"
 #include "trees/harmonic/generator.h"
@@ -86,6 +87,32 @@ Species parse_species_toml(std::string_view text, const std::string& source,
   return s;
 }
 
+// Arbaro fills a missing <param> with its default without a word, and so does the reader;
+// but a file missing Levels or 1DownAngle is a different tree (5,429 stems became 247). The
+// parameters that shape this tree (Weber & Penn's Table 1, for the levels it has) and were
+// not given are named once. Arbaro's own additions (ZScale, LeafQuality, nBranchDist, ...)
+// and parameters whose default switches a feature off (pruning, lobes) are not: Arbaro's
+// example files leave them out routinely.
+void warn_arbaro_defaults(const ParamTable& given, const weber_penn::Parameters& p,
+                          const std::string& source) {
+  std::vector<std::string> wanted = {"Shape", "BaseSize",   "Scale",  "Levels",
+                                     "Ratio", "RatioPower", "0Scale", "Leaves"};
+  if (p.leaves != 0) wanted.insert(wanted.end(), {"LeafScale", "LeafScaleX"});
+  for (int n = 0; n < std::min(p.levels, 4); ++n) {
+    const std::string l = std::to_string(n);
+    for (const char* k : {"Length", "Taper", "CurveRes", "Curve"}) wanted.push_back(l + k);
+    if (n > 0)
+      for (const char* k : {"DownAngle", "Rotate", "Branches"}) wanted.push_back(l + k);
+  }
+  std::string missing;
+  int count = 0;
+  for (const std::string& name : wanted)
+    if (given.count(name) == 0) missing += (count++ == 0 ? "" : ", ") + name;
+  if (count > 0)
+    warn_input(source + ": " + std::to_string(count) +
+               " parameters not given, Arbaro's defaults used: " + missing);
+}
+
 Species parse_arbaro_xml(std::string_view text, const std::string& source) {
   pugi::xml_document doc;
   const pugi::xml_parse_result ok = doc.load_buffer(text.data(), text.size());
@@ -110,7 +137,9 @@ Species parse_arbaro_xml(std::string_view text, const std::string& source) {
     if (name.empty()) throw InputError(raw.where + ": <param> without a name");
     params.emplace(name, raw);
   }
-  s.parameters = weber_penn::parse_parameters(params, source);
+  const weber_penn::Parameters parameters = weber_penn::parse_parameters(params, source);
+  warn_arbaro_defaults(params, parameters, source);
+  s.parameters = parameters;
   return s;
 }
 

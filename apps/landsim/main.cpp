@@ -12,6 +12,7 @@
 
 #include "command.h"
 #include "core/input_error.h"
+#include "core/input_warnings.h"
 #include "core/module_loader.h"
 #include "crosscheck_command.h"
 #include "degrade_command.h"
@@ -47,6 +48,11 @@ int main(int argc, char** argv) {
   CLI::App app{"landsim: ray-traced landscape renderer for scene simulation"};
   app.set_version_flag("--version", std::string("landsim ") + LANDSIM_VERSION);
   app.require_subcommand(1);
+  // --strict anywhere on the line (before or after the command): warnings become errors.
+  bool strict = false;
+  app.add_flag("--strict", strict,
+               "Refuse input that would only be warned about (a silent wrong scene): exit 2");
+  app.fallthrough();
   namespace cmd = landsim::app;
   const std::vector<cmd::Command> commands = {
       cmd::command(app, cmd::add_render_command, cmd::run_render),
@@ -86,6 +92,8 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
+  landsim::input_warnings().strict = strict;
+  landsim::input_warnings().sink = [](const std::string& m) { spdlog::warn("{}", m); };
   try {
     for (const cmd::Command& c : commands)
       if (c.cli->parsed()) return c.run();

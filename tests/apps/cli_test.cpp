@@ -108,6 +108,62 @@ TEST(Cli, CoverEverywherePlacesTreesAtTheDensityAskedWithoutRasters) {
   EXPECT_EQ(render.exit_code, 0) << render.err;
 }
 
+// Silent wrong scenes warn once, naming the file (and line), and --strict refuses them.
+TEST(Cli, SilentWrongScenesWarnAndStrictRefusesThem) {
+  TempDir dir;
+  // The volcano's class map selects species bits 0 and 1 and grass types 1 and 2; only bit 0
+  // and grass 1 are defined here.
+  const std::string maps = "[featuremaps]\nclasses = \"" +
+                           testing::source_file("data/featuremaps/volcano_landcover.asc").string() +
+                           "\"\nclass_map = \"" +
+                           testing::source_file("scenes/examples/volcano_classes.toml").string() +
+                           "\"\n";
+  std::string text = scenario("", "", "spp = 1") + aspen_entry("") + "[[grass]]\ntype = 1\n";
+  text.insert(text.find("[sun]"), maps);
+  const auto file = dir.write("w.toml", text);
+  const Result r = run("render " + file.string() + " --out " + (dir / "a").string(), dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("volcano_classes.toml: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("select species bit 1, but no [[species]] has bit = 1"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("select grass type 2, but no [[grass]] has type = 2"), std::string::npos)
+      << r.err;
+  const Result strict =
+      run("render " + file.string() + " --strict --out " + (dir / "b").string(), dir);
+  EXPECT_EQ(strict.exit_code, 2);
+  EXPECT_NE(strict.err.find("(refused: --strict)"), std::string::npos) << strict.err;
+  EXPECT_FALSE(has_files(dir / "b"));
+
+  // A camera 40 m under the ground.
+  std::string under = scenario("", "", "spp = 1");
+  under.replace(under.find("position = [500.0, 900.0, 330.0]"), 32,
+                "position = [300.0, 400.0, 100.0]");
+  const auto u = dir.write("u.toml", under);
+  const Result below = run("info " + u.string(), dir);
+  EXPECT_EQ(below.exit_code, 0);
+  EXPECT_TRUE(std::regex_search(
+      below.err,
+      std::regex(
+          R"(u\.toml:\d+:\d+: \[views "v"\] position: the camera is [0-9.]+ m below the ground)")))
+      << below.err;
+  EXPECT_EQ(run("info " + u.string() + " --strict", dir).exit_code, 2);
+
+  // An Arbaro file without Levels and 1DownAngle.
+  std::string xml = testing::read_file(testing::source_file("data/species/quaking_aspen.xml"));
+  for (const std::string name : {"Levels", "1DownAngle"}) {
+    const std::size_t at = xml.find("<param name='" + name + "'");
+    xml.erase(at, xml.find('\n', at) - at);
+  }
+  const auto species = dir.write("aspen.xml", xml);
+  const Result tree = run("tree " + species.string() + " --json", dir);
+  EXPECT_EQ(tree.exit_code, 0);
+  EXPECT_NE(tree.err.find("aspen.xml: 2 parameters not given, Arbaro's defaults used: Levels, "
+                          "1DownAngle"),
+            std::string::npos)
+      << tree.err;
+  EXPECT_EQ(run("tree " + species.string() + " --strict", dir).exit_code, 2);
+}
+
 TEST(Cli, BadCommandLineValuesExitTwo) {
   TempDir dir;
   EXPECT_EQ(run("render --spp -3", dir).exit_code, 2);
