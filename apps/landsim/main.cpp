@@ -22,6 +22,7 @@
 #include "featuremap_command.h"
 #include "grow_command.h"
 #include "info_command.h"
+#include "init_command.h"
 #include "mpi_session.h"
 #include "params/table_reader.h"
 #include "plate_command.h"
@@ -66,6 +67,7 @@ int main(int argc, char** argv) {
       cmd::command(app, cmd::add_grow_command, cmd::run_grow),
       cmd::command(app, cmd::add_degrade_command, cmd::run_degrade),
       cmd::command(app, cmd::add_plate_command, cmd::run_plate),
+      cmd::command(app, cmd::add_init_command, cmd::run_init),
   };
 
   // A misspelt command: say which one was probably meant (CLI11 would only ask for one).

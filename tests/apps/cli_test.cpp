@@ -164,6 +164,34 @@ TEST(Cli, SilentWrongScenesWarnAndStrictRefusesThem) {
   EXPECT_EQ(run("tree " + species.string() + " --strict", dir).exit_code, 2);
 }
 
+TEST(Cli, InitWritesAScenarioThatRendersWhereverItIs) {
+  TempDir dir;
+  const auto starter = dir / "my scene";
+  const Result r = run("init \"" + starter.string() + "\"", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(starter / "scenario.toml"));
+  // Moved elsewhere, it still renders (every path is relative to the scenario), without a
+  // warning.
+  const auto moved = dir / "elsewhere";
+  std::filesystem::rename(starter, moved);
+  const Result render = run("render " + (moved / "scenario.toml").string() +
+                                " --strict --spp 1 --width 64 --out " + (dir / "out").string(),
+                            dir);
+  EXPECT_EQ(render.exit_code, 0) << render.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "crater.exr"));
+  const auto info =
+      nlohmann::json::parse(run("info " + (moved / "scenario.toml").string() + " --json", dir).out);
+  EXPECT_GT(info["instances"].get<double>(), 1000.0);  // its trees and grass are placed
+  EXPECT_GT(info["grass_tiles"].get<double>(), 1000.0);
+  // A folder that is not empty is refused, and left as it was.
+  const Result again = run("init " + moved.string(), dir);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("not an empty folder"), std::string::npos) << again.err;
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()),
+                          std::filesystem::directory_iterator()),
+            2);  // elsewhere and out: no partial folder left beside them
+}
+
 TEST(Cli, BadCommandLineValuesExitTwo) {
   TempDir dir;
   EXPECT_EQ(run("render --spp -3", dir).exit_code, 2);
