@@ -9,7 +9,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 build/bin/landsim render bench/scenarios/bare_volcano.toml --out "$tmp/landsim" --threads 2 --json 2> /dev/null \
   | sed 's/.*"seconds":\([0-9.]*\).*"rays_per_second":\([0-9.e+]*\).*/landsim: \1 s, \2 rays\/s/; s/.*"rays_per_second":\([0-9.e+]*\).*"seconds":\([0-9.]*\).*/landsim: \2 s, \1 rays\/s/'
-cmd=$(build/bin/landsim export-obj bench/scenarios/bare_volcano.toml --out "$tmp/scene.obj" 2> /dev/null)
+cmd=$(build/bin/landsim export-obj bench/scenarios/bare_volcano.toml --out "$tmp/scene.obj" --flatten --frame scene --print-pathtracer 2> /dev/null)
 start=$(date +%s.%N)
 # Sun (22 degrees up, azimuth 285) as a distant light of the sun's 0.53 degree disc, sky as
 # an ambient light, paths of up to 5 vertices like landsim's 4 bounces.

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/atomic_file.h"
+#include "core/input_error.h"
 
 namespace landsim::exporters {
 namespace {
@@ -99,52 +100,133 @@ void write_obj(const trees::TreeGeometry& geometry, const std::filesystem::path&
   out.commit();
 }
 
-void write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& path,
-                     std::size_t max_trees, const Vec3& near) {
+namespace {
+
+// The instances to export: the `max` nearest `near`, nearest first.
+std::vector<std::size_t> nearest_instances(const renderer::Scene& scene, std::size_t max,
+                                           const Vec3& near) {
+  std::vector<std::size_t> order(scene.instances.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const std::size_t n = std::min(max, order.size());
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(n), order.end(),
+                    [&](std::size_t a, std::size_t b) {
+                      return length(scene.instances[a].position - near) <
+                             length(scene.instances[b].position - near);
+                    });
+  order.resize(n);
+  return order;
+}
+
+std::size_t triangle_count(const trees::TreeGeometry& g) {
+  std::size_t n = 0;
+  for (const trees::GroupGeometry& group : g.groups) n += group.triangles.indices.size() / 3;
+  return n;
+}
+
+// A flattened OBJ grows with every tree's triangles; past this it is refused before writing.
+constexpr double kMaxFlattenedBytes = 4e9;
+
+// About 30 bytes per vertex line and 25 per face line; a mesh has about as many vertices as
+// triangles.
+double flattened_bytes(const renderer::Scene& scene, const std::vector<std::size_t>& chosen) {
+  double bytes = static_cast<double>(scene.ground.mesh.triangle_count()) * 55.0;
+  for (std::size_t i : chosen)
+    bytes += static_cast<double>(
+                 triangle_count(scene.prototypes[scene.instances[i].prototype].geometry)) *
+             55.0;
+  return bytes;
+}
+
+}  // namespace
+
+SceneObjSummary write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& path,
+                                const SceneObjOptions& options) {
+  SceneObjSummary summary;
+  const std::vector<std::size_t> chosen = nearest_instances(scene, options.max_trees, options.near);
+  if (options.flatten && flattened_bytes(scene, chosen) > kMaxFlattenedBytes)
+    throw InputError(fmt::format(
+        "export-obj --flatten: {} trees would write about {:.1f} GB; lower --max-trees, or leave "
+        "out --flatten (each prototype once, the instances listed)",
+        chosen.size(), flattened_bytes(scene, chosen) / 1e9));
+  // Terrain coordinates need doubles (UTM eastings have six digits before the point).
+  const Vec3 shift = options.terrain_frame ? scene.origin : Vec3{};
+  std::vector<bool> used(scene.prototypes.size(), false);
+  for (std::size_t i : chosen) used[scene.instances[i].prototype] = true;
   AtomicFile out(path);
   {
     ObjFile file(out.temp_path());
-    file.print(
-        FMT_COMPILE("# landsim scene: ground and {} nearest trees, scene frame, metres, z up\n"),
-        max_trees);
+    file.print(FMT_COMPILE("# landsim scene: ground and {} trees ({}), {} frame, metres, z up\n"),
+               chosen.size(), options.flatten ? "flattened" : "prototypes once, instances listed",
+               options.terrain_frame ? "terrain" : "scene");
     std::size_t base = 1;
-    const auto mesh = [&](const char* name, const std::vector<Vec3f>& vertices,
+    const auto mesh = [&](const std::string& name, const std::vector<Vec3f>& vertices,
                           const std::vector<std::uint32_t>& indices, const auto& transform) {
       if (indices.empty()) return;
       file.print(FMT_COMPILE("g {}\n"), name);
       for (const Vec3f& v : vertices) {
-        const Vec3f w = transform(v);
-        file.print(FMT_COMPILE("v {} {} {}\n"), w.x, w.y, w.z);
+        const Vec3 w = transform(v);
+        file.print(FMT_COMPILE("v {:.4f} {:.4f} {:.4f}\n"), w.x, w.y, w.z);
       }
-      for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+      for (std::size_t i = 0; i + 2 < indices.size(); i += 3)
         file.print(FMT_COMPILE("f {} {} {}\n"), base + indices[i], base + indices[i + 1],
                    base + indices[i + 2]);
-      }
       base += vertices.size();
     };
     mesh("ground", scene.ground.mesh.vertices, scene.ground.mesh.indices,
-         [](const Vec3f& v) { return v; });
-    std::vector<std::size_t> order(scene.instances.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return length(scene.instances[a].position - near) <
-             length(scene.instances[b].position - near);
-    });
-    for (std::size_t k = 0; k < std::min(max_trees, order.size()); ++k) {
-      const renderer::TreeInstance& inst = scene.instances[order[k]];
-      const auto c = static_cast<float>(std::cos(inst.rotation) * inst.scale),
-                 s = static_cast<float>(std::sin(inst.rotation) * inst.scale);
-      const auto place = [&](const Vec3f& v) {
-        return Vec3f{c * v.x - s * v.y, s * v.x + c * v.y, static_cast<float>(inst.scale) * v.z} +
-               Vec3f(inst.position);
-      };
-      for (const trees::GroupGeometry& g : scene.prototypes[inst.prototype].geometry.groups) {
-        mesh("tree", g.triangles.vertices, g.triangles.indices, place);
+         [&](const Vec3f& v) { return Vec3(v) + shift; });
+    summary.ground_triangles = scene.ground.mesh.triangle_count();
+    if (options.flatten) {
+      for (std::size_t i : chosen) {
+        const renderer::TreeInstance& inst = scene.instances[i];
+        const double c = std::cos(inst.rotation) * inst.scale,
+                     s = std::sin(inst.rotation) * inst.scale;
+        const auto place = [&](const Vec3f& v) {
+          return Vec3{c * v.x - s * v.y, s * v.x + c * v.y, inst.scale * v.z} + inst.position +
+                 shift;
+        };
+        for (const trees::GroupGeometry& g : scene.prototypes[inst.prototype].geometry.groups)
+          mesh("tree", g.triangles.vertices, g.triangles.indices, place);
+        summary.tree_triangles += triangle_count(scene.prototypes[inst.prototype].geometry);
+      }
+    } else {
+      // Each prototype once, in its own frame (trunk base at the origin); the instance list
+      // places it.
+      for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
+        if (!used[p]) continue;
+        for (const trees::GroupGeometry& g : scene.prototypes[p].geometry.groups)
+          mesh("prototype_" + std::to_string(p), g.triangles.vertices, g.triangles.indices,
+               [](const Vec3f& v) { return Vec3(v); });
+        summary.tree_triangles += triangle_count(scene.prototypes[p].geometry);
+        ++summary.prototypes;
       }
     }
     file.close(out.temp_path());
   }
+  if (!options.flatten) {
+    summary.instances_file = path;
+    summary.instances_file.replace_extension(".instances.csv");
+    AtomicFile list(summary.instances_file);
+    {
+      std::ofstream csv(list.temp_path(), std::ios::binary);
+      csv << "# Tree instances of " << path.filename().string()
+          << ": OBJ group prototype_<prototype>, rotated about z by rotation_deg, scaled, its "
+             "trunk base moved to x, y, z ("
+          << (options.terrain_frame ? "terrain" : "scene") << " frame, metres)\n"
+          << "prototype,x,y,z,rotation_deg,scale\n";
+      for (std::size_t i : chosen) {
+        const renderer::TreeInstance& inst = scene.instances[i];
+        const Vec3 at = inst.position + shift;
+        csv << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f},{:.6f}\n", inst.prototype, at.x, at.y,
+                           at.z, inst.rotation * 180.0 / 3.14159265358979323846, inst.scale);
+      }
+      if (!csv) throw std::runtime_error("cannot write " + summary.instances_file.string());
+    }
+    list.commit();
+  }
   out.commit();
+  summary.instances = chosen.size();
+  summary.bytes = std::filesystem::file_size(path);
+  return summary;
 }
 
 }  // namespace landsim::exporters

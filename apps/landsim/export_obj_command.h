@@ -1,6 +1,7 @@
 #pragma once
 // `landsim export-obj [SCENARIO] --out FILE.obj [--max-trees N]`
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -12,7 +13,11 @@ namespace landsim::app {
 struct ExportObjArgs {
   std::string scenario;
   std::string out;
-  std::size_t max_trees = 0;
+  std::string view;                      // empty: the first
+  std::optional<std::size_t> max_trees;  // empty: every tree
+  bool flatten = false;
+  std::string frame = "terrain";
+  bool print_pathtracer = false;
 };
 
 CLI::App* add_export_obj_command(CLI::App& app, ExportObjArgs& args);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <numbers>
 
@@ -57,9 +58,15 @@ int run_export_pov(const ExportPovArgs& args) {
   o.sky_horizon = o.fog_colour;
   o.exposure_gain = pov_exposure_gain(s, scene, sky);
   exporters::export_pov(scene, scene.views[view_index(s, args.view)], args.out, o);
-  std::cout << fmt::format("{}/scene.pov: povray scene.pov +W{} +H{} (run in that directory)\n",
-                           args.out, scene.views[view_index(s, args.view)].width,
-                           scene.views[view_index(s, args.view)].height);
+  const auto size_mb = [&](const char* name) {
+    return static_cast<double>(std::filesystem::file_size(std::filesystem::path(args.out) / name)) /
+           1e6;
+  };
+  std::cout << fmt::format(
+      "{0}/scene.pov ({1:.1f} MB) and {0}/meshes.inc ({2:.1f} MB: each tree prototype once): "
+      "povray scene.pov +W{3} +H{4} (run in that directory)\n",
+      args.out, size_mb("scene.pov"), size_mb("meshes.inc"),
+      scene.views[view_index(s, args.view)].width, scene.views[view_index(s, args.view)].height);
   return 0;
 }
 

@@ -192,6 +192,44 @@ TEST(Cli, InitWritesAScenarioThatRendersWhereverItIs) {
             2);  // elsewhere and out: no partial folder left beside them
 }
 
+TEST(Cli, ExportObjWritesPrototypesOnceAndListsInstancesInTerrainCoordinates) {
+  TempDir dir;
+  const auto obj = dir / "scene.obj";
+  const Result r = run("export-obj --out " + obj.string() + " --max-trees 20", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // It says what it wrote: size, prototypes, instances.
+  const std::smatch m = [&] {
+    std::smatch found;
+    std::regex_search(
+        r.out, found,
+        std::regex(
+            R"(ground \((\d+) triangles\), (\d+) tree prototypes once \((\d+) triangles\), 20 instances)"));
+    return found;
+  }();
+  ASSERT_EQ(m.size(), 4u) << r.out;
+  const double triangles = std::stod(m[1]) + std::stod(m[3]);
+  // Each prototype once: the file grows with the unique triangles, not with the trees.
+  EXPECT_LT(static_cast<double>(std::filesystem::file_size(obj)), 80.0 * triangles);
+  std::istringstream csv(testing::read_file(dir / "scene.instances.csv"));
+  std::string line;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("prototype,", 0) == 0) continue;
+    ++rows;
+    double x = 0.0, y = 0.0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%*d,%lf,%lf", &x, &y), 2) << line;
+    // The volcano grid's own coordinates: 0-610 m east, 0-870 m north.
+    EXPECT_TRUE(x >= 0.0 && x <= 610.0 && y >= 0.0 && y <= 870.0) << line;
+  }
+  EXPECT_EQ(rows, 20);
+  // Flattened, the same 20 trees take far more.
+  const Result flat =
+      run("export-obj --out " + (dir / "flat.obj").string() + " --max-trees 20 --flatten", dir);
+  ASSERT_EQ(flat.exit_code, 0) << flat.err;
+  EXPECT_GT(std::filesystem::file_size(dir / "flat.obj"), 2 * std::filesystem::file_size(obj));
+  EXPECT_FALSE(std::filesystem::exists(dir / "flat.instances.csv"));
+}
+
 TEST(Cli, BadCommandLineValuesExitTwo) {
   TempDir dir;
   EXPECT_EQ(run("render --spp -3", dir).exit_code, 2);
