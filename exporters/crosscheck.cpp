@@ -1,5 +1,7 @@
 #include "exporters/crosscheck.h"
 
+#include <spdlog/spdlog.h>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -12,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "exporters/pov_export.h"
+#include "renderer/exposure.h"
 #include "renderer/image_output.h"
 #include "renderer/render.h"
 #include "renderer/sky.h"
@@ -86,29 +89,55 @@ Vec3f horizon_mean(const renderer::SkyModel& sky) {
   return sum / 64.0f;
 }
 
+// The heat map's scale: full red at this relative luminance difference.
+constexpr float kHeatFullScale = 0.5f;
+// Rows under the panels for the labels and the heat map's colour bar.
+constexpr int kLegendRows = 34;
+
+// landsim | POV-Ray | heat map, both renders at landsim's automatic exposure (the same gain,
+// so their brightness compares), and under them the panels' names and the heat map's colour
+// bar with its unit.
 void write_side_by_side(const renderer::Film& film, const renderer::FloatImage& pov,
                         const std::vector<float>& heat, const std::filesystem::path& path) {
   const int w = film.width(), h = film.height();
-  renderer::FloatImage out{3 * w, h, 3, std::vector<float>(9 * static_cast<std::size_t>(w) * h)};
+  const int rows = h + kLegendRows;
+  renderer::FloatImage out{3 * w, rows, 3,
+                           std::vector<float>(9 * static_cast<std::size_t>(w) * rows)};
+  const auto gain =
+      static_cast<float>(renderer::preview_gain(renderer::exposure_ev100(film, std::nullopt)));
   const auto set = [&](int x, int y, const float* rgb) {
     std::copy(rgb, rgb + 3, out.pixels.begin() + 3 * (static_cast<std::ptrdiff_t>(y) * 3 * w + x));
   };
   float px[3];
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const Vec3f c = film.rgb(x, y);
+      const Vec3f c = film.rgb(x, y) * gain;
       const float a[3] = {c.x, c.y, c.z};
       set(x, y, a);
       pixel3(pov, x, y, px);
+      for (float& v : px) v *= gain;
       set(w + x, y, px);
       const float d = heat[static_cast<std::size_t>(y) * w + x];
       const float red[3] = {d, d * 0.1f, d * 0.1f};
       set(2 * w + x, y, red);
     }
   }
+  // The colour bar: 0 at the left of the heat panel to kHeatFullScale (and beyond) at its right.
+  for (int y = h + 4; y < h + 12; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float d = (static_cast<float>(x) + 0.5f) / static_cast<float>(w);
+      const float red[3] = {d, d * 0.1f, d * 0.1f};
+      set(2 * w + x, y, red);
+    }
+  const std::vector<renderer::ImageLabel> labels = {
+      {2, h + 28, "landsim"},
+      {w + 2, h + 28, "POV-Ray"},
+      {2 * w + 2, h + 28, "0"},
+      {2 * w + 24, h + 28, "|dL|/L"},
+      {2 * w + std::max(80, w - 44), h + 28, fmt::format("{:.0f}%+", 100.0f * kHeatFullScale)}};
   AtomicFile file(path);
   std::string error, warning;
-  if (!renderer::image_io().write_png(file.temp_path().string(), out, true, {}, error, warning))
+  if (!renderer::image_io().write_png(file.temp_path().string(), out, true, labels, error, warning))
     throw std::runtime_error("cannot write " + path.string() + ": " + error);
   file.commit();
 }
@@ -137,6 +166,9 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
       "<!doctype html><meta charset=utf-8><title>landsim cross-check</title>\n"
       "<h1>landsim against POV-Ray: {}</h1>\n<img src=side_by_side.png alt='landsim | POV-Ray | "
       "difference'>\n"
+      "<p>Left: landsim in its POV-comparable mode; middle: POV-Ray; both at landsim's automatic "
+      "exposure. Right: the relative luminance difference |L_landsim - L_POV| / L_POV of pixels "
+      "both see as objects, black 0 to full red at 50% and beyond (the bar below it).\n"
       "<table><tr><td>object IoU (mean of trees, ground)<td>{:.4f} (min {})\n<tr><td>trees "
       "IoU<td>{:.4f}\n"
       "<tr><td>ground IoU<td>{:.4f}\n<tr><td>mean luminance difference<td>{:.2f}% (max {:.0f}%)\n"
@@ -176,9 +208,18 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   ro.centre_first_sample = true;
   ro.comparable = renderer::ComparableLight{pov_options.ambient_irradiance, pov_options.fog_colour};
   CrosscheckReport r;
+  spdlog::info("crosscheck: landsim (POV-comparable mode), {} x {}, {} spp", view.width,
+               view.height, o.spp);
+  ro.progress = [last = -1](double f) mutable {
+    const int percent = static_cast<int>(f * 100.0);
+    if (percent / 10 > last / 10) spdlog::info("crosscheck: landsim {}%", percent);
+    last = percent;
+  };
   auto start = std::chrono::steady_clock::now();
   const renderer::Film film = renderer::Renderer(comparable).render(view, ro);
   r.landsim_seconds = seconds_since(start);
+  spdlog::info("crosscheck: landsim done in {:.1f} s; POV-Ray rendering (its progress: {})",
+               r.landsim_seconds, (pov_dir / "povray.log").string());
   renderer::write_exr(film, o.out_dir / "landsim.exr", {{"mode", "POV-comparable"}});
 
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(o.spp)))));
@@ -187,6 +228,7 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
       pov_dir,
       size +
           fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1", n));
+  spdlog::info("crosscheck: POV-Ray done in {:.1f} s; its class mask", r.povray_seconds);
   run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1");
   const renderer::FloatImage pov = read_image(pov_dir / "pov.exr");
   const renderer::FloatImage mask = read_image(pov_dir / "mask.png");
@@ -214,7 +256,8 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
       region_a[reg] += la;
       region_b[reg] += lb;
       ++region_n[reg];
-      heat[i] = static_cast<float>(std::min(1.0, 2.0 * std::abs(la - lb) / std::max(lb, 1e-3)));
+      heat[i] = static_cast<float>(
+          std::min(1.0, std::abs(la - lb) / std::max(lb, 1e-3) / kHeatFullScale));
     }
   }
   r.tree_iou = iou(a, b, Cover::tree);

@@ -134,6 +134,8 @@ inline constexpr int kMaxFrames = 100000;
 inline constexpr int kMaxImageSide = 65536;
 inline constexpr double kMaxImagePixels = 100e6;
 inline constexpr int kMaxSpp = 1 << 20;
+// Wind and gust speeds (Weber & Penn section 4.7), in [wind] and on tree's command line alike.
+inline constexpr double kMaxWindSpeed = 100.0;
 
 // Throws InputError naming file:line:column, the key and what was expected.
 Scenario load_scenario(const std::filesystem::path& file);

@@ -247,8 +247,8 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
 WindSettings read_wind(const toml::table& t, const std::string& file) {
   TableReader r(t, "wind", file);
   WindSettings w;
-  w.speed = r.number("speed", Range{0.0, 100.0}, 0.0);
-  w.gust = r.number("gust", Range{0.0, 100.0}, 0.0);
+  w.speed = r.number("speed", Range{0.0, kMaxWindSpeed}, 0.0);
+  w.gust = r.number("gust", Range{0.0, kMaxWindSpeed}, 0.0);
   r.finish();
   return w;
 }

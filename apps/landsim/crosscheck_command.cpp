@@ -17,6 +17,7 @@ CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
       "crosscheck", "Render with landsim and POV-Ray and compare (docs/CROSSCHECK.md)");
   add_scene_view_options(*cmd, args.scenario, args.out, args.view);
   add_spp_option(*cmd, args.spp, "Samples per pixel for both");
+  add_size_options(*cmd, args.width, args.height);
   cmd->add_option("--threads", args.threads, "landsim worker threads (0: every core)")
       ->check(CLI::Range(0, 1024));
   cmd->add_option("--min-iou", args.min_iou, "Least object IoU that passes")
@@ -35,7 +36,8 @@ CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
 }
 
 int run_crosscheck(const CrosscheckArgs& args) {
-  const scenes::Scenario s = scenario_or_default(args.scenario);
+  scenes::Scenario s = scenario_or_default(args.scenario);
+  override_view_sizes(s, args.width, args.height);
   const renderer::Scene scene = scenes::build_scene(s);
   exporters::CrosscheckOptions o;
   o.out_dir = args.out;

@@ -1,6 +1,7 @@
 #pragma once
 // `landsim crosscheck SCENARIO --out DIR [--view NAME] [--spp N] [--min-iou X]
 //                     [--max-mean-diff X] [--max-region-diff X] [--json]`
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -15,6 +16,7 @@ struct CrosscheckArgs {
   std::string view;
   int spp = 16;
   int threads = 0;
+  std::optional<int> width, height;
   double min_iou = 0.98;
   double max_mean_diff = 0.05;
   double max_region_diff = 0.25;

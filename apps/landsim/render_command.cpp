@@ -50,16 +50,7 @@ std::string sky_text(const renderer::Sky& sky) {
 void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
   if (args.spp) s.render.spp = *args.spp;
   if (args.threads) s.render.threads = *args.threads;
-  for (scenes::ViewSettings& v : s.views) {
-    const double aspect = static_cast<double>(v.width) / v.height;
-    if (args.width) v.width = *args.width;
-    if (args.height) v.height = *args.height;
-    if (args.width && !args.height)
-      v.height = std::max(1, static_cast<int>(std::lround(v.width / aspect)));
-    if (args.height && !args.width)
-      v.width = std::max(1, static_cast<int>(std::lround(v.height * aspect)));
-    scenes::check_image_size(v.width, v.height, "--width/--height");
-  }
+  override_view_sizes(s, args.width, args.height);
   if (!args.view.empty()) {
     std::string names;
     for (const auto& v : s.views) {
@@ -107,10 +98,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--spp", args.spp, "Samples per pixel")->check(CLI::Range(1, scenes::kMaxSpp));
   cmd->add_option("--threads", args.threads, "Worker threads (0: every core)")
       ->check(CLI::Range(0, 1024));
-  cmd->add_option("--width", args.width, "Image width in pixels")
-      ->check(CLI::Range(1, scenes::kMaxImageSide));
-  cmd->add_option("--height", args.height, "Image height in pixels")
-      ->check(CLI::Range(1, scenes::kMaxImageSide));
+  add_size_options(*cmd, args.width, args.height);
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
   cmd->add_flag(
       "--resume", args.resume,
@@ -361,7 +349,9 @@ std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::
   RenderedImage out;
   out.report = {{"path", exr.string()},
                 {"view", view.name},
-                {"frame", time},
+                {"frame_index", image.frame},  // as the manifest names them
+                {"time_s", time},
+                {"frame", time},  // = time_s, kept for scripts written before frame_index
                 {"exposure_ev100", ev100},
                 {"seconds", stats.seconds},
                 {"rays_per_second", stats.rays_per_second()}};

@@ -2,6 +2,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/input_error.h"
 #include "scenes/default_scenario.h"
 
@@ -16,6 +19,24 @@ void add_scene_view_options(CLI::App& cmd, std::string& scenario, std::string& o
 
 scenes::Scenario scenario_or_default(const std::string& path) {
   return path.empty() ? scenes::default_scenario() : scenes::load_scenario(path);
+}
+
+void add_size_options(CLI::App& cmd, std::optional<int>& width, std::optional<int>& height) {
+  cmd.add_option("--width", width, "Image width in pixels (alone: the view's aspect is kept)")
+      ->check(CLI::Range(1, scenes::kMaxImageSide));
+  cmd.add_option("--height", height, "Image height in pixels (alone: the view's aspect is kept)")
+      ->check(CLI::Range(1, scenes::kMaxImageSide));
+}
+
+void override_view_sizes(scenes::Scenario& s, std::optional<int> width, std::optional<int> height) {
+  for (scenes::ViewSettings& v : s.views) {
+    const double aspect = static_cast<double>(v.width) / v.height;
+    if (width) v.width = *width;
+    if (height) v.height = *height;
+    if (width && !height) v.height = std::max(1, static_cast<int>(std::lround(v.width / aspect)));
+    if (height && !width) v.width = std::max(1, static_cast<int>(std::lround(v.height * aspect)));
+    scenes::check_image_size(v.width, v.height, "--width/--height");
+  }
 }
 
 void add_spp_option(CLI::App& cmd, int& spp, const std::string& help) {

@@ -2,6 +2,7 @@
 // What several commands share: a scenario from a file or the embedded default, and a view
 // chosen by name.
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "scenes/scenario.h"
@@ -23,6 +24,12 @@ scenes::Scenario scenario_or_default(const std::string& path);
 // --spp for commands that render with a fixed default (16): the same range as the
 // scenario's [render] spp everywhere.
 void add_spp_option(CLI::App& cmd, int& spp, const std::string& help = "Samples per pixel");
+
+// --width and --height (each optional) for commands that render a scenario's views.
+void add_size_options(CLI::App& cmd, std::optional<int>& width, std::optional<int>& height);
+// Command-line sizes win over the scenario's; a lone --width or --height keeps each view's
+// aspect ratio. InputError for an explosive size.
+void override_view_sizes(scenes::Scenario& s, std::optional<int> width, std::optional<int> height);
 
 // The index of the view named `name` (empty: the first); InputError naming the views' file.
 std::size_t view_index(const scenes::Scenario& s, const std::string& name);

@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "exporters/obj_export.h"
+#include "scenes/scenario.h"
 #include "trees/species.h"
 
 namespace landsim::app {
@@ -20,8 +21,10 @@ CLI::App* add_tree_command(CLI::App& app, TreeArgs& args) {
   cmd->add_option("--seed", args.seed, "Variant seed")->capture_default_str();
   cmd->add_option("--time", args.time, "Time in seconds, for wind sway")
       ->check(CLI::Range(0.0, 1e9));
-  cmd->add_option("--wind", args.wind, "Wind speed")->check(CLI::Range(0.0, 200.0));
-  cmd->add_option("--gust", args.gust, "Wind gust speed")->check(CLI::Range(0.0, 200.0));
+  cmd->add_option("--wind", args.wind, "Wind speed (as [wind] speed)")
+      ->check(CLI::Range(0.0, scenes::kMaxWindSpeed));
+  cmd->add_option("--gust", args.gust, "Wind gust speed (as [wind] gust)")
+      ->check(CLI::Range(0.0, scenes::kMaxWindSpeed));
   cmd->add_option("--quality", args.quality, "Leaf quality factor (0, 1]")
       ->check(CLI::Range(0.001, 1.0));
   cmd->add_option("--obj", args.obj, "Write the full-detail mesh as Wavefront OBJ");

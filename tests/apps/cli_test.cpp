@@ -233,6 +233,10 @@ TEST(Cli, ExportObjWritesPrototypesOnceAndListsInstancesInTerrainCoordinates) {
 TEST(Cli, BadCommandLineValuesExitTwo) {
   TempDir dir;
   EXPECT_EQ(run("render --spp -3", dir).exit_code, 2);
+  // tree --wind takes [wind]'s range.
+  const std::string aspen = testing::source_file("data/species/quaking_aspen.toml").string();
+  EXPECT_EQ(run("tree " + aspen + " --wind 150", dir).exit_code, 2);
+  EXPECT_EQ(run("tree " + aspen + " --wind 100 --json", dir).exit_code, 0);
   EXPECT_EQ(run("render --width 0", dir).exit_code, 2);
   EXPECT_EQ(run("render --no-such-flag", dir).exit_code, 2);
   const Result r = run("render --view nowhere --out " + (dir / "o").string(), dir);
@@ -379,6 +383,9 @@ TEST(Cli, ImageSetsNameEveryFrameAndListThemInTheManifest) {
   const auto json = nlohmann::json::parse(r.out);
   ASSERT_EQ(json["images"].size(), 2u);
   EXPECT_EQ(json["images"][1]["frame"], 3.0);
+  // Named as the manifest names them.
+  EXPECT_EQ(json["images"][1]["frame_index"], 1);
+  EXPECT_EQ(json["images"][1]["time_s"], 3.0);
   EXPECT_TRUE(std::filesystem::exists(out / "v_f0000.exr"));
   EXPECT_TRUE(std::filesystem::exists(out / "v_f0001.png"));
   const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
@@ -515,6 +522,19 @@ TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["pass"], true);
+  // Progress of both renderers on stderr.
+  EXPECT_NE(ok.err.find("crosscheck: landsim 100%"), std::string::npos) << ok.err;
+  EXPECT_NE(ok.err.find("crosscheck: POV-Ray done"), std::string::npos) << ok.err;
+  // --width alone keeps the view's aspect (64 x 40 -> 32 x 20); the side-by-side holds the
+  // three panels and, under them, the legend with the heat map's colour bar.
+  const Result small =
+      run("crosscheck " + file.string() + " --out " + (dir / "w").string() + " --spp 1 --width 32",
+          dir);
+  ASSERT_EQ(small.exit_code, 0) << small.err;
+  auto sheet = OIIO::ImageInput::open((dir / "w" / "side_by_side.png").string());
+  ASSERT_TRUE(sheet);
+  EXPECT_EQ(sheet->spec().width, 3 * 32);
+  EXPECT_GT(sheet->spec().height, 20);
   const Result strict = run("crosscheck " + file.string() + " --out " + (dir / "b").string() +
                                 " --spp 1 --max-mean-diff 0",
                             dir);
