@@ -169,7 +169,10 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.degradation = scenario.render.degradation;
   if (scenario.featuremaps || has_cover(scenario)) {
     const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(scenario, grid);
-    if (map && !scenario.species.empty()) add_trees(scenario, *map, grid, time, reuse, scene);
+    if (map && !scenario.species.empty()) {
+      add_trees(scenario, *map, grid, time, reuse, scene);
+      detail::warn_cameras_inside_trees(scenario, scene);
+    }
     if (map && !scenario.grass.empty())
       scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin);
     add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);

@@ -2,11 +2,15 @@
 // A camera under the terrain sees the terrain's underside: almost certainly a wrong height
 // (a position in another datum, or metres above ground taken as absolute). Warned about
 // (core/input_warnings.h) by every command that reads the terrain.
+#include "renderer/scene.h"
 #include "scenes/scenario.h"
 #include "terrain/elevation_grid.h"
 
 namespace landsim::scenes::detail {
 
 void warn_cameras_below_ground(const Scenario& s, const terrain::ElevationGrid& grid);
+// A camera inside a tree's bounds (the upright cylinder around its prototype's vertices, at
+// the instance's scale) sees the tree from within: warned about once per view.
+void warn_cameras_inside_trees(const Scenario& s, const renderer::Scene& scene);
 
 }  // namespace landsim::scenes::detail

@@ -148,6 +148,25 @@ TEST(Cli, SilentWrongScenesWarnAndStrictRefusesThem) {
       << below.err;
   EXPECT_EQ(run("info " + u.string() + " --strict", dir).exit_code, 2);
 
+  // A camera 3 m up in a dense aspen wood on a flat grid: inside a tree's bounds.
+  std::string flat = "ncols 20\nnrows 20\nxllcorner 0\nyllcorner 0\ncellsize 10\n";
+  for (int i = 0; i < 20; ++i) flat += "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n";
+  dir.write("flat.asc", flat);
+  const auto wood = dir.write(
+      "wood.toml",
+      "[terrain]\nelevation = \"flat.asc\"\n[sun]\nelevation = 40\nazimuth = 200\n"
+      "[[views]]\nname = \"inside\"\nposition = [100.0, 100.0, 3.0]\ntarget = [150.0, 100.0, "
+      "3.0]\nwidth = 16\nheight = 9\n" +
+          aspen_entry("cover = \"everywhere\"\ndensity_per_ha = 1000")
+              .replace(aspen_entry("").find("density_per_ha = 40"), 20, ""));
+  const Result inside =
+      run("export-obj " + wood.string() + " --max-trees 0 --out " + (dir / "w.obj").string(), dir);
+  EXPECT_EQ(inside.exit_code, 0) << inside.err;
+  EXPECT_NE(inside.err.find("[views \"inside\"] position: the camera is inside the bounds of a "
+                            "tree"),
+            std::string::npos)
+      << inside.err;
+
   // An Arbaro file without Levels and 1DownAngle.
   std::string xml = testing::read_file(testing::source_file("data/species/quaking_aspen.xml"));
   for (const std::string name : {"Levels", "1DownAngle"}) {
