@@ -3,18 +3,10 @@
 #include <string>
 #include <string_view>
 
+#include "scenes/detail/embedded_files.h"
 #include "terrain/raster_files.h"
 
 namespace landsim::scenes {
-
-// Generated at build time (cmake/EmbedFile.cmake).
-extern const std::string_view kDefaultScenarioToml;
-extern const std::string_view kVolcanoClassesToml;
-extern const std::string_view kVolcanoAsc;
-extern const std::string_view kVolcanoLandcoverAsc;
-extern const std::string_view kQuakingAspenToml;
-extern const std::string_view kCaBlackOakToml;
-
 namespace {
 // The embedded files appear under /vsimem/ at the paths they have in the repository, so the
 // scenario's relative path to its elevation grid resolves the same way in both places.

@@ -1,14 +1,8 @@
 #include "scenes/starter_scenario.h"
 
-namespace landsim::scenes {
+#include "scenes/detail/embedded_files.h"
 
-// Generated at build time (cmake/EmbedFile.cmake).
-extern const std::string_view kStarterScenarioToml;
-extern const std::string_view kStarterClassesToml;
-extern const std::string_view kVolcanoAsc;
-extern const std::string_view kVolcanoLandcoverAsc;
-extern const std::string_view kQuakingAspenToml;
-extern const std::string_view kCaBlackOakToml;
+namespace landsim::scenes {
 
 std::vector<std::pair<std::string, std::string_view>> starter_files() {
   return {{"scenario.toml", kStarterScenarioToml},
