@@ -5,11 +5,14 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <numbers>
+#include <regex>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
@@ -30,14 +33,27 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// Runs POV-Ray in `dir` (so that meshes.inc is found); returns seconds.
-double run_povray(const std::filesystem::path& dir, const std::string& args) {
+// Runs POV-Ray in `dir` (so that meshes.inc is found); returns seconds. Its output goes to
+// povray.log; with `progress`, its "Rendered N of M pixels (P%)" lines are reported by tenths.
+double run_povray(const std::filesystem::path& dir, const std::string& args, bool progress) {
   const auto start = std::chrono::steady_clock::now();
-  const std::string cmd =
-      "cd '" + dir.string() + "' && povray scene.pov " + args + " >> povray.log 2>&1";
-  if (std::system(cmd.c_str()) != 0) {
-    throw std::runtime_error("POV-Ray failed: see " + (dir / "povray.log").string());
+  // POV-Ray rewrites its progress line with carriage returns: one line per update.
+  const std::string cmd = "cd '" + dir.string() + "' && povray scene.pov " + args +
+                          (progress ? " +V" : "") + " 2>&1 | tr '\\r' '\\n' | tee -a povray.log";
+  FILE* pipe = ::popen(("bash -c \"set -o pipefail; " + cmd + "\"").c_str(), "r");
+  if (pipe == nullptr) throw std::runtime_error("cannot run POV-Ray");
+  static const std::regex kPercent(R"(Rendered \d+ of \d+ pixels \((\d+)%\))");
+  std::array<char, 4096> line{};
+  int reported = -1;
+  while (std::fgets(line.data(), static_cast<int>(line.size()), pipe) != nullptr) {
+    std::cmatch m;
+    if (!progress || !std::regex_search(line.data(), m, kPercent)) continue;
+    const int percent = std::stoi(m[1].str());
+    if (percent / 10 > reported / 10) spdlog::info("crosscheck: POV-Ray {}%", percent);
+    reported = percent;
   }
+  if (::pclose(pipe) != 0)
+    throw std::runtime_error("POV-Ray failed: see " + (dir / "povray.log").string());
   return seconds_since(start);
 }
 
@@ -218,7 +234,7 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   auto start = std::chrono::steady_clock::now();
   const renderer::Film film = renderer::Renderer(comparable).render(view, ro);
   r.landsim_seconds = seconds_since(start);
-  spdlog::info("crosscheck: landsim done in {:.1f} s; POV-Ray rendering (its progress: {})",
+  spdlog::info("crosscheck: landsim done in {:.1f} s; POV-Ray rendering (its log: {})",
                r.landsim_seconds, (pov_dir / "povray.log").string());
   renderer::write_exr(film, o.out_dir / "landsim.exr", {{"mode", "POV-comparable"}});
 
@@ -227,9 +243,10 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   r.povray_seconds = run_povray(
       pov_dir,
       size +
-          fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1", n));
+          fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1", n),
+      true);
   spdlog::info("crosscheck: POV-Ray done in {:.1f} s; its class mask", r.povray_seconds);
-  run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1");
+  run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1", false);
   const renderer::FloatImage pov = read_image(pov_dir / "pov.exr");
   const renderer::FloatImage mask = read_image(pov_dir / "mask.png");
 

@@ -32,8 +32,9 @@ void check_overlap(const featuremaps::VegetationMap& map, const terrain::Elevati
   const double south = north - grid.rows() * grid.transform().cell_size_y;
   if (b[2] <= west || b[0] >= east || b[3] <= south || b[1] >= north) {
     throw InputError(fmt::format(
-        "{}: feature map ({:.1f}, {:.1f})-({:.1f}, {:.1f}) does not overlap the terrain "
-        "({:.1f}, {:.1f})-({:.1f}, {:.1f}); check its georeferencing or [featuremaps] origin",
+        "{}: feature map ({:.1f}, {:.1f})-({:.1f}, {:.1f}) does not overlap the elevation "
+        "grid's raster extent ({:.1f}, {:.1f})-({:.1f}, {:.1f}) (west, south)-(east, north); "
+        "check its georeferencing or [featuremaps] origin",
         path, b[0], b[1], b[2], b[3], west, south, east, north));
   }
 }

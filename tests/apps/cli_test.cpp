@@ -543,6 +543,7 @@ TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
   EXPECT_EQ(j["pass"], true);
   // Progress of both renderers on stderr.
   EXPECT_NE(ok.err.find("crosscheck: landsim 100%"), std::string::npos) << ok.err;
+  EXPECT_NE(ok.err.find("crosscheck: POV-Ray 100%"), std::string::npos) << ok.err;
   EXPECT_NE(ok.err.find("crosscheck: POV-Ray done"), std::string::npos) << ok.err;
   // --width alone keeps the view's aspect (64 x 40 -> 32 x 20); the side-by-side holds the
   // three panels and, under them, the legend with the heat map's colour bar.
