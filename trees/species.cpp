@@ -135,6 +135,9 @@ Species parse_arbaro_xml(std::string_view text, const std::string& source) {
     raw.text = node.attribute("value").as_string();
     raw.number = param_number(raw.text);
     if (name.empty()) throw InputError(raw.where + ": <param> without a name");
+    if (!node.attribute("value"))
+      throw InputError(raw.where + ": <param name='" + name +
+                       "'> has no value attribute (expected value='...')");
     params.emplace(name, raw);
   }
   const weber_penn::Parameters parameters = weber_penn::parse_parameters(params, source);

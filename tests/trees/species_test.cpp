@@ -112,6 +112,10 @@ TEST(Species, BadParametersNameTheParameterAndTheLimit) {
   EXPECT_NE(msg.find("Ratio"), std::string::npos) << msg;
   msg = error_of("f.xml", "<arbaro><species>\n<param name='Ratio' value='0.1'>\n</arbaro>");
   EXPECT_NE(msg.find("not valid XML"), std::string::npos) << msg;
+  msg = error_of("h.xml",
+                 "<arbaro><species name='x'>\n\n<param name='Shape'/>\n</species></arbaro>\n");
+  EXPECT_NE(msg.find("h.xml:3: <param name='Shape'> has no value attribute"), std::string::npos)
+      << msg;
   msg = error_of("g.txt", "Levels = 2\n");
   EXPECT_NE(msg.find("unknown species file type"), std::string::npos) << msg;
 }
