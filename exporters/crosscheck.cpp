@@ -202,7 +202,7 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
                             const CrosscheckOptions& o) {
   (void)scenario;
   const renderer::View& view = scene.views.at(o.view);
-  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.albedo);
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
   PovExportOptions pov_options;
   pov_options.ambient_irradiance = sky.horizontal_irradiance();
   pov_options.fog_colour = horizon_mean(sky);

@@ -20,7 +20,7 @@ ComparableTracer::ComparableTracer(const Scene& scene, const EmbreeScene& embree
     : scene_(scene),
       embree_(embree),
       light_(light),
-      sky_(scene.sky, scene.sun, scene.ground.albedo),
+      sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
       haze_(scene.haze),
       sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
 

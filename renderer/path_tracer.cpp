@@ -40,7 +40,7 @@ float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
 PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
     : scene_(scene),
       embree_(embree),
-      sky_(scene.sky, scene.sun, scene.ground.albedo),
+      sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
       haze_(scene.haze),
       sun_direction_(Vec3f(normalize(scene.sun.direction))),
       roulette_threshold_(kShadowRouletteFraction * max_component(sky_.mean_radiance())),

@@ -33,7 +33,12 @@ struct GroundMaterial {
 
 struct Ground {
   terrain::GroundMesh mesh;
-  Vec3f albedo = kDefaultGroundAlbedo;          // material 0: the terrain's own
+  Vec3f albedo = kDefaultGroundAlbedo;  // material 0: the terrain's own
+  // The endless plain beyond the grid, and the ground the sky model sees (Hosek-Wilkie's
+  // ground albedo): the mean albedo along the grid's edge (scenes/detail/plain_albedo);
+  // empty: `albedo`.
+  std::optional<Vec3f> edge_albedo;
+  Vec3f plain_albedo() const { return edge_albedo.value_or(albedo); }
   std::vector<GroundMaterial> materials;        // further materials, 1-based in the ids below
   std::vector<std::uint8_t> triangle_material;  // per triangle, 0 = `albedo`; may be empty
 

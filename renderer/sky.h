@@ -27,8 +27,8 @@ class SkyModel {
   Vec3f sun_radiance(const Vec3f& direction) const;
 
   // Sky radiance above the horizon. Below it, where a ray leaves a finite terrain, the
-  // radiance of an endless sunlit plain of the ground albedo, so the edge of a DEM does not
-  // open onto a black void.
+  // radiance of an endless sunlit plain of `ground_albedo` (the scene's: the mean along the
+  // grid's edge), so the edge of a DEM does not open onto a black void.
   Vec3f radiance(const Vec3f& direction) const;
   // The horizon band's radiance at the azimuth of `direction`: the mean over elevations 0 to
   // 2 degrees. What haze converges to at long range (docs/ATMOSPHERE.md): a band, because

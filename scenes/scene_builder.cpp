@@ -14,6 +14,7 @@
 #include "renderer/sky.h"
 #include "scenes/detail/camera_check.h"
 #include "scenes/detail/grass_cover.h"
+#include "scenes/detail/plain_albedo.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
 #include "terrain/ground_mesh.h"
@@ -177,6 +178,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
       scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin);
     add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);
   }
+  scene.ground.edge_albedo = detail::edge_albedo(scene.ground, grid, scene.origin);
   return scene;
 }
 

@@ -50,7 +50,7 @@ int run_export_pov(const ExportPovArgs& args) {
   }
   const renderer::Scene scene =
       scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]);
-  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.albedo);
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
   exporters::PovExportOptions o;
   o.ambient_irradiance = sky.horizontal_irradiance();
   o.fog_colour = sky.radiance({1.0f, 0.0f, 0.02f});

@@ -35,5 +35,28 @@ TEST(SceneBuilder, ShiftsGeoreferencedCoordinatesToALocalOrigin) {
   for (const Vec3f& v : scene.ground.mesh.vertices) ASSERT_LT(std::abs(v.x), 5000.0f);
 }
 
+TEST(SceneBuilder, ThePlainBeyondTheGridTakesTheAlbedoOfItsEdge) {
+  landsim::testing::TempDir dir;
+  const std::string base =
+      "[terrain]\nelevation = \"" +
+      landsim::testing::source_file("data/terrain/volcano.asc").string() +
+      "\"\nalbedo = [0.2, 0.15, 0.1]\n[sun]\nelevation = 40\nazimuth = 90\n"
+      "[[views]]\nname = \"v\"\nposition = [300.0, -200.0, 400.0]\ntarget = [300.0, 400.0, "
+      "150.0]\n";
+  // Grass everywhere: the ground under it (0.9 of the blades' colour) runs to the edge.
+  const renderer::Scene grass = build_scene(load_scenario(
+      dir.write("g.toml", base + "[[grass]]\ntype = 1\ncover = \"everywhere\"\ncolour = [0.1, 0.3, "
+                                 "0.05]\n")));
+  ASSERT_TRUE(grass.ground.edge_albedo);
+  EXPECT_NEAR(grass.ground.plain_albedo().y, 0.9f * 0.3f, 1e-5f);
+  EXPECT_NEAR(grass.ground.plain_albedo().x, 0.9f * 0.1f, 1e-5f);
+  // Grass only in the middle: the edge is bare terrain.
+  const renderer::Scene middle = build_scene(load_scenario(
+      dir.write("m.toml", base + "[[grass]]\ntype = 1\ncover = { rectangle = [200.0, 300.0, 400.0, "
+                                 "500.0] }\ncolour = [0.1, 0.3, 0.05]\n")));
+  EXPECT_NEAR(middle.ground.plain_albedo().x, 0.2f, 1e-5f);
+  EXPECT_NEAR(middle.ground.plain_albedo().z, 0.1f, 1e-5f);
+}
+
 }  // namespace
 }  // namespace landsim::scenes
