@@ -12,16 +12,12 @@ constexpr double kLuminanceFloor = 1e-4;
 }  // namespace
 
 double log_average_luminance(const Film& film) {
-  const std::vector<float>& rgb = film.rgb_data();
-  const std::size_t n =
-      static_cast<std::size_t>(film.width()) * static_cast<std::size_t>(film.height());
-  if (n == 0) return kLuminanceFloor;
+  if (film.pixel_count() == 0) return kLuminanceFloor;
   double sum = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double y = 0.2126 * rgb[3 * i] + 0.7152 * rgb[3 * i + 1] + 0.0722 * rgb[3 * i + 2];
-    sum += std::log(std::max(y, kLuminanceFloor));
-  }
-  return std::exp(sum / static_cast<double>(n));
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      sum += std::log(std::max(static_cast<double>(film.luminance(x, y)), kLuminanceFloor));
+  return std::exp(sum / static_cast<double>(film.pixel_count()));
 }
 
 double exposure_ev100(const Film& film, std::optional<double> fixed_ev100) {

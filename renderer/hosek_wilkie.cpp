@@ -70,9 +70,10 @@ HosekWilkieSky::HosekWilkieSky(double elevation, double turbidity, const Vec3& a
   overall_ = Vec3{overall[0], overall[1], overall[2]} * kLumensPerWatt;
 }
 
-Vec3 HosekWilkieSky::radiance(double theta, double gamma) const {
-  const double cos_theta = std::max(std::cos(theta), 0.0);
-  const double cos_gamma = std::cos(gamma);
+Vec3 HosekWilkieSky::radiance_cos(double cos_theta_in, double cos_gamma_in) const {
+  const double cos_theta = std::clamp(cos_theta_in, 0.0, 1.0);
+  const double cos_gamma = std::clamp(cos_gamma_in, -1.0, 1.0);
+  const double gamma = std::acos(cos_gamma);
   double out[3];
   for (int c = 0; c < 3; ++c) {
     // The extended Perez formula of the 2012 paper (its Mie term chi(H, gamma) and the
@@ -133,9 +134,16 @@ double HosekWilkieSun::spectral_radiance(double wavelength, double mu) const {
 
 Vec3 HosekWilkieSun::radiance(double mu) const {
   // 1 nm steps over the colour-matching functions' range: the tables hold 320-720 nm and
-  // are held constant beyond, where the functions are nearly zero.
+  // are held constant beyond, where the functions are nearly zero. The functions are
+  // evaluated once for all calls (a disc profile asks for dozens of mu).
+  static const std::vector<Vec3> kBars = [] {
+    std::vector<Vec3> bars;
+    for (int l = 360; l <= 830; ++l) bars.push_back(cie1931_xyz_bar(l));
+    return bars;
+  }();
   Vec3 xyz{};
-  for (double l = 360.0; l <= 830.0; l += 1.0) xyz += cie1931_xyz_bar(l) * spectral_radiance(l, mu);
+  for (std::size_t i = 0; i < kBars.size(); ++i)
+    xyz += kBars[i] * spectral_radiance(360.0 + static_cast<double>(i), mu);
   return xyz_to_rec709(xyz * kLumensPerWatt);
 }
 

@@ -8,6 +8,7 @@
 // tables (renderer/hosek_wilkie_tables.h). Units: radiance as linear Rec. 709 scaled so that
 // Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance in cd/m2 (docs/ATMOSPHERE.md).
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "core/vec3.h"
@@ -22,7 +23,12 @@ class HosekWilkieSky {
 
   // Radiance from a direction at zenith angle `theta` (at most pi/2) and angle `gamma` from
   // the sun.
-  Vec3 radiance(double theta, double gamma) const;
+  Vec3 radiance(double theta, double gamma) const {
+    return radiance_cos(std::cos(theta), std::cos(gamma));
+  }
+  // The same from the cosines (what a renderer has: dot products), without the round trip
+  // through the angles; gamma itself is needed only for the exp(E gamma) term.
+  Vec3 radiance_cos(double cos_theta, double cos_gamma) const;
 
  private:
   std::array<std::array<double, 9>, 3> parameters_{};  // per channel, A..I, H in file order

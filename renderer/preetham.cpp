@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/colour_matching.h"
+
 namespace landsim::renderer {
 namespace {
 
@@ -63,10 +65,8 @@ Vec3 xyY_to_rgb(double x, double y, double Y) {
   if (y <= 0.0) return {};
   const double X = x / y * Y;
   const double Z = (1.0 - x - y) / y * Y;
-  // CIE XYZ -> linear Rec.709 (D65).
-  return {std::max(0.0, 3.2404542 * X - 1.5371385 * Y - 0.4985314 * Z),
-          std::max(0.0, -0.9692660 * X + 1.8760108 * Y + 0.0415560 * Z),
-          std::max(0.0, 0.0556434 * X - 0.2040259 * Y + 1.0572252 * Z)};
+  const Vec3 rgb = xyz_to_rec709({X, Y, Z});
+  return {std::max(0.0, rgb.x), std::max(0.0, rgb.y), std::max(0.0, rgb.z)};
 }
 
 }  // namespace landsim::renderer

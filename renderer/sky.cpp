@@ -32,7 +32,7 @@ SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
     preetham_ = std::make_unique<PreethamSky>(sun.direction, sky.turbidity);
   if (sky.model == SkyKind::hosek_wilkie)
     hosek_wilkie_ = std::make_unique<HosekWilkieSky>(elevation, sky.turbidity, Vec3(ground_albedo));
-  build_sun_disc(sun);
+  build_sun_disc(sun, elevation);
   // E = integral over the upper hemisphere of L cos: midpoint rule on a fine grid.
   constexpr int kSteps = 96;
   Vec3f sum{};
@@ -64,14 +64,13 @@ SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
 SkyModel::~SkyModel() = default;
 SkyModel::SkyModel(SkyModel&&) noexcept = default;
 
-void SkyModel::build_sun_disc(const Sun& sun) {
+void SkyModel::build_sun_disc(const Sun& sun, double elevation) {
   const double r = sun.angular_radius;
   sun_cos_radius_ = static_cast<float>(std::cos(r));
   sun_sin_radius_ = static_cast<float>(std::sin(r));
   // The profile's shape: Hosek-Wilkie's limb darkening per channel, else a uniform disc.
   std::vector<Vec3> shape(kSunDiscSteps + 1, Vec3{1.0, 1.0, 1.0});
   if (hosek_wilkie_) {
-    const double elevation = std::asin(std::clamp(normalize(sun.direction).z, 0.0, 1.0));
     const HosekWilkieSun model(elevation, sky_.turbidity);
     for (int i = 0; i <= kSunDiscSteps; ++i)
       shape[static_cast<std::size_t>(i)] = model.radiance(static_cast<double>(i) / kSunDiscSteps);
@@ -110,11 +109,7 @@ Vec3f SkyModel::sun_radiance(const Vec3f& d) const {
 }
 
 Vec3f SkyModel::above_horizon(const Vec3f& d) const {
-  if (hosek_wilkie_) {
-    const float cos_gamma = std::clamp(dot(d, sun_direction_), -1.0f, 1.0f);
-    return Vec3f(hosek_wilkie_->radiance(std::acos(std::clamp(static_cast<double>(d.z), 0.0, 1.0)),
-                                         std::acos(static_cast<double>(cos_gamma))));
-  }
+  if (hosek_wilkie_) return Vec3f(hosek_wilkie_->radiance_cos(d.z, dot(d, sun_direction_)));
   if (preetham_) return Vec3f(preetham_->radiance_kcd(Vec3(d)) * kCdPerKcd);
   // The exponent keeps a bright band near the horizon, as haze-free skies show.
   const float t = std::pow(std::clamp(d.z, 0.0f, 1.0f), 0.4f);

@@ -50,7 +50,7 @@ class SkyModel {
   Vec3f above_horizon(const Vec3f& direction) const;
   void build_table();
 
-  void build_sun_disc(const Sun& sun);
+  void build_sun_disc(const Sun& sun, double elevation);  // elevation in radians
 
   Sky sky_;
   std::unique_ptr<PreethamSky> preetham_;

@@ -39,45 +39,53 @@ void check_overlap(const featuremaps::VegetationMap& map, const terrain::Elevati
   }
 }
 
+// How the warnings below name one kind of entry.
+struct EntryWords {
+  const char* table;        // "species"
+  const char* key;          // "bit"
+  const char* value;        // "species bit"
+  const char* lost;         // what unclaimed cells get none of: "trees"
+  const char* consequence;  // of an entry no cell selects: "it places no trees"
+};
+
+// One kind of entry (species bits or grass types) against the cells: values cells select
+// that no entry defines, and entries no cell selects. `note(entry)` adds to its name.
+template <typename Entry, typename ValueOf, typename Note>
+void check_entries(const std::vector<std::size_t>& selecting, int first,
+                   const std::vector<Entry>& entries, ValueOf value_of, Note note,
+                   const EntryWords& w, const std::string& path) {
+  for (int v = first; v < static_cast<int>(selecting.size()); ++v) {
+    const std::size_t n = selecting[static_cast<std::size_t>(v)];
+    const bool defined = std::any_of(entries.begin(), entries.end(),
+                                     [&](const Entry& e) { return value_of(e) == v; });
+    if (n > 0 && !defined)
+      warn_input(fmt::format("{}: {} cells select {} {}, but no [[{}]] has {} = {}: they get no {}",
+                             path, n, w.value, v, w.table, w.key, v, w.lost));
+  }
+  for (const Entry& e : entries)
+    if (selecting[static_cast<std::size_t>(value_of(e))] == 0)
+      warn_input(fmt::format("{}: [[{}]] {} {}{} is selected by no cell: {}", e.location, w.table,
+                             w.key, value_of(e), note(e), w.consequence));
+}
+
 // Silent wrong scenes: cells selecting a species bit or grass type that no entry defines, and
 // entries that no cell selects.
 void check_use(const Scenario& s, const featuremaps::VegetationMap& map, const std::string& path) {
-  std::array<std::size_t, featuremaps::kTreeBits> bits{};
-  std::array<std::size_t, 4> grass{};
+  std::vector<std::size_t> bits(featuremaps::kTreeBits, 0), grass(4, 0);
   for (int r = 0; r < map.rows(); ++r)
     for (int c = 0; c < map.cols(); ++c) {
       const featuremaps::VegetationCell v = map.at(c, r);
       if (const auto b = v.species_bit()) ++bits[static_cast<std::size_t>(*b)];
       ++grass[static_cast<std::size_t>(v.grass_type())];
     }
-  for (int b = 0; b < featuremaps::kTreeBits; ++b) {
-    const bool defined = std::any_of(s.species.begin(), s.species.end(),
-                                     [&](const SpeciesSettings& k) { return k.bit == b; });
-    if (bits[static_cast<std::size_t>(b)] > 0 && !defined)
-      warn_input(
-          fmt::format("{}: {} cells select species bit {}, but no [[species]] has bit = {}: "
-                      "they get no trees",
-                      path, bits[static_cast<std::size_t>(b)], b, b));
-  }
-  for (const SpeciesSettings& k : s.species)
-    if (bits[static_cast<std::size_t>(k.bit)] == 0)
-      warn_input(
-          fmt::format("{}: [[species]] bit {} ({}) is selected by no cell: it places no "
-                      "trees",
-                      k.location, k.bit, k.species.name));
-  for (int t = 1; t <= 3; ++t) {
-    const bool defined = std::any_of(s.grass.begin(), s.grass.end(),
-                                     [&](const GrassSettings& g) { return g.type == t; });
-    if (grass[static_cast<std::size_t>(t)] > 0 && !defined)
-      warn_input(
-          fmt::format("{}: {} cells select grass type {}, but no [[grass]] has type = {}: "
-                      "they get no grass",
-                      path, grass[static_cast<std::size_t>(t)], t, t));
-  }
-  for (const GrassSettings& g : s.grass)
-    if (grass[static_cast<std::size_t>(g.type)] == 0)
-      warn_input(fmt::format("{}: [[grass]] type {} is selected by no cell: it grows nowhere",
-                             g.location, g.type));
+  check_entries(
+      bits, 0, s.species, [](const SpeciesSettings& k) { return k.bit; },
+      [](const SpeciesSettings& k) { return " (" + k.species.name + ")"; },
+      EntryWords{"species", "bit", "species bit", "trees", "it places no trees"}, path);
+  check_entries(
+      grass, 1, s.grass, [](const GrassSettings& g) { return g.type; },
+      [](const GrassSettings&) { return std::string(); },
+      EntryWords{"grass", "type", "grass type", "grass", "it grows nowhere"}, path);
 }
 
 }  // namespace
