@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/value_noise.h"
+
 namespace landsim::featuremaps {
 namespace {
 
@@ -12,34 +14,9 @@ constexpr std::size_t kMaxCells = std::size_t{1} << 26;
 // Patches: smooth value noise at these wavelengths (metres), the first weighted most.
 constexpr double kPatchScales[] = {400.0, 120.0};
 
-std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-double lattice(std::int64_t i, std::int64_t j, std::uint64_t seed) {
-  const std::uint64_t h = mix(seed ^ mix(static_cast<std::uint64_t>(i) * 0x632be59bd9b4e019ULL +
-                                         static_cast<std::uint64_t>(j)));
-  return static_cast<double>(h >> 11) * 0x1.0p-53;
-}
-
-// Value noise in [0, 1) with smoothstep interpolation: patches with soft, unaligned edges.
-double value_noise(double x, double y, double scale, std::uint64_t seed) {
-  const double u = x / scale, v = y / scale;
-  const double fu = std::floor(u), fv = std::floor(v);
-  const auto i = static_cast<std::int64_t>(fu), j = static_cast<std::int64_t>(fv);
-  const auto smooth = [](double t) { return t * t * (3.0 - 2.0 * t); };
-  const double a = smooth(u - fu), b = smooth(v - fv);
-  const double top = lattice(i, j, seed) * (1.0 - a) + lattice(i + 1, j, seed) * a;
-  const double bottom = lattice(i, j + 1, seed) * (1.0 - a) + lattice(i + 1, j + 1, seed) * a;
-  return top * (1.0 - b) + bottom * b;
-}
-
 double patch_field(double x, double y, std::uint64_t seed) {
   return 0.7 * value_noise(x, y, kPatchScales[0], seed) +
-         0.3 * value_noise(x, y, kPatchScales[1], mix(seed));
+         0.3 * value_noise(x, y, kPatchScales[1], mix64(seed));
 }
 
 struct Grid {
@@ -84,7 +61,7 @@ std::vector<std::array<double, 2>> fraction_bands(const Grid& g,
   std::sort(values.begin(), values.end());
   const auto quantile = [&](double q) {
     if (q >= 1.0) return 2.0;  // above every value: the band reaches the end
-    return values[std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()))];
+    return values[std::min(values.size() - 1, static_cast<std::size_t>(q * static_cast<double>(values.size())))];
   };
   double taken = 0.0;
   for (std::size_t i = 0; i < requests.size(); ++i) {
@@ -128,8 +105,8 @@ std::optional<VegetationMap> covered_map(const std::optional<VegetationMap>& fea
                                          std::uint64_t seed) {
   if (trees.empty() && grass.empty()) return features;
   const Grid g = combined_grid(features, terrain);
-  const std::uint64_t tree_seed = mix(seed ^ 0x7472656573ULL),
-                      grass_seed = mix(seed ^ 0x6772617373ULL);
+  const std::uint64_t tree_seed = mix64(seed ^ 0x7472656573ULL),
+                      grass_seed = mix64(seed ^ 0x6772617373ULL);
   const auto tree_bands = fraction_bands(g, trees, tree_seed);
   const auto grass_bands = fraction_bands(g, grass, grass_seed);
   std::vector<std::uint16_t> cells(static_cast<std::size_t>(g.cols) *

@@ -32,6 +32,10 @@ struct GroundMaterial {
 };
 
 struct Ground {
+  // Material id of context terrain no feature map covers (terrain/context_mesh.h): it takes
+  // the plain's albedo, the mean along the grid's edge.
+  static constexpr std::uint8_t kSurroundings = 8;
+
   terrain::GroundMesh mesh;
   Vec3f albedo = kDefaultGroundAlbedo;  // material 0: the terrain's own
   // The endless plain beyond the grid, and the ground the sky model sees (Hosek-Wilkie's

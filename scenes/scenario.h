@@ -21,6 +21,9 @@ struct TerrainSettings {
   std::string elevation;  // resolved path: a file, or a GDAL /vsimem/ path for embedded data
   terrain::DemOptions dem;
   Vec3f albedo = renderer::kDefaultGroundAlbedo;
+  // Coarser elevation rasters around the grid (resolved paths), in any order.
+  std::vector<std::string> context;
+  std::vector<std::string> context_locations;  // "file:line:column" of each, for messages
 };
 
 struct SunSettings {

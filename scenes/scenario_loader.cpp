@@ -49,6 +49,26 @@ const toml::table& sub_table(const toml::table& root, std::string_view name,
   return *n->as_table();
 }
 
+// [terrain] context: coarser elevation rasters around the grid, each checked to exist.
+std::vector<std::string> read_context(TableReader& r, const std::string& base_dir,
+                                      std::vector<std::string>& locations) {
+  std::vector<std::string> paths;
+  const toml::node* n =
+      r.value("context", "an array of raster files: coarser elevation grids around the grid", "[]");
+  if (n == nullptr) return paths;
+  const toml::array* files = n->as_array();
+  if (files == nullptr)
+    r.fail_at(*n, "context", "expected an array of file names, such as [\"region.tif\"]");
+  for (const toml::node& f : *files) {
+    if (!f.is_string()) r.fail_at(f, "context", "expected a file name (a string)");
+    paths.push_back(resolve(base_dir, *f.value<std::string>()));
+    locations.push_back(r.location(&f));
+    if (!terrain::raster_file_exists(paths.back()))
+      r.fail_at(f, "context", "file not found: " + paths.back());
+  }
+  return paths;
+}
+
 TerrainSettings read_terrain(const toml::table& t, const std::string& file,
                              const std::string& base_dir) {
   TableReader r(t, "terrain", file);
@@ -67,6 +87,7 @@ TerrainSettings read_terrain(const toml::table& t, const std::string& file,
   const std::string nodata = r.choice("nodata", {"hole", "fill"}, "hole");
   s.dem.nodata = nodata == "fill" ? terrain::NodataPolicy::fill : terrain::NodataPolicy::hole;
   s.albedo = to_vec3f(r.vec3("albedo", kUnit, Vec3(s.albedo)));
+  s.context = read_context(r, base_dir, s.context_locations);
   r.finish();
   return s;
 }

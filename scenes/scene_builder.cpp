@@ -13,11 +13,14 @@
 #include "renderer/bark_texture.h"
 #include "renderer/sky.h"
 #include "scenes/detail/camera_check.h"
+#include "scenes/detail/context_terrain.h"
 #include "scenes/detail/grass_cover.h"
 #include "scenes/detail/plain_albedo.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
+#include "terrain/context_mesh.h"
 #include "terrain/ground_mesh.h"
+#include "terrain/terrain_field.h"
 
 namespace landsim::scenes {
 namespace {
@@ -94,21 +97,12 @@ void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* m
   const FeatureMapSettings f = s.featuremaps.value_or(FeatureMapSettings{});
   const std::array<MaterialRaster, 4> rasters{material_raster(f.road), material_raster(f.water),
                                               material_raster(f.rock), material_raster(f.soil)};
-  renderer::Ground& ground = scene.ground;
-  // Ids: 1 road, 2 water, 3 rock, 4 soil, 5-7 ground under grass types 1-3.
-  ground.materials = {{s.ground.road, false},
-                      {s.ground.water, true},
-                      {s.ground.rock, false},
-                      {s.ground.soil, false}};
-  for (int t = 0; t < 3; ++t) {
-    // Seen from afar grass is its colour; the ground under it takes a darker shade of it.
-    ground.materials.push_back(
-        {scene.grass.types[static_cast<std::size_t>(t)].reflectance * 0.9f, false});
-  }
   const bool any_raster = !f.road.empty() || !f.water.empty() || !f.rock.empty() || !f.soil.empty();
   if (!any_raster && (map == nullptr || s.grass.empty())) return;
+  renderer::Ground& ground = scene.ground;
   const terrain::GroundMesh& mesh = ground.mesh;
-  ground.triangle_material.assign(mesh.triangle_count(), 0);
+  // Context triangles keep kSurroundings where no map says otherwise.
+  if (ground.triangle_material.empty()) ground.triangle_material.assign(mesh.triangle_count(), 0);
   tbb::parallel_for(std::size_t{0}, mesh.triangle_count(), [&](std::size_t t) {
     const Vec3f a = mesh.vertices[mesh.indices[3 * t]], b = mesh.vertices[mesh.indices[3 * t + 1]],
                 c = mesh.vertices[mesh.indices[3 * t + 2]];
@@ -132,7 +126,51 @@ void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* m
   (void)grid;
 }
 
+constexpr std::uint8_t kSurroundings = renderer::Ground::kSurroundings;
+
+// The ground materials by id: 1 road, 2 water, 3 rock, 4 soil, 5-7 the ground under grass
+// types 1-3, 8 context terrain (its albedo is set once the grid's edge is known).
+void set_ground_materials(const Scenario& s, renderer::Scene& scene) {
+  scene.ground.materials = {{s.ground.road, false},
+                            {s.ground.water, true},
+                            {s.ground.rock, false},
+                            {s.ground.soil, false}};
+  for (int t = 0; t < 3; ++t) {
+    // Seen from afar grass is its colour; the ground under it takes a darker shade of it.
+    scene.ground.materials.push_back(
+        {scene.grass.types[static_cast<std::size_t>(t)].reflectance * 0.9f, false});
+  }
+  scene.ground.materials.push_back({scene.ground.albedo, false});
+}
+
+// The ground mesh: the grid's own, or with context grids the grid and its surroundings; in
+// the latter case context triangles take kSurroundings (feature maps may override it).
+void add_ground_mesh(const Scenario& s, const terrain::ElevationGrid& grid,
+                     renderer::Scene& scene) {
+  if (s.terrain.context.empty()) {
+    scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
+    return;
+  }
+  const terrain::TerrainField field = detail::context_terrain(s, grid);
+  terrain::ContextMesh m =
+      terrain::build_context_mesh(field, scene.origin, context_mesh_options(s));
+  scene.ground.mesh = std::move(m.mesh);
+  scene.ground.triangle_material = std::move(m.from_context);
+  for (std::uint8_t& id : scene.ground.triangle_material) id = id != 0 ? kSurroundings : 0;
+}
+
 }  // namespace
+
+terrain::ContextMeshOptions context_mesh_options(const Scenario& s) {
+  terrain::ContextMeshOptions o;
+  double pixel = 1.0;  // the finest pixel of any view, radians
+  for (const ViewSettings& v : s.views) {
+    o.views.push_back({v.position.x, v.position.y});
+    pixel = std::min(pixel, v.fov_y_deg * std::numbers::pi / 180.0 / v.height);
+  }
+  o.range_factor = std::clamp(1.0 / (kContextCellPixels * pixel), 2.0, 400.0);
+  return o;
+}
 
 Vec3 sun_direction(double elevation_deg, double azimuth_deg) {
   const double el = elevation_deg * std::numbers::pi / 180.0;
@@ -145,7 +183,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
       terrain::load_elevation(scenario.terrain.elevation, scenario.terrain.dem);
   renderer::Scene scene;
   scene.origin = grid.centre();
-  scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
+  add_ground_mesh(scenario, grid, scene);
   scene.ground.albedo = scenario.terrain.albedo;
   scene.sun.direction = sun_direction(scenario.sun.elevation_deg, scenario.sun.azimuth_deg);
   scene.sky = scenario.sky;
@@ -178,7 +216,9 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
       scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin);
     add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);
   }
+  set_ground_materials(scenario, scene);
   scene.ground.edge_albedo = detail::edge_albedo(scene.ground, grid, scene.origin);
+  scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();
   return scene;
 }
 

@@ -4,6 +4,7 @@
 #include "renderer/scene.h"
 #include "scenes/scenario.h"
 #include "scenes/variant_cache.h"
+#include "terrain/context_mesh.h"
 
 namespace landsim::scenes {
 
@@ -12,6 +13,13 @@ namespace landsim::scenes {
 // generated again.
 renderer::Scene build_scene(const Scenario& scenario, double time = 0.0,
                             VariantCache* reuse = nullptr);
+
+// Context terrain beyond the grid is meshed in cells that span about this many pixels of
+// the view with the finest pixels, at their distance from the nearest view.
+inline constexpr double kContextCellPixels = 4.0;
+
+// The views and the range factor the context mesh is built for (terrain/context_mesh.h).
+terrain::ContextMeshOptions context_mesh_options(const Scenario& scenario);
 
 // Unit vector toward the sun from elevation and azimuth (clockwise from north), in degrees.
 Vec3 sun_direction(double elevation_deg, double azimuth_deg);

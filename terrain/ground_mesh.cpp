@@ -26,8 +26,9 @@ void add_quad(const ElevationGrid& g, int c, int r, std::vector<std::uint32_t>& 
   }
 }
 
-// Smooth shading normal at a cell centre: central differences over the valid neighbours.
-Vec3 vertex_normal(const ElevationGrid& g, int c, int r) {
+}  // namespace
+
+Vec3 grid_vertex_normal(const ElevationGrid& g, int c, int r) {
   if (!g.valid(c, r)) return {0.0, 0.0, 1.0};
   const auto h = [&](int cc, int rr) -> double {
     return g.valid(cc, rr) ? g.at(cc, rr) : g.at(c, r);
@@ -41,8 +42,6 @@ Vec3 vertex_normal(const ElevationGrid& g, int c, int r) {
   return normalize(Vec3{-dh_dx, -dh_dy, 1.0});
 }
 
-}  // namespace
-
 GroundMesh build_ground_mesh(const ElevationGrid& grid, const Vec3& origin) {
   GroundMesh mesh;
   mesh.vertices.reserve(static_cast<std::size_t>(grid.cols()) * grid.rows());
@@ -53,7 +52,7 @@ GroundMesh build_ground_mesh(const ElevationGrid& grid, const Vec3& origin) {
       const double h = grid.valid(c, r) ? grid.at(c, r) : origin.z;
       const Vec3 p{grid.x_of_col(c), grid.y_of_row(r), h};
       mesh.vertices.push_back(Vec3f(p - origin));
-      mesh.normals.push_back(Vec3f(vertex_normal(grid, c, r)));
+      mesh.normals.push_back(Vec3f(grid_vertex_normal(grid, c, r)));
     }
   }
   for (int r = 0; r + 1 < grid.rows(); ++r) {

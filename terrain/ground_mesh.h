@@ -21,4 +21,8 @@ struct GroundMesh {
 // georeferenced grids at hundreds of kilometres keep millimetre precision.
 GroundMesh build_ground_mesh(const ElevationGrid& grid, const Vec3& origin);
 
+// The smooth shading normal at a valid cell centre: central differences over its valid
+// neighbours.
+Vec3 grid_vertex_normal(const ElevationGrid& grid, int col, int row);
+
 }  // namespace landsim::terrain

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace landsim::terrain {
 
@@ -21,6 +22,14 @@ struct RasterHeader {
 };
 
 enum class CellType { float32, uint16 };
+
+// Band 1 of a raster in another coordinate reference system: GDAL's warper resamples it
+// (bilinear) onto the grid GDAL suggests in the target CRS, north-up.
+struct WarpedRaster {
+  int cols = 0, rows = 0;
+  std::array<double, 6> geotransform{};  // GDAL's order
+  std::vector<float> cells;              // cols x rows, north first; NaN: nodata or outside
+};
 
 // Every function returns false on failure and puts GDAL's last message (possibly empty) in
 // `error`; GDAL's own printing to stderr is silenced.
@@ -42,6 +51,16 @@ struct RasterIo {
                                const std::uint16_t* cells,
                                const std::array<double, 6>& geotransform,
                                const std::string& crs_wkt, std::string& error);
+  // Band 1 of `path` in the CRS `target_wkt`: unchanged (the file's own cells and placement)
+  // when the CRS is the same; refused when exactly one of the two has no CRS.
+  bool (*warp_raster)(const std::string& path, const std::string& target_wkt, WarpedRaster& out,
+                      std::string& error);
+  // Offsets that fade out: `cells` is NaN where unknown. Each unknown cell within `band`
+  // cells of a known one takes the nearest known values (GDALFillNodata) times
+  // 1 - distance / band (distance by GDALComputeProximity); the others become 0. Cells
+  // flagged in `enclosed` (holes surrounded by known cells) take the filled values whole.
+  bool (*fade_offsets)(float* cells, const std::uint8_t* enclosed, int cols, int rows, double band,
+                       std::string& error);
 };
 
 // The module's table, loaded on first use (std::runtime_error when the module is missing).

@@ -6,6 +6,12 @@
 #include <cpl_vsi.h>
 #include <gdal.h>
 #include <gdal_alg.h>
+#include <gdal_utils.h>
+#include <ogr_srs_api.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include <memory>
 #include <mutex>
@@ -148,8 +154,135 @@ bool write_uint16_geotiff(const std::string& path, int cols, int rows, const std
   return CPLGetLastErrorType() < CE_Failure ? true : quiet.fail(error);
 }
 
-const RasterIo kTable{mount_memory_file, file_exists, read_file,           read_header,
-                      read_band,         fill_nodata, write_uint16_geotiff};
+struct SrsDeleter {
+  void operator()(void* srs) const {
+    OSRDestroySpatialReference(static_cast<OGRSpatialReferenceH>(srs));
+  }
+};
+using Srs = std::unique_ptr<void, SrsDeleter>;
+
+Srs srs_of(const std::string& wkt) {
+  if (wkt.empty()) return nullptr;
+  Srs srs(OSRNewSpatialReference(nullptr));
+  char* text = const_cast<char*>(wkt.c_str());
+  if (OSRImportFromWkt(static_cast<OGRSpatialReferenceH>(srs.get()), &text) != OGRERR_NONE)
+    return nullptr;
+  return srs;
+}
+
+// Band 1 with its nodata as NaN, the dataset's own cells and placement.
+bool read_as_is(GDALDatasetH ds, WarpedRaster& out) {
+  out.cols = GDALGetRasterXSize(ds);
+  out.rows = GDALGetRasterYSize(ds);
+  double gt[6] = {0, 1, 0, 0, 0, -1};
+  GDALGetGeoTransform(ds, gt);
+  for (int k = 0; k < 6; ++k) out.geotransform[static_cast<std::size_t>(k)] = gt[k];
+  out.cells.resize(static_cast<std::size_t>(out.cols) * static_cast<std::size_t>(out.rows));
+  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  if (GDALRasterIO(band, GF_Read, 0, 0, out.cols, out.rows, out.cells.data(), out.cols, out.rows,
+                   GDT_Float32, 0, 0) != CE_None)
+    return false;
+  int has_nodata = 0;
+  const auto nodata = static_cast<float>(GDALGetRasterNoDataValue(band, &has_nodata));
+  for (float& v : out.cells)
+    if (!std::isfinite(v) || (has_nodata && v == nodata)) v = NAN;
+  return true;
+}
+
+bool warp_raster(const std::string& path, const std::string& target_wkt, WarpedRaster& out,
+                 std::string& error) {
+  const QuietErrors quiet;
+  const Dataset src = open(path);
+  if (!src || GDALGetRasterCount(src.get()) < 1) return quiet.fail(error);
+  const char* own = GDALGetProjectionRef(src.get());
+  const Srs from = srs_of(own != nullptr ? own : ""), to = srs_of(target_wkt);
+  if (!from && !to) return read_as_is(src.get(), out) || quiet.fail(error);
+  if (!from || !to) {
+    error = from ? "the elevation grid has no coordinate reference system, this raster has one"
+                 : "this raster has no coordinate reference system, the elevation grid has one";
+    return false;
+  }
+  if (OSRIsSame(static_cast<OGRSpatialReferenceH>(from.get()),
+                static_cast<OGRSpatialReferenceH>(to.get())))
+    return read_as_is(src.get(), out) || quiet.fail(error);
+  // Bilinear, into a float raster in memory at the resolution GDAL suggests; cells the source
+  // does not cover take the marker below.
+  constexpr const char* kOutside = "-3.0e38";
+  std::vector<const char*> args{"-of",        "MEM",      "-t_srs", target_wkt.c_str(),
+                                "-r",         "bilinear", "-ot",    "Float32",
+                                "-dstnodata", kOutside,   nullptr};
+  GDALWarpAppOptions* options = GDALWarpAppOptionsNew(const_cast<char**>(args.data()), nullptr);
+  if (options == nullptr) return quiet.fail(error);
+  GDALDatasetH sources[] = {src.get()};
+  int usage_error = 0;
+  const Dataset warped(GDALWarp("", nullptr, 1, sources, options, &usage_error));
+  GDALWarpAppOptionsFree(options);
+  if (!warped) return quiet.fail(error);
+  return read_as_is(warped.get(), out) || quiet.fail(error);
+}
+
+// A MEM raster of one band holding `cells`.
+Dataset memory_raster(int cols, int rows, GDALDataType type, void* cells) {
+  Dataset ds(GDALCreate(GDALGetDriverByName("MEM"), "", cols, rows, 1, type, nullptr));
+  if (ds && GDALRasterIO(GDALGetRasterBand(ds.get(), 1), GF_Write, 0, 0, cols, rows, cells, cols,
+                         rows, type, 0, 0) != CE_None)
+    ds.reset();
+  return ds;
+}
+
+bool fade_offsets(float* cells, const std::uint8_t* enclosed, int cols, int rows, double band,
+                  std::string& error) {
+  const QuietErrors quiet;
+  const std::size_t n = static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows);
+  constexpr float kUnknown = -3.0e38f;
+  std::vector<std::uint8_t> known(n);
+  std::vector<float> filled(cells, cells + n);
+  for (std::size_t i = 0; i < n; ++i) {
+    known[i] = std::isnan(cells[i]) ? 0 : 1;
+    if (!known[i]) filled[i] = kUnknown;
+  }
+  const Dataset offsets = memory_raster(cols, rows, GDT_Float32, filled.data());
+  const Dataset mask = memory_raster(cols, rows, GDT_Byte, known.data());
+  const Dataset distance(
+      GDALCreate(GDALGetDriverByName("MEM"), "", cols, rows, 1, GDT_Float32, nullptr));
+  if (!offsets || !mask || !distance) return quiet.fail(error);
+  GDALRasterBandH offset_band = GDALGetRasterBand(offsets.get(), 1);
+  GDALSetRasterNoDataValue(offset_band, kUnknown);
+  // Enclosed holes are filled whatever their size; elsewhere only the band matters.
+  const bool any_enclosed = std::any_of(enclosed, enclosed + n, [](std::uint8_t e) { return e; });
+  const double reach = any_enclosed ? double(cols) + double(rows) : band + 1.0;
+  CPLErr err = GDALFillNodata(offset_band, nullptr, reach, 0, 0, nullptr, nullptr, nullptr);
+  const std::string max_distance = "MAXDIST=" + std::to_string(band);
+  char* proximity_options[] = {const_cast<char*>("VALUES=1"), const_cast<char*>("DISTUNITS=PIXEL"),
+                               const_cast<char*>(max_distance.c_str()),
+                               const_cast<char*>("NODATA=-1"), nullptr};
+  std::vector<float> d(n);
+  if (err == CE_None)
+    err =
+        GDALComputeProximity(GDALGetRasterBand(mask.get(), 1), GDALGetRasterBand(distance.get(), 1),
+                             proximity_options, nullptr, nullptr);
+  if (err == CE_None)
+    err = GDALRasterIO(offset_band, GF_Read, 0, 0, cols, rows, filled.data(), cols, rows,
+                       GDT_Float32, 0, 0);
+  if (err == CE_None)
+    err = GDALRasterIO(GDALGetRasterBand(distance.get(), 1), GF_Read, 0, 0, cols, rows, d.data(),
+                       cols, rows, GDT_Float32, 0, 0);
+  if (err != CE_None) return quiet.fail(error);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (known[i]) continue;
+    if (enclosed[i] && filled[i] != kUnknown) {
+      cells[i] = filled[i];
+      continue;
+    }
+    const bool reached = d[i] >= 0.0f && filled[i] != kUnknown;
+    const double weight = reached ? std::max(0.0, 1.0 - d[i] / band) : 0.0;
+    cells[i] = static_cast<float>(weight * (reached ? filled[i] : 0.0f));
+  }
+  return true;
+}
+
+const RasterIo kTable{mount_memory_file, file_exists,          read_file,   read_header, read_band,
+                      fill_nodata,       write_uint16_geotiff, warp_raster, fade_offsets};
 
 }  // namespace
 }  // namespace landsim::terrain

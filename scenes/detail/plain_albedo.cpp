@@ -28,7 +28,8 @@ Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& 
     const Vec3 centre = Vec3((a + b + c) / 3.0f) + origin;
     const auto col = static_cast<int>(std::floor((centre.x - t.origin_x) / t.cell_size_x));
     const auto row = static_cast<int>(std::floor((t.origin_y - centre.y) / t.cell_size_y));
-    if (!edge_cell(grid, col, row)) continue;
+    if (!edge_cell(grid, col, row) || ground.material_id(k) == renderer::Ground::kSurroundings)
+      continue;
     sum += Vec3(ground.material(ground.material_id(k)).albedo);
     ++n;
   }

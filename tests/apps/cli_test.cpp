@@ -91,6 +91,33 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
   }
 }
 
+TEST(Cli, BadContextRastersExitTwoAtTheirEntryAndWriteNothing) {
+  TempDir dir;
+  // An ESRI grid far from the volcano (which spans 0-610 m east, 0-870 m north).
+  const auto far = dir.write("far.asc",
+                             "ncols 2\nnrows 2\nxllcorner 50000\nyllcorner 50000\ncellsize "
+                             "100\n1 2\n3 4\n");
+  const auto junk = dir.write("junk.tif", "not a raster");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"context = [\"" + far.string() + "\"]", "does not overlap the elevation grid"},
+      {"context = [\"" + junk.string() + "\"]", "not a raster format GDAL can read"},
+      {"context = [\"" + (dir / "missing.tif").string() + "\"]", "file not found"},
+      // The grid stretched to 20 m cells would no longer lie on its context.
+      {"context = [\"" + far.string() + "\"]\ncell_size = 20", "cell_size 20 differs"},
+  };
+  for (const auto& [context, expected] : cases) {
+    const auto file = dir.write("context.toml", scenario(context, "", "spp = 1"));
+    const auto out = dir / "out";
+    const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << context << ": " << r.err;
+    EXPECT_NE(r.err.find(file.string() + ":3:"), std::string::npos) << r.err;  // its line
+    EXPECT_NE(r.err.find("context"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(has_files(out)) << context;
+  }
+}
+
 TEST(Cli, CoverEverywherePlacesTreesAtTheDensityAskedWithoutRasters) {
   TempDir dir;
   const auto file = dir.write(

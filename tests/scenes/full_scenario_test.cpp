@@ -45,7 +45,8 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          data +
          "/terrain/volcano.asc\"\n"
          "cell_size = 10.0\norigin = [0.0, 0.0]\nheight_scale = 1.0\nheight_offset = 0.0\n"
-         "nodata = \"hole\"\nalbedo = [0.2, 0.2, 0.1]\n\n"
+         "nodata = \"hole\"\nalbedo = [0.2, 0.2, 0.1]\ncontext = [\"" +
+         (dir / "context.tif").string() + "\"]\n\n"
          "[featuremaps]\n" +
          vegetation_keys + "soil = \"" + (dir / "soil.tif").string() + "\"\nrock = \"" +
          (dir / "rock.tif").string() +
@@ -109,6 +110,10 @@ struct Fixture {
     write_grid((dir / "rock.tif").string(), GDT_Byte, 45, 49, 1);
     write_grid((dir / "water.tif").string(), GDT_Byte, 50, 54, 1);
     write_grid((dir / "road.tif").string(), GDT_Byte, 55, 60, 1);
+    // A 1.2 km context of 30 m cells at 100 m around the volcano (0-610 m x 0-870 m).
+    const double context_gt[6] = {-300.0, 30.0, 0.0, 1170.0, 0.0, -30.0};
+    landsim::testing::write_raster((dir / "context.tif").string(), "GTiff", GDT_Float32, 40, 40,
+                                   std::vector<double>(1600, 100.0), context_gt);
   }
   std::string text() const { return full_text(dir, "vegetation = \"" + vegetation + "\"\n"); }
 };
@@ -238,6 +243,17 @@ TEST(FullScenario, SceneCarriesVegetationGrassAndGroundMaterials) {
   EXPECT_EQ(material_at(473.0), 3);
   EXPECT_EQ(material_at(523.0), 2);
   EXPECT_EQ(material_at(573.0), 1);
+  // West of the grid: the context terrain, which takes the albedo of the grid's edge.
+  int west = 0;
+  const terrain::GroundMesh& m = scene.ground.mesh;
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+    if (m.vertices[m.indices[3 * t]].x + scene.origin.x > -20.0) continue;
+    ASSERT_EQ(scene.ground.material_id(t), renderer::Ground::kSurroundings);
+    ++west;
+  }
+  EXPECT_GT(west, 20);
+  EXPECT_EQ(scene.ground.material(renderer::Ground::kSurroundings).albedo,
+            scene.ground.plain_albedo());
   EXPECT_TRUE(scene.ground.materials[1].water);
   ASSERT_FALSE(scene.prototypes.empty());
   EXPECT_NE(scene.prototypes[0].bark_texture, nullptr);
