@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -34,6 +35,43 @@ void write_mesh2(fmt::ostream& out, const std::string& name, const std::vector<V
   out.print("\n  }}\n  face_indices {{ {}", indices.size() / 3);
   for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
     out.print(",\n    <{}, {}, {}>", indices[i], indices[i + 1], indices[i + 2]);
+  }
+  out.print("\n  }}\n}}\n");
+}
+
+// The ground of one material with its shading variation as vertex colours: each vertex
+// takes shade_ground's albedo there (image textures left out: POV-Ray has no three-sided
+// projection, and a vertex would alias the image), quantised into a palette of LS_Texture
+// entries that POV-Ray interpolates across each triangle.
+void write_ground_mesh2(fmt::ostream& out, const std::string& name, const renderer::Scene& scene,
+                        int id, const std::vector<std::uint32_t>& indices) {
+  const terrain::GroundMesh& m = scene.ground.mesh;
+  std::map<std::array<int, 3>, std::size_t> palette;
+  std::map<std::uint32_t, std::size_t> colour_of;
+  for (std::uint32_t v : indices) {
+    if (colour_of.count(v) != 0) continue;
+    const renderer::ShadedGround g =
+        renderer::shade_ground(scene.ground, id, Vec3(m.vertices[v]) + scene.origin,
+                               normalize(Vec3(m.normals[v])), scene.sun.direction, false);
+    const std::array<int, 3> q{static_cast<int>(std::lround(g.albedo.x * 1024.0f)),
+                               static_cast<int>(std::lround(g.albedo.y * 1024.0f)),
+                               static_cast<int>(std::lround(g.albedo.z * 1024.0f))};
+    colour_of[v] = palette.try_emplace(q, palette.size()).first->second;
+  }
+  std::vector<std::array<int, 3>> colours(palette.size());
+  for (const auto& [q, i] : palette) colours[i] = q;
+  out.print("#declare {} = mesh2 {{\n  vertex_vectors {{ {}", name, m.vertices.size());
+  for (const Vec3f& v : m.vertices) out.print(",\n    {}", pov(v));
+  out.print("\n  }}\n  normal_vectors {{ {}", m.normals.size());
+  for (const Vec3f& n : m.normals) out.print(",\n    {}", pov(n));
+  out.print("\n  }}\n  texture_list {{ {}", colours.size());
+  for (const auto& q : colours)
+    out.print(",\n    LS_Texture(<1, 0, 0>, <{:.6g}, {:.6g}, {:.6g}>)", q[0] / 1024.0,
+              q[1] / 1024.0, q[2] / 1024.0);
+  out.print("\n  }}\n  face_indices {{ {}", indices.size() / 3);
+  for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+    out.print(",\n    <{}, {}, {}>, {}, {}, {}", indices[i], indices[i + 1], indices[i + 2],
+              colour_of[indices[i]], colour_of[indices[i + 1]], colour_of[indices[i + 2]]);
   }
   out.print("\n  }}\n}}\n");
 }
@@ -124,10 +162,8 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
       auto out = fmt::output_file(inc.temp_path().string());
       out.print("// landsim tree prototypes, POV-Ray axes (y up)\n");
       // The ground, one mesh per ground material (soil, rock, water, road, under grass).
-      for (const auto& [id, indices] : ground_by_material(scene.ground)) {
-        write_mesh2(out, fmt::format("LS_Ground_{}", id), scene.ground.mesh.vertices,
-                    scene.ground.mesh.normals, indices);
-      }
+      for (const auto& [id, indices] : ground_by_material(scene.ground))
+        write_ground_mesh2(out, fmt::format("LS_Ground_{}", id), scene, id, indices);
       for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
         const trees::TreeGeometry& g = scene.prototypes[p].geometry;
         for (int k = 0; k < trees::kGroupCount; ++k) {
@@ -170,12 +206,12 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     out.print("global_settings {{ assumed_gamma 1.0 max_trace_level 5\n");
     out.print("  #if (LS_Mask) ambient_light rgb 1 #else ambient_light {} #end }}\n",
               light(o.ambient_irradiance / std::numbers::pi_v<float>));
-    out.print("#include \"meshes.inc\"\n");
     out.print(
         "#macro LS_Texture(Class, Albedo)\n  #if (LS_Mask) texture {{ pigment {{ rgb Class }} "
         "finish {{ ambient 1 diffuse 0 }} }}\n"
         "  #else texture {{ pigment {{ rgb Albedo }} finish {{ ambient 1 diffuse 1 }} }} "
         "#end\n#end\n");
+    out.print("#include \"meshes.inc\"\n");  // its ground meshes use LS_Texture
     out.print(
         "camera {{ perspective location {} look_at {} sky <0, 1, 0> right x*{:.9g} up y angle "
         "{:.9g} }}\n",
@@ -190,10 +226,9 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
                 light(o.fog_colour));
     }
     out.print("#else\nbackground {{ rgb 0 }}\n#end\n");
-    for (const auto& [id, indices] : ground_by_material(scene.ground)) {
-      const Vec3f albedo = scene.ground.material(static_cast<std::uint8_t>(id)).albedo;
-      out.print("object {{ LS_Ground_{} LS_Texture(<1, 0, 0>, {}) }}\n", id, colour_vector(albedo));
-    }
+    // The ground's colours are its vertices' (meshes.inc).
+    for (const auto& [id, indices] : ground_by_material(scene.ground))
+      out.print("object {{ LS_Ground_{} }}\n", id);
     for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
       const renderer::TreePrototype& proto = scene.prototypes[p];
       out.print("#declare LS_Tree_{} = union {{\n", p);

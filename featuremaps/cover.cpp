@@ -61,7 +61,8 @@ std::vector<std::array<double, 2>> fraction_bands(const Grid& g,
   std::sort(values.begin(), values.end());
   const auto quantile = [&](double q) {
     if (q >= 1.0) return 2.0;  // above every value: the band reaches the end
-    return values[std::min(values.size() - 1, static_cast<std::size_t>(q * static_cast<double>(values.size())))];
+    return values[std::min(values.size() - 1,
+                           static_cast<std::size_t>(q * static_cast<double>(values.size())))];
   };
   double taken = 0.0;
   for (std::size_t i = 0; i < requests.size(); ++i) {

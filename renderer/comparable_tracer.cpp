@@ -45,7 +45,7 @@ PathSample ComparableTracer::trace(const Ray& ray, const CounterRng& rng,
     return out;
   }
   const ShadingPoint v = shading_point(ray, *hit, mask);
-  SurfaceMaterial m = surface_material(scene_, *hit);
+  SurfaceMaterial m = surface_material(scene_, *hit, v);
   m.transmittance = {};  // POV-Ray's leaves are opaque
   out.first = first_hit(scene_, *hit, v, m);
   const float fresnel = water_fresnel(m, ray.direction, v.ng);

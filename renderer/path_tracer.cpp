@@ -164,7 +164,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       break;
     }
     const ShadingPoint v = shading_point(ray, *hit, mask);
-    const SurfaceMaterial m = surface_material(scene_, *hit);
+    const SurfaceMaterial m = surface_material(scene_, *hit, v);
     if (bounce == 0) out.first = first_hit(scene_, *hit, v, m);
     const float fresnel = water_fresnel(m, ray.direction, v.ng);
     // The roulette sees what reaches the pixel: the throughput and the water's share.

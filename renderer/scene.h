@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "renderer/ground_shading.h"
 #include "terrain/ground_mesh.h"
 #include "trees/degradation.h"
 #include "trees/geometry.h"
@@ -45,6 +46,8 @@ struct Ground {
   Vec3f plain_albedo() const { return edge_albedo.value_or(albedo); }
   std::vector<GroundMaterial> materials;        // further materials, 1-based in the ids below
   std::vector<std::uint8_t> triangle_material;  // per triangle, 0 = `albedo`; may be empty
+  // Noise, rules and textures that vary the materials over the ground (ground_shading.h).
+  GroundShading shading;
 
   // What ground triangle `t` is made of, for every renderer and exporter alike: its material
   // id (0: the terrain's own), and the material of an id.
@@ -52,7 +55,7 @@ struct Ground {
     return t < triangle_material.size() ? triangle_material[t] : std::uint8_t{0};
   }
   GroundMaterial material(std::uint8_t id) const {
-    return id == 0 ? GroundMaterial{albedo, false} : materials[id - 1u];
+    return id == 0 || id > materials.size() ? GroundMaterial{albedo, false} : materials[id - 1u];
   }
 };
 

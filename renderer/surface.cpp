@@ -16,14 +16,18 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
-SurfaceMaterial surface_material(const Scene& scene, const Hit& hit) {
+SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const ShadingPoint& v) {
+  const Vec3 p = Vec3(v.p) + scene.origin;  // terrain coordinates: the noise stays put
   if (hit.object == ObjectClass::grass) {
     const GrassType& g = scene.grass.types[static_cast<std::size_t>(hit.grass_type - 1)];
-    return {g.reflectance, g.transmittance};
+    // Blades vary as the ground beneath them does.
+    const float f = ground_variation(scene.ground.shading, 4 + hit.grass_type, p.x, p.y);
+    return {g.reflectance * f, g.transmittance * f};
   }
   if (hit.prototype < 0) {
-    const GroundMaterial m = scene.ground.material(scene.ground.material_id(hit.primitive));
-    return {m.albedo, {}, m.water};
+    const ShadedGround g = shade_ground(scene.ground, scene.ground.material_id(hit.primitive), p,
+                                        normalize(Vec3(hit.shading_normal)), scene.sun.direction);
+    return {g.albedo, {}, g.water};
   }
   const TreePrototype& proto = scene.prototypes[static_cast<std::size_t>(hit.prototype)];
   if (hit.object == ObjectClass::leaf) {

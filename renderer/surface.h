@@ -22,15 +22,16 @@ struct SurfaceMaterial {
   bool two_sided() const { return max_component(transmittance) > 0.0f; }
 };
 
-// The material of a hit: ground (by triangle), grass, bark (textured) or leaf (vigour tint).
-SurfaceMaterial surface_material(const Scene& scene, const Hit& hit);
-
 struct ShadingPoint {
   Vec3f p;             // on the surface
   Vec3f n;             // shading normal, facing the incoming ray
   Vec3f ng;            // geometric normal, same side
   std::uint32_t mask;  // the pixel's ray mask (stochastic level of detail)
 };
+
+// The material of a hit at `v`: ground (by triangle, varied by renderer/ground_shading),
+// grass (varied like the ground beneath), bark (textured) or leaf (vigour tint).
+SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const ShadingPoint& v);
 
 // The hit point of `ray` with both normals turned toward where the ray came from.
 ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask);

@@ -85,12 +85,24 @@ struct GrassSettings {
   Vec3f colour{0.10f, 0.22f, 0.05f};
 };
 
+// The shading variation a scenario has unless [ground] says otherwise.
+inline renderer::GroundShading scenario_ground_shading() {
+  renderer::GroundShading s;
+  s.variation = renderer::kScenarioVariation;
+  return s;
+}
+
 // Albedo of each ground material (linear RGB).
 struct GroundMaterials {
   Vec3f soil{0.20f, 0.15f, 0.10f};
   Vec3f rock{0.35f, 0.33f, 0.30f};
   Vec3f water{0.02f, 0.03f, 0.04f};
   Vec3f road{0.12f, 0.12f, 0.12f};
+  // Variation, rules and texture size (renderer/ground_shading.h); its textures are loaded
+  // from `texture_files` (resolved paths, by material id; empty: none) when the scene is built.
+  renderer::GroundShading shading = scenario_ground_shading();
+  std::array<std::string, renderer::kGroundMaterials> texture_files;
+  std::array<std::string, renderer::kGroundMaterials> texture_locations;  // "file:line:col"
 };
 
 struct SpeciesSettings {

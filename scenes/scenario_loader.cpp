@@ -477,13 +477,108 @@ std::vector<GrassSettings> read_grass(const toml::table& root, const std::string
   return out;
 }
 
-GroundMaterials read_ground(const toml::table& root, const std::string& file) {
+// Ground material names in [ground] and their ids (renderer/ground_shading.h); "grass" is
+// the ground under all three grass types.
+const std::vector<std::pair<std::string, std::vector<int>>> kGroundNames{
+    {"terrain", {0}}, {"road", {1}},        {"water", {2}},       {"rock", {3}},
+    {"soil", {4}},    {"grass", {5, 6, 7}}, {"surroundings", {8}}};
+
+// The ids of the material named `name` (a value, or a table key when `name` is given), with
+// `n` locating the message.
+std::vector<int> ground_ids(const TableReader& r, const toml::node& n, std::string_view key,
+                            std::optional<std::string> name = std::nullopt) {
+  if (!name) name = n.value<std::string>();
+  for (const auto& [known, ids] : kGroundNames)
+    if (name && *name == known) return ids;
+  r.fail_at(n, key,
+            "unknown ground material " + (name ? "'" + *name + "'" : params::type_name(n)) +
+                " (expected terrain, road, water, rock, soil, grass or surroundings)");
+}
+
+// variation = 0.2 (every material but water) or { soil = 0.3, rock = 0.25 }.
+void read_variation(TableReader& r, renderer::GroundShading& s) {
+  const toml::node* n = r.value("variation", "a fraction 0-1, or a table of material = fraction",
+                                "0.15 (road 0.05, rock 0.2, water 0)");
+  if (n == nullptr) return;
+  const auto fraction = [&](const toml::node& v) {
+    const std::optional<double> f = v.value<double>();
+    if (!f || *f < 0.0 || *f > 1.0) r.fail_at(v, "variation", "expected a fraction from 0 to 1");
+    return static_cast<float>(*f);
+  };
+  if (const toml::table* t = n->as_table()) {
+    for (auto&& [name, value] : *t)
+      for (int id : ground_ids(r, value, "variation", std::string(name.str())))
+        s.variation[static_cast<std::size_t>(id)] = fraction(value);
+    return;
+  }
+  const float f = fraction(*n);
+  for (std::size_t id = 0; id < s.variation.size(); ++id)
+    if (id != 2) s.variation[id] = f;
+}
+
+renderer::GroundRule read_rule(TableReader& r) {
+  renderer::GroundRule rule;
+  const std::string m = r.choice("measure", {"slope", "height", "sun_facing"});
+  rule.measure = m == "slope"    ? renderer::TerrainMeasure::slope
+                 : m == "height" ? renderer::TerrainMeasure::height
+                                 : renderer::TerrainMeasure::sun_facing;
+  const Range any{-1e7, 1e7};
+  if (const auto a = r.optional_number("above", any)) rule.above = *a;
+  if (const auto b = r.optional_number("below", any)) rule.below = *b;
+  if (!r.has("above") && !r.has("below")) r.fail("measure", "give above, below or both");
+  rule.softness = r.number("softness", Range{0.0, 1e6}, 0.0);
+  const toml::node* on = r.value("on", "an array of ground material names",
+                                 "[\"terrain\", \"soil\", \"rock\", \"grass\", \"surroundings\"]");
+  if (on == nullptr) {
+    rule.on = 0b111111001;  // all but road and water
+  } else if (const toml::array* a = on->as_array()) {
+    for (const toml::node& n : *a)
+      for (int id : ground_ids(r, n, "on")) rule.on |= static_cast<std::uint16_t>(1u << id);
+  } else {
+    r.fail_at(*on, "on", "expected an array of ground material names");
+  }
+  if (const toml::node* to = r.value("becomes", "a ground material name", "")) {
+    const std::vector<int> ids = ground_ids(r, *to, "becomes");
+    rule.becomes = ids.front();
+  }
+  rule.tint = to_vec3f(r.vec3("tint", Range{0.0, 4.0}, Vec3{1.0, 1.0, 1.0}));
+  if (rule.becomes < 0 && !r.has("tint"))
+    r.fail("measure", "a rule must change something: give becomes, tint or both");
+  r.finish();
+  return rule;
+}
+
+// textures = { rock = "rock.jpg", soil = "soil.png" }: files checked to exist.
+void read_textures(TableReader& r, const std::string& base_dir, GroundMaterials& g) {
+  const toml::node* n = r.value("textures", "a table of material = image file", "");
+  if (n == nullptr) return;
+  const toml::table* t = n->as_table();
+  if (t == nullptr) r.fail_at(*n, "textures", "expected a table such as { rock = \"rock.jpg\" }");
+  for (auto&& [name, value] : *t) {
+    if (!value.is_string()) r.fail_at(value, "textures", "expected an image file name");
+    const std::string path = resolve(base_dir, *value.value<std::string>());
+    if (!terrain::raster_file_exists(path)) r.fail_at(value, "textures", "file not found: " + path);
+    for (int id : ground_ids(r, value, "textures", std::string(name.str()))) {
+      g.texture_files[static_cast<std::size_t>(id)] = path;
+      g.texture_locations[static_cast<std::size_t>(id)] = r.location(&value);
+    }
+  }
+}
+
+GroundMaterials read_ground(const toml::table& root, const std::string& file,
+                            const std::string& base_dir) {
   GroundMaterials g;
   TableReader r(sub_table(root, "ground", file, false), "ground", file);
   g.soil = to_vec3f(r.vec3("soil", kUnit, Vec3(g.soil)));
   g.rock = to_vec3f(r.vec3("rock", kUnit, Vec3(g.rock)));
   g.water = to_vec3f(r.vec3("water", kUnit, Vec3(g.water)));
   g.road = to_vec3f(r.vec3("road", kUnit, Vec3(g.road)));
+  read_variation(r, g.shading);
+  if (const auto sc = r.optional_numbers("variation_scales", 2, kPositive))
+    g.shading.scales = {(*sc)[0], (*sc)[1]};
+  for (TableReader& rule : r.tables("rules")) g.shading.rules.push_back(read_rule(rule));
+  read_textures(r, base_dir, g);
+  g.shading.texture_size = r.number("texture_size", kPositive, 2.0);
   r.finish();
   return g;
 }
@@ -543,7 +638,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.featuremaps = read_featuremaps(root, source, base_dir);
   s.species = read_species(root, source, base_dir);
   s.grass = read_grass(root, source);
-  s.ground = read_ground(root, source);
+  s.ground = read_ground(root, source, base_dir);
   // Where the i-th [[grass]] or [[species]] table stands, for the messages below.
   const auto where = [&](std::string_view key, std::size_t i) {
     const toml::array* a = root.get(key) != nullptr ? root.get(key)->as_array() : nullptr;

@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 
+#include "core/counter_rng.h"
 #include "core/input_error.h"
 #include "featuremaps/placement.h"
 #include "renderer/bark_texture.h"
@@ -159,6 +160,26 @@ void add_ground_mesh(const Scenario& s, const terrain::ElevationGrid& grid,
   for (std::uint8_t& id : scene.ground.triangle_material) id = id != 0 ? kSurroundings : 0;
 }
 
+// The scenario's shading variation, seeded from the render seed, with its textures read
+// (a texture shared by several materials is read once).
+renderer::GroundShading ground_shading(const Scenario& s) {
+  renderer::GroundShading shading = s.ground.shading;
+  shading.seed = mix64(s.render.seed ^ 0x67726f756e64ULL);
+  std::map<std::string, std::shared_ptr<const renderer::GroundTexture>> read;
+  for (std::size_t id = 0; id < s.ground.texture_files.size(); ++id) {
+    const std::string& path = s.ground.texture_files[id];
+    if (path.empty()) continue;
+    auto& texture = read[path];
+    try {
+      if (!texture) texture = renderer::load_bark_texture(path);
+    } catch (const InputError& e) {
+      throw InputError(s.ground.texture_locations[id] + ": [ground] textures: " + e.what());
+    }
+    shading.textures[id] = texture;
+  }
+  return shading;
+}
+
 }  // namespace
 
 terrain::ContextMeshOptions context_mesh_options(const Scenario& s) {
@@ -185,6 +206,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.origin = grid.centre();
   add_ground_mesh(scenario, grid, scene);
   scene.ground.albedo = scenario.terrain.albedo;
+  scene.ground.shading = ground_shading(scenario);
   scene.sun.direction = sun_direction(scenario.sun.elevation_deg, scenario.sun.azimuth_deg);
   scene.sky = scenario.sky;
   if (scenario.sun.irradiance) {

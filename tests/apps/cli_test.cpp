@@ -75,6 +75,15 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
        "[species[1]] cover: the fractions"},
       {"unknown cover", scenario("", "", "spp = 2") + aspen_entry("cover = \"all\""),
        "[species[0]] cover: expected \"everywhere\""},
+      {"unknown ground material in a rule",
+       scenario("", "", "spp = 2") +
+           "[[ground.rules]]\nmeasure = \"slope\"\nabove = 30\nbecomes = \"lava\"\n",
+       "[ground.rules[0]] becomes: unknown ground material 'lava'"},
+      {"a rule that changes nothing",
+       scenario("", "", "spp = 2") + "[[ground.rules]]\nmeasure = \"height\"\nbelow = 10\n",
+       "a rule must change something"},
+      {"variation out of range", scenario("", "", "spp = 2") + "[ground]\nvariation = 1.5\n",
+       "[ground] variation: expected a fraction"},
   };
   for (const BadScenario& c : cases) {
     TempDir dir;
@@ -89,6 +98,21 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
     EXPECT_FALSE(has_files(out)) << c.name;
     EXPECT_TRUE(r.out.empty()) << c.name;
   }
+}
+
+TEST(Cli, AGroundTextureThatCannotBeReadExitsTwoAtItsEntry) {
+  TempDir dir;
+  const auto junk = dir.write("rock.png", "not an image");
+  const auto file =
+      dir.write("texture.toml", scenario("", "", "spp = 1") + "[ground]\ntextures = { rock = \"" +
+                                    junk.string() + "\" }\n");
+  const auto out = dir / "out";
+  const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[ground] textures"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(junk.string()), std::string::npos) << r.err;
+  EXPECT_FALSE(has_files(out));
 }
 
 TEST(Cli, BadContextRastersExitTwoAtTheirEntryAndWriteNothing) {
@@ -590,6 +614,11 @@ TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
   const Result pov = run("export-pov " + file.string() + " --out " + (dir / "pov").string(), dir);
   EXPECT_EQ(pov.exit_code, 0) << pov.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "pov" / "scene.pov"));
+  // The ground's shading variation reaches POV-Ray as vertex colours: a palette of them.
+  const std::string meshes = testing::read_file(dir / "pov" / "meshes.inc");
+  const std::size_t list = meshes.find("texture_list { ");
+  ASSERT_NE(list, std::string::npos);
+  EXPECT_GT(std::stoi(meshes.substr(list + 15, 8)), 20);
   EXPECT_EQ(
       run("export-pov " + file.string() + " --out " + (dir / "p2").string() + " --frame 5", dir)
           .exit_code,

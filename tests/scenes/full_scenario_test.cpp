@@ -46,7 +46,8 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "/terrain/volcano.asc\"\n"
          "cell_size = 10.0\norigin = [0.0, 0.0]\nheight_scale = 1.0\nheight_offset = 0.0\n"
          "nodata = \"hole\"\nalbedo = [0.2, 0.2, 0.1]\ncontext = [\"" +
-         (dir / "context.tif").string() + "\"]\n\n"
+         (dir / "context.tif").string() +
+         "\"]\n\n"
          "[featuremaps]\n" +
          vegetation_keys + "soil = \"" + (dir / "soil.tif").string() + "\"\nrock = \"" +
          (dir / "rock.tif").string() +
@@ -69,7 +70,13 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "colour = [0.1, 0.3, 0.05]\n\n"
          "[[grass]]\ntype = 3\ncover = { rectangle = [0.0, 0.0, 50.0, 50.0] }\n\n"
          "[ground]\nsoil = [0.3, 0.2, 0.1]\nrock = [0.4, 0.4, 0.4]\nwater = [0.01, 0.02, "
-         "0.03]\nroad = [0.1, 0.1, 0.1]\n\n"
+         "0.03]\nroad = [0.1, 0.1, 0.1]\n"
+         "variation = { soil = 0.3, grass = 0.1 }\nvariation_scales = [80.0, 8.0]\n"
+         "textures = { rock = \"" +
+         (dir / "bark.png").string() +
+         "\" }\ntexture_size = 3.0\n"
+         "[[ground.rules]]\nmeasure = \"slope\"\nabove = 30.0\nbelow = 80.0\nsoftness = 3.0\n"
+         "on = [\"terrain\", \"grass\"]\nbecomes = \"rock\"\ntint = [1.1, 1.0, 0.9]\n\n"
          "[wind]\nspeed = 4.0\ngust = 2.0\n\n"
          "[sun]\ndate = 2026-06-21\ntime = 13:00:00\nutc_offset = 12.0\nlatitude = "
          "-36.88\nlongitude = 174.76\n"
@@ -136,6 +143,21 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(s.grass[1].cover->polygon.size(), 4u);  // the rectangle's corners
   EXPECT_EQ(s.grass[1].cover->polygon[2], (std::array<double, 2>{50.0, 50.0}));
   EXPECT_FLOAT_EQ(s.ground.rock.x, 0.4f);
+  const renderer::GroundShading& sh = s.ground.shading;
+  EXPECT_FLOAT_EQ(sh.variation[4], 0.3f);  // soil
+  EXPECT_FLOAT_EQ(sh.variation[6], 0.1f);  // under grass type 2
+  EXPECT_FLOAT_EQ(sh.variation[3], 0.2f);  // rock keeps its default
+  EXPECT_EQ(sh.scales[1], 8.0);
+  EXPECT_EQ(sh.texture_size, 3.0);
+  EXPECT_NE(s.ground.texture_files[3].find("bark.png"), std::string::npos);
+  ASSERT_EQ(sh.rules.size(), 1u);
+  EXPECT_EQ(sh.rules[0].measure, renderer::TerrainMeasure::slope);
+  EXPECT_EQ(sh.rules[0].above, 30.0);
+  EXPECT_EQ(sh.rules[0].below, 80.0);
+  EXPECT_EQ(sh.rules[0].softness, 3.0);
+  EXPECT_EQ(sh.rules[0].on, (1u << 0) | (1u << 5) | (1u << 6) | (1u << 7));
+  EXPECT_EQ(sh.rules[0].becomes, 3);
+  EXPECT_FLOAT_EQ(sh.rules[0].tint.x, 1.1f);
   EXPECT_DOUBLE_EQ(s.wind.gust, 2.0);
   EXPECT_EQ(s.render.frames, (std::vector<double>{0.0, 1.5}));
   EXPECT_EQ(s.render.season, trees::Season::autumn);
