@@ -76,6 +76,13 @@ void write_ground_mesh2(fmt::ostream& out, const std::string& name, const render
   out.print("\n  }}\n}}\n");
 }
 
+// A grass patch as the renderer makes it.
+renderer::GrassBlades grass_patch(const renderer::Scene& scene, int type, int variant, int level) {
+  return renderer::make_grass_patch(scene.grass.types[static_cast<std::size_t>(type)],
+                                    scene.grass.tile, level,
+                                    renderer::grass_patch_seed(type, variant));
+}
+
 // POV-Ray's matrix of a tree instance: rotation about landsim's z (POV's y), uniform scale,
 // translation; rows are where the x, y and z axes go, then the translation.
 std::string instance_matrix(const renderer::TreeInstance& t) {
@@ -179,14 +186,11 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
                       g.group(trees::Group::leaves).triangles.normals, indices);
       }
       if (scene.grass.cols > 0) {
-        for (int t = 0; t < 3; ++t) {
-          for (int level = 0; level < renderer::kGrassLevels; ++level) {
-            write_grass_patch(
-                out, fmt::format("LS_Grass_{}_{}", t, level),
-                renderer::make_grass_patch(scene.grass.types[static_cast<std::size_t>(t)],
-                                           scene.grass.tile, level, renderer::grass_patch_seed(t)));
-          }
-        }
+        for (int t = 0; t < 3; ++t)
+          for (int variant = 0; variant < renderer::kGrassVariants; ++variant)
+            for (int level = 0; level < renderer::kGrassLevels; ++level)
+              write_grass_patch(out, fmt::format("LS_Grass_{}_{}_{}", t, variant, level),
+                                grass_patch(scene, t, variant, level));
       }
     }
     inc.commit();
@@ -254,11 +258,22 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     // Grass: the same patches at the same levels landsim draws for this view without
     // degradation's blending (POV-Ray has no stochastic levels); the mask counts grass as
     // ground, as landsim's comparison does.
+    // A patch some of whose blades the grass mask drops (a field's edge, a road) is written
+    // for its tile with the blades landsim keeps.
     renderer::for_each_grass_patch(
         scene.grass, view, false, [&](const renderer::GrassPatchPlacement& p) {
           const renderer::GrassType& g = scene.grass.types[static_cast<std::size_t>(p.type - 1)];
-          out.print("object {{ LS_Grass_{}_{} LS_Texture(<1, 0, 0>, {}) {} }}\n", p.type - 1,
-                    p.level, colour_vector(g.reflectance), pov_matrix(p.frame));
+          const renderer::GrassBlades patch = grass_patch(scene, p.type - 1, p.variant, p.level);
+          const renderer::GrassBlades kept =
+              renderer::kept_blades(patch, p.frame, scene.grass.mask, p.type);
+          if (kept.first.empty()) return;
+          std::string name = fmt::format("LS_Grass_{}_{}_{}", p.type - 1, p.variant, p.level);
+          if (kept.first.size() != patch.first.size()) {
+            name = fmt::format("LS_GrassTile_{}_{}", p.tile, p.level);
+            write_grass_patch(out, name, kept);
+          }
+          out.print("object {{ {} LS_Texture(<1, 0, 0>, {}) {} }}\n", name,
+                    colour_vector(g.reflectance), pov_matrix(p.frame));
         });
   }
   file.commit();

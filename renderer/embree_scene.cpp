@@ -117,7 +117,7 @@ Vec3f interpolated_normal(RTCGeometry geom, const RTCHit& hit, double rotation,
 
 // What a top-level geometry is: a tree instance at one level, a grass patch, or the ground.
 struct TopLevelEntry {
-  std::int32_t instance = -1;   // tree instance, or -1
+  std::int32_t instance = -1;   // tree instance; for grass its frame (Impl::grass_frames); or -1
   std::int32_t level = -1;      // the prototype's level (PrototypeLevels index)
   std::uint8_t step = 0;        // the ladder step drawn (the lod AOV)
   std::uint8_t grass_type = 0;  // 1-3 for grass patches
@@ -128,9 +128,32 @@ struct EmbreeScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::unique_ptr<detail::PrototypeLevels>> prototypes;
-  std::vector<RTCScene> grass_patches;  // type (0-2) x level
+  std::vector<RTCScene> grass_patches;  // (type (0-2) x variant) x level
   std::vector<TopLevelEntry> top;       // by top-level geometry ID
   const Scene* source = nullptr;
+  // What a grass patch's filter needs: its blades' roots, its type, where its instances are.
+  struct GrassFilter {
+    const Impl* impl = nullptr;
+    int type = 0;
+    std::vector<float> roots;  // x, y per blade, patch space
+  };
+  std::vector<std::unique_ptr<GrassFilter>> grass_filters;
+  std::vector<std::array<float, 12>> grass_frames;
+
+  // Embree's filter for grass curves: a blade whose root the grass mask does not grant is
+  // not there (no blades on roads or water; field edges at the map's own resolution).
+  static void grass_filter(const RTCFilterFunctionNArguments* args) {
+    const auto* f = static_cast<const GrassFilter*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+      if (args->valid[i] == 0) continue;
+      const TopLevelEntry& e = f->impl->top[RTCHitN_instID(args->hit, args->N, i, 0)];
+      const std::array<float, 12>& m = f->impl->grass_frames[static_cast<std::size_t>(e.instance)];
+      const std::size_t blade = RTCHitN_primID(args->hit, args->N, i) / kSegmentsPerBlade;
+      const float rx = f->roots[2 * blade], ry = f->roots[2 * blade + 1];
+      const double x = m[0] * rx + m[3] * ry + m[9], y = m[1] * rx + m[4] * ry + m[10];
+      if (!grass_blade_kept(f->impl->source->grass.mask, f->type, x, y)) args->valid[i] = 0;
+    }
+  }
 
   ~Impl() {
     prototypes.clear();
@@ -154,28 +177,48 @@ struct EmbreeScene::Impl {
     return id;
   }
 
+  static std::size_t patch_index(int type, int variant, int level) {
+    return static_cast<std::size_t>((type * kGrassVariants + variant) * kGrassLevels + level);
+  }
+
   void add_grass_patches(const GrassCover& cover) {
-    grass_patches.assign(3 * kGrassLevels, nullptr);
+    grass_patches.assign(3 * kGrassVariants * kGrassLevels, nullptr);
     for (int t = 0; t < 3; ++t) {
-      for (int level = 0; level < kGrassLevels; ++level) {
-        const GrassBlades blades = make_grass_patch(cover.types[static_cast<std::size_t>(t)],
-                                                    cover.tile, level, grass_patch_seed(t));
-        if (blades.first.empty()) continue;
-        RTCScene s = rtcNewScene(device);
-        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
-        auto* v = new_geometry_buffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
-                                      4 * sizeof(float), blades.points.size() / 4);
-        std::memcpy(v, blades.points.data(), blades.points.size() * sizeof(float));
-        auto* i = new_geometry_buffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
-                                      sizeof(std::uint32_t), blades.first.size());
-        std::memcpy(i, blades.first.data(), blades.first.size() * sizeof(std::uint32_t));
-        rtcCommitGeometry(geom);
-        rtcAttachGeometry(s, geom);
-        rtcReleaseGeometry(geom);
-        rtcCommitScene(s);
-        grass_patches[static_cast<std::size_t>(t * kGrassLevels + level)] = s;
+      for (int variant = 0; variant < kGrassVariants; ++variant) {
+        for (int level = 0; level < kGrassLevels; ++level)
+          add_grass_patch(cover, t, variant, level);
       }
     }
+  }
+
+  void add_grass_patch(const GrassCover& cover, int t, int variant, int level) {
+    const GrassBlades blades = make_grass_patch(cover.types[static_cast<std::size_t>(t)],
+                                                cover.tile, level, grass_patch_seed(t, variant));
+    if (blades.first.empty()) return;
+    RTCScene s = rtcNewScene(device);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+    auto* v = new_geometry_buffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                  4 * sizeof(float), blades.points.size() / 4);
+    std::memcpy(v, blades.points.data(), blades.points.size() * sizeof(float));
+    auto* i = new_geometry_buffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
+                                  sizeof(std::uint32_t), blades.first.size());
+    std::memcpy(i, blades.first.data(), blades.first.size() * sizeof(std::uint32_t));
+    auto filter = std::make_unique<GrassFilter>();
+    filter->impl = this;
+    filter->type = t + 1;
+    for (std::size_t p = 0; p < blades.points.size(); p += 4 * (kSegmentsPerBlade + 1))
+      filter->roots.insert(filter->roots.end(), {blades.points[p], blades.points[p + 1]});
+    if (!cover.mask.type.empty()) {
+      rtcSetGeometryUserData(geom, filter.get());
+      rtcSetGeometryIntersectFilterFunction(geom, &Impl::grass_filter);
+      rtcSetGeometryOccludedFilterFunction(geom, &Impl::grass_filter);
+    }
+    grass_filters.push_back(std::move(filter));
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(s, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(s);
+    grass_patches[patch_index(t, variant, level)] = s;
   }
 
   // Patches within the grass range of `view`, at the levels their distance asks for (two
@@ -184,11 +227,12 @@ struct EmbreeScene::Impl {
     if (cover.cols == 0) return;
     add_grass_patches(cover);
     for_each_grass_patch(cover, view, blend, [&](const GrassPatchPlacement& p) {
-      RTCScene patch =
-          grass_patches[static_cast<std::size_t>((p.type - 1) * kGrassLevels + p.level)];
+      RTCScene patch = grass_patches[patch_index(p.type - 1, p.variant, p.level)];
       if (patch == nullptr) return;
       TopLevelEntry entry;
       entry.grass_type = static_cast<std::uint8_t>(p.type);
+      entry.instance = static_cast<std::int32_t>(grass_frames.size());
+      grass_frames.push_back(p.frame);
       attach_instance(patch, p.frame, p.mask, entry);
     });
   }

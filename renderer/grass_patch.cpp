@@ -10,7 +10,7 @@
 namespace landsim::renderer {
 namespace {
 
-constexpr int kPointsPerBlade = 4;
+constexpr int kPointsPerBlade = kSegmentsPerBlade + 1;
 // Calibrated ranges (metres at 1000 pixels and 60 degrees) where each level ends.
 constexpr double kLevelEnd[kGrassLevels] = {40.0, 160.0, 640.0};
 
@@ -51,10 +51,48 @@ int grass_level(double distance, int image_height, double fov_y_deg) {
   return -1;
 }
 
-std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal) {
+TileLook tile_look(std::size_t tile) {
+  const std::uint64_t h = mix64(static_cast<std::uint64_t>(tile) ^ 0x74696c65ULL);
+  return {static_cast<int>(h % kGrassVariants), static_cast<int>((h >> 8) & 3u),
+          ((h >> 10) & 1u) != 0};
+}
+
+GrassBlades kept_blades(const GrassBlades& patch, const std::array<float, 12>& m,
+                        const GrassMask& mask, int type) {
+  GrassBlades out;
+  constexpr std::size_t kFloats = 4 * kPointsPerBlade;
+  for (std::size_t p = 0; p < patch.points.size(); p += kFloats) {
+    const float rx = patch.points[p], ry = patch.points[p + 1];
+    if (!grass_blade_kept(mask, type, m[0] * rx + m[3] * ry + m[9], m[1] * rx + m[4] * ry + m[10]))
+      continue;
+    const auto base = static_cast<std::uint32_t>(out.points.size() / 4);
+    out.points.insert(out.points.end(), patch.points.begin() + static_cast<std::ptrdiff_t>(p),
+                      patch.points.begin() + static_cast<std::ptrdiff_t>(p + kFloats));
+    for (int k = 0; k < kSegmentsPerBlade; ++k)
+      out.first.push_back(base + static_cast<std::uint32_t>(k));
+  }
+  return out;
+}
+
+bool grass_blade_kept(const GrassMask& mask, int type, double x, double y) {
+  if (mask.type.empty()) return true;
+  const double c = (x - mask.corner.x) / mask.cell_x, r = (y - mask.corner.y) / mask.cell_y;
+  if (!(c >= 0.0 && r >= 0.0 && c < mask.cols && r < mask.rows)) return false;
+  return mask.type[static_cast<std::size_t>(r) * static_cast<std::size_t>(mask.cols) +
+                   static_cast<std::size_t>(c)] == type;
+}
+
+std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal,
+                                        const TileLook& look) {
   const Vec3f z = normalize(normal);
-  const Vec3f x = normalize(cross(Vec3f{0.0f, 1.0f, 0.0f}, z));
-  const Vec3f y = cross(z, x);
+  Vec3f x = normalize(cross(Vec3f{0.0f, 1.0f, 0.0f}, z));
+  Vec3f y = cross(z, x);
+  for (int k = 0; k < look.turns; ++k) {  // a quarter turn about z
+    const Vec3f next_x = y;
+    y = -x;
+    x = next_x;
+  }
+  if (look.mirrored) x = -x;  // the patch seen in a mirror: the square still covers the tile
   return {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, centre.x, centre.y, centre.z};
 }
 
@@ -97,10 +135,12 @@ void for_each_grass_patch(const GrassCover& cover, const View& view, bool blend,
       }
       // Most tiles of a large cover lie beyond the grass range: no frame for those.
       if (b.lower < 0) continue;
-      const std::array<float, 12> frame = grass_patch_frame(centre, cover.normal[k]);
+      const TileLook look = tile_look(k);
+      const std::array<float, 12> frame = grass_patch_frame(centre, cover.normal[k], look);
       const LevelMasks masks = level_masks(b.upper_weight, k);
-      if (masks.lower != 0) visit({type, b.lower, frame, masks.lower});
-      if (b.upper >= 0 && masks.upper != 0) visit({type, b.upper, frame, masks.upper});
+      if (masks.lower != 0) visit({type, b.lower, look.variant, k, frame, masks.lower});
+      if (b.upper >= 0 && masks.upper != 0)
+        visit({type, b.upper, look.variant, k, frame, masks.upper});
     }
   }
 }

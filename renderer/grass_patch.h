@@ -17,11 +17,35 @@ struct GrassBlades {
 };
 
 inline constexpr int kGrassLevels = 3;
+// Each grass type has this many different patches; with the quarter turns and mirror images
+// of a tile's orientation, 32 looks, chosen by a hash of the tile: no visible period.
+inline constexpr int kGrassVariants = 4;
+inline constexpr int kSegmentsPerBlade = 3;
 
-// The seed of grass type `type` (0-2) patches, shared by the renderer and the POV export.
-inline std::uint64_t grass_patch_seed(int type) {
-  return 0x6772617373ULL + static_cast<std::uint64_t>(type);
+// The seed of variant `variant` of grass type `type` (0-2) patches, shared by the renderer
+// and the POV export.
+inline std::uint64_t grass_patch_seed(int type, int variant = 0) {
+  return 0x6772617373ULL + static_cast<std::uint64_t>(type) +
+         0x100ULL * static_cast<std::uint64_t>(variant);
 }
+
+// The blades of `patch`, placed by `frame`, whose roots the mask grants to `type` (what the
+// renderer's filter keeps; for exporters).
+GrassBlades kept_blades(const GrassBlades& patch, const std::array<float, 12>& frame,
+                        const GrassMask& mask, int type);
+
+// A tile's patch: its variant, quarter turns (0-3) and whether it is mirrored, from a hash of
+// the tile's index.
+struct TileLook {
+  int variant = 0;
+  int turns = 0;
+  bool mirrored = false;
+};
+TileLook tile_look(std::size_t tile);
+
+// True when a blade of grass type `type` may stand at (x, y), scene frame: the mask's cell
+// there selects that type (no mask: always).
+bool grass_blade_kept(const GrassMask& mask, int type, double x, double y);
 
 // Level 0 has every blade; level k keeps 1 / 4^k of them, each 2^k times as wide.
 GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std::uint64_t seed);
@@ -32,8 +56,9 @@ GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std:
 int grass_level(double distance, int image_height, double fov_y_deg);
 
 // The column-major 3x4 transform placing a patch on its tile: z along the terrain normal,
-// x kept as close to east as the tilt allows.
-std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal);
+// x kept as close to east as the tilt allows, then turned by the tile's look.
+std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal,
+                                        const TileLook& look = {});
 
 // With stochastic blending: near each level's end (from r2 / sqrt 2 to r2 x sqrt 2) a patch
 // is drawn at both neighbouring levels (or fades to none past the last), `upper_weight` of
@@ -45,10 +70,13 @@ struct GrassBlend {
 };
 GrassBlend grass_blend(double distance, int image_height, double fov_y_deg);
 
-// One patch instance: its type (1-3), level, frame and the ray mask that sees it.
+// One patch instance: its type (1-3), level, variant, tile, frame and the ray mask that
+// sees it.
 struct GrassPatchPlacement {
   int type = 0;
   int level = 0;
+  int variant = 0;
+  std::size_t tile = 0;
   std::array<float, 12> frame{};
   std::uint32_t mask = 0xffffffffu;
 };

@@ -70,14 +70,27 @@ struct GrassType {
   double curvature = 0.3;      // lean of the blade tip, fraction of its length
 };
 
+// Where blades may stand, at the vegetation map's own resolution: the grass type of each
+// cell (0: none, and none on road or water), so that a field's edge follows the map, not the
+// patches' tiles (renderer/grass_patch.h: grass_blade_kept).
+struct GrassMask {
+  Vec3 corner;  // south-west corner of cell (0, 0), scene frame (z unused)
+  double cell_x = 1.0, cell_y = 1.0;
+  int cols = 0, rows = 0;
+  std::vector<std::uint8_t> type;  // row 0 southernmost; empty: every blade is kept
+};
+
 struct GrassCover {
   double tile = 4.0;  // patch side, metres
   Vec3 corner;        // south-west corner of tile (0, 0), scene frame
   int cols = 0, rows = 0;
-  std::vector<std::uint8_t> type;  // per tile, row 0 southernmost: 0 none, else 1-3
-  std::vector<float> height;       // terrain height at the tile centre, scene frame
-  std::vector<Vec3f> normal;       // terrain normal there
+  // Per tile, row 0 southernmost: 0 none, else 1-3 (the type at the tile's centre, else the
+  // first met among its cells, so that tiles on a field's edge carry blades too).
+  std::vector<std::uint8_t> type;
+  std::vector<float> height;  // terrain height at the tile centre, scene frame
+  std::vector<Vec3f> normal;  // terrain normal there
   std::array<GrassType, 3> types;
+  GrassMask mask;
 };
 
 struct Sun {

@@ -92,13 +92,20 @@ MaterialRaster material_raster(const std::string& path) {
   return {terrain::load_elevation(path)};
 }
 
+// The ground feature maps by material id - 1: road, water, rock, soil.
+using GroundRasters = std::array<MaterialRaster, 4>;
+
+GroundRasters ground_rasters(const Scenario& s) {
+  const FeatureMapSettings f = s.featuremaps.value_or(FeatureMapSettings{});
+  return {material_raster(f.road), material_raster(f.water), material_raster(f.rock),
+          material_raster(f.soil)};
+}
+
 // Ground materials per triangle, by priority: road, water, rock, soil, then the grass tint.
 void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* map,
-                          const terrain::ElevationGrid& grid, renderer::Scene& scene) {
-  const FeatureMapSettings f = s.featuremaps.value_or(FeatureMapSettings{});
-  const std::array<MaterialRaster, 4> rasters{material_raster(f.road), material_raster(f.water),
-                                              material_raster(f.rock), material_raster(f.soil)};
-  const bool any_raster = !f.road.empty() || !f.water.empty() || !f.rock.empty() || !f.soil.empty();
+                          const GroundRasters& rasters, renderer::Scene& scene) {
+  const bool any_raster = std::any_of(rasters.begin(), rasters.end(),
+                                      [](const MaterialRaster& m) { return m.grid.has_value(); });
   if (!any_raster && (map == nullptr || s.grass.empty())) return;
   renderer::Ground& ground = scene.ground;
   const terrain::GroundMesh& mesh = ground.mesh;
@@ -124,7 +131,6 @@ void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* m
       }
     }
   });
-  (void)grid;
 }
 
 constexpr std::uint8_t kSurroundings = renderer::Ground::kSurroundings;
@@ -234,9 +240,15 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
       add_trees(scenario, *map, grid, time, reuse, scene);
       detail::warn_cameras_inside_trees(scenario, scene);
     }
-    if (map && !scenario.grass.empty())
-      scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin);
-    add_ground_materials(scenario, map ? &*map : nullptr, grid, scene);
+    const GroundRasters rasters = ground_rasters(scenario);
+    if (map && !scenario.grass.empty()) {
+      // No blade stands on road or water.
+      const auto blocked = [&](double x, double y) {
+        return rasters[0].covers(x, y) || rasters[1].covers(x, y);
+      };
+      scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin, blocked);
+    }
+    add_ground_materials(scenario, map ? &*map : nullptr, rasters, scene);
   }
   set_ground_materials(scenario, scene);
   scene.ground.edge_albedo = detail::edge_albedo(scene.ground, grid, scene.origin);
