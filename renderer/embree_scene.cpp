@@ -177,21 +177,24 @@ struct EmbreeScene::Impl {
     return id;
   }
 
-  static std::size_t patch_index(int type, int variant, int level) {
-    return static_cast<std::size_t>((type * kGrassVariants + variant) * kGrassLevels + level);
+  // Each patch twice: as it is, and with the blade filter for tiles the mask cuts (a filter
+  // slows Embree's traversal, so whole tiles go without).
+  static std::size_t patch_index(int type, int variant, int level, bool filtered) {
+    return static_cast<std::size_t>(((type * kGrassVariants + variant) * kGrassLevels + level) * 2 +
+                                    (filtered ? 1 : 0));
   }
 
   void add_grass_patches(const GrassCover& cover) {
-    grass_patches.assign(3 * kGrassVariants * kGrassLevels, nullptr);
-    for (int t = 0; t < 3; ++t) {
-      for (int variant = 0; variant < kGrassVariants; ++variant) {
+    grass_patches.assign(3 * kGrassVariants * kGrassLevels * 2, nullptr);
+    for (int t = 0; t < 3; ++t)
+      for (int variant = 0; variant < kGrassVariants; ++variant)
         for (int level = 0; level < kGrassLevels; ++level)
-          add_grass_patch(cover, t, variant, level);
-      }
-    }
+          for (bool filtered : {false, true})
+            if (!filtered || !cover.mask.type.empty())
+              add_grass_patch(cover, t, variant, level, filtered);
   }
 
-  void add_grass_patch(const GrassCover& cover, int t, int variant, int level) {
+  void add_grass_patch(const GrassCover& cover, int t, int variant, int level, bool filtered) {
     const GrassBlades blades = make_grass_patch(cover.types[static_cast<std::size_t>(t)],
                                                 cover.tile, level, grass_patch_seed(t, variant));
     if (blades.first.empty()) return;
@@ -203,22 +206,22 @@ struct EmbreeScene::Impl {
     auto* i = new_geometry_buffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
                                   sizeof(std::uint32_t), blades.first.size());
     std::memcpy(i, blades.first.data(), blades.first.size() * sizeof(std::uint32_t));
-    auto filter = std::make_unique<GrassFilter>();
-    filter->impl = this;
-    filter->type = t + 1;
-    for (std::size_t p = 0; p < blades.points.size(); p += 4 * (kSegmentsPerBlade + 1))
-      filter->roots.insert(filter->roots.end(), {blades.points[p], blades.points[p + 1]});
-    if (!cover.mask.type.empty()) {
+    if (filtered) {
+      auto filter = std::make_unique<GrassFilter>();
+      filter->impl = this;
+      filter->type = t + 1;
+      for (std::size_t p = 0; p < blades.points.size(); p += 4 * (kSegmentsPerBlade + 1))
+        filter->roots.insert(filter->roots.end(), {blades.points[p], blades.points[p + 1]});
       rtcSetGeometryUserData(geom, filter.get());
       rtcSetGeometryIntersectFilterFunction(geom, &Impl::grass_filter);
       rtcSetGeometryOccludedFilterFunction(geom, &Impl::grass_filter);
+      grass_filters.push_back(std::move(filter));
     }
-    grass_filters.push_back(std::move(filter));
     rtcCommitGeometry(geom);
     rtcAttachGeometry(s, geom);
     rtcReleaseGeometry(geom);
     rtcCommitScene(s);
-    grass_patches[patch_index(t, variant, level)] = s;
+    grass_patches[patch_index(t, variant, level, filtered)] = s;
   }
 
   // Patches within the grass range of `view`, at the levels their distance asks for (two
@@ -227,7 +230,8 @@ struct EmbreeScene::Impl {
     if (cover.cols == 0) return;
     add_grass_patches(cover);
     for_each_grass_patch(cover, view, blend, [&](const GrassPatchPlacement& p) {
-      RTCScene patch = grass_patches[patch_index(p.type - 1, p.variant, p.level)];
+      const bool whole = grass_tile_whole(cover, p.tile, p.type);
+      RTCScene patch = grass_patches[patch_index(p.type - 1, p.variant, p.level, !whole)];
       if (patch == nullptr) return;
       TopLevelEntry entry;
       entry.grass_type = static_cast<std::uint8_t>(p.type);

@@ -74,6 +74,26 @@ GrassBlades kept_blades(const GrassBlades& patch, const std::array<float, 12>& m
   return out;
 }
 
+bool grass_tile_whole(const GrassCover& cover, std::size_t tile, int type) {
+  const GrassMask& m = cover.mask;
+  if (m.type.empty()) return true;
+  const auto c = static_cast<int>(tile % static_cast<std::size_t>(cover.cols));
+  const auto r = static_cast<int>(tile / static_cast<std::size_t>(cover.cols));
+  const double west = cover.corner.x + c * cover.tile - m.corner.x;
+  const double south = cover.corner.y + r * cover.tile - m.corner.y;
+  const int c0 = static_cast<int>(std::floor(west / m.cell_x));
+  const int c1 = static_cast<int>(std::ceil((west + cover.tile) / m.cell_x)) - 1;
+  const int r0 = static_cast<int>(std::floor(south / m.cell_y));
+  const int r1 = static_cast<int>(std::ceil((south + cover.tile) / m.cell_y)) - 1;
+  if (c0 < 0 || r0 < 0 || c1 >= m.cols || r1 >= m.rows) return false;
+  for (int rr = r0; rr <= r1; ++rr)
+    for (int cc = c0; cc <= c1; ++cc)
+      if (m.type[static_cast<std::size_t>(rr) * static_cast<std::size_t>(m.cols) +
+                 static_cast<std::size_t>(cc)] != type)
+        return false;
+  return true;
+}
+
 bool grass_blade_kept(const GrassMask& mask, int type, double x, double y) {
   if (mask.type.empty()) return true;
   const double c = (x - mask.corner.x) / mask.cell_x, r = (y - mask.corner.y) / mask.cell_y;

@@ -239,7 +239,9 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   p.build_extra += e.instances * kPlacementBytesPerTree;
   p.view_instances =
       e.instances * kEntriesPerDegradedTree * (mm::kEmbreeInstance + mm::kTopLevelRecord);
-  p.scene_grass = static_cast<double>(cover.type.size()) * (1.0 + 4.0 + 12.0);
+  // Per tile its type, height and normal; per map cell the grass mask's type.
+  p.scene_grass = static_cast<double>(cover.type.size()) * (1.0 + 4.0 + 12.0) +
+                  static_cast<double>(cover.mask.type.size());
   for (std::uint8_t t : cover.type) e.grass_tiles += t != 0 ? 1 : 0;
   // Views are rendered one after the other: the largest sets the peak.
   double largest_view = -1.0;
@@ -249,7 +251,9 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
       renderer::for_each_grass_patch(cover, views[v], degrade,
                                      [&](const renderer::GrassPatchPlacement&) { ++patches; });
     e.grass_patches_drawn = std::max(e.grass_patches_drawn, patches);
-    const double grass = static_cast<double>(patches) * (mm::kEmbreeInstance + mm::kTopLevelRecord);
+    // Each drawn patch: its Embree instance, top-level record and frame (the blade filter's).
+    const double grass =
+        static_cast<double>(patches) * (mm::kEmbreeInstance + mm::kTopLevelRecord + 48.0);
     const double film = static_cast<double>(views[v].width) * views[v].height * mm::kFilmPixel;
     if (view_prototypes[v] + grass + film > largest_view) {
       largest_view = view_prototypes[v] + grass + film;

@@ -7,7 +7,6 @@
 
 #include "core/input_error.h"
 #include "terrain/dem_loader.h"
-#include "terrain/raster_files.h"
 #include "terrain/raster_io.h"
 
 namespace landsim::terrain {
@@ -41,18 +40,11 @@ std::string describe(const Extent& e) {
 
 ElevationGrid load_context(const std::string& path, const ElevationGrid& grid,
                            std::array<double, 2> shift) {
-  if (!raster_file_exists(path)) fail(path, "context elevation file not found");
-  share_with_gdal(path);
-  RasterHeader header;
-  std::string error;
-  if (!raster_io().read_header(path, header, error))
-    fail(path, "not a raster format GDAL can read", error);
-  if (header.bands < 1) fail(path, "raster has no bands");
+  const RasterHeader header = open_elevation_raster(path, "context elevation");
   if (!header.geotransform)
     fail(path, "context raster has no georeferencing (expected a GeoTIFF or a grid with a CRS)");
-  check_size(path, header.cols, header.rows, "grid");
-
   WarpedRaster warped;
+  std::string error;
   if (!raster_io().warp_raster(path, grid.crs_wkt(), warped, error))
     fail(path, "could not reproject it into the elevation grid's coordinate system", error);
   check_size(path, warped.cols, warped.rows, "reprojected grid");

@@ -20,8 +20,10 @@ namespace {
   throw InputError(message);
 }
 
-RasterHeader open_raster(const std::string& path) {
-  if (!raster_file_exists(path)) fail(path, "elevation file not found");
+}  // namespace
+
+RasterHeader open_elevation_raster(const std::string& path, const std::string& what) {
+  if (!raster_file_exists(path)) fail(path, what + " file not found");
   share_with_gdal(path);
   RasterHeader header;
   std::string error;
@@ -37,6 +39,8 @@ RasterHeader open_raster(const std::string& path) {
   if (header.bands > 1) spdlog::warn("{}: {} bands, using band 1 as elevation", path, header.bands);
   return header;
 }
+
+namespace {
 
 // The file's own north-up placement, or none for rasters such as PNG that carry none.
 std::optional<GeoTransform> read_geotransform(const RasterHeader& header, const std::string& path) {
@@ -86,7 +90,7 @@ void fill_nodata(std::vector<float>& heights, int cols, int rows, const std::str
 }  // namespace
 
 ElevationGrid load_elevation(const std::string& path, const DemOptions& options) {
-  const RasterHeader header = open_raster(path);
+  const RasterHeader header = open_elevation_raster(path);
   const int cols = header.cols, rows = header.rows;
   const GeoTransform transform = placement(header, path, options);
   std::vector<float> heights = read_heights(header, path);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "terrain/elevation_grid.h"
+#include "terrain/raster_io.h"
 
 namespace landsim::terrain {
 
@@ -28,6 +29,12 @@ struct DemOptions {
 // Largest grid accepted, in cells: beyond it a DEM would take gigabytes (4 bytes a cell
 // plus the ground mesh), so it is refused rather than risking an out-of-memory crash.
 inline constexpr double kMaxDemCells = 100e6;
+
+// An elevation raster's header: the file exists, GDAL reads it, it has a band and at most
+// kMaxDemCells cells (InputError naming the file otherwise); `what` names the file's role in
+// the not-found message.
+RasterHeader open_elevation_raster(const std::string& path,
+                                   const std::string& what = "elevation");
 
 // `path` is a file name or a GDAL virtual path (/vsimem/... for embedded data).
 // Throws InputError naming the file and the problem.

@@ -81,6 +81,11 @@ TEST(GrassPatch, NoBladeStandsOnARoadAndFieldEdgesFollowTheMapNotTheTiles) {
   const View view{"v", {20.0, 20.0, 3.0}, {20.0, 25.0, 0.0}, 40.0, 1000, 1000};
   const EmbreeScene e(s, &view);
   for (double x : {19.6, 20.0, 20.4}) EXPECT_EQ(grass_hits(e, x), 0) << x;
+  // Only the tiles the road cuts need the blade filter.
+  EXPECT_TRUE(grass_tile_whole(s.grass, 3, 1));   // 12-16 m
+  EXPECT_FALSE(grass_tile_whole(s.grass, 4, 1));  // 16-20 m
+  EXPECT_FALSE(grass_tile_whole(s.grass, 5, 1));  // 20-24 m
+  EXPECT_FALSE(grass_tile_whole(s.grass, 3, 2));  // another type is never granted here
   // The grass half of the tile the road halves keeps its blades, as the open field does.
   EXPECT_GT(grass_hits(e, 17.0), 100);
   EXPECT_GT(grass_hits(e, 10.0), 100);
