@@ -62,21 +62,28 @@ struct GroundSize {
   double cells = 0.0, vertices = 0.0, triangles = 0.0;
 };
 
-// With context grids: the quadtree's cells (counted, not built), two triangles each and a few
-// more where a neighbour is finer (kContextTrianglesPerCell, measured on the Kagwene example
+// With context grids or detail: the quadtree's cells (counted, not built), two triangles each and a
+// few more where a neighbour is finer (kContextTrianglesPerCell, measured on the Kagwene example
 // with a 100 km context: 2.004), about one vertex each; the context grids and blend offsets
 // while the scene is built.
 constexpr double kContextTrianglesPerCell = 2.0;
 
 GroundSize context_ground_size(const Scenario& s, const terrain::ElevationGrid& grid) {
   const terrain::TerrainField field = detail::context_terrain(s, grid);
-  const auto cells =
-      static_cast<double>(terrain::count_context_cells(field, context_mesh_options(s)));
+  terrain::ContextMeshOptions options = context_mesh_options(s);
+  // The quadtree's shape does not depend on the relief's amplitudes: a flat one counts it.
+  const auto samples =
+      static_cast<std::size_t>(grid.cols()) * static_cast<std::size_t>(grid.rows());
+  std::optional<terrain::SurfaceDetail> flat;
+  if (s.ground.detail)
+    flat.emplace(grid, std::vector<float>(samples), std::vector<float>(samples), 0);
+  options.detail = flat ? &*flat : nullptr;
+  const auto cells = static_cast<double>(terrain::count_context_cells(field, options));
   return {field.stored_cells(), cells, cells * kContextTrianglesPerCell};
 }
 
 GroundSize ground_size(const Scenario& s, const terrain::ElevationGrid& grid) {
-  if (!s.terrain.context.empty()) return context_ground_size(s, grid);
+  if (!s.terrain.context.empty() || s.ground.detail) return context_ground_size(s, grid);
   GroundSize g;
   g.cells = static_cast<double>(grid.cols()) * grid.rows();
   g.vertices = g.cells - static_cast<double>(grid.nodata_count());

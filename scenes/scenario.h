@@ -103,6 +103,13 @@ struct GroundMaterials {
   renderer::GroundShading shading = scenario_ground_shading();
   std::array<std::string, renderer::kGroundMaterials> texture_files;
   std::array<std::string, renderer::kGroundMaterials> texture_locations;  // "file:line:col"
+  // Detail below the grid's cells (terrain/surface_detail.h): off by default; per material
+  // id the relief's amplitude (metres) and roughness.
+  bool detail = false;
+  std::array<float, renderer::kGroundMaterials> detail_amplitude{0.3f, 0.0f, 0.0f, 1.0f, 0.3f,
+                                                                 0.2f, 0.2f, 0.2f, 0.0f};
+  std::array<float, renderer::kGroundMaterials> detail_roughness{0.5f, 0.5f, 0.5f, 0.6f, 0.5f,
+                                                                 0.5f, 0.5f, 0.5f, 0.5f};
 };
 
 struct SpeciesSettings {

@@ -495,25 +495,26 @@ std::vector<int> ground_ids(const TableReader& r, const toml::node& n, std::stri
                 " (expected terrain, road, water, rock, soil, grass or surroundings)");
 }
 
-// variation = 0.2 (every material but water) or { soil = 0.3, rock = 0.25 }.
-void read_variation(TableReader& r, renderer::GroundShading& s) {
-  const toml::node* n = r.value("variation", "a fraction 0-1, or a table of material = fraction",
-                                "0.15 (road 0.05, rock 0.2, water 0)");
+// A number for every material but water, or { material = number, ... }: `key` of [ground].
+void read_per_material(TableReader& r, std::string_view key, const std::string& expected,
+                       const std::string& fallback, Range range,
+                       std::array<float, renderer::kGroundMaterials>& out) {
+  const toml::node* n = r.value(key, expected, fallback);
   if (n == nullptr) return;
-  const auto fraction = [&](const toml::node& v) {
+  const auto number = [&](const toml::node& v) {
     const std::optional<double> f = v.value<double>();
-    if (!f || *f < 0.0 || *f > 1.0) r.fail_at(v, "variation", "expected a fraction from 0 to 1");
+    if (!f || !range.contains(*f)) r.fail_at(v, key, "expected " + range.describe());
     return static_cast<float>(*f);
   };
   if (const toml::table* t = n->as_table()) {
     for (auto&& [name, value] : *t)
-      for (int id : ground_ids(r, value, "variation", std::string(name.str())))
-        s.variation[static_cast<std::size_t>(id)] = fraction(value);
+      for (int id : ground_ids(r, value, key, std::string(name.str())))
+        out[static_cast<std::size_t>(id)] = number(value);
     return;
   }
-  const float f = fraction(*n);
-  for (std::size_t id = 0; id < s.variation.size(); ++id)
-    if (id != 2) s.variation[id] = f;
+  const float f = number(*n);
+  for (std::size_t id = 0; id < out.size(); ++id)
+    if (id != 2) out[id] = f;
 }
 
 renderer::GroundRule read_rule(TableReader& r) {
@@ -573,12 +574,19 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file,
   g.rock = to_vec3f(r.vec3("rock", kUnit, Vec3(g.rock)));
   g.water = to_vec3f(r.vec3("water", kUnit, Vec3(g.water)));
   g.road = to_vec3f(r.vec3("road", kUnit, Vec3(g.road)));
-  read_variation(r, g.shading);
+  read_per_material(r, "variation", "a fraction 0-1, or a table of material = fraction",
+                    "0.15 (road 0.05, rock 0.2, water 0)", kUnit, g.shading.variation);
   if (const auto sc = r.optional_numbers("variation_scales", 2, kPositive))
     g.shading.scales = {(*sc)[0], (*sc)[1]};
   for (TableReader& rule : r.tables("rules")) g.shading.rules.push_back(read_rule(rule));
   read_textures(r, base_dir, g);
   g.shading.texture_size = r.number("texture_size", kPositive, 2.0);
+  g.detail = r.boolean("detail", false);
+  read_per_material(r, "detail_amplitude", "metres 0-50, or a table of material = metres",
+                    "0.3 (rock 1.0, grass 0.2, road, water and surroundings 0)", Range{0.0, 50.0},
+                    g.detail_amplitude);
+  read_per_material(r, "detail_roughness", "a fraction 0-1, or a table of material = fraction",
+                    "0.5 (rock 0.6)", kUnit, g.detail_roughness);
   r.finish();
   return g;
 }

@@ -27,8 +27,8 @@ namespace landsim::scenes {
 namespace {
 
 void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
-               const terrain::ElevationGrid& grid, double time, VariantCache* reuse,
-               renderer::Scene& scene) {
+               const terrain::ElevationGrid& grid, const terrain::SurfaceDetail* relief,
+               double time, VariantCache* reuse, renderer::Scene& scene) {
   const std::uint64_t seed = s.render.seed;
   std::vector<featuremaps::SpeciesPlacement> placements;
   for (const SpeciesSettings& sp : s.species) {
@@ -69,9 +69,24 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
     scene.prototypes[i].bark_texture = textures[keys[i].first];
   scene.instances.reserve(placed.size());
   for (const featuremaps::PlacedTree& t : placed) {
+    // With detail, a tree stands on the relief, not on the grid's facet beneath it.
+    const double z = t.z + (relief != nullptr ? relief->displacement(t.x, t.y) : 0.0);
     scene.instances.push_back({prototype_of.at({t.species, t.variant}),
-                               Vec3{t.x, t.y, t.z} - scene.origin, t.rotation, t.scale});
+                               Vec3{t.x, t.y, z} - scene.origin, t.rotation, t.scale});
   }
+}
+
+// Grass tiles stand on the relief at their centres.
+void lift_grass(const terrain::SurfaceDetail& relief, renderer::Scene& scene) {
+  renderer::GrassCover& g = scene.grass;
+  for (int r = 0; r < g.rows; ++r)
+    for (int c = 0; c < g.cols; ++c) {
+      const std::size_t k = static_cast<std::size_t>(r) * g.cols + c;
+      if (g.type[k] == 0) continue;
+      const double x = scene.origin.x + g.corner.x + (c + 0.5) * g.tile;
+      const double y = scene.origin.y + g.corner.y + (r + 0.5) * g.tile;
+      g.height[k] += static_cast<float>(relief.displacement(x, y));
+    }
 }
 
 // A ground feature map: a raster whose non-zero cells carry one material.
@@ -153,14 +168,15 @@ void set_ground_materials(const Scenario& s, renderer::Scene& scene) {
 // The ground mesh: the grid's own, or with context grids the grid and its surroundings; in
 // the latter case context triangles take kSurroundings (feature maps may override it).
 void add_ground_mesh(const Scenario& s, const terrain::ElevationGrid& grid,
-                     renderer::Scene& scene) {
-  if (s.terrain.context.empty()) {
+                     const terrain::SurfaceDetail* relief, renderer::Scene& scene) {
+  if (s.terrain.context.empty() && relief == nullptr) {
     scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
     return;
   }
   const terrain::TerrainField field = detail::context_terrain(s, grid);
-  terrain::ContextMesh m =
-      terrain::build_context_mesh(field, scene.origin, context_mesh_options(s));
+  terrain::ContextMeshOptions options = context_mesh_options(s);
+  options.detail = relief;
+  terrain::ContextMesh m = terrain::build_context_mesh(field, scene.origin, options);
   scene.ground.mesh = std::move(m.mesh);
   scene.ground.triangle_material = std::move(m.from_context);
   for (std::uint8_t& id : scene.ground.triangle_material) id = id != 0 ? kSurroundings : 0;
@@ -186,16 +202,52 @@ renderer::GroundShading ground_shading(const Scenario& s) {
   return shading;
 }
 
+// The grid sample's ground material for the relief: the ground maps, then the grass map.
+int sample_material(const GroundRasters& rasters, const featuremaps::VegetationMap* map, double x,
+                    double y) {
+  for (std::size_t m = 0; m < rasters.size(); ++m)
+    if (rasters[m].covers(x, y)) return static_cast<int>(m) + 1;
+  if (map != nullptr)
+    if (const auto cell = map->cell_at(x, y); cell && cell->grass_type() > 0)
+      return 4 + cell->grass_type();
+  return 0;
+}
+
+// [ground] detail: per grid sample the amplitude and roughness of its material.
+std::optional<terrain::SurfaceDetail> surface_detail(const Scenario& s,
+                                                     const terrain::ElevationGrid& grid,
+                                                     const GroundRasters& rasters,
+                                                     const featuremaps::VegetationMap* map) {
+  if (!s.ground.detail) return std::nullopt;
+  const auto cells = static_cast<std::size_t>(grid.cols()) * static_cast<std::size_t>(grid.rows());
+  std::vector<float> amplitude(cells), roughness(cells);
+  tbb::parallel_for(0, grid.rows(), [&](int r) {
+    for (int c = 0; c < grid.cols(); ++c) {
+      const auto id = static_cast<std::size_t>(
+          sample_material(rasters, map, grid.x_of_col(c), grid.y_of_row(r)));
+      const std::size_t i = static_cast<std::size_t>(r) * grid.cols() + c;
+      amplitude[i] = s.ground.detail_amplitude[id];
+      roughness[i] = s.ground.detail_roughness[id];
+    }
+  });
+  return terrain::SurfaceDetail(grid, std::move(amplitude), std::move(roughness),
+                                mix64(s.render.seed ^ 0x72656c696566ULL));
+}
+
 }  // namespace
 
 terrain::ContextMeshOptions context_mesh_options(const Scenario& s) {
   terrain::ContextMeshOptions o;
-  double pixel = 1.0;  // the finest pixel of any view, radians
+  double pixel = 1.0;        // the finest pixel of any view, radians
+  double calibration = 0.0;  // the largest of r2 / distance (Weber & Penn section 5)
   for (const ViewSettings& v : s.views) {
     o.views.push_back({v.position.x, v.position.y});
     pixel = std::min(pixel, v.fov_y_deg * std::numbers::pi / 180.0 / v.height);
+    calibration = std::max(calibration, trees::calibrated_range(1.0, v.height, v.fov_y_deg));
   }
   o.range_factor = std::clamp(1.0 / (kContextCellPixels * pixel), 2.0, 400.0);
+  // Detail cells of r2 / kDetailRange metres at calibrated range r2.
+  o.detail_factor = std::clamp(kDetailRange / std::max(calibration, 1e-9), 2.0, 400.0);
   return o;
 }
 
@@ -210,7 +262,12 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
       terrain::load_elevation(scenario.terrain.elevation, scenario.terrain.dem);
   renderer::Scene scene;
   scene.origin = grid.centre();
-  add_ground_mesh(scenario, grid, scene);
+  const GroundRasters rasters = ground_rasters(scenario);
+  std::optional<featuremaps::VegetationMap> map;
+  if (scenario.featuremaps || has_cover(scenario)) map = detail::scene_vegetation(scenario, grid);
+  const std::optional<terrain::SurfaceDetail> relief =
+      surface_detail(scenario, grid, rasters, map ? &*map : nullptr);
+  add_ground_mesh(scenario, grid, relief ? &*relief : nullptr, scene);
   scene.ground.albedo = scenario.terrain.albedo;
   scene.ground.shading = ground_shading(scenario);
   scene.sun.direction = sun_direction(scenario.sun.elevation_deg, scenario.sun.azimuth_deg);
@@ -234,22 +291,22 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;
-  if (scenario.featuremaps || has_cover(scenario)) {
-    const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(scenario, grid);
-    if (map && !scenario.species.empty()) {
-      add_trees(scenario, *map, grid, time, reuse, scene);
+  if (map) {
+    if (!scenario.species.empty()) {
+      add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
       detail::warn_cameras_inside_trees(scenario, scene);
     }
-    const GroundRasters rasters = ground_rasters(scenario);
-    if (map && !scenario.grass.empty()) {
+    if (!scenario.grass.empty()) {
       // No blade stands on road or water.
       const auto blocked = [&](double x, double y) {
         return rasters[0].covers(x, y) || rasters[1].covers(x, y);
       };
       scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin, blocked);
+      if (relief) lift_grass(*relief, scene);
     }
-    add_ground_materials(scenario, map ? &*map : nullptr, rasters, scene);
   }
+  if (scenario.featuremaps || has_cover(scenario))
+    add_ground_materials(scenario, map ? &*map : nullptr, rasters, scene);
   set_ground_materials(scenario, scene);
   scene.ground.edge_albedo = detail::edge_albedo(scene.ground, grid, scene.origin);
   scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();

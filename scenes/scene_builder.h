@@ -17,6 +17,9 @@ renderer::Scene build_scene(const Scenario& scenario, double time = 0.0,
 // Context terrain beyond the grid is meshed in cells that span about this many pixels of
 // the view with the finest pixels, at their distance from the nearest view.
 inline constexpr double kContextCellPixels = 4.0;
+// With [ground] detail, the relief is meshed in cells of r2 / kDetailRange metres at
+// calibrated range r2 (the range trees degrade by, Weber & Penn section 5): 1 m at 250 m.
+inline constexpr double kDetailRange = 250.0;
 
 // The views and the range factor the context mesh is built for (terrain/context_mesh.h).
 terrain::ContextMeshOptions context_mesh_options(const Scenario& scenario);

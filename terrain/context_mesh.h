@@ -1,6 +1,7 @@
 #pragma once
-// The ground mesh of a terrain with context grids (terrain/terrain_field.h): the grid's own
-// cells at full resolution, and beyond them a restricted quadtree over the grid's lattice
+// The ground mesh of a terrain with context grids (terrain/terrain_field.h) or with detail
+// below its cells (terrain/surface_detail.h): the grid's own cells at full resolution (or
+// finer near the views), and beyond them a restricted quadtree over the grid's lattice
 // whose cells grow with distance from the views, so that a 100 km context costs a few
 // hundred thousand triangles.
 //
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "terrain/ground_mesh.h"
+#include "terrain/surface_detail.h"
 #include "terrain/terrain_field.h"
 
 namespace landsim::terrain {
@@ -29,6 +31,13 @@ struct ContextMeshOptions {
   std::vector<std::array<double, 2>> views;  // camera positions, grid coordinates (x, y)
   // A cell is split while a view is nearer than range_factor times its size (>= 2).
   double range_factor = 100.0;
+  // Detail below the grid's cells (terrain/surface_detail.h), when given: the quadtree goes
+  // down to 1 / 2^detail_levels of a grid cell, a cell being split while a view is nearer
+  // than detail_factor (>= 2) times its size, and vertices between the grid's samples are
+  // displaced.
+  const SurfaceDetail* detail = nullptr;
+  int detail_levels = 4;
+  double detail_factor = 100.0;
 };
 
 struct ContextMesh {

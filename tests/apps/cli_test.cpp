@@ -83,7 +83,7 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
        scenario("", "", "spp = 2") + "[[ground.rules]]\nmeasure = \"height\"\nbelow = 10\n",
        "a rule must change something"},
       {"variation out of range", scenario("", "", "spp = 2") + "[ground]\nvariation = 1.5\n",
-       "[ground] variation: expected a fraction"},
+       "[ground] variation: expected from 0 to 1"},
   };
   for (const BadScenario& c : cases) {
     TempDir dir;

@@ -74,7 +74,8 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "variation = { soil = 0.3, grass = 0.1 }\nvariation_scales = [80.0, 8.0]\n"
          "textures = { rock = \"" +
          (dir / "bark.png").string() +
-         "\" }\ntexture_size = 3.0\n"
+         "\" }\ntexture_size = 3.0\ndetail = true\ndetail_amplitude = { rock = 2.0 }\n"
+         "detail_roughness = 0.6\n"
          "[[ground.rules]]\nmeasure = \"slope\"\nabove = 30.0\nbelow = 80.0\nsoftness = 3.0\n"
          "on = [\"terrain\", \"grass\"]\nbecomes = \"rock\"\ntint = [1.1, 1.0, 0.9]\n\n"
          "[wind]\nspeed = 4.0\ngust = 2.0\n\n"
@@ -158,6 +159,10 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(sh.rules[0].on, (1u << 0) | (1u << 5) | (1u << 6) | (1u << 7));
   EXPECT_EQ(sh.rules[0].becomes, 3);
   EXPECT_FLOAT_EQ(sh.rules[0].tint.x, 1.1f);
+  EXPECT_TRUE(s.ground.detail);
+  EXPECT_FLOAT_EQ(s.ground.detail_amplitude[3], 2.0f);
+  EXPECT_FLOAT_EQ(s.ground.detail_amplitude[4], 0.3f);  // soil keeps its default
+  EXPECT_FLOAT_EQ(s.ground.detail_roughness[0], 0.6f);
   EXPECT_DOUBLE_EQ(s.wind.gust, 2.0);
   EXPECT_EQ(s.render.frames, (std::vector<double>{0.0, 1.5}));
   EXPECT_EQ(s.render.season, trees::Season::autumn);

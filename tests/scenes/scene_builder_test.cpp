@@ -58,5 +58,33 @@ TEST(SceneBuilder, ThePlainBeyondTheGridTakesTheAlbedoOfItsEdge) {
   EXPECT_NEAR(middle.ground.plain_albedo().z, 0.1f, 1e-5f);
 }
 
+TEST(SceneBuilder, WithDetailTreesStandOnTheReliefAndTheGroundIsFiner) {
+  landsim::testing::TempDir dir;
+  const std::string text =
+      "[terrain]\nelevation = \"" +
+      landsim::testing::source_file("data/terrain/volcano.asc").string() +
+      "\"\n[sun]\nelevation = 40\nazimuth = 90\n"
+      "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 250.0]\ntarget = [300.0, 400.0, "
+      "150.0]\n"
+      "[[species]]\nbit = 0\nfile = \"" +
+      landsim::testing::source_file("data/species/quaking_aspen.toml").string() +
+      "\"\nvariants = 1\ndensity_per_ha = 20\ncover = \"everywhere\"\n";
+  const renderer::Scene flat = build_scene(load_scenario(dir.write("f.toml", text)));
+  const renderer::Scene relief = build_scene(load_scenario(
+      dir.write("d.toml", text + "[ground]\ndetail = true\ndetail_amplitude = 1.0\n")));
+  EXPECT_GT(relief.ground.mesh.triangle_count(), 4 * flat.ground.mesh.triangle_count());
+  // The same trees, standing up to twice the amplitude off the grid's surface, most of them
+  // off it.
+  ASSERT_EQ(relief.instances.size(), flat.instances.size());
+  ASSERT_GT(flat.instances.size(), 50u);
+  int moved = 0;
+  for (std::size_t i = 0; i < flat.instances.size(); ++i) {
+    const double dz = relief.instances[i].position.z - flat.instances[i].position.z;
+    ASSERT_LE(std::abs(dz), 2.0 + 1e-6);
+    moved += std::abs(dz) > 0.01;
+  }
+  EXPECT_GT(moved, static_cast<int>(flat.instances.size()) / 2);
+}
+
 }  // namespace
 }  // namespace landsim::scenes
