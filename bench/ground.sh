@@ -1,6 +1,7 @@
 #!/bin/sh
 # The ground (issue 20): renders the Kagwene example (scenes/examples/kagwene.toml, both
-# views) without and with a 100 km x 100 km context grid around it, alternately, and prints
+# views) without and with a 100 km x 100 km context grid around it, and with the context and
+# detail below the grid's cells ([ground] detail = true), alternately, and prints
 # per run the wall time, scene build time, trace time of both views, ground triangles and
 # peak resident memory. The context is synthetic (bench/context_grid.cpp: the DEM's own
 # heights continued outward with seeded relief; no real regional DEM ships with landsim).
@@ -19,9 +20,10 @@ ROOT=$(pwd)
 sed "s#\"\.\./\.\./#\"$ROOT/#g; s#\"kagwene_classes.toml\"#\"$ROOT/scenes/examples/kagwene_classes.toml\"#" \
   scenes/examples/kagwene.toml > "$OUT/off.toml"
 sed "s#^albedo = \(.*\)#albedo = \1\ncontext = [\"$OUT/context.tif\"]#" "$OUT/off.toml" > "$OUT/on.toml"
+{ cat "$OUT/on.toml"; printf '\n[ground]\ndetail = true\n'; } > "$OUT/detail.toml"
 echo "case run wall_s scene_s trace_s ground_triangles peak_MB"
 for run in $(seq 1 "$RUNS"); do
-  for case in off on; do
+  for case in off on detail; do
     start=$(date +%s.%N)
     json=$("$BIN/landsim" render "$OUT/$case.toml" --width "$WIDTH" --threads 2 --json \
       --out "$OUT/$case" 2> /dev/null)
