@@ -42,7 +42,7 @@ double SurfaceDetail::displacement(double x, double y) const {
     const double at_sample = noise(grid_.x_of_col(cc), grid_.y_of_row(rr), roughness_[i]);
     sum += w * amplitude_[i] * (noise(x, y, roughness_[i]) - at_sample);
   }
-  return sum;
+  return 0.5 * sum;  // the noise's difference spans [-2, 2]: the amplitude bounds the relief
 }
 
 }  // namespace landsim::terrain

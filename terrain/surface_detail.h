@@ -2,9 +2,9 @@
 // Detail below the grid's cells: seeded fractal relief that leaves every grid sample where it
 // is. Grids are 5-30 m per cell; between samples their surface is flat facets. The relief
 // at a point is the bilinear blend, over the four samples around it, of each sample's
-//   amplitude x (F(point) - F(sample)),
-// F being fractal value noise whose wavelength is the cell and whose roughness is the
-// sample's: zero at every sample, continuous everywhere, at most twice the largest
+//   amplitude x (F(point) - F(sample)) / 2,
+// F being fractal value noise in [-1, 1] whose wavelength is the cell and whose roughness
+// is the sample's: zero at every sample, continuous everywhere, at most the largest
 // amplitude around (docs/GROUND.md).
 #include <cstdint>
 #include <vector>
