@@ -37,6 +37,7 @@ std::array<double, 2> placement_shift(const Scenario& s, const terrain::Elevatio
 
 terrain::TerrainField context_terrain(const Scenario& s, const terrain::ElevationGrid& grid) {
   std::vector<terrain::ElevationGrid> contexts;
+  if (s.terrain.context.empty()) return terrain::TerrainField(grid, {});  // detail alone
   const std::array<double, 2> shift = placement_shift(s, grid);
   for (std::size_t k = 0; k < s.terrain.context.size(); ++k) {
     try {

@@ -84,6 +84,10 @@ TEST(SceneBuilder, WithDetailTreesStandOnTheReliefAndTheGroundIsFiner) {
     moved += std::abs(dz) > 0.01;
   }
   EXPECT_GT(moved, static_cast<int>(flat.instances.size()) / 2);
+  // Detail alone does not tie the grid to its file's cell size (only context grids do).
+  std::string stretched = text + "[ground]\ndetail = true\n";
+  stretched.replace(stretched.find("[sun]"), 0, "cell_size = 12.0\n");
+  EXPECT_NO_THROW(build_scene(load_scenario(dir.write("c.toml", stretched))));
 }
 
 }  // namespace
