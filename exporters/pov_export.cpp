@@ -26,15 +26,30 @@ std::string colour_vector(const Vec3f& c) {
   return fmt::format("<{:.6g}, {:.6g}, {:.6g}>", c.x, c.y, c.z);
 }
 
+// Per-vertex textures of a mesh2: its texture_list entries and each vertex's entry, which
+// POV-Ray interpolates across a triangle.
+struct VertexTextures {
+  std::vector<std::string> list;
+  std::vector<std::size_t> of_vertex;  // by vertex index
+};
+
 void write_mesh2(fmt::ostream& out, const std::string& name, const std::vector<Vec3f>& vertices,
-                 const std::vector<Vec3f>& normals, const std::vector<std::uint32_t>& indices) {
+                 const std::vector<Vec3f>& normals, const std::vector<std::uint32_t>& indices,
+                 const VertexTextures* textures = nullptr) {
   out.print("#declare {} = mesh2 {{\n  vertex_vectors {{ {}", name, vertices.size());
   for (const Vec3f& v : vertices) out.print(",\n    {}", pov(v));
   out.print("\n  }}\n  normal_vectors {{ {}", normals.size());
   for (const Vec3f& n : normals) out.print(",\n    {}", pov(n));
+  if (textures != nullptr) {
+    out.print("\n  }}\n  texture_list {{ {}", textures->list.size());
+    for (const std::string& t : textures->list) out.print(",\n    {}", t);
+  }
   out.print("\n  }}\n  face_indices {{ {}", indices.size() / 3);
   for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
     out.print(",\n    <{}, {}, {}>", indices[i], indices[i + 1], indices[i + 2]);
+    if (textures != nullptr)
+      out.print(", {}, {}, {}", textures->of_vertex[indices[i]],
+                textures->of_vertex[indices[i + 1]], textures->of_vertex[indices[i + 2]]);
   }
   out.print("\n  }}\n}}\n");
 }
@@ -42,38 +57,29 @@ void write_mesh2(fmt::ostream& out, const std::string& name, const std::vector<V
 // The ground of one material with its shading variation as vertex colours: each vertex
 // takes shade_ground's albedo there (image textures left out: POV-Ray has no three-sided
 // projection, and a vertex would alias the image), quantised into a palette of LS_Texture
-// entries that POV-Ray interpolates across each triangle.
-void write_ground_mesh2(fmt::ostream& out, const std::string& name, const renderer::Scene& scene,
-                        int id, const std::vector<std::uint32_t>& indices) {
+// entries.
+VertexTextures ground_textures(const renderer::Scene& scene, int id,
+                               const std::vector<std::uint32_t>& indices) {
   const terrain::GroundMesh& m = scene.ground.mesh;
+  constexpr std::size_t kUnset = static_cast<std::size_t>(-1);
+  VertexTextures out;
+  out.of_vertex.assign(m.vertices.size(), kUnset);
   std::map<std::array<int, 3>, std::size_t> palette;
-  std::map<std::uint32_t, std::size_t> colour_of;
   for (std::uint32_t v : indices) {
-    if (colour_of.count(v) != 0) continue;
+    if (out.of_vertex[v] != kUnset) continue;
     const renderer::ShadedGround g =
         renderer::shade_ground(scene.ground, id, Vec3(m.vertices[v]) + scene.origin,
                                normalize(Vec3(m.normals[v])), scene.sun.direction, false);
     const std::array<int, 3> q{static_cast<int>(std::lround(g.albedo.x * 1024.0f)),
                                static_cast<int>(std::lround(g.albedo.y * 1024.0f)),
                                static_cast<int>(std::lround(g.albedo.z * 1024.0f))};
-    colour_of[v] = palette.try_emplace(q, palette.size()).first->second;
+    const auto [it, added] = palette.try_emplace(q, out.list.size());
+    if (added)
+      out.list.push_back(fmt::format("LS_Texture(<1, 0, 0>, <{:.6g}, {:.6g}, {:.6g}>)",
+                                     q[0] / 1024.0, q[1] / 1024.0, q[2] / 1024.0));
+    out.of_vertex[v] = it->second;
   }
-  std::vector<std::array<int, 3>> colours(palette.size());
-  for (const auto& [q, i] : palette) colours[i] = q;
-  out.print("#declare {} = mesh2 {{\n  vertex_vectors {{ {}", name, m.vertices.size());
-  for (const Vec3f& v : m.vertices) out.print(",\n    {}", pov(v));
-  out.print("\n  }}\n  normal_vectors {{ {}", m.normals.size());
-  for (const Vec3f& n : m.normals) out.print(",\n    {}", pov(n));
-  out.print("\n  }}\n  texture_list {{ {}", colours.size());
-  for (const auto& q : colours)
-    out.print(",\n    LS_Texture(<1, 0, 0>, <{:.6g}, {:.6g}, {:.6g}>)", q[0] / 1024.0,
-              q[1] / 1024.0, q[2] / 1024.0);
-  out.print("\n  }}\n  face_indices {{ {}", indices.size() / 3);
-  for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-    out.print(",\n    <{}, {}, {}>, {}, {}, {}", indices[i], indices[i + 1], indices[i + 2],
-              colour_of[indices[i]], colour_of[indices[i + 1]], colour_of[indices[i + 2]]);
-  }
-  out.print("\n  }}\n}}\n");
+  return out;
 }
 
 // A grass patch as the renderer makes it.
@@ -169,8 +175,11 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
       auto out = fmt::output_file(inc.temp_path().string());
       out.print("// landsim tree prototypes, POV-Ray axes (y up)\n");
       // The ground, one mesh per ground material (soil, rock, water, road, under grass).
-      for (const auto& [id, indices] : ground_by_material(scene.ground))
-        write_ground_mesh2(out, fmt::format("LS_Ground_{}", id), scene, id, indices);
+      for (const auto& [id, indices] : ground_by_material(scene.ground)) {
+        const VertexTextures colours = ground_textures(scene, id, indices);
+        write_mesh2(out, fmt::format("LS_Ground_{}", id), scene.ground.mesh.vertices,
+                    scene.ground.mesh.normals, indices, &colours);
+      }
       for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
         const trees::TreeGeometry& g = scene.prototypes[p].geometry;
         for (int k = 0; k < trees::kGroupCount; ++k) {

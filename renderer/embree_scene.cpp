@@ -188,16 +188,20 @@ struct EmbreeScene::Impl {
     grass_patches.assign(3 * kGrassVariants * kGrassLevels * 2, nullptr);
     for (int t = 0; t < 3; ++t)
       for (int variant = 0; variant < kGrassVariants; ++variant)
-        for (int level = 0; level < kGrassLevels; ++level)
-          for (bool filtered : {false, true})
-            if (!filtered || !cover.mask.type.empty())
-              add_grass_patch(cover, t, variant, level, filtered);
+        for (int level = 0; level < kGrassLevels; ++level) {
+          const GrassBlades blades =
+              make_grass_patch(cover.types[static_cast<std::size_t>(t)], cover.tile, level,
+                               grass_patch_seed(t, variant));
+          if (blades.first.empty()) continue;
+          grass_patches[patch_index(t, variant, level, false)] = grass_patch_scene(blades, 0);
+          if (!cover.mask.type.empty())
+            grass_patches[patch_index(t, variant, level, true)] = grass_patch_scene(blades, t + 1);
+        }
   }
 
-  void add_grass_patch(const GrassCover& cover, int t, int variant, int level, bool filtered) {
-    const GrassBlades blades = make_grass_patch(cover.types[static_cast<std::size_t>(t)],
-                                                cover.tile, level, grass_patch_seed(t, variant));
-    if (blades.first.empty()) return;
+  // A patch's blades as an Embree scene; with `filtered_type` (1-3) its blades are kept by
+  // the grass mask (grass_filter).
+  RTCScene grass_patch_scene(const GrassBlades& blades, int filtered_type) {
     RTCScene s = rtcNewScene(device);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
     auto* v = new_geometry_buffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
@@ -206,10 +210,10 @@ struct EmbreeScene::Impl {
     auto* i = new_geometry_buffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
                                   sizeof(std::uint32_t), blades.first.size());
     std::memcpy(i, blades.first.data(), blades.first.size() * sizeof(std::uint32_t));
-    if (filtered) {
+    if (filtered_type != 0) {
       auto filter = std::make_unique<GrassFilter>();
       filter->impl = this;
-      filter->type = t + 1;
+      filter->type = filtered_type;
       for (std::size_t p = 0; p < blades.points.size(); p += 4 * (kSegmentsPerBlade + 1))
         filter->roots.insert(filter->roots.end(), {blades.points[p], blades.points[p + 1]});
       rtcSetGeometryUserData(geom, filter.get());
@@ -221,7 +225,7 @@ struct EmbreeScene::Impl {
     rtcAttachGeometry(s, geom);
     rtcReleaseGeometry(geom);
     rtcCommitScene(s);
-    grass_patches[patch_index(t, variant, level, filtered)] = s;
+    return s;
   }
 
   // Patches within the grass range of `view`, at the levels their distance asks for (two

@@ -116,7 +116,22 @@ GroundRasters ground_rasters(const Scenario& s) {
           material_raster(f.soil)};
 }
 
-// Ground materials per triangle, by priority: road, water, rock, soil, then the grass tint.
+// The material the ground maps give a point, by priority: road, water, rock, soil, then the
+// ground under a grass type [[grass]] defines; none where no map says.
+std::optional<std::uint8_t> mapped_material(const Scenario& s, const GroundRasters& rasters,
+                                            const featuremaps::VegetationMap* map, double x,
+                                            double y) {
+  for (std::size_t m = 0; m < rasters.size(); ++m)
+    if (rasters[m].covers(x, y)) return static_cast<std::uint8_t>(m + 1);
+  if (map == nullptr) return std::nullopt;
+  const auto cell = map->cell_at(x, y);
+  if (!cell || cell->grass_type() == 0) return std::nullopt;
+  for (const GrassSettings& g : s.grass)
+    if (g.type == cell->grass_type()) return static_cast<std::uint8_t>(4 + g.type);
+  return std::nullopt;
+}
+
+// Ground materials per triangle (at its centre) from the ground maps.
 void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* map,
                           const GroundRasters& rasters, renderer::Scene& scene) {
   const bool any_raster = std::any_of(rasters.begin(), rasters.end(),
@@ -130,21 +145,8 @@ void add_ground_materials(const Scenario& s, const featuremaps::VegetationMap* m
     const Vec3f a = mesh.vertices[mesh.indices[3 * t]], b = mesh.vertices[mesh.indices[3 * t + 1]],
                 c = mesh.vertices[mesh.indices[3 * t + 2]];
     const Vec3 centre = Vec3((a + b + c) / 3.0f) + scene.origin;
-    for (std::size_t m = 0; m < rasters.size(); ++m) {
-      if (rasters[m].covers(centre.x, centre.y)) {
-        ground.triangle_material[t] = static_cast<std::uint8_t>(m + 1);
-        return;
-      }
-    }
-    if (map != nullptr) {
-      const auto cell = map->cell_at(centre.x, centre.y);
-      if (cell && cell->grass_type() > 0) {
-        for (const GrassSettings& g : s.grass) {
-          if (g.type == cell->grass_type())
-            ground.triangle_material[t] = static_cast<std::uint8_t>(4 + g.type);
-        }
-      }
-    }
+    if (const auto id = mapped_material(s, rasters, map, centre.x, centre.y))
+      ground.triangle_material[t] = *id;
   });
 }
 
@@ -202,17 +204,6 @@ renderer::GroundShading ground_shading(const Scenario& s) {
   return shading;
 }
 
-// The grid sample's ground material for the relief: the ground maps, then the grass map.
-int sample_material(const GroundRasters& rasters, const featuremaps::VegetationMap* map, double x,
-                    double y) {
-  for (std::size_t m = 0; m < rasters.size(); ++m)
-    if (rasters[m].covers(x, y)) return static_cast<int>(m) + 1;
-  if (map != nullptr)
-    if (const auto cell = map->cell_at(x, y); cell && cell->grass_type() > 0)
-      return 4 + cell->grass_type();
-  return 0;
-}
-
 // [ground] detail: per grid sample the amplitude and roughness of its material.
 std::optional<terrain::SurfaceDetail> surface_detail(const Scenario& s,
                                                      const terrain::ElevationGrid& grid,
@@ -223,8 +214,8 @@ std::optional<terrain::SurfaceDetail> surface_detail(const Scenario& s,
   std::vector<float> amplitude(cells), roughness(cells);
   tbb::parallel_for(0, grid.rows(), [&](int r) {
     for (int c = 0; c < grid.cols(); ++c) {
-      const auto id = static_cast<std::size_t>(
-          sample_material(rasters, map, grid.x_of_col(c), grid.y_of_row(r)));
+      const std::size_t id =
+          mapped_material(s, rasters, map, grid.x_of_col(c), grid.y_of_row(r)).value_or(0);
       const std::size_t i = static_cast<std::size_t>(r) * grid.cols() + c;
       amplitude[i] = s.ground.detail_amplitude[id];
       roughness[i] = s.ground.detail_roughness[id];

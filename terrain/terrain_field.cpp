@@ -58,8 +58,8 @@ TerrainField::TerrainField(const ElevationGrid& grid, std::vector<ElevationGrid>
   std::stable_sort(
       contexts_.begin(), contexts_.end(),
       [](const ElevationGrid& a, const ElevationGrid& b) { return cell_size(a) < cell_size(b); });
-  layers_.push_back(Layer{&grid_, 0, 0, 0, {}});
-  for (const ElevationGrid& c : contexts_) layers_.push_back(Layer{&c, 0, 0, 0, {}});
+  layers_.push_back(Layer{&grid_, std::nullopt});
+  for (const ElevationGrid& c : contexts_) layers_.push_back(Layer{&c, std::nullopt});
   extent_ = {1e300, 1e300, -1e300, -1e300};
   for (const Layer& l : layers_) {
     const GeoTransform& t = l.grid->transform();
@@ -79,7 +79,8 @@ double TerrainField::finest_context_cell() const {
 double TerrainField::stored_cells() const {
   double cells = 0.0;
   for (const ElevationGrid& c : contexts_) cells += static_cast<double>(c.cols()) * c.rows();
-  for (const Layer& l : layers_) cells += static_cast<double>(l.offsets.size());
+  for (const Layer& l : layers_)
+    if (l.offsets) cells += static_cast<double>(l.offsets->cols()) * l.offsets->rows();
   return cells;
 }
 
@@ -110,25 +111,6 @@ std::optional<double> TerrainField::layer_height(std::size_t k, double x, double
   return *below + offset(layers_[k], x, y);
 }
 
-// Bilinear in the layer's widened lattice; 0 outside it (beyond the blend band).
-double TerrainField::offset(const Layer& layer, double x, double y) const {
-  if (layer.offsets.empty()) return 0.0;
-  const GeoTransform& t = layer.grid->transform();
-  const double c = (x - t.origin_x) / t.cell_size_x - 0.5 + layer.margin;
-  const double r = (t.origin_y - y) / t.cell_size_y - 0.5 + layer.margin;
-  if (!(c >= 0.0 && r >= 0.0 && c <= layer.cols - 1 && r <= layer.rows - 1)) return 0.0;
-  const int c0 = std::min(static_cast<int>(c), layer.cols - 2);
-  const int r0 = std::min(static_cast<int>(r), layer.rows - 2);
-  const double fx = c - c0, fy = r - r0;
-  const auto at = [&](int cc, int rr) -> double {
-    return layer.offsets[static_cast<std::size_t>(rr) * static_cast<std::size_t>(layer.cols) +
-                         static_cast<std::size_t>(cc)];
-  };
-  const double north = at(c0, r0) + (at(c0 + 1, r0) - at(c0, r0)) * fx;
-  const double south = at(c0, r0 + 1) + (at(c0 + 1, r0 + 1) - at(c0, r0 + 1)) * fx;
-  return north + (south - north) * fy;
-}
-
 // Offsets of layer k: at its valid samples, its height minus the coarser surface's; around
 // them, fading to zero over the blend band (GDAL fills and measures, terrain/raster_io.h).
 void TerrainField::blend(std::size_t k) {
@@ -136,25 +118,28 @@ void TerrainField::blend(std::size_t k) {
   const ElevationGrid& g = *layer.grid;
   const double band =
       std::min(kBlendCells * cell_size(*layers_[k + 1].grid) / cell_size(g), kMaxBlendCells);
-  layer.margin = static_cast<int>(std::ceil(band)) + 1;
-  layer.cols = g.cols() + 2 * layer.margin;
-  layer.rows = g.rows() + 2 * layer.margin;
-  layer.offsets.assign(static_cast<std::size_t>(layer.cols) * static_cast<std::size_t>(layer.rows),
-                       NAN);
+  const int margin = static_cast<int>(std::ceil(band)) + 1;
+  const int cols = g.cols() + 2 * margin, rows = g.rows() + 2 * margin;
+  std::vector<float> offsets(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), NAN);
   for (int r = 0; r < g.rows(); ++r) {
     for (int c = 0; c < g.cols(); ++c) {
       if (!g.valid(c, r)) continue;
       const std::optional<double> below = layer_height(k + 1, g.x_of_col(c), g.y_of_row(r));
       if (!below) continue;
-      layer.offsets[static_cast<std::size_t>(r + layer.margin) * layer.cols + c + layer.margin] =
-          static_cast<float>(g.at(c, r) - *below);
+      offsets[static_cast<std::size_t>(r + margin) * static_cast<std::size_t>(cols) +
+              static_cast<std::size_t>(c + margin)] = static_cast<float>(g.at(c, r) - *below);
     }
   }
-  const std::vector<std::uint8_t> enclosed = enclosed_cells(layer.offsets, layer.cols, layer.rows);
+  const std::vector<std::uint8_t> enclosed = enclosed_cells(offsets, cols, rows);
   std::string error;
-  if (!raster_io().fade_offsets(layer.offsets.data(), enclosed.data(), layer.cols, layer.rows, band,
-                                error))
+  if (!raster_io().fade_offsets(offsets.data(), enclosed.data(), cols, rows, band, error))
     throw std::runtime_error("blending the context grids failed (GDAL: " + error + ")");
+  const GeoTransform& t = g.transform();
+  layer.offsets.emplace(
+      cols, rows,
+      GeoTransform{t.origin_x - margin * t.cell_size_x, t.origin_y + margin * t.cell_size_y,
+                   t.cell_size_x, t.cell_size_y},
+      std::move(offsets));
 }
 
 }  // namespace landsim::terrain

@@ -44,16 +44,17 @@ class TerrainField {
   double stored_cells() const;
 
  private:
-  // One grid of the stack and the fading offsets that bend the next coarser surface to it,
-  // on the grid's own lattice widened by `margin` cells on every side.
+  // One grid of the stack and the fading offsets that bend the next coarser surface to it:
+  // a grid on the same lattice widened by a margin of cells on every side (bilinear inside,
+  // 0 beyond, where the blend band has ended).
   struct Layer {
     const ElevationGrid* grid = nullptr;
-    int margin = 0;
-    int cols = 0, rows = 0;
-    std::vector<float> offsets;
+    std::optional<ElevationGrid> offsets;
   };
   std::optional<double> layer_height(std::size_t k, double x, double y) const;
-  double offset(const Layer& layer, double x, double y) const;
+  static double offset(const Layer& layer, double x, double y) {
+    return layer.offsets ? layer.offsets->height(x, y).value_or(0.0) : 0.0;
+  }
   void blend(std::size_t k);
 
   const ElevationGrid& grid_;
