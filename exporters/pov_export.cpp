@@ -269,17 +269,23 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     // ground, as landsim's comparison does.
     // A patch some of whose blades the grass mask drops (a field's edge, a road) is written
     // for its tile with the blades landsim keeps.
+    std::map<std::array<int, 3>, renderer::GrassBlades> patches;  // made once each
     renderer::for_each_grass_patch(
         scene.grass, view, false, [&](const renderer::GrassPatchPlacement& p) {
           const renderer::GrassType& g = scene.grass.types[static_cast<std::size_t>(p.type - 1)];
-          const renderer::GrassBlades patch = grass_patch(scene, p.type - 1, p.variant, p.level);
-          const renderer::GrassBlades kept =
-              renderer::kept_blades(patch, p.frame, scene.grass.mask, p.type);
-          if (kept.first.empty()) return;
+          auto [it, added] = patches.try_emplace({p.type - 1, p.variant, p.level});
+          if (added) it->second = grass_patch(scene, p.type - 1, p.variant, p.level);
+          const renderer::GrassBlades& patch = it->second;
+          if (patch.first.empty()) return;
           std::string name = fmt::format("LS_Grass_{}_{}_{}", p.type - 1, p.variant, p.level);
-          if (kept.first.size() != patch.first.size()) {
-            name = fmt::format("LS_GrassTile_{}_{}", p.tile, p.level);
-            write_grass_patch(out, name, kept);
+          if (!renderer::grass_tile_whole(scene.grass.mask, p.frame, scene.grass.tile, p.type)) {
+            const renderer::GrassBlades kept =
+                renderer::kept_blades(patch, p.frame, scene.grass.mask, p.type);
+            if (kept.first.empty()) return;
+            if (kept.first.size() != patch.first.size()) {
+              name = fmt::format("LS_GrassTile_{}_{}", p.tile, p.level);
+              write_grass_patch(out, name, kept);
+            }
           }
           out.print("object {{ {} LS_Texture(<1, 0, 0>, {}) {} }}\n", name,
                     colour_vector(g.reflectance), pov_matrix(p.frame));

@@ -234,7 +234,7 @@ struct EmbreeScene::Impl {
     if (cover.cols == 0) return;
     add_grass_patches(cover);
     for_each_grass_patch(cover, view, blend, [&](const GrassPatchPlacement& p) {
-      const bool whole = grass_tile_whole(cover, p.tile, p.type);
+      const bool whole = grass_tile_whole(cover.mask, p.frame, cover.tile, p.type);
       RTCScene patch = grass_patches[patch_index(p.type - 1, p.variant, p.level, !whole)];
       if (patch == nullptr) return;
       TopLevelEntry entry;

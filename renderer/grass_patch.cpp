@@ -74,17 +74,18 @@ GrassBlades kept_blades(const GrassBlades& patch, const std::array<float, 12>& m
   return out;
 }
 
-bool grass_tile_whole(const GrassCover& cover, std::size_t tile, int type) {
-  const GrassMask& m = cover.mask;
+bool grass_tile_whole(const GrassMask& m, const std::array<float, 12>& frame, double tile,
+                      int type) {
   if (m.type.empty()) return true;
-  const auto c = static_cast<int>(tile % static_cast<std::size_t>(cover.cols));
-  const auto r = static_cast<int>(tile / static_cast<std::size_t>(cover.cols));
-  const double west = cover.corner.x + c * cover.tile - m.corner.x;
-  const double south = cover.corner.y + r * cover.tile - m.corner.y;
-  const int c0 = static_cast<int>(std::floor(west / m.cell_x));
-  const int c1 = static_cast<int>(std::ceil((west + cover.tile) / m.cell_x)) - 1;
-  const int r0 = static_cast<int>(std::floor(south / m.cell_y));
-  const int r1 = static_cast<int>(std::ceil((south + cover.tile) / m.cell_y)) - 1;
+  // The patch square's horizontal footprint as the frame places it (a tilted frame leans it
+  // a little past its tile), widened by a millimetre for the roots' float rounding.
+  const double hx = 0.5 * tile * (std::abs(frame[0]) + std::abs(frame[3])) + 1e-3;
+  const double hy = 0.5 * tile * (std::abs(frame[1]) + std::abs(frame[4])) + 1e-3;
+  const double x = frame[9] - m.corner.x, y = frame[10] - m.corner.y;
+  const int c0 = static_cast<int>(std::floor((x - hx) / m.cell_x));
+  const int c1 = static_cast<int>(std::floor((x + hx) / m.cell_x));
+  const int r0 = static_cast<int>(std::floor((y - hy) / m.cell_y));
+  const int r1 = static_cast<int>(std::floor((y + hy) / m.cell_y));
   if (c0 < 0 || r0 < 0 || c1 >= m.cols || r1 >= m.rows) return false;
   for (int rr = r0; rr <= r1; ++rr)
     for (int cc = c0; cc <= c1; ++cc)

@@ -34,9 +34,11 @@ inline std::uint64_t grass_patch_seed(int type, int variant = 0) {
 GrassBlades kept_blades(const GrassBlades& patch, const std::array<float, 12>& frame,
                         const GrassMask& mask, int type);
 
-// True when the mask grants `type` on every cell under tile `tile` of the cover: its blades
-// need no filtering (most tiles; the renderer filters only the others).
-bool grass_tile_whole(const GrassCover& cover, std::size_t tile, int type);
+// True when the mask grants `type` on every cell the roots of a patch placed by `frame` (on
+// a tile of side `tile`) can reach: its blades need no filtering (most tiles; the renderer
+// filters only the others).
+bool grass_tile_whole(const GrassMask& mask, const std::array<float, 12>& frame, double tile,
+                      int type);
 
 // A tile's patch: its variant, quarter turns (0-3) and whether it is mirrored, from a hash of
 // the tile's index.

@@ -82,10 +82,11 @@ TEST(GrassPatch, NoBladeStandsOnARoadAndFieldEdgesFollowTheMapNotTheTiles) {
   const EmbreeScene e(s, &view);
   for (double x : {19.6, 20.0, 20.4}) EXPECT_EQ(grass_hits(e, x), 0) << x;
   // Only the tiles the road cuts need the blade filter.
-  EXPECT_TRUE(grass_tile_whole(s.grass, 3, 1));   // 12-16 m
-  EXPECT_FALSE(grass_tile_whole(s.grass, 4, 1));  // 16-20 m
-  EXPECT_FALSE(grass_tile_whole(s.grass, 5, 1));  // 20-24 m
-  EXPECT_FALSE(grass_tile_whole(s.grass, 3, 2));  // another type is never granted here
+  const auto flat = [](float x) { return grass_patch_frame({x, 6.0f, 0.0f}, {0, 0, 1}); };
+  EXPECT_TRUE(grass_tile_whole(s.grass.mask, flat(14.0f), 4.0, 1));   // 12-16 m
+  EXPECT_FALSE(grass_tile_whole(s.grass.mask, flat(18.0f), 4.0, 1));  // 16-20 m
+  EXPECT_FALSE(grass_tile_whole(s.grass.mask, flat(22.0f), 4.0, 1));  // 20-24 m
+  EXPECT_FALSE(grass_tile_whole(s.grass.mask, flat(14.0f), 4.0, 2));  // another type
   // The grass half of the tile the road halves keeps its blades, as the open field does.
   EXPECT_GT(grass_hits(e, 17.0), 100);
   EXPECT_GT(grass_hits(e, 10.0), 100);
@@ -105,6 +106,30 @@ TEST(GrassPatch, KeptBladesAreTheOnesTheRendererKeeps) {
   EXPECT_LT(kept.first.size(), 2 * patch.first.size() / 3);
   for (std::size_t p = 0; p < kept.points.size(); p += 4 * (kSegmentsPerBlade + 1))
     EXPECT_LT(kept.points[p] + 4.0f, 4.0f + 1e-4f);  // roots west of the road
+}
+
+TEST(GrassPatch, AWholeTileLosesNoBladeToTheMaskEvenTilted) {
+  // Grass west of x = 16, the tile 12-16 m against the edge: tilted frames lean its roots
+  // past 16 m, so it is whole only when no root crosses.
+  const Scene s = grass_field(8, [](double x, double) { return x > 16.0; });
+  const GrassBlades patch = make_grass_patch(s.grass.types[0], 4.0, 0, grass_patch_seed(0, 2));
+  int whole = 0, cut = 0;
+  for (int k = 0; k < 200; ++k) {
+    const float tilt = 0.01f * static_cast<float>(k % 40), turn = 0.37f * static_cast<float>(k);
+    const Vec3f normal{tilt * std::cos(turn), tilt * std::sin(turn), 1.0f};
+    const std::array<float, 12> frame =
+        grass_patch_frame({14.0f, 6.0f, 0.0f}, normal, tile_look(static_cast<std::size_t>(k)));
+    const bool keeps_all =
+        kept_blades(patch, frame, s.grass.mask, 1).first.size() == patch.first.size();
+    if (grass_tile_whole(s.grass.mask, frame, 4.0, 1)) {
+      ASSERT_TRUE(keeps_all) << k;  // the renderer would draw this tile unfiltered
+      ++whole;
+    } else {
+      ++cut;
+    }
+  }
+  EXPECT_GT(whole, 0);  // the flat and slightly tilted ones
+  EXPECT_GT(cut, 0);    // the ones leaning past the edge
 }
 
 // Normalised autocorrelation of a film's luminance along x at lag `lag`.
