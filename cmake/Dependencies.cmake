@@ -10,6 +10,7 @@ find_package(CLI11 REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(fmt REQUIRED)
 find_package(nlohmann_json REQUIRED)
+find_package(assimp REQUIRED)
 # OpenImageIO 2.4's CMake config requires OpenCV headers; OpenColorIO 2.1 ships pkg-config only.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET OpenColorIO)

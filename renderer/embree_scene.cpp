@@ -115,13 +115,31 @@ Vec3f interpolated_normal(RTCGeometry geom, const RTCHit& hit, double rotation,
 
 }  // namespace
 
-// What a top-level geometry is: a tree instance at one level, a grass patch, or the ground.
+// What a top-level geometry is: a tree instance at one level, a grass patch, a scene object
+// or the ground.
 struct TopLevelEntry {
   std::int32_t instance = -1;   // tree instance; for grass its frame (Impl::grass_frames); or -1
   std::int32_t level = -1;      // the prototype's level (PrototypeLevels index)
   std::uint8_t step = 0;        // the ladder step drawn (the lod AOV)
   std::uint8_t grass_type = 0;  // 1-3 for grass patches
+  std::int32_t object = -1;     // scene object (Scene::objects), or -1
 };
+
+// A scene object's transform as Embree takes it (column-major 3 x 4, single precision).
+std::array<float, 12> object_matrix(const ObjectInstance& o) {
+  std::array<float, 12> m{};
+  for (std::size_t k = 0; k < 12; ++k) m[k] = static_cast<float>(o.transform[k]);
+  return m;
+}
+
+// A direction in an object's frame turned into the scene's (the transform's linear part is
+// a rotation times a uniform scale, so normals transform like directions).
+Vec3f object_to_scene(const ObjectInstance& o, const Vec3f& d) {
+  const auto& m = o.transform;
+  return normalize(Vec3f{static_cast<float>(m[0] * d.x + m[3] * d.y + m[6] * d.z),
+                         static_cast<float>(m[1] * d.x + m[4] * d.y + m[7] * d.z),
+                         static_cast<float>(m[2] * d.x + m[5] * d.y + m[8] * d.z)});
+}
 
 struct EmbreeScene::Impl {
   detail::EmbreeErrors errors;  // outlives the device (members are destroyed in reverse)
@@ -129,6 +147,7 @@ struct EmbreeScene::Impl {
   RTCScene scene = nullptr;
   std::vector<std::unique_ptr<detail::PrototypeLevels>> prototypes;
   std::vector<RTCScene> grass_patches;  // (type (0-2) x variant) x level
+  std::vector<RTCScene> object_prototypes;  // one per Scene::object_prototypes
   std::vector<TopLevelEntry> top;       // by top-level geometry ID
   const Scene* source = nullptr;
   // What a grass patch's filter needs: its blades' roots, its type, where its instances are.
@@ -158,6 +177,8 @@ struct EmbreeScene::Impl {
   ~Impl() {
     prototypes.clear();
     for (RTCScene s : grass_patches)
+      if (s) rtcReleaseScene(s);
+    for (RTCScene s : object_prototypes)
       if (s) rtcReleaseScene(s);
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
@@ -300,6 +321,49 @@ struct EmbreeScene::Impl {
         size / (2.0 * distance * tan_half) * view.height};
   }
 
+  // Every object prototype once as a scene of its own (mesh normals as attribute 0, texture
+  // coordinates as 1), and every object as an instance of it, seen by every ray.
+  void add_objects(const Scene& s) {
+    for (const ObjectPrototype& p : s.object_prototypes) {
+      RTCScene proto = rtcNewScene(device);
+      RTCGeometry mesh = make_mesh(device, p.vertices, p.normals, p.indices, &p.uvs);
+      rtcAttachGeometry(proto, mesh);
+      rtcReleaseGeometry(mesh);
+      rtcCommitScene(proto);
+      object_prototypes.push_back(proto);
+    }
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+      TopLevelEntry entry;
+      entry.object = static_cast<std::int32_t>(i);
+      attach_instance(object_prototypes.at(s.objects[i].prototype), object_matrix(s.objects[i]),
+                      kAllBuckets, entry);
+    }
+  }
+
+  // A hit on scene object `object`: its normals turned into the scene frame, its texture
+  // coordinates.
+  Hit object_hit(const RTCRayHit& rh, std::int32_t object, Hit hit) const {
+    const ObjectInstance& o = source->objects[static_cast<std::size_t>(object)];
+    hit.object = ObjectClass::object;
+    hit.object_index = object;
+    hit.geometric_normal = object_to_scene(o, Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
+    RTCGeometry mesh = rtcGetGeometry(object_prototypes[o.prototype], rh.hit.geomID);
+    float n[3];
+    rtcInterpolate0(mesh, rh.hit.primID, rh.hit.u, rh.hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, n,
+                    3);
+    const Vec3f shading{n[0], n[1], n[2]};
+    hit.shading_normal =
+        length(shading) > 0.0f ? object_to_scene(o, shading) : hit.geometric_normal;
+    if (!source->object_prototypes[o.prototype].uvs.empty()) {
+      float uv[2];
+      rtcInterpolate0(mesh, rh.hit.primID, rh.hit.u, rh.hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1,
+                      uv, 2);
+      hit.u = uv[0];
+      hit.v = uv[1];
+    }
+    return hit;
+  }
+
   void add_instance(const TreeInstance& inst, std::int32_t index, const detail::LevelBlend& b) {
     const detail::PrototypeLevels& levels = *prototypes.at(inst.prototype);
     const std::array<float, 12> m = instance_matrix(inst);
@@ -313,7 +377,8 @@ struct EmbreeScene::Impl {
   }
 };
 
-EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make_unique<Impl>()) {
+EmbreeScene::EmbreeScene(const Scene& scene, const View* view, Contents contents)
+    : impl_(std::make_unique<Impl>()) {
   impl_->source = &scene;
   impl_->device = rtcNewDevice(nullptr);
   if (impl_->device == nullptr)
@@ -321,6 +386,13 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
                              detail::embree_error_name(rtcGetDeviceError(nullptr)));
   impl_->errors.watch(impl_->device);
   impl_->scene = rtcNewScene(impl_->device);
+  if (contents == Contents::objects_only) {
+    impl_->add_objects(scene);
+    impl_->errors.check("adding the scene objects");
+    rtcCommitScene(impl_->scene);
+    impl_->errors.check("building the object scene");
+    return;
+  }
   if (scene.ground.mesh.triangle_count() > 0) {
     RTCGeometry ground = make_mesh(impl_->device, scene.ground.mesh.vertices,
                                    scene.ground.mesh.normals, scene.ground.mesh.indices);
@@ -333,8 +405,9 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view) : impl_(std::make
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i), blends[i]);
   }
+  impl_->add_objects(scene);
   if (view != nullptr) impl_->add_grass(scene.grass, *view, scene.settings.degradation);
-  impl_->errors.check("adding the instances and grass patches");
+  impl_->errors.check("adding the instances, objects and grass patches");
   rtcCommitScene(impl_->scene);
   impl_->errors.check("building the instance scene");
 }
@@ -398,6 +471,7 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
     return hit;
   }
   const TopLevelEntry& entry = impl_->top[rh.hit.instID[0]];
+  if (entry.object >= 0) return impl_->object_hit(rh, entry.object, hit);
   if (entry.grass_type != 0) {
     // Grass: Embree's curve normal is in the patch's space; the patch is tilted only
     // slightly, so the object-space normal serves for shading.

@@ -15,7 +15,14 @@
 namespace landsim::renderer {
 
 // Object classes, as stored in the film's object AOV.
-enum class ObjectClass : std::uint8_t { sky = 0, ground = 1, bark = 2, leaf = 3, grass = 4 };
+enum class ObjectClass : std::uint8_t {
+  sky = 0,
+  ground = 1,
+  bark = 2,
+  leaf = 3,
+  grass = 4,
+  object = 5  // a scene object ([[objects]]: vehicles, structures)
+};
 
 struct Hit {
   float t = 0.0f;
@@ -24,9 +31,10 @@ struct Hit {
   ObjectClass object = ObjectClass::sky;
   std::int32_t instance = -1;   // tree instance, or -1
   std::int32_t prototype = -1;  // its prototype, or -1
-  std::uint32_t primitive = 0;  // triangle of the ground, for its material
+  std::int32_t object_index = -1;  // scene object (Scene::objects), or -1
+  std::uint32_t primitive = 0;     // triangle of the ground or of an object, for its material
   std::uint8_t grass_type = 0;  // 1-3 for grass
-  float u = 0.0f, v = 0.0f;     // texture coordinates (bark of textured prototypes)
+  float u = 0.0f, v = 0.0f;  // texture coordinates (bark of textured prototypes, objects)
   // Trees: the ladder step of range degradation drawn (0 = full detail), and whether the hit
   // is a far primitive (a stem line or a leaf disc; `primitive` is then the stored line or
   // point, which for leaves is also the stored leaf) rather than a triangle.
@@ -44,7 +52,11 @@ class EmbreeScene {
   // `view`, when given, chooses range-dependent detail for that camera: grass patches, and
   // with scene.settings.degradation each tree's level (Weber & Penn section 5, blended
   // stochastically between ladder steps; see renderer/stochastic_lod.h).
-  explicit EmbreeScene(const Scene& scene, const View* view = nullptr);
+  // `contents`: everything, or the scene objects alone (renderer/object_truth.h: where each
+  // object would be seen were nothing in front of it).
+  enum class Contents { everything, objects_only };
+  explicit EmbreeScene(const Scene& scene, const View* view = nullptr,
+                       Contents contents = Contents::everything);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;

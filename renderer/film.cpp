@@ -12,7 +12,8 @@ Film::Film(int width, int height)
       object_(pixel_count()),
       species_(pixel_count(), kNoId),
       instance_(pixel_count(), kNoId),
-      level_(pixel_count()) {}
+      level_(pixel_count()),
+      target_(pixel_count()) {}
 
 void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
   const std::size_t i = index(x, y);
@@ -26,6 +27,7 @@ void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
   species_[i] = a.species;
   instance_[i] = a.instance;
   level_[i] = a.level;
+  target_[i] = a.target;
 }
 
 Vec3f Film::rgb(int x, int y) const {

@@ -20,6 +20,7 @@ struct PixelAovs {
   std::uint32_t species = kNoId;   // species index, trees only
   std::uint32_t instance = kNoId;  // tree instance index
   std::uint32_t level = 0;         // level of detail drawn (0 = full)
+  std::uint32_t target = 0;        // scene object index + 1 (0: no object)
 };
 
 class Film {
@@ -42,6 +43,7 @@ class Film {
   std::uint32_t species(int x, int y) const { return species_[index(x, y)]; }
   std::uint32_t instance(int x, int y) const { return instance_[index(x, y)]; }
   std::uint32_t level(int x, int y) const { return level_[index(x, y)]; }
+  std::uint32_t target(int x, int y) const { return target_[index(x, y)]; }
 
   // Planes, for writers and readers (checkpoints).
   std::vector<float>& rgb_data() { return rgb_; }
@@ -60,6 +62,8 @@ class Film {
   const std::vector<std::uint32_t>& instance_data() const { return instance_; }
   std::vector<std::uint32_t>& level_data() { return level_; }
   const std::vector<std::uint32_t>& level_data() const { return level_; }
+  std::vector<std::uint32_t>& target_data() { return target_; }
+  const std::vector<std::uint32_t>& target_data() const { return target_; }
 
  private:
   std::size_t index(int x, int y) const {
@@ -70,7 +74,7 @@ class Film {
   int width_;
   int height_;
   std::vector<float> rgb_, depth_, normal_, albedo_;
-  std::vector<std::uint32_t> object_, species_, instance_, level_;
+  std::vector<std::uint32_t> object_, species_, instance_, level_, target_;
 };
 
 }  // namespace landsim::renderer

@@ -84,7 +84,7 @@ constexpr Channel kChannels[] = {{"R", false},        {"G", false},        {"B",
                                  {"Z", false},        {"N.X", false},      {"N.Y", false},
                                  {"N.Z", false},      {"albedo.R", false}, {"albedo.G", false},
                                  {"albedo.B", false}, {"object", true},    {"species", true},
-                                 {"instance", true},  {"lod", true}};
+                                 {"instance", true},  {"lod", true},      {"target", true}};
 
 // The frame buffer for every channel of `film` (const_cast: OpenEXR's Slice wants a
 // non-const pointer even for writing).
@@ -105,6 +105,7 @@ Imf::FrameBuffer frame_buffer(Film& film) {
   add_slice(fb, "species", Imf::UINT, film.species_data(), 1, 0, w);
   add_slice(fb, "instance", Imf::UINT, film.instance_data(), 1, 0, w);
   add_slice(fb, "lod", Imf::UINT, film.level_data(), 1, 0, w);
+  add_slice(fb, "target", Imf::UINT, film.target_data(), 1, 0, w);
   return fb;
 }
 

@@ -20,6 +20,7 @@ struct FirstHit {
   std::int32_t instance = -1;  // tree instance, or -1
   std::int32_t species = -1;   // species index of that tree, or -1
   std::uint8_t level = 0;      // degradation ladder step drawn (trees), 0 = full detail
+  std::uint32_t target = 0;    // scene object index + 1, 0 for anything else
 };
 
 struct PathSample {

@@ -1,6 +1,7 @@
 #include "renderer/path_tracer.h"
 
 #include "renderer/detail/sample_dimensions.h"
+#include "renderer/glossy.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,8 +58,21 @@ Vec3f PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m, flo
                          Vec3(sun.ray.origin), Vec3(sun.ray.direction), kInfiniteDistance));
 }
 
+// The probability of sampling the glossy coat rather than the diffuse base: the coat's
+// Fresnel reflectance toward the viewer against what the base reflects of the rest.
+static float coat_probability(const ShadingPoint& v, const SurfaceMaterial& m) {
+  const float coat = max_component(schlick_fresnel(m.specular, dot(v.n, v.wo)));
+  const float base = max_component(m.reflectance) * (1.0f - coat);
+  return std::clamp(coat / std::max(coat + base, 1e-6f), 0.1f, 0.9f);
+}
+
 float PathTracer::bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m,
                            const Vec3f& dir) const {
+  if (m.glossy()) {
+    const float c = coat_probability(v, m);
+    return c * ggx_pdf(m.alpha, v.n, v.wo, dir) +
+           (1.0f - c) * std::max(0.0f, dot(v.n, dir)) / kPi;
+  }
   const float r = max_component(m.reflectance), t = max_component(m.transmittance);
   if (r + t <= 0.0f) return 0.0f;
   const float c = dot(v.n, dir);
@@ -70,7 +84,7 @@ Vec3f PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m, flo
   float pdf = 0.0f;
   const Vec3f l = sky_.sample(u1, u2, pdf);
   bool front = false;
-  const Vec3f f = lambert(m, v.n, v.ng, l, front);
+  const Vec3f f = reflected_light(m, v, l, front);
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
   const Vec3f light = f * sky_.radiance(l) * (power_heuristic(pdf, bsdf_pdf(v, m, l)) / pdf);
   const float weight =
@@ -180,6 +194,30 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       const Vec3f mirrored = ray.direction - v.ng * (2.0f * dot(ray.direction, v.ng));
       ray = {offset_point(v.p, v.ng), normalize(mirrored)};
       last_specular = true;
+      continue;
+    }
+    if (m.glossy()) {
+      // Coat or base, chosen by coat_probability; the weight is f cos / (the mixture's pdf),
+      // which bsdf_pdf also gives the sky's MIS.
+      const float choice = rng.uniform(dim + kChoice);
+      const float c = coat_probability(v, m);
+      const bool coat = choice < c;
+      const float u = std::min(coat ? choice / c : (choice - c) / (1.0f - c), 0.99999994f);
+      const Vec3f next = coat ? ggx_sample(m.alpha, v.n, v.wo, u, rng.uniform(dim + kDir))
+                              : sample_cosine(v.n, u, rng.uniform(dim + kDir));
+      bool front = false;
+      const Vec3f f = reflected_light(m, v, next, front);
+      const float pdf = bsdf_pdf(v, m, next);
+      if (!front || pdf <= 0.0f || max_component(f) <= 0.0f) break;
+      throughput = throughput * f / pdf;
+      last_pdf = pdf;
+      last_specular = false;
+      if (bounce >= kRouletteAfter) {
+        const float survive = std::clamp(max_component(throughput), 0.05f, 1.0f);
+        if (rng.uniform(dim + kRoulette) >= survive) break;
+        throughput = throughput / survive;
+      }
+      ray = {offset_point(v.p, v.ng), next};
       continue;
     }
     // Lambertian reflection or (two-sided surfaces) transmission, chosen in proportion to

@@ -60,9 +60,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       const std::uint32_t mask = pixel_ray_mask(pixel);
       for (int s = 0; s < settings.spp; ++s) {
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
-        const bool centre = centre_first && s == 0;
-        const Ray ray = camera.ray(static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0)),
-                                   static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1)));
+        const Ray ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
         const PathSample sample = tracer.trace(ray, rng, mask);
         sum += sample.radiance;
         rays += sample.rays;
@@ -76,6 +74,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       if (first.instance >= 0) aovs.instance = static_cast<std::uint32_t>(first.instance);
       if (first.species >= 0) aovs.species = static_cast<std::uint32_t>(first.species);
       aovs.level = first.level;
+      aovs.target = first.target;
       film.set(x, y, sum * (1.0f / static_cast<float>(settings.spp)), aovs);
     }
   }
@@ -86,6 +85,11 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
 constexpr int kTilesPerWave = 64;
 
 }  // namespace
+
+Ray sample_ray(const Camera& camera, const CounterRng& rng, int x, int y, bool centre) {
+  return camera.ray(static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0)),
+                    static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1)));
+}
 
 int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) {
   if (options.checkpoint.empty() || !std::filesystem::exists(options.checkpoint)) return 0;
@@ -223,7 +227,7 @@ void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_
 
 // A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
 // species, instance and level: 14 words per pixel.
-constexpr std::size_t kWordsPerPixel = 14;
+constexpr std::size_t kWordsPerPixel = 15;
 
 std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   const TileGrid grid = tile_grid(film.width(), film.height());
@@ -235,7 +239,8 @@ std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
       words.insert(words.end(),
                    {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y),
                     bits(n.z), bits(a.x), bits(a.y), bits(a.z), film.object(x, y),
-                    film.species(x, y), film.instance(x, y), film.level(x, y)});
+                    film.species(x, y), film.instance(x, y), film.level(x, y),
+                    film.target(x, y)});
     });
   return words;
 }
@@ -255,6 +260,7 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
       aovs.species = words[k + 11];
       aovs.instance = words[k + 12];
       aovs.level = words[k + 13];
+      aovs.target = words[k + 14];
       film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
       k += kWordsPerPixel;
     });

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "core/counter_rng.h"
+#include "renderer/camera.h"
 #include "renderer/comparable_tracer.h"
 #include "renderer/film.h"
 #include "renderer/scene.h"
@@ -99,6 +101,10 @@ class ViewRenderer {
 };
 
 int tile_count(const View& view);
+// The camera ray of pixel (x, y)'s sample drawn by `rng` (its dimensions 0 and 1 jitter it);
+// `centre`: through the pixel's centre. The first sample (rng's sample 0) is the one the
+// AOVs record, and object truth (renderer/object_truth.h) traces it again.
+Ray sample_ray(const Camera& camera, const CounterRng& rng, int x, int y, bool centre);
 // Checkpoints: the film so far and the tiles [0, tiles_done) it holds (options.checkpoint,
 // options.render_key); resume_checkpoint loads a matching one and returns its tiles_done.
 void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_done);

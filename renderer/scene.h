@@ -182,11 +182,52 @@ struct TreeInstance {
   double scale = 1.0;
 };
 
+// Scene objects (vehicles, structures; docs/OBJECTS.md): meshes read from files, each file
+// once as a prototype, placed by instances with their own materials.
+class ObjectTexture;
+
+// A mesh material: a diffuse base colour under a GGX glossy coat, as glTF's
+// metallic-roughness model has it (renderer/glossy.h).
+struct ObjectMaterial {
+  Vec3f base_colour{0.8f, 0.8f, 0.8f};  // linear RGB
+  float roughness = 0.5f;               // perceptual: GGX alpha = roughness^2
+  float metallic = 0.0f;
+  std::shared_ptr<const ObjectTexture> texture;  // optional, multiplies base_colour
+};
+
+struct ObjectPrototype {
+  std::string file;
+  // Object frame: metres, z up, front toward +y; the placement's origin at (0, 0, 0).
+  std::vector<Vec3f> vertices, normals;
+  std::vector<float> uvs;  // u, v per vertex (v up), or empty
+  std::vector<std::uint32_t> indices;
+  std::vector<std::uint32_t> triangle_material;  // per triangle
+  std::vector<std::string> material_names;
+  std::size_t triangle_count() const { return indices.size() / 3; }
+};
+
+struct ObjectInstance {
+  std::string name;
+  std::uint32_t prototype = 0;
+  // Object frame -> scene frame: column-major 3 x 4, a rotation times a uniform scale, then
+  // the translation.
+  std::array<double, 12> transform{1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
+  std::vector<ObjectMaterial> materials;  // one per prototype material, overrides applied
+  Vec3 apply(const Vec3f& p) const {
+    const auto& m = transform;
+    return {m[0] * p.x + m[3] * p.y + m[6] * p.z + m[9],
+            m[1] * p.x + m[4] * p.y + m[7] * p.z + m[10],
+            m[2] * p.x + m[5] * p.y + m[8] * p.z + m[11]};
+  }
+};
+
 struct Scene {
   Vec3 origin;  // terrain coordinates of the scene frame's (0, 0, 0)
   Ground ground;
   std::vector<TreePrototype> prototypes;
   std::vector<TreeInstance> instances;
+  std::vector<ObjectPrototype> object_prototypes;
+  std::vector<ObjectInstance> objects;
   GrassCover grass;
   Sun sun;
   Sky sky;

@@ -6,7 +6,9 @@
 #include <numbers>
 
 #include "renderer/bark_texture.h"
+#include "renderer/glossy.h"
 #include "renderer/integrator.h"
+#include "renderer/object_texture.h"
 
 namespace landsim::renderer {
 namespace {
@@ -16,7 +18,24 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
+// A scene object's mesh material (glTF's metallic-roughness model): metals colour their
+// coat and have no diffuse part; dielectrics reflect 4% at normal incidence.
+SurfaceMaterial object_material(const Scene& scene, const Hit& hit) {
+  const ObjectInstance& object = scene.objects[static_cast<std::size_t>(hit.object_index)];
+  const ObjectPrototype& proto = scene.object_prototypes[object.prototype];
+  const ObjectMaterial& mat = object.materials[proto.triangle_material[hit.primitive]];
+  Vec3f base = mat.base_colour;
+  if (mat.texture) base = base * mat.texture->colour(hit.u, hit.v);
+  const float metal = mat.metallic;
+  SurfaceMaterial m;
+  m.reflectance = base * (1.0f - metal);
+  m.specular = Vec3f{0.04f, 0.04f, 0.04f} * (1.0f - metal) + base * metal;
+  m.alpha = std::max(mat.roughness * mat.roughness, kMinGlossyAlpha);
+  return m;
+}
+
 SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const ShadingPoint& v) {
+  if (hit.object == ObjectClass::object) return object_material(scene, hit);
   const Vec3 p = Vec3(v.p) + scene.origin;  // terrain coordinates: the noise stays put
   if (hit.object == ObjectClass::grass) {
     const GrassType& g = scene.grass.types[static_cast<std::size_t>(hit.grass_type - 1)];
@@ -46,7 +65,7 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
 
 ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask) {
   ShadingPoint v{ray.origin + ray.direction * hit.t, hit.shading_normal, hit.geometric_normal,
-                 mask};
+                 mask, -ray.direction};
   if (dot(v.ng, ray.direction) > 0.0f) v.ng = -v.ng;
   if (dot(v.n, v.ng) < 0.0f) v.n = -v.n;
   return v;
@@ -56,8 +75,15 @@ FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
                    const SurfaceMaterial& m) {
   const std::int32_t species =
       hit.prototype >= 0 ? scene.prototypes[static_cast<std::size_t>(hit.prototype)].species : -1;
-  return {hit.t,   v.n,      m.reflectance + m.transmittance, hit.object, hit.instance,
-          species, hit.level};
+  const Vec3f albedo = m.reflectance + m.transmittance + (m.glossy() ? m.specular : Vec3f{});
+  return {hit.t,
+          v.n,
+          albedo,
+          hit.object,
+          hit.instance,
+          species,
+          hit.level,
+          static_cast<std::uint32_t>(hit.object_index + 1)};
 }
 
 Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
@@ -67,6 +93,18 @@ Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const V
   const bool back = m.two_sided() && cos_n < 0.0f && dot(ng, l) < 0.0f;
   if (!front && !back) return {};
   return (front ? m.reflectance : m.transmittance) * (std::abs(cos_n) / kPi);
+}
+
+Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l,
+                      bool& front) {
+  if (!m.glossy()) return lambert(m, v.n, v.ng, l, front);
+  front = dot(v.n, l) > 0.0f && dot(v.ng, l) > 0.0f;
+  if (!front) return {};
+  // The diffuse base sees what the coat lets through, at the half vector's angle.
+  const Vec3f h = normalize(v.wo + l);
+  const Vec3f through = Vec3f{1.0f, 1.0f, 1.0f} - schlick_fresnel(m.specular, dot(v.wo, h));
+  return m.reflectance * through * (dot(v.n, l) / kPi) +
+         ggx_reflection(m.specular, m.alpha, v.n, v.wo, l);
 }
 
 float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng) {
@@ -97,7 +135,7 @@ SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const Vec3f&
                      std::uint32_t& rays, const Vec3f& throughput, const ShadowRoulette& roulette) {
   const Vec3f l = sample_cone(sun_direction, static_cast<float>(scene.sun.angular_radius), u1, u2);
   bool front = false;
-  const Vec3f f = lambert(m, v.n, v.ng, l, front);
+  const Vec3f f = reflected_light(m, v, l, front);
   if (max_component(f) <= 0.0f) return {};
   const Vec3f light = f * scene.sun.irradiance;
   const float weight = shadow_roulette_weight(max_component(throughput * light), roulette);

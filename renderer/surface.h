@@ -14,12 +14,15 @@
 namespace landsim::renderer {
 
 // What a surface does with light: Lambertian reflection, plus (leaves, grass) Lambertian
-// transmission to the other side.
+// transmission to the other side, or (scene objects) a GGX glossy coat over the diffuse part.
 struct SurfaceMaterial {
   Vec3f reflectance;
   Vec3f transmittance;  // zero for opaque surfaces
   bool water = false;   // adds a Fresnel mirror (Schlick, F0 = 0.02) over the diffuse part
+  Vec3f specular{};     // the coat's normal reflectance F0; zero: no coat (renderer/glossy.h)
+  float alpha = 0.0f;   // the coat's GGX roughness
   bool two_sided() const { return max_component(transmittance) > 0.0f; }
+  bool glossy() const { return max_component(specular) > 0.0f; }
 };
 
 struct ShadingPoint {
@@ -27,10 +30,12 @@ struct ShadingPoint {
   Vec3f n;             // shading normal, facing the incoming ray
   Vec3f ng;            // geometric normal, same side
   std::uint32_t mask;  // the pixel's ray mask (stochastic level of detail)
+  Vec3f wo{};          // toward where the ray came from
 };
 
 // The material of a hit at `v`: ground (by triangle, varied by renderer/ground_shading),
-// grass (varied like the ground beneath), bark (textured) or leaf (vigour tint).
+// grass (varied like the ground beneath), bark (textured), leaf (vigour tint) or a scene
+// object's mesh material.
 SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const ShadingPoint& v);
 
 // The hit point of `ray` with both normals turned toward where the ray came from.
@@ -45,6 +50,12 @@ FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
 // the far side; `front` tells which side to leave from.
 Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
               bool& front);
+
+// f x cos for light arriving from `l` and leaving toward v.wo: lambert() for every material
+// but glossy ones, which add the coat's GGX lobe and dim the diffuse part by what the coat
+// reflects.
+Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l,
+                      bool& front);
 
 // The Fresnel reflectance of water seen along `direction` (0 for other materials).
 float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng);

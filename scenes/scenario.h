@@ -129,6 +129,33 @@ struct SpeciesSettings {
   std::string bark_texture;  // resolved path of an image, or empty
 };
 
+// [[objects]] (docs/OBJECTS.md): a mesh file placed on the terrain.
+struct ObjectMaterialOverride {
+  std::string location;  // "file:line:column" of its table, for messages
+  std::string material;  // the mesh material's name
+  std::optional<Vec3f> albedo;
+  std::optional<float> roughness;
+  std::optional<float> metallic;
+};
+
+struct ObjectSettings {
+  std::string location;           // "file:line:column" of its table
+  std::string path;               // "objects[i]" or "objects \"name\"", for messages
+  std::string file;               // resolved path of the mesh
+  std::string file_location;      // of its `file` key
+  std::string position_location;  // of its `position` key
+  std::string name;
+  double x = 0.0, y = 0.0;  // terrain coordinates
+  std::optional<double> z;  // terrain coordinates; empty: standing on the ground
+  double heading_deg = 0.0;  // clockwise from north
+  double scale = 1.0;
+  double unit_scale = 1.0;  // metres per file unit
+  bool z_up = false;        // the file's axes: y up and front +z (glTF), or z up and front +y
+  bool align_to_ground = false;
+  std::optional<double> clear_radius;  // metres; empty: the footprint's radius + 1 m
+  std::vector<ObjectMaterialOverride> materials;
+};
+
 struct Scenario;
 // Whether any [[species]] or [[grass]] has a cover (and so needs no feature map).
 bool has_cover(const Scenario& s);
@@ -147,6 +174,7 @@ struct Scenario {
   std::vector<ViewSettings> views;
   RenderSection render;
   WindSettings wind;
+  std::vector<ObjectSettings> objects;
 };
 
 // Limit on frames per scenario (an image set is views x frames images).

@@ -17,6 +17,7 @@
 #include "scenes/detail/context_terrain.h"
 #include "scenes/detail/grass_cover.h"
 #include "scenes/detail/plain_albedo.h"
+#include "scenes/detail/scene_objects.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
 #include "terrain/context_mesh.h"
@@ -282,11 +283,12 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;
+  if (map && !scenario.species.empty())
+    add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
+  // Objects after the trees: each clears the trunks within its radius.
+  detail::add_objects(scenario, scene);
   if (map) {
-    if (!scenario.species.empty()) {
-      add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
-      detail::warn_cameras_inside_trees(scenario, scene);
-    }
+    if (!scenario.species.empty()) detail::warn_cameras_inside_trees(scenario, scene);
     if (!scenario.grass.empty()) {
       // No blade stands on road or water.
       const auto blocked = [&](double x, double y) {

@@ -20,6 +20,7 @@
 #include "renderer/exposure.h"
 #include "renderer/image_io.h"
 #include "renderer/image_output.h"
+#include "renderer/object_truth.h"
 #include "renderer/render.h"
 #include "scenario_input.h"
 #include "scenes/default_scenario.h"
@@ -160,6 +161,40 @@ nlohmann::json manifest_entry(const scenes::ViewSettings& vs, const std::string&
             {"fov_y_deg", vs.fov_y_deg},
             {"width", vs.width},
             {"height", vs.height}}}};
+}
+
+nlohmann::json box_json(const std::optional<renderer::PixelBox>& b) {
+  if (!b) return nullptr;
+  return {{"x0", (*b)[0]}, {"y0", (*b)[1]}, {"x1", (*b)[2]}, {"y1", (*b)[3]}};
+}
+
+// The manifest's truth about each object in an image (docs/OBJECTS.md "Truth").
+nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const renderer::ObjectTruth& t = truth[i];
+    out.push_back({{"name", t.name},
+                   {"target", i + 1},
+                   {"visible_pixels", t.visible_pixels},
+                   {"footprint_pixels", t.footprint_pixels},
+                   {"visible_fraction", t.visible_fraction},
+                   {"bbox", box_json(t.bbox)},
+                   {"footprint_bbox", box_json(t.footprint_bbox)},
+                   {"range_m", t.range},
+                   {"luminance", t.luminance},
+                   {"background_luminance", t.background_luminance},
+                   {"background_pixels", t.background_pixels},
+                   {"ring_width", t.ring_width},
+                   {"contrast", t.contrast ? nlohmann::json(*t.contrast) : nlohmann::json()}});
+  }
+  return out;
+}
+
+// A finished image's object truth, as its EXR keeps it (--resume).
+nlohmann::json saved_objects(const std::filesystem::path& exr) {
+  for (const auto& [key, value] : renderer::read_exr_metadata(exr))
+    if (key == "objects") return nlohmann::json::parse(value, nullptr, false);
+  return nullptr;
 }
 
 // --check: every image of the set must be in the output directory; then the manifest.
@@ -344,6 +379,13 @@ std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::
   // viewer can reproduce the PNG from the EXR.
   const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
   meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
+  // Truth about the scene objects, in the manifest and (for --resume) in the EXR.
+  nlohmann::json objects;
+  if (!scene.objects.empty()) {
+    objects = objects_json(
+        renderer::object_truth(scene, view, film, options.centre_first_sample));
+    meta.emplace_back("objects", objects.dump());
+  }
   renderer::write_exr(film, exr, meta, &camera);
   renderer::write_preview_png(film, run.out_dir / (image.stem + ".png"), ev100);
   RenderedImage out;
@@ -363,6 +405,7 @@ std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::
     out.report["communication_seconds"] = communication;
   }
   out.manifest = manifest_entry(s.views[image.view], image.stem, image.frame, time);
+  if (!objects.is_null()) out.manifest["objects"] = objects;
   if (!run.args.json)
     std::cout << fmt::format("{}: {} x {}, {} spp, {:.2f} s ({:.2f} s BVH), {:.2f} Mrays/s\n",
                              exr.string(), view.width, view.height, scene.settings.spp,
@@ -425,6 +468,8 @@ int run_render(const RenderArgs& args) {
     if (args.resume && !run.distributed() && already_finished(run, image)) {
       manifest.push_back(manifest_entry(scenario.views[image.view], image.stem, image.frame,
                                         scenario.render.frames[image.frame]));
+      if (!scenario.objects.empty())
+        manifest.back()["objects"] = saved_objects(out_dir / (image.stem + ".exr"));
       ++skipped;
       continue;
     }
