@@ -146,9 +146,9 @@ struct EmbreeScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<std::unique_ptr<detail::PrototypeLevels>> prototypes;
-  std::vector<RTCScene> grass_patches;  // (type (0-2) x variant) x level
+  std::vector<RTCScene> grass_patches;      // (type (0-2) x variant) x level
   std::vector<RTCScene> object_prototypes;  // one per Scene::object_prototypes
-  std::vector<TopLevelEntry> top;       // by top-level geometry ID
+  std::vector<TopLevelEntry> top;           // by top-level geometry ID
   const Scene* source = nullptr;
   // What a grass patch's filter needs: its blades' roots, its type, where its instances are.
   struct GrassFilter {

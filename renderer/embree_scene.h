@@ -29,12 +29,12 @@ struct Hit {
   Vec3f geometric_normal;  // unit, world space, as the surface is wound (not flipped)
   Vec3f shading_normal;    // unit, world space, interpolated
   ObjectClass object = ObjectClass::sky;
-  std::int32_t instance = -1;   // tree instance, or -1
-  std::int32_t prototype = -1;  // its prototype, or -1
+  std::int32_t instance = -1;      // tree instance, or -1
+  std::int32_t prototype = -1;     // its prototype, or -1
   std::int32_t object_index = -1;  // scene object (Scene::objects), or -1
   std::uint32_t primitive = 0;     // triangle of the ground or of an object, for its material
-  std::uint8_t grass_type = 0;  // 1-3 for grass
-  float u = 0.0f, v = 0.0f;  // texture coordinates (bark of textured prototypes, objects)
+  std::uint8_t grass_type = 0;     // 1-3 for grass
+  float u = 0.0f, v = 0.0f;        // texture coordinates (bark of textured prototypes, objects)
   // Trees: the ladder step of range degradation drawn (0 = full detail), and whether the hit
   // is a far primitive (a stem line or a leaf disc; `primitive` is then the stored line or
   // point, which for leaves is also the stored leaf) rather than a triangle.

@@ -36,7 +36,8 @@ Vec3f ggx_reflection(const Vec3f& f0, float alpha, const Vec3f& n, const Vec3f& 
   const Vec3f h = normalize(wo + l);
   const float g = smith_g1(alpha, cos_o) * smith_g1(alpha, cos_l);
   // f cos_l = F D G / (4 cos_o cos_l) x cos_l
-  return schlick_fresnel(f0, dot(wo, h)) * (ggx_distribution(alpha, dot(n, h)) * g / (4.0f * cos_o));
+  return schlick_fresnel(f0, dot(wo, h)) *
+         (ggx_distribution(alpha, dot(n, h)) * g / (4.0f * cos_o));
 }
 
 Vec3f ggx_sample(float alpha, const Vec3f& n, const Vec3f& wo, float u1, float u2) {

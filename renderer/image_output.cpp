@@ -84,7 +84,7 @@ constexpr Channel kChannels[] = {{"R", false},        {"G", false},        {"B",
                                  {"Z", false},        {"N.X", false},      {"N.Y", false},
                                  {"N.Z", false},      {"albedo.R", false}, {"albedo.G", false},
                                  {"albedo.B", false}, {"object", true},    {"species", true},
-                                 {"instance", true},  {"lod", true},      {"target", true}};
+                                 {"instance", true},  {"lod", true},       {"target", true}};
 
 // The frame buffer for every channel of `film` (const_cast: OpenEXR's Slice wants a
 // non-const pointer even for writing).

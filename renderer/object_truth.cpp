@@ -73,8 +73,8 @@ void measure_ring(const Film& film, std::uint32_t id, ObjectTruth& t) {
   };
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c)
-      at(c + 1, r + 1) = (film.target(x0 + c, y0 + r) == id ? 1u : 0u) + at(c, r + 1) +
-                         at(c + 1, r) - at(c, r);
+      at(c + 1, r + 1) =
+          (film.target(x0 + c, y0 + r) == id ? 1u : 0u) + at(c, r + 1) + at(c + 1, r) - at(c, r);
   double total = 0.0;
   std::uint64_t n = 0;
   for (int r = 0; r < rows; ++r)

@@ -23,8 +23,8 @@ struct ObjectTruth {
   // Pixels whose first-sample ray meets the object when nothing else is in the scene: its
   // projected footprint, occluders ignored.
   std::uint64_t footprint_pixels = 0;
-  double visible_fraction = 0.0;     // visible / footprint; 0 with an empty footprint
-  std::optional<PixelBox> bbox;      // of the visible pixels; empty when none is
+  double visible_fraction = 0.0;  // visible / footprint; 0 with an empty footprint
+  std::optional<PixelBox> bbox;   // of the visible pixels; empty when none is
   std::optional<PixelBox> footprint_bbox;
   double range = 0.0;  // metres, camera to the centre of the object's bounding box
   // Contrast of the visible pixels against their surround: mean luminance (cd/m2) of the

@@ -70,8 +70,7 @@ float PathTracer::bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m,
                            const Vec3f& dir) const {
   if (m.glossy()) {
     const float c = coat_probability(v, m);
-    return c * ggx_pdf(m.alpha, v.n, v.wo, dir) +
-           (1.0f - c) * std::max(0.0f, dot(v.n, dir)) / kPi;
+    return c * ggx_pdf(m.alpha, v.n, v.wo, dir) + (1.0f - c) * std::max(0.0f, dot(v.n, dir)) / kPi;
   }
   const float r = max_component(m.reflectance), t = max_component(m.transmittance);
   if (r + t <= 0.0f) return 0.0f;

@@ -239,8 +239,7 @@ std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
       words.insert(words.end(),
                    {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y),
                     bits(n.z), bits(a.x), bits(a.y), bits(a.z), film.object(x, y),
-                    film.species(x, y), film.instance(x, y), film.level(x, y),
-                    film.target(x, y)});
+                    film.species(x, y), film.instance(x, y), film.level(x, y), film.target(x, y)});
     });
   return words;
 }

@@ -64,8 +64,8 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
 }
 
 ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask) {
-  ShadingPoint v{ray.origin + ray.direction * hit.t, hit.shading_normal, hit.geometric_normal,
-                 mask, -ray.direction};
+  ShadingPoint v{ray.origin + ray.direction * hit.t, hit.shading_normal, hit.geometric_normal, mask,
+                 -ray.direction};
   if (dot(v.ng, ray.direction) > 0.0f) v.ng = -v.ng;
   if (dot(v.n, v.ng) < 0.0f) v.n = -v.n;
   return v;
@@ -76,14 +76,8 @@ FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
   const std::int32_t species =
       hit.prototype >= 0 ? scene.prototypes[static_cast<std::size_t>(hit.prototype)].species : -1;
   const Vec3f albedo = m.reflectance + m.transmittance + (m.glossy() ? m.specular : Vec3f{});
-  return {hit.t,
-          v.n,
-          albedo,
-          hit.object,
-          hit.instance,
-          species,
-          hit.level,
-          static_cast<std::uint32_t>(hit.object_index + 1)};
+  return {hit.t,        v.n,     albedo,    hit.object,
+          hit.instance, species, hit.level, static_cast<std::uint32_t>(hit.object_index + 1)};
 }
 
 Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,

@@ -54,8 +54,7 @@ Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const V
 // f x cos for light arriving from `l` and leaving toward v.wo: lambert() for every material
 // but glossy ones, which add the coat's GGX lobe and dim the diffuse part by what the coat
 // reflects.
-Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l,
-                      bool& front);
+Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l, bool& front);
 
 // The Fresnel reflectance of water seen along `direction` (0 for other materials).
 float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng);

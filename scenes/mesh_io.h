@@ -16,15 +16,15 @@ struct MeshMaterial {
   float base_colour[3] = {0.8f, 0.8f, 0.8f};  // linear RGB
   float roughness = 0.5f;                     // perceptual (GGX alpha = roughness^2)
   float metallic = 0.0f;
-  std::string texture;  // base-colour image, absolute path; empty: none
+  std::string texture;            // base-colour image, absolute path; empty: none
   bool embedded_texture = false;  // the file embeds a texture (not read: see docs/OBJECTS.md)
 };
 
 // Every mesh of the file, its node transforms applied, triangulated, in one list.
 struct MeshData {
-  std::vector<float> positions;  // x, y, z per vertex
-  std::vector<float> normals;    // x, y, z per vertex (the file's, or generated)
-  std::vector<float> uvs;        // u, v per vertex; empty when the file has none
+  std::vector<float> positions;                  // x, y, z per vertex
+  std::vector<float> normals;                    // x, y, z per vertex (the file's, or generated)
+  std::vector<float> uvs;                        // u, v per vertex; empty when the file has none
   std::vector<std::uint32_t> indices;            // three per triangle
   std::vector<std::uint32_t> triangle_material;  // per triangle, into `materials`
   std::vector<MeshMaterial> materials;

@@ -145,8 +145,8 @@ struct ObjectSettings {
   std::string file_location;      // of its `file` key
   std::string position_location;  // of its `position` key
   std::string name;
-  double x = 0.0, y = 0.0;  // terrain coordinates
-  std::optional<double> z;  // terrain coordinates; empty: standing on the ground
+  double x = 0.0, y = 0.0;   // terrain coordinates
+  std::optional<double> z;   // terrain coordinates; empty: standing on the ground
   double heading_deg = 0.0;  // clockwise from north
   double scale = 1.0;
   double unit_scale = 1.0;  // metres per file unit

@@ -670,7 +670,7 @@ std::vector<ObjectSettings> read_objects(const toml::table& root, const std::str
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
       "terrain", "sun",    "views", "render", "featuremaps", "species",
-      "grass",   "ground", "wind",  "sky",    "haze",   "objects"};
+      "grass",   "ground", "wind",  "sky",    "haze",        "objects"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;

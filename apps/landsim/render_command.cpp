@@ -382,8 +382,7 @@ std::optional<RenderedImage> render_image(const RenderRun& run, const renderer::
   // Truth about the scene objects, in the manifest and (for --resume) in the EXR.
   nlohmann::json objects;
   if (!scene.objects.empty()) {
-    objects = objects_json(
-        renderer::object_truth(scene, view, film, options.centre_first_sample));
+    objects = objects_json(renderer::object_truth(scene, view, film, options.centre_first_sample));
     meta.emplace_back("objects", objects.dump());
   }
   renderer::write_exr(film, exr, meta, &camera);

@@ -2,10 +2,10 @@
 // landsim the first time a scene object is read (core/module_loader.h).
 #include "scenes/mesh_io.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -64,8 +64,7 @@ void append_mesh(const aiMesh& mesh, MeshData& out) {
     out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
     const aiVector3D n = mesh.mNormals != nullptr ? mesh.mNormals[v] : aiVector3D(0, 0, 0);
     out.normals.insert(out.normals.end(), {n.x, n.y, n.z});
-    const aiVector3D t =
-        mesh.HasTextureCoords(0) ? mesh.mTextureCoords[0][v] : aiVector3D(0, 0, 0);
+    const aiVector3D t = mesh.HasTextureCoords(0) ? mesh.mTextureCoords[0][v] : aiVector3D(0, 0, 0);
     out.uvs.insert(out.uvs.end(), {t.x, t.y});
   }
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
@@ -83,7 +82,8 @@ bool read(const std::string& path, MeshData& mesh, std::string& error) {
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, kSmoothingAngleDeg);
     // Points and lines are dropped; node transforms are applied (glTF scenes are trees of
     // nodes); validation refuses broken structures.
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals |
                            aiProcess_PreTransformVertices | aiProcess_SortByPType |
                            aiProcess_ValidateDataStructure;

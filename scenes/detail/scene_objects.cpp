@@ -76,8 +76,7 @@ renderer::ObjectPrototype to_prototype(const MeshData& mesh, const ObjectSetting
     const float* v = &mesh.positions[3 * i];
     if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
       throw InputError(fmt::format("{}: {}: vertex {} is not a finite number ({}, {}, {})",
-                                   where(o, o.file_location, "file"), o.file, i, v[0], v[1],
-                                   v[2]));
+                                   where(o, o.file_location, "file"), o.file, i, v[0], v[1], v[2]));
     p.vertices.push_back(axes(v));
     const Vec3f nv = axes(&mesh.normals[3 * i]);
     p.normals.push_back(std::isfinite(nv.x + nv.y + nv.z) ? nv : Vec3f{});
@@ -125,9 +124,10 @@ std::vector<renderer::ObjectMaterial> object_materials(
       r.texture = t;
     }
     if (m.embedded_texture)
-      warn_input(fmt::format("{}: {}: material '{}' embeds its base-colour texture, which is not "
-                             "read (its base colour factor is used)",
-                             where(o, o.file_location, "file"), o.file, m.name));
+      warn_input(
+          fmt::format("{}: {}: material '{}' embeds its base-colour texture, which is not "
+                      "read (its base colour factor is used)",
+                      where(o, o.file_location, "file"), o.file, m.name));
     out.push_back(r);
   }
   for (const ObjectMaterialOverride& ov : o.materials) {
@@ -205,7 +205,8 @@ ObjectPlacement place(const renderer::ObjectPrototype& p, const ObjectSettings& 
   if (!probe.height(at.x, at.y)) throw off_ground();
   const Matrix3 turn = heading_rotation(o.heading_deg);
   Matrix3 linear = turn;
-  if (o.align_to_ground && !o.z) linear = mul(tilt_to(ground_plane_normal(p, turn, at, probe)), turn);
+  if (o.align_to_ground && !o.z)
+    linear = mul(tilt_to(ground_plane_normal(p, turn, at, probe)), turn);
   const double k = o.scale * o.unit_scale;
   for (double& v : linear) v *= k;
   ObjectPlacement out;
@@ -247,8 +248,8 @@ void add_objects(const Scenario& s, renderer::Scene& scene) {
   std::map<std::string, std::shared_ptr<const renderer::ObjectTexture>> textures;
   for (const ObjectSettings& o : s.objects) {
     const MeshData& mesh = read_mesh(o, files);
-    auto [it, fresh] = prototype_of.emplace(std::pair{o.file, o.z_up},
-                                            static_cast<std::uint32_t>(scene.object_prototypes.size()));
+    auto [it, fresh] = prototype_of.emplace(
+        std::pair{o.file, o.z_up}, static_cast<std::uint32_t>(scene.object_prototypes.size()));
     if (fresh) scene.object_prototypes.push_back(to_prototype(mesh, o));
     const renderer::ObjectPrototype& proto = scene.object_prototypes[it->second];
     const ObjectPlacement placed = place(proto, o, scene.origin, probe);

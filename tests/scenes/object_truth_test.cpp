@@ -1,0 +1,150 @@
+// Object truth (renderer/object_truth.h) on scenes built from scenarios: what the manifest
+// reports agrees with the film's target AOV, occlusion lowers the visible fraction, and a
+// glTF and an OBJ of the same mesh render the same image.
+#include "renderer/object_truth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "renderer/render.h"
+#include "scenes/scene_builder.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+using testing::TempDir;
+
+// A gentle slope of 40 x 40 cells of 5 m from (1000, 2000); the camera looks north-east at a
+// car 20 m away.
+std::string terrain(const TempDir& dir) {
+  std::string text =
+      "ncols 40\nnrows 40\nxllcorner 1000\nyllcorner 2000\ncellsize 5\nNODATA_value -9999\n";
+  for (int r = 0; r < 40; ++r) {
+    for (int c = 0; c < 40; ++c) text += std::to_string(100.0 + 0.1 * (39 - r) + 0.05 * c) + " ";
+    text += "\n";
+  }
+  return dir.write("t.asc", text).string();
+}
+
+std::string scenario(const TempDir& dir, const std::string& file, const std::string& extra = "") {
+  return "[terrain]\nelevation = \"" + terrain(dir) +
+         "\"\n[sun]\nelevation = 40\nazimuth = 200\n"
+         "[[views]]\nname = \"v\"\nposition = [1085.0, 2085.0, 105.0]\ntarget = [1100.0, 2100.0, "
+         "102.0]\nfov = 30\nwidth = 96\nheight = 64\n[render]\nspp = 4\n"
+         "[[objects]]\nname = \"car\"\nfile = \"" +
+         testing::source_file("data/objects/" + file).string() +
+         "\"\nposition = [1100, 2100]\nheading = 60\n" + extra;
+}
+
+renderer::Scene build(const TempDir& dir, const std::string& text) {
+  return build_scene(load_scenario(dir.write("s.toml", text)));
+}
+
+renderer::Film render(const renderer::Scene& scene) {
+  return renderer::Renderer(scene).render(scene.views[0], {});
+}
+
+// The film's pixels of object `target`, counted directly, and their bounds.
+struct Count {
+  std::uint64_t pixels = 0;
+  renderer::PixelBox box{1 << 30, 1 << 30, -1, -1};
+};
+Count count(const renderer::Film& film, std::uint32_t target) {
+  Count c;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      if (film.target(x, y) == target) {
+        ++c.pixels;
+        c.box = {std::min(c.box[0], x), std::min(c.box[1], y), std::max(c.box[2], x),
+                 std::max(c.box[3], y)};
+      }
+  return c;
+}
+
+TEST(ObjectTruth, AnUnoccludedObjectIsWhollyVisibleAndItsCountsMatchTheFilm) {
+  TempDir dir;
+  const renderer::Scene scene = build(dir, scenario(dir, "car.obj"));
+  const renderer::Film film = render(scene);
+  const std::vector<renderer::ObjectTruth> truth =
+      renderer::object_truth(scene, scene.views[0], film, false);
+  ASSERT_EQ(truth.size(), 1u);
+  const Count direct = count(film, 1);
+  ASSERT_GT(direct.pixels, 100u);
+  EXPECT_EQ(truth[0].name, "car");
+  EXPECT_EQ(truth[0].visible_pixels, direct.pixels);
+  ASSERT_TRUE(truth[0].bbox);
+  EXPECT_EQ(*truth[0].bbox, direct.box);
+  EXPECT_EQ(truth[0].footprint_pixels, direct.pixels);
+  EXPECT_EQ(truth[0].visible_fraction, 1.0);
+  // The object AOV classes its pixels as objects.
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      EXPECT_EQ(film.object(x, y) == static_cast<std::uint8_t>(renderer::ObjectClass::object),
+                film.target(x, y) == 1u);
+  // Range: camera to the car's middle, about 21 m.
+  EXPECT_NEAR(truth[0].range, std::hypot(15.0, 15.0, 3.0 - 0.7), 1.0);
+}
+
+TEST(ObjectTruth, AnObjectBehindATreeIsPartlyVisibleWithTheSameFootprint) {
+  TempDir dir;
+  const std::string aspen = "[[species]]\nbit = 0\nfile = \"" +
+                            testing::source_file("data/species/quaking_aspen.toml").string() +
+                            "\"\nvariants = 1\ndensity_per_ha = 20\ncover = \"everywhere\"\n";
+  const renderer::Scene open = build(dir, scenario(dir, "car.obj"));
+  renderer::Scene hidden = build(dir, scenario(dir, "car.obj", "clear_radius = 0\n" + aspen));
+  ASSERT_FALSE(hidden.prototypes.empty());
+  // One tree, its trunk on the line of sight 6 m in front of the car.
+  const Vec3 car{hidden.objects[0].transform[9], hidden.objects[0].transform[10],
+                 hidden.objects[0].transform[11]};
+  const Vec3 towards =
+      normalize(Vec3{hidden.views[0].position.x - car.x, hidden.views[0].position.y - car.y, 0.0});
+  hidden.instances = {{0, car + towards * 6.0 - Vec3{0.0, 0.0, 0.3}, 0.0, 1.0}};
+  const auto seen = renderer::object_truth(hidden, hidden.views[0], render(hidden), false);
+  const auto clear = renderer::object_truth(open, open.views[0], render(open), false);
+  EXPECT_EQ(seen[0].footprint_pixels, clear[0].footprint_pixels);
+  EXPECT_GT(seen[0].visible_fraction, 0.0);
+  EXPECT_LT(seen[0].visible_fraction, 0.95);
+  EXPECT_EQ(clear[0].visible_fraction, 1.0);
+}
+
+TEST(ObjectTruth, ContrastIsNegativeForADarkObjectOnBrightGroundAndPositiveForAWhiteOne) {
+  TempDir dir;
+  const renderer::Scene dark = build(dir, scenario(dir, "car.obj"));
+  const auto d = renderer::object_truth(dark, dark.views[0], render(dark), false);
+  ASSERT_TRUE(d[0].contrast);
+  EXPECT_LT(*d[0].contrast, -0.2);
+  EXPECT_GT(d[0].background_pixels, 0u);
+  EXPECT_GE(d[0].ring_width, 3);
+  // Every material white: brighter than the ground (albedo 0.18).
+  std::string white;
+  for (const char* m : {"paint_red", "glass", "tyre", "chrome"})
+    white += "[[objects.material]]\nname = \"" + std::string(m) + "\"\nalbedo = [0.9, 0.9, 0.9]\n";
+  const renderer::Scene bright = build(dir, scenario(dir, "car.obj", white));
+  const auto b = renderer::object_truth(bright, bright.views[0], render(bright), false);
+  ASSERT_TRUE(b[0].contrast);
+  EXPECT_GT(*b[0].contrast, 0.5);
+  EXPECT_GT(b[0].luminance, d[0].luminance);
+}
+
+TEST(ObjectTruth, AGltfAndAnObjOfTheSameMeshGiveTheSameImage) {
+  TempDir dir;
+  const renderer::Scene obj = build(dir, scenario(dir, "car.obj"));
+  const renderer::Scene gltf = build(dir, scenario(dir, "car.gltf"));
+  const renderer::Film a = render(obj), b = render(gltf);
+  std::size_t same_target = 0;
+  double diff = 0.0, sum = 0.0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      same_target += a.target(x, y) == b.target(x, y) ? 1 : 0;
+      diff += std::abs(a.luminance(x, y) - b.luminance(x, y));
+      sum += a.luminance(x, y);
+    }
+  EXPECT_GE(static_cast<double>(same_target), 0.999 * static_cast<double>(a.pixel_count()));
+  EXPECT_LT(diff / sum, 1e-3);
+  EXPECT_GT(count(a, 1).pixels, 100u);
+}
+
+}  // namespace
+}  // namespace landsim::scenes
