@@ -27,7 +27,7 @@ namespace {
 
 constexpr int kRegions = 4;  // per side, for the per-region luminance comparison
 
-enum class Cover { sky, ground, tree };
+enum class Cover { sky, ground, tree, object };
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -73,6 +73,7 @@ void pixel3(const renderer::FloatImage& image, int x, int y, float* out) {
 float luminance(const float* c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
 
 Cover ours(std::uint8_t object) {
+  if (object == static_cast<std::uint8_t>(renderer::ObjectClass::object)) return Cover::object;
   if (object == static_cast<std::uint8_t>(renderer::ObjectClass::bark) ||
       object == static_cast<std::uint8_t>(renderer::ObjectClass::leaf)) {
     return Cover::tree;
@@ -81,6 +82,7 @@ Cover ours(std::uint8_t object) {
 }
 
 Cover theirs(const float* rgb) {
+  if (rgb[0] > 0.5f && rgb[1] > 0.5f) return Cover::object;  // yellow
   if (rgb[0] > 0.5f) return Cover::ground;
   if (rgb[1] > 0.5f || rgb[2] > 0.5f) return Cover::tree;
   return Cover::sky;
@@ -160,18 +162,21 @@ void write_side_by_side(const renderer::Film& film, const renderer::FloatImage& 
 
 void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
                    const std::filesystem::path& dir) {
-  const nlohmann::json j = {{"object_iou", r.object_iou},
-                            {"tree_iou", r.tree_iou},
-                            {"ground_iou", r.ground_iou},
-                            {"luminance_mean_rel_diff", r.luminance_mean_rel_diff},
-                            {"luminance_region_max_rel_diff", r.luminance_region_max_rel_diff},
-                            {"landsim_seconds", r.landsim_seconds},
-                            {"povray_seconds", r.povray_seconds},
-                            {"thresholds",
-                             {{"min_iou", o.min_iou},
-                              {"max_mean_diff", o.max_mean_diff},
-                              {"max_region_diff", o.max_region_diff}}},
-                            {"pass", r.pass}};
+  const nlohmann::json j = {
+      {"object_iou", r.object_iou},
+      {"tree_iou", r.tree_iou},
+      {"ground_iou", r.ground_iou},
+      {"scene_object_iou",
+       r.scene_object_iou ? nlohmann::json(*r.scene_object_iou) : nlohmann::json()},
+      {"luminance_mean_rel_diff", r.luminance_mean_rel_diff},
+      {"luminance_region_max_rel_diff", r.luminance_region_max_rel_diff},
+      {"landsim_seconds", r.landsim_seconds},
+      {"povray_seconds", r.povray_seconds},
+      {"thresholds",
+       {{"min_iou", o.min_iou},
+        {"max_mean_diff", o.max_mean_diff},
+        {"max_region_diff", o.max_region_diff}}},
+      {"pass", r.pass}};
   {
     AtomicFile json(dir / "report.json");
     std::ofstream(json.temp_path()) << j.dump(2) << "\n";
@@ -185,12 +190,15 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
       "<p>Left: landsim in its POV-comparable mode; middle: POV-Ray; both at landsim's automatic "
       "exposure. Right: the relative luminance difference |L_landsim - L_POV| / L_POV of pixels "
       "both see as objects, black 0 to full red at 50% and beyond (the bar below it).\n"
-      "<table><tr><td>object IoU (mean of trees, ground)<td>{:.4f} (min {})\n<tr><td>trees "
+      "<table><tr><td>object IoU (mean of trees, ground{})<td>{:.4f} (min {})\n<tr><td>trees "
       "IoU<td>{:.4f}\n"
-      "<tr><td>ground IoU<td>{:.4f}\n<tr><td>mean luminance difference<td>{:.2f}% (max {:.0f}%)\n"
+      "<tr><td>ground IoU<td>{:.4f}\n{}<tr><td>mean luminance difference<td>{:.2f}% (max {:.0f}%)\n"
       "<tr><td>largest region difference<td>{:.2f}% (max {:.0f}%)\n<tr><td>landsim<td>{:.2f} s\n"
       "<tr><td>POV-Ray<td>{:.2f} s</table>\n",
-      r.pass ? "pass" : "FAIL", r.object_iou, o.min_iou, r.tree_iou, r.ground_iou,
+      r.pass ? "pass" : "FAIL", r.scene_object_iou ? ", scene objects" : "", r.object_iou,
+      o.min_iou, r.tree_iou, r.ground_iou,
+      r.scene_object_iou ? fmt::format("<tr><td>scene objects IoU<td>{:.4f}\n", *r.scene_object_iou)
+                         : std::string(),
       100 * r.luminance_mean_rel_diff, 100 * o.max_mean_diff, 100 * r.luminance_region_max_rel_diff,
       100 * o.max_region_diff, r.landsim_seconds, r.povray_seconds);
   html.commit();
@@ -279,7 +287,13 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   }
   r.tree_iou = iou(a, b, Cover::tree);
   r.ground_iou = iou(a, b, Cover::ground);
-  r.object_iou = 0.5 * (r.tree_iou + r.ground_iou);
+  // Scene objects count as a third class when the scene has any.
+  if (!scene.objects.empty()) {
+    r.scene_object_iou = iou(a, b, Cover::object);
+    r.object_iou = (r.tree_iou + r.ground_iou + *r.scene_object_iou) / 3.0;
+  } else {
+    r.object_iou = 0.5 * (r.tree_iou + r.ground_iou);
+  }
   r.luminance_mean_rel_diff = sum_b > 0.0 ? std::abs(sum_a - sum_b) / sum_b : 1.0;
   const int min_pixels =
       std::max(1, w * h / (kRegions * kRegions * 10));  // regions at least 10% object

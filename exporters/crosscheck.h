@@ -4,6 +4,7 @@
 // compare: object coverage (intersection over union of the tree and ground masks) and
 // relative luminance over the pixels both see as objects, overall and per region.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "renderer/scene.h"
@@ -26,6 +27,7 @@ struct CrosscheckOptions {
 struct CrosscheckReport {
   double object_iou = 0.0;
   double tree_iou = 0.0, ground_iou = 0.0;
+  std::optional<double> scene_object_iou;  // vehicles, structures ([[objects]]), when any
   double luminance_mean_rel_diff = 0.0;
   double luminance_region_max_rel_diff = 0.0;
   double landsim_seconds = 0.0;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -155,6 +156,41 @@ std::map<int, std::vector<std::uint32_t>> leaves_by_vigour(const trees::GroupGeo
   return groups;
 }
 
+// An object prototype's triangles grouped by mesh material.
+std::map<std::uint32_t, std::vector<std::uint32_t>> object_by_material(
+    const renderer::ObjectPrototype& p) {
+  std::map<std::uint32_t, std::vector<std::uint32_t>> groups;
+  for (std::size_t t = 0; t < p.triangle_count(); ++t) {
+    auto& g = groups[p.triangle_material[t]];
+    g.insert(g.end(), p.indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+             p.indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  return groups;
+}
+
+// Scene objects: each of an object's materials as POV-Ray's nearest finish, a diffuse base
+// colour (textures left out: their mean is not the factor) with a Phong-like specular
+// highlight of the coat's reflectance at normal incidence and a roughness of GGX alpha^2;
+// the mask draws them yellow.
+void write_objects(fmt::ostream& out, const renderer::Scene& scene) {
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const renderer::ObjectInstance& o = scene.objects[i];
+    out.print("// object {}\nunion {{\n", sanitize_for_pov(o.name));
+    for (const auto& [m, indices] : object_by_material(scene.object_prototypes[o.prototype])) {
+      const renderer::ObjectMaterial& mat = o.materials[m];
+      const float alpha = std::max(mat.roughness * mat.roughness, 0.01f);
+      const Vec3f diffuse = mat.base_colour * (1.0f - mat.metallic);
+      const Vec3f f0 =
+          Vec3f{0.04f, 0.04f, 0.04f} * (1.0f - mat.metallic) + mat.base_colour * mat.metallic;
+      out.print("  object {{ LS_Object_{}_{} LS_ObjectTexture({}, {:.6g}, {:.6g}) }}\n",
+                o.prototype, m, colour_vector(diffuse), max_component(f0), alpha * alpha);
+    }
+    std::array<float, 12> m{};
+    for (std::size_t k = 0; k < 12; ++k) m[k] = static_cast<float>(o.transform[k]);
+    out.print("  {}\n}}\n", pov_matrix(m));
+  }
+}
+
 }  // namespace
 
 std::string sanitize_for_pov(const std::string& text) {
@@ -194,6 +230,12 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
                       g.group(trees::Group::leaves).triangles.vertices,
                       g.group(trees::Group::leaves).triangles.normals, indices);
       }
+      for (std::size_t p = 0; p < scene.object_prototypes.size(); ++p) {
+        const renderer::ObjectPrototype& proto = scene.object_prototypes[p];
+        for (const auto& [m, indices] : object_by_material(proto))
+          write_mesh2(out, fmt::format("LS_Object_{}_{}", p, m), proto.vertices, proto.normals,
+                      indices);
+      }
       if (scene.grass.cols > 0) {
         for (int t = 0; t < 3; ++t)
           for (int variant = 0; variant < renderer::kGrassVariants; ++variant)
@@ -224,6 +266,11 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
         "finish {{ ambient 1 diffuse 0 }} }}\n"
         "  #else texture {{ pigment {{ rgb Albedo }} finish {{ ambient 1 diffuse 1 }} }} "
         "#end\n#end\n");
+    out.print(
+        "#macro LS_ObjectTexture(Albedo, Specular, Roughness)\n  #if (LS_Mask) texture {{ pigment "
+        "{{ rgb <1, 1, 0> }} finish {{ ambient 1 diffuse 0 }} }}\n"
+        "  #else texture {{ pigment {{ rgb Albedo }} finish {{ ambient 1 diffuse 1 specular "
+        "Specular roughness Roughness }} }} #end\n#end\n");
     out.print("#include \"meshes.inc\"\n");  // its ground meshes use LS_Texture
     out.print(
         "camera {{ perspective location {} look_at {} sky <0, 1, 0> right x*{:.9g} up y angle "
@@ -264,6 +311,7 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     for (const renderer::TreeInstance& t : scene.instances) {
       out.print("object {{ LS_Tree_{} {} }}\n", t.prototype, instance_matrix(t));
     }
+    write_objects(out, scene);
     // Grass: the same patches at the same levels landsim draws for this view without
     // degradation's blending (POV-Ray has no stochastic levels); the mask counts grass as
     // ground, as landsim's comparison does.

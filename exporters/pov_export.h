@@ -25,8 +25,8 @@ struct PovExportOptions {
 };
 
 // Writes `dir`/scene.pov and `dir`/meshes.inc for `view`. Declaring LS_Mask=1 on the POV-Ray
-// command line renders flat class colours instead (ground red, bark green, leaves blue, sky
-// black) for coverage comparison.
+// command line renders flat class colours instead (ground red, bark green, leaves blue, scene
+// objects yellow, sky black) for coverage comparison.
 void export_pov(const renderer::Scene& scene, const renderer::View& view,
                 const std::filesystem::path& dir, const PovExportOptions& options);
 
