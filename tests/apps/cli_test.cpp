@@ -1,4 +1,5 @@
 // End-to-end tests of the landsim program: exit codes, messages, files written or not.
+#include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenImageIO/imageio.h>
@@ -54,6 +55,13 @@ struct BadScenario {
   const char* key;  // what the message must name
 };
 
+// An [[objects]] entry of one of the example vehicles (data/objects/).
+std::string object_entry(const std::string& name, const std::string& file, double x, double y) {
+  return "[[objects]]\nname = \"" + name + "\"\nfile = \"" +
+         testing::source_file("data/objects/" + file).string() + "\"\nposition = [" +
+         std::to_string(x) + ", " + std::to_string(y) + "]\n";
+}
+
 TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
   const std::vector<BadScenario> cases = {
       {"unknown key", scenario("shade = 1", "", "spp = 2"), "unknown key 'shade'"},
@@ -84,6 +92,10 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
        "a rule must change something"},
       {"variation out of range", scenario("", "", "spp = 2") + "[ground]\nvariation = 1.5\n",
        "[ground] variation: expected from 0 to 1"},
+      {"two objects of one name",
+       scenario("", "", "spp = 2") + object_entry("a", "car.obj", 300.0, 400.0) +
+           object_entry("a", "truck.obj", 320.0, 400.0),
+       "[objects[1]] name: the name 'a' is used by another object"},
   };
   for (const BadScenario& c : cases) {
     TempDir dir;
@@ -405,6 +417,96 @@ TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
   EXPECT_EQ(manifest["images"][0]["camera"]["width"], 32);
   EXPECT_EQ(manifest["images"][0]["camera"]["position"][0], 500.0);
   EXPECT_NE(r.err.find("100%"), std::string::npos) << "progress goes to stderr";
+}
+
+// Objects are read and placed when the scene is built, after the memory estimate's report:
+// their errors are the one error message of the run.
+TEST(Cli, BadObjectsExitTwoAtTheirEntryAndWriteNothing) {
+  const std::vector<BadScenario> cases = {
+      {"an object's file that is no mesh",
+       scenario("", "", "spp = 2") + object_entry("a", "make_vehicles.py", 300.0, 400.0),
+       "[objects[0]] file: cannot read mesh"},
+      {"an object off the terrain",
+       scenario("", "", "spp = 2") + object_entry("a", "car.obj", -5000.0, 400.0),
+       "[objects[0]] position: the object at (-5000, 400) stands partly outside the terrain"},
+  };
+  for (const BadScenario& c : cases) {
+    TempDir dir;
+    const auto file = dir.write("bad.toml", c.text);
+    const auto out = dir / "out";
+    const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": " << r.err;
+    std::size_t errors = 0;
+    for (std::size_t at = r.err.find("error:"); at != std::string::npos;
+         at = r.err.find("error:", at + 1))
+      ++errors;
+    EXPECT_EQ(errors, 1u) << c.name << ": " << r.err;
+    EXPECT_FALSE(has_files(out)) << c.name;
+  }
+}
+
+// The EXR's UINT channel `name`, row by row.
+std::vector<std::uint32_t> uint_channel(const std::filesystem::path& exr, const char* name) {
+  Imf::InputFile in(exr.c_str());
+  const Imath::Box2i dw = in.header().dataWindow();
+  const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+  std::vector<std::uint32_t> out(static_cast<std::size_t>(w) * h);
+  Imf::FrameBuffer fb;
+  fb.insert(name, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(out.data()), sizeof(std::uint32_t),
+                             sizeof(std::uint32_t) * static_cast<std::size_t>(w)));
+  in.setFrameBuffer(fb);
+  in.readPixels(dw.min.y, dw.max.y);
+  return out;
+}
+
+TEST(Cli, TheTargetLayerAndTheManifestAgreeOnEveryObject) {
+  TempDir dir;
+  // Two vehicles on the volcano, scaled up to be seen from 500 m and more.
+  std::string text = scenario("", "", "spp = 2");
+  text.replace(text.find("width = 32\nheight = 18"), 22, "width = 160\nheight = 90\nfov = 6");
+  text += object_entry("car", "car.obj", 360.0, 450.0) + "heading = 30\nscale = 4\n" +
+          object_entry("truck", "truck.obj", 330.0, 385.0) + "scale = 3\n";
+  const auto file = dir.write("s.toml", text);
+  const auto out = dir / "out";
+  const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::uint32_t> target = uint_channel(out / "v.exr", "target");
+  const std::vector<std::uint32_t> object = uint_channel(out / "v.exr", "object");
+  const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
+  const auto& objects = manifest["images"][0]["objects"];
+  ASSERT_EQ(objects.size(), 2u);
+  for (std::uint32_t id = 1; id <= 2; ++id) {
+    const auto& o = objects[id - 1];
+    EXPECT_EQ(o["target"], id);
+    std::uint64_t pixels = 0;
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+    for (std::size_t i = 0; i < target.size(); ++i) {
+      if (target[i] != id) continue;
+      ++pixels;
+      EXPECT_EQ(object[i], 5u) << "objects are class 5 in the object layer";
+      const int x = static_cast<int>(i % 160), y = static_cast<int>(i / 160);
+      x0 = std::min(x0, x);
+      y0 = std::min(y0, y);
+      x1 = std::max(x1, x);
+      y1 = std::max(y1, y);
+    }
+    ASSERT_GT(pixels, 20u) << o["name"];
+    EXPECT_EQ(o["visible_pixels"], pixels) << o["name"];
+    EXPECT_EQ(o["bbox"]["x0"], x0);
+    EXPECT_EQ(o["bbox"]["y0"], y0);
+    EXPECT_EQ(o["bbox"]["x1"], x1);
+    EXPECT_EQ(o["bbox"]["y1"], y1);
+    EXPECT_GE(o["footprint_pixels"].get<std::uint64_t>(), pixels);
+    EXPECT_GT(o["range_m"].get<double>(), 100.0);
+  }
+  EXPECT_EQ(objects[0]["name"], "car");
+  // --resume keeps the truth of finished images.
+  const Result again = run("render " + file.string() + " --out " + out.string() + " --resume", dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const auto resumed = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
+  EXPECT_EQ(resumed["images"][0]["objects"], objects);
 }
 
 TEST(Cli, DefaultSceneWithSizeOverridesKeepsTheAspect) {

@@ -26,7 +26,8 @@ using landsim::testing::TempDir;
 
 // The volcano's flat north with a 60 m x 60 m stand of trees (fan palms unless told) in view,
 // sun and light haze.
-Scenario small_scene(const TempDir& dir, const std::string& species = "fanpalm.xml") {
+Scenario small_scene(const TempDir& dir, const std::string& species = "fanpalm.xml",
+                     const std::string& extra = "") {
   const std::string veg = (dir / "veg.tif").string();
   std::vector<double> cells(61 * 87, 0.0);
   for (int r = 5; r < 11; ++r)
@@ -47,7 +48,8 @@ Scenario small_scene(const TempDir& dir, const std::string& species = "fanpalm.x
                         "[haze]\nvisibility = 20000.0\n"
                         "[[views]]\nname = \"stand\"\nposition = [230.0, 700.0, 126.0]\ntarget = "
                         "[230.0, 790.0, 104.0]\n"
-                        "fov = 45.0\nwidth = 96\nheight = 64\n");
+                        "fov = 45.0\nwidth = 96\nheight = 64\n" +
+                        extra);
   return load_scenario(file);
 }
 
@@ -84,6 +86,35 @@ TEST(Crosscheck, SmallSceneAgreesWithPovRay) {
                         "pov/scene.pov", "pov/meshes.inc"}) {
     EXPECT_TRUE(std::filesystem::exists(o.out_dir / f)) << f;
   }
+}
+
+TEST(Crosscheck, SceneObjectsAgreeWithPovRayAndJoinTheObjectIou) {
+  TempDir dir;
+  const auto vehicle = [](const std::string& name, const std::string& file, double x, double y,
+                          double heading) {
+    return "[[objects]]\nname = \"" + name + "\"\nfile = \"" +
+           source_file("data/objects/" + file).string() + "\"\nposition = [" + std::to_string(x) +
+           ", " + std::to_string(y) + "]\nheading = " + std::to_string(heading) + "\n";
+  };
+  const Scenario s = small_scene(dir, "fanpalm.xml",
+                                 vehicle("car", "car.obj", 222.0, 728.0, 40.0) +
+                                     vehicle("truck", "truck.obj", 240.0, 745.0, -70.0));
+  const renderer::Scene scene = build_scene(s);
+  ASSERT_EQ(scene.objects.size(), 2u);
+  CrosscheckOptions o;
+  o.out_dir = dir / "check";
+  o.spp = 1;
+  const CrosscheckReport r = crosscheck(s, scene, o);
+  ASSERT_TRUE(r.scene_object_iou);
+  EXPECT_GT(*r.scene_object_iou, 0.9);
+  EXPECT_NEAR(r.object_iou, (r.tree_iou + r.ground_iou + *r.scene_object_iou) / 3.0, 1e-12);
+  EXPECT_TRUE(r.pass);
+  // The vehicles are in view: the IoU above is not one of empty masks.
+  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+  int object_pixels = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) object_pixels += film.target(x, y) != 0;
+  EXPECT_GT(object_pixels, 60);
 }
 
 // Another core's trees go through the same TreeGeometry, export and comparison.
