@@ -1,11 +1,14 @@
 #include "scenes/memory_estimate.h"
 
+#include "scenes/detail/scene_objects.h"
+
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 
 #include "core/input_error.h"
 #include "core/process_memory.h"
@@ -180,6 +183,27 @@ std::size_t MemoryEstimate::total_bytes() const {
   return total;
 }
 
+// The [[objects]] meshes as the render holds them: each file's prototype (positions,
+// normals, texture coordinates, indices, materials) and its Embree scene, twice (the render's
+// and the objects-only scene of the truth pass). Reads each file once, handing it on in
+// `keep` when given.
+double object_bytes(const Scenario& s, VariantCache* keep) {
+  std::map<std::string, MeshData> local;
+  std::map<std::string, MeshData>& meshes = keep != nullptr ? keep->meshes : local;
+  double bytes = 0.0;
+  std::set<std::string> counted;
+  for (const ObjectSettings& o : s.objects) {
+    const MeshData& mesh = detail::read_object_mesh(o, meshes);
+    if (!counted.insert(o.file).second) continue;
+    const double vertices = static_cast<double>(mesh.positions.size() / 3);
+    const double triangles = static_cast<double>(mesh.indices.size() / 3);
+    const double per_vertex = mesh.uvs.empty() ? 24.0 : 32.0;
+    bytes += vertices * per_vertex + triangles * 16.0 +
+             2.0 * (vertices * per_vertex + triangles * mm::kEmbreeGridTriangle);
+  }
+  return bytes + static_cast<double>(s.objects.size()) * 2.0 * mm::kEmbreeInstance;
+}
+
 MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   MemoryEstimate e;
   e.scenario = s.source;
@@ -277,8 +301,8 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   if (keep != nullptr)
     for (std::size_t k = 0; k < s.species.size(); ++k)
       if (variant[k])
-        keep->insert_or_assign({static_cast<std::uint32_t>(k), 0, s.render.frames.front()},
-                               std::move(*variant[k]));
+        keep->trees.insert_or_assign({static_cast<std::uint32_t>(k), 0, s.render.frames.front()},
+                                     std::move(*variant[k]));
   part("tree_variants", "tree variants", p.scene_variants + p.view_prototypes,
        degrade ? "fewer variants per species, or a lower [render] quality"
                : "[render] degradation = true (far trees drawn with fewer primitives), or "
@@ -289,6 +313,7 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   part("grass", "grass", p.scene_grass + p.view_grass,
        "fewer [[grass]] types, or grass on less of the map");
   part("image", "image", p.view_film, "a smaller --width/--height");
+  part("objects", "scene objects", object_bytes(s, keep), "[[objects]] meshes of fewer triangles");
   // Building the scene holds the terrain grid, the map and the placed trees besides; the
   // peak is whichever phase is larger.
   const double view_total =

@@ -58,8 +58,8 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     const auto [species, variant] = keys[i];
     if (reuse != nullptr) {
-      const auto found = reuse->find({species, variant, time});
-      if (found != reuse->end()) {
+      const auto found = reuse->trees.find({species, variant, time});
+      if (found != reuse->trees.end()) {
         scene.prototypes[i] = std::move(found->second);
         return;
       }
@@ -286,7 +286,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   if (map && !scenario.species.empty())
     add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
   // Objects after the trees: each clears the trunks within its radius.
-  detail::add_objects(scenario, scene);
+  detail::add_objects(scenario, scene, reuse != nullptr ? &reuse->meshes : nullptr);
   if (map) {
     if (!scenario.species.empty()) detail::warn_cameras_inside_trees(scenario, scene);
     if (!scenario.grass.empty()) {

@@ -1,12 +1,14 @@
 #pragma once
-// Tree variants generated once and handed on: the memory estimate generates one variant per
-// species to size the rest, and the scene builder takes those instead of generating them a
-// second time (render and info start sooner).
+// Work the memory estimate does once and hands on to the scene builder: tree variants (the
+// estimate generates one per species to size the rest) and the object meshes it reads to
+// count them, so that neither is made a second time (render and info start sooner).
 #include <compare>
 #include <cstdint>
 #include <map>
+#include <string>
 
 #include "renderer/scene.h"
+#include "scenes/mesh_io.h"
 
 namespace landsim::scenes {
 
@@ -17,6 +19,13 @@ struct VariantKey {
   auto operator<=>(const VariantKey&) const = default;
 };
 
-using VariantCache = std::map<VariantKey, renderer::TreePrototype>;
+struct VariantCache {
+  std::map<VariantKey, renderer::TreePrototype> trees;
+  std::map<std::string, MeshData> meshes;  // by resolved file path ([[objects]] file)
+  void clear() {
+    trees.clear();
+    meshes.clear();
+  }
+};
 
 }  // namespace landsim::scenes

@@ -88,20 +88,6 @@ renderer::ObjectPrototype to_prototype(const MeshData& mesh, const ObjectSetting
   return p;
 }
 
-const MeshData& read_mesh(const ObjectSettings& o, std::map<std::string, MeshData>& files) {
-  const auto found = files.find(o.file);
-  if (found != files.end()) return found->second;
-  MeshData mesh;
-  std::string error;
-  if (!mesh_io().read(o.file, mesh, error))
-    throw InputError(fmt::format("{}: cannot read mesh {}: {}", where(o, o.file_location, "file"),
-                                 o.file, error));
-  if (mesh.indices.empty())
-    throw InputError(fmt::format("{}: {}: the mesh has no faces (expected triangles or polygons)",
-                                 where(o, o.file_location, "file"), o.file));
-  return files.emplace(o.file, std::move(mesh)).first->second;
-}
-
 // The file's materials with the object's overrides applied; textures read once per path.
 std::vector<renderer::ObjectMaterial> object_materials(
     const ObjectSettings& o, const MeshData& mesh,
@@ -240,14 +226,30 @@ void clear_trees(renderer::Scene& scene, double x, double y, double radius) {
 
 }  // namespace
 
-void add_objects(const Scenario& s, renderer::Scene& scene) {
+const MeshData& read_object_mesh(const ObjectSettings& o, std::map<std::string, MeshData>& files) {
+  const auto found = files.find(o.file);
+  if (found != files.end()) return found->second;
+  MeshData mesh;
+  std::string error;
+  if (!mesh_io().read(o.file, mesh, error))
+    throw InputError(fmt::format("{}: cannot read mesh {}: {}", where(o, o.file_location, "file"),
+                                 o.file, error));
+  if (mesh.indices.empty())
+    throw InputError(fmt::format("{}: {}: the mesh has no faces (expected triangles or polygons)",
+                                 where(o, o.file_location, "file"), o.file));
+  return files.emplace(o.file, std::move(mesh)).first->second;
+}
+
+void add_objects(const Scenario& s, renderer::Scene& scene,
+                 std::map<std::string, MeshData>* meshes) {
   if (s.objects.empty()) return;
   const renderer::GroundProbe probe(scene.ground.mesh);
-  std::map<std::string, MeshData> files;
+  std::map<std::string, MeshData> local;
+  std::map<std::string, MeshData>& files = meshes != nullptr ? *meshes : local;
   std::map<std::pair<std::string, bool>, std::uint32_t> prototype_of;
   std::map<std::string, std::shared_ptr<const renderer::ObjectTexture>> textures;
   for (const ObjectSettings& o : s.objects) {
-    const MeshData& mesh = read_mesh(o, files);
+    const MeshData& mesh = read_object_mesh(o, files);
     auto [it, fresh] = prototype_of.emplace(
         std::pair{o.file, o.z_up}, static_cast<std::uint32_t>(scene.object_prototypes.size()));
     if (fresh) scene.object_prototypes.push_back(to_prototype(mesh, o));

@@ -89,7 +89,13 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "fov = 35.0\nwidth = 64\nheight = 32\n\n"
          "[render]\nspp = 2\nseed = 5\nthreads = 1\nmax_bounces = 2\nexposure = 0.5\nframes = "
          "[0.0, 1.5]\nseason = \"autumn\"\ncheckpoint_seconds = 30.0\ndegradation = false\n"
-         "quality = 0.8\nmax_memory = \"12 GB\"\n";
+         "quality = 0.8\nmax_memory = \"12 GB\"\n\n"
+         "[[objects]]\nname = \"car\"\nfile = \"" +
+         data +
+         "/objects/car.gltf\"\nposition = [300.0, 400.0]\nheading = 45.0\nscale = 1.5\n"
+         "unit_scale = 0.5\nup_axis = \"y\"\nalign_to_ground = true\nclear_radius = 3.0\n"
+         "[[objects.material]]\nname = \"paint_red\"\nalbedo = [0.1, 0.2, 0.3]\nroughness = "
+         "0.4\nmetallic = 0.7\n";
 }
 
 struct Fixture {
@@ -137,6 +143,22 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(s.species[0].variants, 2);
   EXPECT_DOUBLE_EQ(s.species[0].min_spacing, 3.0);
   EXPECT_EQ(s.species[0].species.name, "palm");
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_EQ(s.objects[0].name, "car");
+  EXPECT_EQ(s.objects[0].file, source_file("data/objects/car.gltf").string());
+  EXPECT_DOUBLE_EQ(s.objects[0].x, 300.0);
+  EXPECT_FALSE(s.objects[0].z.has_value());
+  EXPECT_DOUBLE_EQ(s.objects[0].heading_deg, 45.0);
+  EXPECT_DOUBLE_EQ(s.objects[0].scale, 1.5);
+  EXPECT_DOUBLE_EQ(s.objects[0].unit_scale, 0.5);
+  EXPECT_FALSE(s.objects[0].z_up);
+  EXPECT_TRUE(s.objects[0].align_to_ground);
+  EXPECT_EQ(s.objects[0].clear_radius, 3.0);
+  ASSERT_EQ(s.objects[0].materials.size(), 1u);
+  EXPECT_EQ(s.objects[0].materials[0].material, "paint_red");
+  EXPECT_EQ(s.objects[0].materials[0].roughness, 0.4f);
+  EXPECT_EQ(s.objects[0].materials[0].metallic, 0.7f);
+  EXPECT_EQ(s.objects[0].materials[0].albedo->z, 0.3f);
   ASSERT_EQ(s.grass.size(), 2u);
   EXPECT_DOUBLE_EQ(s.grass[0].curvature, 0.5);
   EXPECT_FALSE(s.grass[0].cover);

@@ -93,7 +93,7 @@ TEST(MemoryEstimate, ItsVariantsAreTheOnesTheBuilderWouldGenerate) {
   const Scenario s = default_scenario();
   VariantCache variants;
   estimate_memory(s, &variants);
-  ASSERT_EQ(variants.size(), s.species.size());
+  ASSERT_EQ(variants.trees.size(), s.species.size());
   const renderer::Scene reused = build_scene(s, 0.0, &variants);
   const renderer::Scene fresh = build_scene(s, 0.0);
   ASSERT_EQ(reused.prototypes.size(), fresh.prototypes.size());
@@ -108,7 +108,7 @@ TEST(MemoryEstimate, ItsVariantsAreTheOnesTheBuilderWouldGenerate) {
     EXPECT_EQ(reused.prototypes[i].leaf_reflectance, fresh.prototypes[i].leaf_reflectance);
   }
   // Taken (moved out), not generated again.
-  for (const auto& [key, variant] : variants)
+  for (const auto& [key, variant] : variants.trees)
     EXPECT_EQ(variant.geometry.triangle_count(), 0u) << "species " << key.species;
 }
 

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"
 
@@ -313,6 +314,36 @@ TEST(SceneObjects, BadEntriesAreRefusedWhenTheScenarioIsRead) {
   EXPECT_NE(e.find("colour"), std::string::npos) << e;
   // Every message is located in the scenario.
   EXPECT_NE(e.find("s.toml:"), std::string::npos) << e;
+}
+
+TEST(SceneObjects, TheMemoryEstimateCountsEachMeshOnceAndHandsItToTheBuilder) {
+  TempDir dir;
+  const std::string terrain = slope_asc(dir);
+  const auto estimate = [&](const std::string& extra, VariantCache* keep = nullptr) {
+    const MemoryEstimate e =
+        estimate_memory(load_scenario(dir.write("e.toml", scenario(terrain, extra))), keep);
+    for (const MemoryPart& p : e.parts)
+      if (p.id == "objects") return static_cast<double>(p.bytes);
+    return 0.0;
+  };
+  EXPECT_EQ(estimate(""), 0.0);
+  const double one = estimate(object("a", vehicle("truck.obj"), 1090, 2100));
+  const double two = estimate(object("a", vehicle("truck.obj"), 1090, 2100) +
+                              object("b", vehicle("truck.obj"), 1070, 2100));
+  // The truck's triangles: their Embree scenes (twice) at about 100 bytes each, at least.
+  TempDir other;
+  const renderer::Scene scene =
+      build(other, scenario(slope_asc(other), object("a", vehicle("truck.obj"), 1090, 2100)));
+  const double triangles = static_cast<double>(scene.object_prototypes[0].triangle_count());
+  EXPECT_GT(one, 2.0 * 90.0 * triangles);
+  EXPECT_LT(one, 2.0 * 400.0 * triangles);
+  // A second object of the same file adds only its instance.
+  EXPECT_GT(two, one);
+  EXPECT_LT(two - one, 2000.0);
+  // The meshes read are handed on.
+  VariantCache keep;
+  estimate(object("a", vehicle("truck.obj"), 1090, 2100), &keep);
+  EXPECT_EQ(keep.meshes.count(vehicle("truck.obj")), 1u);
 }
 
 }  // namespace
