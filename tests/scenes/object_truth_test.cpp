@@ -128,6 +128,34 @@ TEST(ObjectTruth, ContrastIsNegativeForADarkObjectOnBrightGroundAndPositiveForAW
   EXPECT_GT(b[0].luminance, d[0].luminance);
 }
 
+TEST(ObjectTruth, AnObjectCastsAShadowOnTheGround) {
+  TempDir dir;
+  // A low sun in the south-east: the car's shadow falls north-west, beside it in view.
+  std::string with = scenario(dir, "car.obj");
+  with.replace(with.find("elevation = 40\nazimuth = 200"), 28, "elevation = 15\nazimuth = 130");
+  std::string without = with.substr(0, with.find("[[objects]]"));
+  const renderer::Scene a = build(dir, with);
+  const renderer::Scene b = build(dir, without);
+  const renderer::Film fa = render(a), fb = render(b);
+  // Ground pixels (no object in the way) at least 40% darker with the car than without it.
+  int shadowed = 0;
+  for (int y = 0; y < fa.height(); ++y)
+    for (int x = 0; x < fa.width(); ++x)
+      if (fa.target(x, y) == 0 && fa.luminance(x, y) < 0.6f * fb.luminance(x, y)) ++shadowed;
+  EXPECT_GT(shadowed, 40);  // 84 when written; none without the car
+}
+
+TEST(ObjectTruth, HazeLowersAnObjectsContrast) {
+  TempDir dir;
+  const renderer::Scene clear = build(dir, scenario(dir, "car.obj"));
+  const renderer::Scene hazy = build(dir, scenario(dir, "car.obj") + "[haze]\nvisibility = 60.0\n");
+  const auto c = renderer::object_truth(clear, clear.views[0], render(clear), false);
+  const auto h = renderer::object_truth(hazy, hazy.views[0], render(hazy), false);
+  ASSERT_TRUE(c[0].contrast && h[0].contrast);
+  EXPECT_LT(std::abs(*h[0].contrast), 0.7 * std::abs(*c[0].contrast));
+  EXPECT_EQ(h[0].visible_pixels, c[0].visible_pixels);  // haze veils, it does not hide
+}
+
 TEST(ObjectTruth, AGltfAndAnObjOfTheSameMeshGiveTheSameImage) {
   TempDir dir;
   const renderer::Scene obj = build(dir, scenario(dir, "car.obj"));
