@@ -142,7 +142,7 @@ TEST(ObjectTruth, AnObjectCastsAShadowOnTheGround) {
   for (int y = 0; y < fa.height(); ++y)
     for (int x = 0; x < fa.width(); ++x)
       if (fa.target(x, y) == 0 && fa.luminance(x, y) < 0.6f * fb.luminance(x, y)) ++shadowed;
-  EXPECT_GT(shadowed, 40);  // 84 when written; none without the car
+  EXPECT_GT(shadowed, 40);  // 84 when written
 }
 
 TEST(ObjectTruth, HazeLowersAnObjectsContrast) {
