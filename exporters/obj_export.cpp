@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -123,6 +124,16 @@ std::size_t triangle_count(const trees::TreeGeometry& g) {
   return n;
 }
 
+// An object's name as an OBJ group name: no white space (letters, digits, '_', '-', '.' kept).
+std::string obj_name(const std::string& name) {
+  std::string out;
+  for (const char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    out += std::isalnum(c) || ch == '_' || ch == '-' || ch == '.' ? ch : '_';
+  }
+  return out;
+}
+
 // A flattened OBJ grows with every tree's triangles; past this it is refused before writing.
 constexpr double kMaxFlattenedBytes = 4e9;
 
@@ -155,8 +166,10 @@ SceneObjSummary write_scene_obj(const renderer::Scene& scene, const std::filesys
   AtomicFile out(path);
   {
     ObjFile file(out.temp_path());
-    file.print(FMT_COMPILE("# landsim scene: ground and {} trees ({}), {} frame, metres, z up\n"),
-               chosen.size(), options.flatten ? "flattened" : "prototypes once, instances listed",
+    file.print(FMT_COMPILE("# landsim scene: ground, {} objects and {} trees ({}), {} frame, "
+                           "metres, z up\n"),
+               scene.objects.size(), chosen.size(),
+               options.flatten ? "flattened" : "prototypes once, instances listed",
                options.terrain_frame ? "terrain" : "scene");
     std::size_t base = 1;
     const auto mesh = [&](const std::string& name, const std::vector<Vec3f>& vertices,
@@ -175,6 +188,13 @@ SceneObjSummary write_scene_obj(const renderer::Scene& scene, const std::filesys
     mesh("ground", scene.ground.mesh.vertices, scene.ground.mesh.indices,
          [&](const Vec3f& v) { return Vec3(v) + shift; });
     summary.ground_triangles = scene.ground.mesh.triangle_count();
+    // Scene objects ([[objects]]) in place, one group each: there are few of them.
+    for (const renderer::ObjectInstance& o : scene.objects) {
+      const renderer::ObjectPrototype& p = scene.object_prototypes[o.prototype];
+      mesh("object_" + obj_name(o.name), p.vertices, p.indices,
+           [&](const Vec3f& v) { return o.apply(v) + shift; });
+      summary.object_triangles += p.triangle_count();
+    }
     if (options.flatten) {
       for (std::size_t i : chosen) {
         const renderer::TreeInstance& inst = scene.instances[i];

@@ -23,12 +23,14 @@ struct SceneObjOptions {
 
 struct SceneObjSummary {
   std::size_t ground_triangles = 0, tree_triangles = 0, prototypes = 0, instances = 0;
-  std::uintmax_t bytes = 0;              // the OBJ's size
+  std::size_t object_triangles = 0;  // scene objects, each written in place (group object_<name>)
+  std::uintmax_t bytes = 0;          // the OBJ's size
   std::filesystem::path instances_file;  // empty when flattened
 };
 
-// The scene as an OBJ: the ground and the chosen trees, written atomically (the instance list
-// too). A flattened OBJ that would pass 4 GB is refused (InputError) before anything is written.
+// The scene as an OBJ: the ground, the scene objects and the chosen trees, written atomically (the
+// instance list too). A flattened OBJ that would pass 4 GB is refused (InputError) before anything
+// is written.
 SceneObjSummary write_scene_obj(const renderer::Scene& scene, const std::filesystem::path& path,
                                 const SceneObjOptions& options);
 

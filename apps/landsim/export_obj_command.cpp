@@ -56,6 +56,9 @@ int run_export_obj(const ExportObjArgs& args) {
   }
   std::cout << fmt::format("{}: {:.1f} MB, {} frame: ground ({} triangles), ", args.out,
                            static_cast<double>(s.bytes) / 1e6, args.frame, s.ground_triangles);
+  if (!scene.objects.empty())
+    std::cout << fmt::format("{} objects in place ({} triangles), ", scene.objects.size(),
+                             s.object_triangles);
   if (args.flatten) {
     std::cout << fmt::format("{} trees flattened ({} triangles)\n", s.instances, s.tree_triangles);
   } else {
