@@ -7,19 +7,19 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "renderer/texture_image.h"
 
 namespace landsim::renderer {
 
 class BarkTexture {
  public:
-  BarkTexture(int width, int height, std::vector<float> rgb);
-  // Bilinear, wrapping in both directions; divided by the image's mean luminance.
+  // Divides the image by its mean luminance.
+  explicit BarkTexture(TextureImage image);
+  // Bilinear, wrapping in both directions.
   Vec3f factor(float u, float v) const;
 
  private:
-  Vec3f texel(int x, int y) const;
-  int width_, height_;
-  std::vector<float> rgb_;  // linear, normalised
+  TextureImage image_;  // linear, normalised
 };
 
 // Throws InputError naming the file when it cannot be read.

@@ -7,19 +7,18 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "renderer/texture_image.h"
 
 namespace landsim::renderer {
 
 class ObjectTexture {
  public:
-  ObjectTexture(int width, int height, std::vector<float> rgb);
+  explicit ObjectTexture(TextureImage image) : image_(std::move(image)) {}
   // Linear RGB, bilinear, repeating in both directions (glTF's default wrap).
   Vec3f colour(float u, float v) const;
 
  private:
-  Vec3f texel(int x, int y) const;
-  int width_, height_;
-  std::vector<float> rgb_;  // linear, top row first
+  TextureImage image_;
 };
 
 // Throws InputError naming the file when it cannot be read.

@@ -121,7 +121,7 @@ TEST(GroundShading, TexturesAreProjectedWithoutStretchingOnCliffs) {
       const float v = ((x / 2) + (y / 2)) % 2 == 0 ? 0.2f : 1.0f;
       rgb.insert(rgb.end(), {v, v, v});
     }
-  g.shading.textures[0] = std::make_shared<GroundTexture>(4, 4, rgb);
+  g.shading.textures[0] = std::make_shared<GroundTexture>(TextureImage(4, 4, rgb));
   g.shading.texture_size = 2.0;
   // Up a vertical cliff facing east the texture still changes every metre of height; a
   // projection from above alone would paint the whole cliff one colour.

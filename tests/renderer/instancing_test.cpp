@@ -158,7 +158,7 @@ TEST(Instancing, BarkTextureWrapsAroundTheStem) {
   p.bark_albedo = {0.5f, 0.5f, 0.5f};
   std::vector<float> texels(3 * 8, 0.0f);
   std::fill(texels.begin(), texels.begin() + 3 * 4, 1.0f);  // u in [0, 0.5) white
-  p.bark_texture = std::make_shared<const BarkTexture>(8, 1, texels);
+  p.bark_texture = std::make_shared<const BarkTexture>(TextureImage(8, 1, texels));
   s.prototypes = {p};
   s.instances = {{0, {20.0, 0.0, 0.0}, 0.0, 1.0}};
   const View view{"v", {0.0, 0.0, 2.0}, {20.0, 0.0, 2.0}, 20.0, 48, 32};

@@ -11,8 +11,10 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "renderer/object_texture.h"
 #include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
+#include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -199,6 +201,36 @@ TEST(SceneObjects, MaterialsComeFromTheFileAndOverridesReplaceThemByName) {
   EXPECT_NEAR(over.base_colour.y, 0.2f, 1e-6f);
   EXPECT_NEAR(over.roughness, 0.9f, 1e-6f);
   EXPECT_NEAR(over.metallic, 0.5f, 1e-6f);
+}
+
+TEST(SceneObjects, AnMtlTextureIsReadBesideTheMeshAndSampledWithVUp) {
+  TempDir dir;
+  // A 2 x 2 grey texture: top row black, white; bottom row white, black.
+  landsim::testing::write_raster((dir / "tex.png").string(), "PNG", GDT_Byte, 2, 2,
+                                 {0, 255, 255, 0});
+  dir.write("quad.mtl", "newmtl sign\nKd 1 1 1\nmap_Kd tex.png\n");
+  dir.write("quad.obj",
+            "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+            "vt 0 1\nusemtl sign\nf 1/1 2/2 3/3 4/4\n");
+  const renderer::Scene scene =
+      build(dir, scenario(slope_asc(dir), object("sign", (dir / "quad.obj").string(), 1090, 2100)));
+  const renderer::ObjectMaterial& m =
+      scene.objects[0].materials.at(scene.object_prototypes[0].triangle_material.at(0));
+  ASSERT_TRUE(m.texture);
+  // v = 0.75 is the image's top row (v counts up from the bottom).
+  EXPECT_NEAR(m.texture->colour(0.25f, 0.75f).x, 0.0f, 1e-6f);
+  EXPECT_NEAR(m.texture->colour(0.75f, 0.75f).x, 1.0f, 1e-6f);
+  EXPECT_NEAR(m.texture->colour(0.25f, 0.25f).x, 1.0f, 1e-6f);
+  ASSERT_EQ(scene.object_prototypes[0].uvs.size(), 2 * scene.object_prototypes[0].vertices.size());
+  // A texture that cannot be read is refused at the object's file.
+  dir.write("quad.mtl", "newmtl sign\nKd 1 1 1\nmap_Kd missing.png\n");
+  try {
+    build(dir, scenario(slope_asc(dir), object("sign", (dir / "quad.obj").string(), 1090, 2100)));
+    FAIL() << "a missing texture was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("[objects[0]] file"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SceneObjects, TheGltfAndTheObjOfOneMeshGiveTheSameTrianglesAndMaterials) {
