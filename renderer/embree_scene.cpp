@@ -113,6 +113,14 @@ Vec3f interpolated_normal(RTCGeometry geom, const RTCHit& hit, double rotation,
   return len > 0.0f ? shading / len : fallback;
 }
 
+// A triangle hit's texture coordinates (attribute 1) into `out`.
+void texture_coordinates(RTCGeometry geom, const RTCHit& hit, Hit& out) {
+  float uv[2];
+  rtcInterpolate0(geom, hit.primID, hit.u, hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1, uv, 2);
+  out.u = uv[0];
+  out.v = uv[1];
+}
+
 }  // namespace
 
 // What a top-level geometry is: a tree instance at one level, a grass patch, a scene object
@@ -354,13 +362,7 @@ struct EmbreeScene::Impl {
     const Vec3f shading{n[0], n[1], n[2]};
     hit.shading_normal =
         length(shading) > 0.0f ? object_to_scene(o, shading) : hit.geometric_normal;
-    if (!source->object_prototypes[o.prototype].uvs.empty()) {
-      float uv[2];
-      rtcInterpolate0(mesh, rh.hit.primID, rh.hit.u, rh.hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1,
-                      uv, 2);
-      hit.u = uv[0];
-      hit.v = uv[1];
-    }
+    if (!source->object_prototypes[o.prototype].uvs.empty()) texture_coordinates(mesh, rh.hit, hit);
     return hit;
   }
 
@@ -499,13 +501,8 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
   }
   RTCGeometry owner = rtcGetGeometry(level.scene, rh.hit.geomID);
   hit.shading_normal = interpolated_normal(owner, rh.hit, inst.rotation, hit.geometric_normal);
-  if (hit.object == ObjectClass::bark && impl_->source->prototypes[inst.prototype].bark_texture) {
-    float uv[2];
-    rtcInterpolate0(owner, rh.hit.primID, rh.hit.u, rh.hit.v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 1,
-                    uv, 2);
-    hit.u = uv[0];
-    hit.v = uv[1];
-  }
+  if (hit.object == ObjectClass::bark && impl_->source->prototypes[inst.prototype].bark_texture)
+    texture_coordinates(owner, rh.hit, hit);
   return hit;
 }
 

@@ -62,6 +62,20 @@ std::string object_entry(const std::string& name, const std::string& file, doubl
          std::to_string(x) + ", " + std::to_string(y) + "]\n";
 }
 
+// `landsim render` of a bad scenario: exit code 2, the scenario's file:line and the key in
+// the message, nothing written.
+Result render_refused(const BadScenario& c) {
+  TempDir dir;
+  const auto file = dir.write("bad.toml", c.text);
+  const auto out = dir / "out";
+  const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
+  EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": " << r.err;
+  EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << c.name << ": " << r.err;
+  EXPECT_FALSE(has_files(out)) << c.name;
+  return r;
+}
+
 TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
   const std::vector<BadScenario> cases = {
       {"unknown key", scenario("shade = 1", "", "spp = 2"), "unknown key 'shade'"},
@@ -92,22 +106,18 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
        "a rule must change something"},
       {"variation out of range", scenario("", "", "spp = 2") + "[ground]\nvariation = 1.5\n",
        "[ground] variation: expected from 0 to 1"},
+      {"an object's file that is no mesh",
+       scenario("", "", "spp = 2") + object_entry("a", "make_vehicles.py", 300.0, 400.0),
+       "[objects[0]] file: cannot read mesh"},
       {"two objects of one name",
        scenario("", "", "spp = 2") + object_entry("a", "car.obj", 300.0, 400.0) +
            object_entry("a", "truck.obj", 320.0, 400.0),
        "[objects[1]] name: the name 'a' is used by another object"},
   };
   for (const BadScenario& c : cases) {
-    TempDir dir;
-    const auto file = dir.write("bad.toml", c.text);
-    const auto out = dir / "out";
-    const Result r = run("render " + file.string() + " --out " + out.string(), dir);
-    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
-    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": " << r.err;
-    EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << c.name << ": " << r.err;
+    const Result r = render_refused(c);
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1)
         << c.name << ": one message: " << r.err;
-    EXPECT_FALSE(has_files(out)) << c.name;
     EXPECT_TRUE(r.out.empty()) << c.name;
   }
 }
@@ -419,31 +429,21 @@ TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
   EXPECT_NE(r.err.find("100%"), std::string::npos) << "progress goes to stderr";
 }
 
-// Objects are read and placed when the scene is built, after the memory estimate's report:
-// their errors are the one error message of the run.
+// Objects are placed when the scene is built, after the memory estimate's report: their
+// errors are the one error message of the run.
 TEST(Cli, BadObjectsExitTwoAtTheirEntryAndWriteNothing) {
   const std::vector<BadScenario> cases = {
-      {"an object's file that is no mesh",
-       scenario("", "", "spp = 2") + object_entry("a", "make_vehicles.py", 300.0, 400.0),
-       "[objects[0]] file: cannot read mesh"},
       {"an object off the terrain",
        scenario("", "", "spp = 2") + object_entry("a", "car.obj", -5000.0, 400.0),
        "[objects[0]] position: the object at (-5000, 400) stands partly outside the terrain"},
   };
   for (const BadScenario& c : cases) {
-    TempDir dir;
-    const auto file = dir.write("bad.toml", c.text);
-    const auto out = dir / "out";
-    const Result r = run("render " + file.string() + " --out " + out.string(), dir);
-    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
-    EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << c.name << ": " << r.err;
-    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": " << r.err;
+    const Result r = render_refused(c);
     std::size_t errors = 0;
     for (std::size_t at = r.err.find("error:"); at != std::string::npos;
          at = r.err.find("error:", at + 1))
       ++errors;
     EXPECT_EQ(errors, 1u) << c.name << ": " << r.err;
-    EXPECT_FALSE(has_files(out)) << c.name;
   }
 }
 
