@@ -23,6 +23,10 @@ struct StemSkeleton {
   std::vector<CrossSection> sections;
   int lobes = 0;  // sinusoidal cross-section variation (trunk only)
   double lobe_depth = 0.0;
+  // The stem it grows from (its base lies on that stem), an index into TreeSkeleton::stems
+  // earlier than its own; -1 for a trunk. Wind sway carries a stem with its parent
+  // (trees/sway.h).
+  int parent = -1;
 };
 
 struct LeafSkeleton {
@@ -34,6 +38,8 @@ struct LeafSkeleton {
   // The vigour of the shoot the leaf grew on, 0-1 (the self-organising core; 1 elsewhere):
   // the leaf's colour runs from the species' weak-leaf colour at 0 to its leaf colour at 1.
   float vigour = 1.0f;
+  // The stem it grows on (an index into TreeSkeleton::stems); -1: none (wind leaves it put).
+  int stem = -1;
 };
 
 struct TreeSkeleton {

@@ -1,5 +1,7 @@
 #include "trees/species.h"
 
+#include "trees/sway.h"
+
 #include <toml++/toml.h>
 #include <pugixml.hpp>
 
@@ -183,43 +185,37 @@ void count_stems(const TreeSkeleton& skeleton, std::size_t levels, TreeStats& st
   stats.leaves = static_cast<int>(skeleton.leaves.size());
 }
 
-// A skeleton of a core without wind sway (wind is a Weber & Penn section 4 model; the
-// graph-paths and self-organising trees stand still), meshed.
-Tree still_tree(TreeSkeleton skeleton, const Species& species) {
-  skeleton.colours = species.colours;
-  Tree tree;
-  count_stems(skeleton, 4, tree.stats);
-  tree.geometry = mesh_tree(skeleton, MeshResolution{});
-  measure(tree);
-  return tree;
-}
-
 }  // namespace
 
-Tree generate(const Species& species, const TreeOptions& options) {
+TreeSkeleton core_skeleton(const Species& species, const TreeOptions& options) {
   if (const auto* p = std::get_if<graph_paths::Parameters>(&species.parameters))
-    return still_tree(graph_paths::generate_skeleton(*p, options.seed), species);
+    return graph_paths::generate_skeleton(*p, options.seed);
   if (const auto* p = std::get_if<measured_growth::Parameters>(&species.parameters))
-    return still_tree(measured_growth::generate_skeleton(*p, options.seed, options.age), species);
+    return measured_growth::generate_skeleton(*p, options.seed, options.age);
   if (const auto* p = std::get_if<harmonic::Parameters>(&species.parameters)) {
     // Level of detail for this core: fewer cross-sections per chain at lower quality.
     const int stride = std::max(1, static_cast<int>(std::lround(1.0 / options.quality)));
-    return still_tree(
-        harmonic::generate_skeleton(*p, options.seed, {.max_level = 5, .stride = stride}), species);
+    return harmonic::generate_skeleton(*p, options.seed, {.max_level = 5, .stride = stride});
   }
   if (const auto* p = std::get_if<self_organizing::Parameters>(&species.parameters))
-    return still_tree(self_organizing::generate_skeleton(*p, options.seed), species);
-  const auto& params = std::get<weber_penn::Parameters>(species.parameters);
+    return self_organizing::generate_skeleton(*p, options.seed);
   weber_penn::GenerateOptions o;
   o.seed = options.seed;
-  o.wind = {options.time, options.wind_speed, options.wind_gust};
   o.quality = options.quality;
-  TreeSkeleton skeleton = weber_penn::generate_skeleton(params, o);
-  skeleton.colours = species.colours;
+  return weber_penn::generate_skeleton(std::get<weber_penn::Parameters>(species.parameters), o);
+}
 
+Tree generate(const Species& species, const TreeOptions& options) {
+  TreeSkeleton skeleton = core_skeleton(species, options);
+  // Wind sway (Weber & Penn section 4.7), the same for every core (trees/sway.h); the phases
+  // from the tree's seed.
+  apply_sway(skeleton, {options.time, options.wind_speed, options.wind_gust, options.seed});
+  skeleton.colours = species.colours;
+  const auto* wp = std::get_if<weber_penn::Parameters>(&species.parameters);
   Tree tree;
-  count_stems(skeleton, static_cast<std::size_t>(params.levels), tree.stats);
-  tree.geometry = mesh_tree(skeleton, weber_penn::mesh_resolution(params));
+  count_stems(skeleton, wp != nullptr ? static_cast<std::size_t>(wp->levels) : 4, tree.stats);
+  tree.geometry =
+      mesh_tree(skeleton, wp != nullptr ? weber_penn::mesh_resolution(*wp) : MeshResolution{});
   measure(tree);
   return tree;
 }

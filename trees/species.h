@@ -13,6 +13,7 @@
 #include "trees/harmonic/parameters.h"
 #include "trees/measured_growth/parameters.h"
 #include "trees/self_organizing/parameters.h"
+#include "trees/skeleton.h"
 #include "trees/weber_penn/parameters.h"
 
 namespace landsim::params {
@@ -70,6 +71,10 @@ struct Tree {
   TreeGeometry geometry;
   TreeStats stats;
 };
+
+// The core's skeleton for `options` (seed, quality, age), calm: what `generate` sways and
+// meshes.
+TreeSkeleton core_skeleton(const Species& species, const TreeOptions& options);
 
 Tree generate(const Species& species, const TreeOptions& options);
 

@@ -40,12 +40,13 @@ class Builder {
   TreeSkeleton build() {
     TreeSkeleton s;
     if (t_.size() == 0 || children_[0].empty()) return s;  // no path: no tree
-    // Stems to start: (first structure node, level); the root's stem is the trunk.
-    std::vector<std::pair<std::uint32_t, int>> pending{{0u, 0}};
+    // Stems to start: their first structure node, level and parent stem; the root's stem is
+    // the trunk.
+    std::vector<Pending> pending{{0u, 0, -1}};
     while (!pending.empty()) {
-      const auto [first, level] = pending.back();
+      const Pending next = pending.back();
       pending.pop_back();
-      s.stems.push_back(stem_from(first, level, pending, s.leaves));
+      s.stems.push_back(stem_from(next, static_cast<int>(s.stems.size()), pending, s.leaves));
     }
     return s;
   }
@@ -53,17 +54,27 @@ class Builder {
  private:
   Vec3 at(std::uint32_t i) const { return t_.position[i]; }
 
-  StemSkeleton stem_from(std::uint32_t first, int level,
-                         std::vector<std::pair<std::uint32_t, int>>& pending,
+  struct Pending {
+    std::uint32_t first = 0;  // structure node
+    int level = 0;
+    int parent = -1;  // stem index
+  };
+
+  // The stem from `next.first` along the farthest-reaching children; `index` is the stem's
+  // own (its branches' parent, its leaves' stem).
+  StemSkeleton stem_from(const Pending& next, int index, std::vector<Pending>& pending,
                          std::vector<LeafSkeleton>& leaves) const {
+    const std::uint32_t first = next.first;
+    const int level = next.level;
     StemSkeleton stem;
     stem.level = level;
+    stem.parent = next.parent;
     std::vector<std::uint32_t> chain;
     if (first != 0) chain.push_back(t_.parent[first]);  // start at the joint on the parent
     for (std::uint32_t v = first;; v = children_[v][0]) {
       chain.push_back(v);
       for (std::size_t k = 1; k < children_[v].size(); ++k)
-        pending.push_back({children_[v][k], std::min(level + 1, 3)});
+        pending.push_back({children_[v][k], std::min(level + 1, 3), index});
       if (children_[v].empty()) break;
     }
     Vec3 x{1, 0, 0};
@@ -76,12 +87,12 @@ class Builder {
       const double r = radius_[chain[k == 0 && first != 0 ? 1 : k]];
       stem.sections.push_back({at(chain[k]), axis, x, r});
     }
-    if (t_.endpoint[chain.back()]) add_leaves(stem.sections.back(), leaves);
+    if (t_.endpoint[chain.back()]) add_leaves(stem.sections.back(), index, leaves);
     return stem;
   }
 
   // A small fan of leaves at an endpoint, turned about the twig's axis.
-  void add_leaves(const CrossSection& tip, std::vector<LeafSkeleton>& leaves) const {
+  void add_leaves(const CrossSection& tip, int stem, std::vector<LeafSkeleton>& leaves) const {
     const Vec3 y = cross(tip.axis, tip.x_axis);
     for (int k = 0; k < o_.leaves_per_endpoint; ++k) {
       const double a = 2.0 * std::numbers::pi * k / std::max(1, o_.leaves_per_endpoint);
@@ -94,6 +105,7 @@ class Builder {
       if (leaf.normal.z < 0) leaf.normal = -leaf.normal;
       leaf.length = o_.leaf_length;
       leaf.width = o_.leaf_width;
+      leaf.stem = stem;
       leaves.push_back(leaf);
     }
   }

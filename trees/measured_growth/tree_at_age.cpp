@@ -100,10 +100,15 @@ TreeSkeleton tree_skeleton(const Parameters& p, const TreeAtAge& tree, std::uint
     leader.sections.push_back({{0, 0, z}, {0, 0, 1}, {1, 0, 0}, leader_radius(tree, z)});
   }
   s.stems.push_back(leader);
-  // Branches, and the total length of the thin ones that carry leaves.
+  // Branches, and the total length of the thin ones that carry leaves. Their parents are
+  // found by the sway's attachment search (trees/sway.h): a module's branch grows from the
+  // leader or from another branch, which the allometry does not record.
   double thin = 0.0;
-  for (const Branch& b : tree.branches) {
+  std::vector<int> stem_of(tree.branches.size(), -1);
+  for (std::size_t i = 0; i < tree.branches.size(); ++i) {
+    const Branch& b = tree.branches[i];
     if (!b.present) continue;
+    stem_of[i] = static_cast<int>(s.stems.size());
     StemSkeleton stem;
     const Vec3 axis = normalize(b.tip - b.base);
     const Vec3 x = any_perpendicular(axis);
@@ -122,7 +127,8 @@ TreeSkeleton tree_skeleton(const Parameters& p, const TreeAtAge& tree, std::uint
   // Positions along the thin branches laid end to end: one leaf every `spacing`.
   double next = 0.5 * spacing, offset = 0.0;
   std::uint64_t n = 0;
-  for (const Branch& b : tree.branches) {
+  for (std::size_t i = 0; i < tree.branches.size(); ++i) {
+    const Branch& b = tree.branches[i];
     if (!b.present || 2.0 * b.base_radius >= p.leaf_threshold) continue;
     const Vec3 axis = normalize(b.tip - b.base);
     const Vec3 x = any_perpendicular(axis), y = cross(axis, x);
@@ -139,6 +145,7 @@ TreeSkeleton tree_skeleton(const Parameters& p, const TreeAtAge& tree, std::uint
       leaf.normal = normal.z < 0 ? normal * -1.0 : normal;
       leaf.length = side;
       leaf.width = side;
+      leaf.stem = stem_of[i];
       s.leaves.push_back(leaf);
     }
     offset += b.length;

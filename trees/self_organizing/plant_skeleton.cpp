@@ -6,13 +6,18 @@
 namespace landsim::trees::self_organizing {
 namespace {
 
-StemSkeleton axis_stem(const Plant& plant, std::uint32_t first) {
+// The axis from internode `first` along its main successors, stem `index`; records each of
+// its internodes' stem in `stem_of`. Its parent is the stem of the internode it branches from.
+StemSkeleton axis_stem(const Plant& plant, std::uint32_t first, int index,
+                       std::vector<int>& stem_of) {
   StemSkeleton stem;
   stem.level = std::min(plant[first].order, 3);
+  if (plant[first].parent != kNone) stem.parent = stem_of[plant[first].parent];
   std::uint32_t last = first;
   for (std::uint32_t i = first; i != kNone && plant[i].alive; i = plant[i].main) {
     const Internode& n = plant[i];
     stem.sections.push_back({n.base, n.direction, n.frame, 0.5 * n.width});
+    stem_of[i] = index;
     last = i;
   }
   const Internode& end = plant[last];
@@ -63,14 +68,18 @@ std::vector<int> axis_last_growth(const Plant& plant) {
 TreeSkeleton plant_skeleton(const Plant& plant, const LeafParameters& leaves) {
   TreeSkeleton skeleton;
   const std::vector<int> last = axis_last_growth(plant);
-  std::vector<double> vigour;  // of each leaf's shoot
+  std::vector<double> vigour;                  // of each leaf's shoot
+  std::vector<int> stem_of(plant.size(), -1);  // each internode's stem
   for (std::uint32_t i = 0; i < plant.size(); ++i) {
     const Internode& n = plant[i];
     if (!n.alive) continue;
     // Axes in the order of their first internode: every parent axis before its branches.
-    if (i == 0 || plant.starts_branch(i)) skeleton.stems.push_back(axis_stem(plant, i));
+    if (i == 0 || plant.starts_branch(i))
+      skeleton.stems.push_back(
+          axis_stem(plant, i, static_cast<int>(skeleton.stems.size()), stem_of));
     if (!n.stub && last[i] - n.birth < leaves.age) {
       skeleton.leaves.push_back(leaf_at(n, leaves));
+      skeleton.leaves.back().stem = stem_of[i];
       vigour.push_back(n.shoot_vigour);
     }
   }

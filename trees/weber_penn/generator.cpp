@@ -22,7 +22,6 @@ constexpr double kMinStemLength = 0.0005;
 constexpr double kMinStemRadius = kMinStemLength / 10.0;
 constexpr std::uint64_t kLeafStream = 100;
 constexpr std::uint64_t kTreeStream = 101;
-constexpr std::uint64_t kSwayStream = 102;
 constexpr int kNoSink = -1;  // probing for pruning: nothing is emitted
 
 // Random streams and error-diffusion values are kept per actual level (up to Levels = 6),
@@ -50,7 +49,7 @@ struct Stem {
   double leaves_per_segment = 0.0;
   double substem_rotate = 0.0;
   double split_correction = 0.0;
-  double phase_x = 0.0, phase_y = 0.0;  // wind sway
+  int sink = -1;  // its skeleton stem (TreeSkeleton::stems), once emitted
 
   double radius_at(double z) const { return stem_radius(z, length, base_radius, taper, flare); }
   double offset_ratio() const { return parent != nullptr ? offset / parent->length : 0.0; }
@@ -58,13 +57,7 @@ struct Stem {
 
 class Builder {
  public:
-  // Pruned stem lengths by stem serial: recorded on a calm pass and replayed under wind, so
-  // that pruning (which tests positions) never sees the sway and the structure is the same.
-  using PrunedLengths = std::vector<double>;
-
-  Builder(const Parameters& p, const GenerateOptions& o, PrunedLengths* record,
-          const PrunedLengths* replay)
-      : p_(p), o_(o), record_(record), replay_(replay) {
+  Builder(const Parameters& p, const GenerateOptions& o) : p_(p), o_(o) {
     for (std::size_t i = 0; i < level_rng_.size(); ++i) level_rng_[i] = Random(o.seed, i);
     leaf_rng_ = Random(o.seed, kLeafStream);
     tree_rng_ = Random(o.seed, kTreeStream);
@@ -107,22 +100,11 @@ class Builder {
     stem.taper = lp.taper;
     stem.flare = stem.level == 0 ? p_.flare : 0.0;
     set_length(stem, stem_length(stem));
-    assign_sway_phases(stem);
-    if (stem.level > 0 && p_.prune_ratio > 0.0) {
-      if (replay_ != nullptr) {
-        set_length(stem, replay_->at(static_cast<std::size_t>(serial_ - 1)));
-      } else {
-        prune(stem, base);
-      }
-      if (record_ != nullptr) {
-        record_->resize(static_cast<std::size_t>(serial_), 0.0);
-        (*record_)[static_cast<std::size_t>(serial_ - 1)] = stem.length;
-      }
-    }
+    if (stem.level > 0 && p_.prune_ratio > 0.0) prune(stem, base);
     if (stem.length <= kMinStemLength || stem.base_radius <= kMinStemRadius) return;
     prepare_children(stem);
-    const int sink = new_skeleton(stem.level, false);
-    make_segments(stem, base, 0, stem.segments, sink);
+    stem.sink = new_skeleton(stem.level, false, stem.parent != nullptr ? stem.parent->sink : -1);
+    make_segments(stem, base, 0, stem.segments, stem.sink);
   }
 
   void set_length(Stem& stem, double length) {
@@ -152,13 +134,6 @@ class Builder {
     return std::min(r, parent.radius_at(stem.offset));  // never thicker than where it grows
   }
 
-  void assign_sway_phases(Stem& stem) {
-    // From a counter of its own, so that wind never changes the structure's random streams.
-    const CounterRng r(o_.seed, kSwayStream, serial_++);
-    stem.phase_x = 2.0 * std::numbers::pi * r.uniform(0);
-    stem.phase_y = 2.0 * std::numbers::pi * r.uniform(1);
-  }
-
   void prepare_children(Stem& stem) {
     if (stem.level < p_.levels - 1) {
       const LevelParameters& next = p_.at(stem.level + 1);
@@ -180,7 +155,7 @@ class Builder {
     }
   }
 
-  int new_skeleton(int level, bool clone) {
+  int new_skeleton(int level, bool clone, int parent) {
     if (static_cast<double>(++stems_made_) > 4 * kMaxStems) {
       throw InputError("tree generation exceeded " +
                        std::to_string(static_cast<long>(4 * kMaxStems)) + " stems");
@@ -188,6 +163,7 @@ class Builder {
     StemSkeleton s;
     s.level = level;
     s.clone = clone;
+    s.parent = parent;
     if (level == 0) {
       s.lobes = p_.lobes;
       s.lobe_depth = p_.lobe_depth;
@@ -200,7 +176,7 @@ class Builder {
   // end left the pruning envelope.
   int make_segments(Stem& stem, Frame frame, int start, int end, int sink) {
     for (int s = start; s < end; ++s) {
-      frame = new_direction(stem, frame, s, sink != kNoSink);
+      frame = new_direction(stem, frame, s);
       if (sink != kNoSink) {
         emit_sections(stem, frame, s, sink);
         if (stem.level < p_.levels - 1) make_substems(stem, frame, s);
@@ -216,7 +192,7 @@ class Builder {
     return -1;
   }
 
-  Frame new_direction(const Stem& stem, Frame frame, int s, bool emitting) {
+  Frame new_direction(const Stem& stem, Frame frame, int s) {
     const LevelParameters& lp = p_.at(stem.level);
     // Segment 0 keeps the direction the parent gave it (the down and rotate angles).
     if (s > 0) {
@@ -232,12 +208,6 @@ class Builder {
         frame = frame.about_local_axis(rho, angle);
       }
       if (p_.attraction_up != 0.0 && stem.level >= 2) frame = attract(frame, lp.curve_res);
-    }
-    if (emitting && o_.wind.active()) {
-      const SwayAngles a =
-          sway(o_.wind, stem.length, stem.offset_ratio(), stem.radius_at(s * stem.segment_length),
-               stem.base_radius, lp.curve_res, stem.phase_x, stem.phase_y);
-      frame = frame.rot_x(a.x).rot_y(a.y);
     }
     return frame;
   }
@@ -275,9 +245,10 @@ class Builder {
     for (int i = 0; i < count; ++i) {
       Stem clone = stem;
       clone.substem_rotate = stem.substem_rotate + 180.0;
-      if (sink != kNoSink) assign_sway_phases(clone);
       const Frame clone_frame = split(clone, frame, spread_step * (i + 1), s, count);
-      const int clone_sink = sink != kNoSink ? new_skeleton(stem.level, true) : kNoSink;
+      // A clone grows from the end of its original's segment s.
+      const int clone_sink = sink != kNoSink ? new_skeleton(stem.level, true, sink) : kNoSink;
+      clone.sink = clone_sink;
       const int outside = make_segments(clone, clone_frame, s + 1, clone.segments, clone_sink);
       if (outside >= 0) return outside;
     }
@@ -413,7 +384,8 @@ class Builder {
       for (int k = 0; k < count; ++k) {
         const double where =
             std::clamp(start + dist / 2.0 + k * dist + leaf_rng_.var(dist / 2.0), 0.0, 1.0);
-        add_leaf(child_frame(stem, segment, (s + where) * stem.segment_length, where, leaf_rng_));
+        add_leaf(child_frame(stem, segment, (s + where) * stem.segment_length, where, leaf_rng_),
+                 stem.sink);
       }
     } else if (s == stem.segments - 1) {
       make_leaf_fan(stem, segment);
@@ -430,19 +402,19 @@ class Builder {
     const double step_v = next.rotate_v / count;
     double first = step / 2.0;
     if (count % 2 == 1) {
-      add_leaf(tip);
+      add_leaf(tip, stem.sink);
       first = step;
     }
     for (int k = 0; k < count / 2; ++k) {
       for (int side : {1, -1}) {
         const Frame f = tip.rot_y(side * (first + k * step + leaf_rng_.var(step_v)))
                             .rot_x(next.down_angle + leaf_rng_.var(next.down_angle_v));
-        add_leaf(f);
+        add_leaf(f, stem.sink);
       }
     }
   }
 
-  void add_leaf(const Frame& frame) {
+  void add_leaf(const Frame& frame, int stem) {
     if (static_cast<double>(out_.leaves.size()) >= 2 * kMaxLeaves) {
       throw InputError("tree generation exceeded " +
                        std::to_string(static_cast<long>(2 * kMaxLeaves)) + " leaves");
@@ -454,6 +426,7 @@ class Builder {
     leaf.direction = f.z;
     leaf.normal = f.y;
     leaf.base = f.position + f.z * (p_.leaf_stem_len * leaf.length);
+    leaf.stem = stem;
     out_.leaves.push_back(leaf);
   }
 
@@ -502,8 +475,6 @@ class Builder {
 
   const Parameters& p_;
   GenerateOptions o_;
-  PrunedLengths* record_;
-  const PrunedLengths* replay_;
   std::array<Random, kMaxLevels> level_rng_;
   Random leaf_rng_, tree_rng_;
   Envelope envelope_;
@@ -514,7 +485,6 @@ class Builder {
   std::array<ErrorDiffusion, kMaxLevels> split_error_{};
   std::array<ErrorDiffusion, kMaxLevels> substem_error_{};
   ErrorDiffusion leaf_error_;
-  std::uint64_t serial_ = 0;
   std::size_t stems_made_ = 0;
   TreeSkeleton out_;
 };
@@ -522,13 +492,7 @@ class Builder {
 }  // namespace
 
 TreeSkeleton generate_skeleton(const Parameters& params, const GenerateOptions& options) {
-  if (!options.wind.active() || params.prune_ratio <= 0.0)
-    return Builder(params, options, nullptr, nullptr).build();
-  GenerateOptions calm = options;
-  calm.wind = {};
-  Builder::PrunedLengths lengths;
-  Builder(params, calm, &lengths, nullptr).build();
-  return Builder(params, options, nullptr, &lengths).build();
+  return Builder(params, options).build();
 }
 
 MeshResolution mesh_resolution(const Parameters& p) {

@@ -210,39 +210,6 @@ TEST(Generator, SameSeedSameTreeOtherSeedOtherTree) {
   EXPECT_NE(a.stems[1].sections.back().position, c.stems[1].sections.back().position);
 }
 
-TEST(Generator, NoWindEqualsZeroWindAtTimeZero) {
-  Parameters p;
-  p.leaves = 10;
-  GenerateOptions calm = seeded(4);
-  GenerateOptions zero = seeded(4);
-  zero.wind = {0.0, 0.0, 0.0};
-  const TreeSkeleton a = generate_skeleton(p, calm);
-  const TreeSkeleton b = generate_skeleton(p, zero);
-  ASSERT_EQ(a.leaves.size(), b.leaves.size());
-  for (std::size_t i = 0; i < a.leaves.size(); ++i) ASSERT_EQ(a.leaves[i].base, b.leaves[i].base);
-}
-
-TEST(Generator, WindMovesTheTreeButKeepsItsStructure) {
-  Parameters p;
-  p.leaves = 10;
-  p.prune_ratio = 0.5;  // pruning decisions must not depend on the wind either
-  GenerateOptions windy = seeded(4);
-  windy.wind = {3.0, 8.0, 4.0};
-  const TreeSkeleton a = generate_skeleton(p, seeded(4));
-  const TreeSkeleton b = generate_skeleton(p, windy);
-  ASSERT_EQ(a.stems.size(), b.stems.size());
-  ASSERT_EQ(a.leaves.size(), b.leaves.size());
-  double moved = 0.0;
-  for (std::size_t i = 0; i < a.leaves.size(); ++i)
-    moved = std::max(moved, length(a.leaves[i].base - b.leaves[i].base));
-  EXPECT_GT(moved, 0.01);
-  // Another moment of the same wind: the same tree in another pose.
-  windy.wind.time = 4.0;
-  const TreeSkeleton c = generate_skeleton(p, windy);
-  ASSERT_EQ(c.leaves.size(), b.leaves.size());
-  EXPECT_NE(c.leaves[0].base, b.leaves[0].base);
-}
-
 double declination_of_last_segments(const TreeSkeleton& t, int level) {
   double sum = 0.0;
   int n = 0;
