@@ -201,8 +201,8 @@ SceneObjSummary write_scene_obj(const renderer::Scene& scene, const std::filesys
         const double c = std::cos(inst.rotation) * inst.scale,
                      s = std::sin(inst.rotation) * inst.scale;
         const auto place = [&](const Vec3f& v) {
-          return Vec3{c * v.x - s * v.y, s * v.x + c * v.y, inst.scale * v.z} + inst.position +
-                 shift;
+          return inst.apply_lean(Vec3{c * v.x - s * v.y, s * v.x + c * v.y, inst.scale * v.z}) +
+                 inst.position + shift;
         };
         for (const trees::GroupGeometry& g : scene.prototypes[inst.prototype].geometry.groups)
           mesh("tree", g.triangles.vertices, g.triangles.indices, place);
@@ -229,15 +229,18 @@ SceneObjSummary write_scene_obj(const renderer::Scene& scene, const std::filesys
     {
       std::ofstream csv(list.temp_path(), std::ios::binary);
       csv << "# Tree instances of " << path.filename().string()
-          << ": OBJ group prototype_<prototype>, rotated about z by rotation_deg, scaled, its "
-             "trunk base moved to x, y, z ("
+          << ": OBJ group prototype_<prototype>, rotated about z by rotation_deg, scaled, "
+             "leaned in the wind (a turn about the horizontal axis (lean_x, lean_y) by its "
+             "length in degrees), its trunk base moved to x, y, z ("
           << (options.terrain_frame ? "terrain" : "scene") << " frame, metres)\n"
-          << "prototype,x,y,z,rotation_deg,scale\n";
+          << "prototype,x,y,z,rotation_deg,scale,lean_x_deg,lean_y_deg\n";
       for (std::size_t i : chosen) {
         const renderer::TreeInstance& inst = scene.instances[i];
         const Vec3 at = inst.position + shift;
-        csv << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f},{:.6f}\n", inst.prototype, at.x, at.y,
-                           at.z, inst.rotation * 180.0 / 3.14159265358979323846, inst.scale);
+        constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+        csv << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f},{:.6f},{:.4f},{:.4f}\n", inst.prototype,
+                           at.x, at.y, at.z, inst.rotation * kDegrees, inst.scale,
+                           inst.lean.x * kDegrees, inst.lean.y * kDegrees);
       }
       if (!csv) throw std::runtime_error("cannot write " + summary.instances_file.string());
     }

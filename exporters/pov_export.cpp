@@ -90,15 +90,6 @@ renderer::GrassBlades grass_patch(const renderer::Scene& scene, int type, int va
                                     renderer::grass_patch_seed(type, variant));
 }
 
-// POV-Ray's matrix of a tree instance: rotation about landsim's z (POV's y), uniform scale,
-// translation; rows are where the x, y and z axes go, then the translation.
-std::string instance_matrix(const renderer::TreeInstance& t) {
-  const double c = std::cos(t.rotation) * t.scale, s = std::sin(t.rotation) * t.scale, k = t.scale;
-  return fmt::format(
-      "matrix <{:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, {:.6f}, {:.6f}, {:.6f}>", c, s,
-      k, -s, c, t.position.x, t.position.z, t.position.y);
-}
-
 // POV-Ray's matrix for a landsim transform with axis columns x, y, z and translation t:
 // rows are where POV-Ray's axes go, POV-Ray's y being landsim's z.
 std::string pov_matrix(const std::array<float, 12>& m) {
@@ -107,6 +98,23 @@ std::string pov_matrix(const std::array<float, 12>& m) {
     return fmt::format("{:.9g}, {:.9g}, {:.9g}", v.x, v.z, v.y);
   };
   return fmt::format("matrix <{}, {}, {}, {}>", row(x), row(z), row(y), row(t));
+}
+
+// POV-Ray's matrix of a tree instance: rotation about landsim's z (POV's y), uniform scale,
+// translation; rows are where the x, y and z axes go, then the translation.
+std::string instance_matrix(const renderer::TreeInstance& t) {
+  const double c = std::cos(t.rotation) * t.scale, s = std::sin(t.rotation) * t.scale, k = t.scale;
+  if (t.leans()) {  // a leaning tree: the general matrix (landsim's axes as columns)
+    const auto f = [](const Vec3& v) { return Vec3f(v); };
+    const Vec3f x = f(t.apply_lean({c, s, 0.0})), y = f(t.apply_lean({-s, c, 0.0})),
+                z = f(t.apply_lean({0.0, 0.0, k}));
+    return pov_matrix({x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z,
+                       static_cast<float>(t.position.x), static_cast<float>(t.position.y),
+                       static_cast<float>(t.position.z)});
+  }
+  return fmt::format(
+      "matrix <{:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, 0, {:.9g}, {:.6f}, {:.6f}, {:.6f}>", c, s,
+      k, -s, c, t.position.x, t.position.z, t.position.y);
 }
 
 // A grass patch's blades as ribbons (two triangles per segment, as wide as the blade) in

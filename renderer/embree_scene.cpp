@@ -78,8 +78,25 @@ RTCRay to_rtc(const Ray& ray, float t_near, float t_far, std::uint32_t mask = kA
   return r;
 }
 
-// Column-major 3x4: rotation about z by `angle`, uniform `scale`, then translation.
+// Column-major 3x4: rotation about z by `angle`, uniform `scale`, the lean, then translation.
 std::array<float, 12> instance_matrix(const TreeInstance& inst) {
+  if (inst.leans()) {
+    const double c = std::cos(inst.rotation) * inst.scale, s = std::sin(inst.rotation) * inst.scale;
+    const Vec3 x = inst.apply_lean({c, s, 0.0}), y = inst.apply_lean({-s, c, 0.0}),
+               z = inst.apply_lean({0.0, 0.0, inst.scale});
+    return {static_cast<float>(x.x),
+            static_cast<float>(x.y),
+            static_cast<float>(x.z),
+            static_cast<float>(y.x),
+            static_cast<float>(y.y),
+            static_cast<float>(y.z),
+            static_cast<float>(z.x),
+            static_cast<float>(z.y),
+            static_cast<float>(z.z),
+            static_cast<float>(inst.position.x),
+            static_cast<float>(inst.position.y),
+            static_cast<float>(inst.position.z)};
+  }
   const auto c = static_cast<float>(std::cos(inst.rotation) * inst.scale);
   const auto s = static_cast<float>(std::sin(inst.rotation) * inst.scale);
   const auto k = static_cast<float>(inst.scale);
@@ -100,6 +117,11 @@ std::array<float, 12> instance_matrix(const TreeInstance& inst) {
 Vec3f rotate_z(const Vec3f& v, double angle) {
   const auto c = static_cast<float>(std::cos(angle)), s = static_cast<float>(std::sin(angle));
   return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
+}
+
+// A direction of a tree's frame, turned about z already, turned by the tree's lean.
+Vec3f leaned(const TreeInstance& inst, const Vec3f& v) {
+  return inst.leans() ? Vec3f(inst.apply_lean(Vec3(v))) : v;
 }
 
 // A triangle hit's vertex normal (attribute 0), turned by `rotation` about z; `fallback`
@@ -494,13 +516,14 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
   hit.far_primitive = info.kind != detail::PrimitiveKind::triangles;
   // Instanced hits report normals in the prototype's space: turn them into the world's
   // (the instance transform is a rotation about z and a uniform scale).
-  hit.geometric_normal = normalize(rotate_z(ng, inst.rotation));
+  hit.geometric_normal = normalize(leaned(inst, rotate_z(ng, inst.rotation)));
   if (hit.far_primitive) {
     hit.shading_normal = hit.geometric_normal;  // lines and discs: their own normal
     return hit;
   }
   RTCGeometry owner = rtcGetGeometry(level.scene, rh.hit.geomID);
-  hit.shading_normal = interpolated_normal(owner, rh.hit, inst.rotation, hit.geometric_normal);
+  hit.shading_normal =
+      leaned(inst, interpolated_normal(owner, rh.hit, inst.rotation, hit.geometric_normal));
   if (hit.object == ObjectClass::bark && impl_->source->prototypes[inst.prototype].bark_texture)
     texture_coordinates(owner, rh.hit, hit);
   return hit;

@@ -6,6 +6,7 @@
 // Frame: x east, y north, z up, metres, relative to `origin` (a point in the terrain's own
 // coordinates, kept in double precision). Directions are unit vectors.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -180,6 +181,18 @@ struct TreeInstance {
   Vec3 position;          // trunk base, scene frame
   double rotation = 0.0;  // about z, radians
   double scale = 1.0;
+  // The whole tree's lean in the wind (scenes/wind_field.h): a turn about the trunk base
+  // after the rotation, as axis x angle (radians); zero: upright.
+  Vec3 lean{};
+  bool leans() const { return lean.x != 0.0 || lean.y != 0.0 || lean.z != 0.0; }
+  // The lean as a rotation of `v` (Rodrigues).
+  Vec3 apply_lean(const Vec3& v) const {
+    const double angle = length(lean);
+    if (angle == 0.0) return v;
+    const Vec3 u = lean / angle;
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + cross(u, v) * s + u * (dot(u, v) * (1.0 - c));
+  }
 };
 
 // Scene objects (vehicles, structures; docs/OBJECTS.md): meshes read from files, each file

@@ -252,7 +252,9 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   for (std::size_t k = 0; k < s.species.size(); ++k) {
     if (!variant[k]) continue;
     const VariantSize size = variant_size(variant[k]->geometry);
-    const double used = variants_in_use(trees[k], s.species[k].variants);
+    // With wind each variant is drawn once per phase group its trees fall in.
+    const int groups = s.wind.active() ? s.wind.phase_groups : 1;
+    const double used = variants_in_use(trees[k], s.species[k].variants * groups);
     e.unique_variants += static_cast<std::size_t>(std::ceil(used - 1e-9));
     p.scene_variants += used * size.bytes;
     e.triangles_stored += used * size.triangles;

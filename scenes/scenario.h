@@ -61,6 +61,10 @@ struct RenderSection {
 struct WindSettings {
   double speed = 0.0;
   double gust = 0.0;
+  double direction_deg = 270.0;  // where the wind comes from, clockwise from north
+  double gust_scale = 30.0;      // metres: the size of the gusts that travel with the wind
+  int phase_groups = 4;          // sway phases per variant (docs/SPECIES.md "Wind")
+  bool active() const { return speed > 0.0 || gust > 0.0; }
 };
 
 // Where vegetation grows: a 16-bit vegetation map, or a land-cover class raster with a

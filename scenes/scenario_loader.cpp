@@ -270,6 +270,9 @@ WindSettings read_wind(const toml::table& t, const std::string& file) {
   WindSettings w;
   w.speed = r.number("speed", Range{0.0, kMaxWindSpeed}, 0.0);
   w.gust = r.number("gust", Range{0.0, kMaxWindSpeed}, 0.0);
+  w.direction_deg = r.number("direction", Range{0.0, 360.0}, 270.0);
+  w.gust_scale = r.number("gust_scale", Range{1.0, 100000.0}, 30.0);
+  w.phase_groups = static_cast<int>(r.integer("phase_groups", 1, 16, 4));
   r.finish();
   return w;
 }

@@ -20,6 +20,7 @@
 #include "scenes/detail/scene_objects.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
+#include "scenes/wind_field.h"
 #include "terrain/context_mesh.h"
 #include "terrain/ground_mesh.h"
 #include "terrain/terrain_field.h"
@@ -39,11 +40,16 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   const std::vector<featuremaps::PlacedTree> placed =
       featuremaps::place_trees(map, grid, placements, seed);
 
-  // Every variant in use, once, in (species, variant) order; generated in parallel.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> prototype_of;
+  // Every variant in use, once per phase group its trees fall in (one group without wind),
+  // in (species, variant, group) order; generated in parallel.
+  const auto group_of = [&](const featuremaps::PlacedTree& t) {
+    return s.wind.active() ? phase_group(s.wind, t.x, t.y, seed) : 0u;
+  };
+  using Key = std::array<std::uint32_t, 3>;  // species, variant, phase group
+  std::map<Key, std::uint32_t> prototype_of;
   for (const featuremaps::PlacedTree& t : placed)
-    prototype_of.emplace(std::pair{t.species, t.variant}, 0);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> keys;
+    prototype_of.emplace(Key{t.species, t.variant, group_of(t)}, 0);
+  std::vector<Key> keys;
   for (auto& [key, index] : prototype_of) {
     index = static_cast<std::uint32_t>(keys.size());
     keys.push_back(key);
@@ -56,24 +62,25 @@ void add_trees(const Scenario& s, const featuremaps::VegetationMap& map,
   }
   scene.prototypes.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
-    const auto [species, variant] = keys[i];
+    const auto [species, variant, group] = keys[i];
     if (reuse != nullptr) {
-      const auto found = reuse->trees.find({species, variant, time});
+      const auto found = reuse->trees.find({species, variant, time, group});
       if (found != reuse->trees.end()) {
         scene.prototypes[i] = std::move(found->second);
         return;
       }
     }
-    scene.prototypes[i] = detail::make_tree_variant(s, species, variant, time);
+    scene.prototypes[i] = detail::make_tree_variant(s, species, variant, time, group);
   });
   for (std::size_t i = 0; i < keys.size(); ++i)
-    scene.prototypes[i].bark_texture = textures[keys[i].first];
+    scene.prototypes[i].bark_texture = textures[keys[i][0]];
   scene.instances.reserve(placed.size());
   for (const featuremaps::PlacedTree& t : placed) {
     // With detail, a tree stands on the relief, not on the grid's facet beneath it.
     const double z = t.z + (relief != nullptr ? relief->displacement(t.x, t.y) : 0.0);
-    scene.instances.push_back({prototype_of.at({t.species, t.variant}),
-                               Vec3{t.x, t.y, z} - scene.origin, t.rotation, t.scale});
+    scene.instances.push_back({prototype_of.at({t.species, t.variant, group_of(t)}),
+                               Vec3{t.x, t.y, z} - scene.origin, t.rotation, t.scale,
+                               tree_lean(s.wind, t.x, t.y, time)});
   }
 }
 

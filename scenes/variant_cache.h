@@ -16,6 +16,7 @@ struct VariantKey {
   std::uint32_t species = 0;
   std::uint32_t variant = 0;
   double time = 0.0;  // the frame time the variant was generated for (wind sway)
+  std::uint32_t phase_group = 0;
   auto operator<=>(const VariantKey&) const = default;
 };
 

@@ -5,8 +5,8 @@
 // Every group holds every representation the degradation needs: stems as triangle tubes
 // (near) and as line segments with radii (far); leaves as polygons (near) and as points
 // (far). Items (a stem segment, or a leaf) are stored mass-rank-major: items are grouped in
-// masses of `mass_size` consecutive items (16 segments, 4 leaves), and the arrays hold rank 0 of every
-// mass, then rank 1 of every mass, and so on. "Draw the first n items of every mass" then is
+// masses of `mass_size` consecutive items (16 segments, 4 leaves), and the arrays hold rank 0 of
+// every mass, then rank 1 of every mass, and so on. "Draw the first n items of every mass" then is
 // a prefix of each array, so one buffer serves every level of detail.
 #include <array>
 #include <cstdint>

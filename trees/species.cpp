@@ -209,7 +209,8 @@ Tree generate(const Species& species, const TreeOptions& options) {
   TreeSkeleton skeleton = core_skeleton(species, options);
   // Wind sway (Weber & Penn section 4.7), the same for every core (trees/sway.h); the phases
   // from the tree's seed.
-  apply_sway(skeleton, {options.time, options.wind_speed, options.wind_gust, options.seed});
+  apply_sway(skeleton, {options.time, options.wind_speed, options.wind_gust,
+                        options.sway_seed != 0 ? options.sway_seed : options.seed});
   skeleton.colours = species.colours;
   const auto* wp = std::get_if<weber_penn::Parameters>(&species.parameters);
   Tree tree;

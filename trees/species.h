@@ -57,6 +57,9 @@ struct TreeOptions {
   double wind_gust = 0.0;
   double quality = 1.0;  // leaf quality factor, (0, 1]
   double age = -1.0;     // years, for the measured-growth core (< 0: the species' age)
+  // Seeds the sway's phases; 0: `seed` (a variant's phase groups share its structure and
+  // differ here).
+  std::uint64_t sway_seed = 0;
 };
 
 struct TreeStats {

@@ -13,7 +13,8 @@ namespace landsim::trees {
 namespace {
 
 // The counter stream of the sway phases (apart from every core's own streams).
-constexpr std::uint64_t kSwayStream = 0x5357415955ULL;  // "SWAYU"
+constexpr std::uint64_t kSwayStream = 0x5357415955ULL;   // "SWAYU"
+constexpr std::uint64_t kFlutterStream = 0x464C5554ULL;  // "FLUT"
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -189,8 +190,8 @@ std::vector<Rigid> stem_motion(const StemSkeleton& stem, std::size_t index, cons
 }  // namespace
 
 double sway_amplitude(double length, double z, double radius_z) {
-  if (radius_z <= 0.0) return kMaxSwayAmplitude;
-  return std::min(kMaxSwayAmplitude, 4.0 * length * (1.0 - z) / radius_z);
+  // A joint of zero radius (a point-like tip) is given a ten-thousandth of the stem's length.
+  return 4.0 * length * (1.0 - z) / std::max(radius_z, 1e-4 * length);
 }
 
 SwayAngles sway_angles(const WindState& wind, double length, double z, double radius_z,
@@ -202,8 +203,17 @@ SwayAngles sway_angles(const WindState& wind, double length, double z, double ra
   const double rate = base_radius / length * wind.time / 15.0;
   const double bx = phase_x + rate, by = phase_y + rate;
   const double share = stretch / length;
-  return {(a1 * std::sin(bx) + a2 * std::sin(0.7 * bx)) * share,
-          (a1 * std::sin(by) + a2 * std::sin(0.7 * by)) * share};
+  const double bound = kMaxStemTurn * share;
+  return {std::clamp((a1 * std::sin(bx) + a2 * std::sin(0.7 * bx)) * share, -bound, bound),
+          std::clamp((a1 * std::sin(by) + a2 * std::sin(0.7 * by)) * share, -bound, bound)};
+}
+
+double flutter_angle(const WindState& wind, std::size_t leaf) {
+  if (!wind.active()) return 0.0;
+  const CounterRng r(wind.phase_seed, kFlutterStream, leaf);
+  const double rate = kFlutterHz[0] + (kFlutterHz[1] - kFlutterHz[0]) * r.uniform(0);
+  const double amplitude = std::min(kMaxFlutter, kFlutterPerSpeed * (wind.speed + wind.gust));
+  return amplitude * std::sin(2.0 * std::numbers::pi * (rate * wind.time + r.uniform(1)));
 }
 
 void complete_attachments(TreeSkeleton& skeleton) {
@@ -239,14 +249,19 @@ void apply_sway(TreeSkeleton& skeleton, const WindState& wind) {
     }
     motion[i] = stem_motion(stem, i, base, wind);
   }
-  for (LeafSkeleton& leaf : skeleton.leaves) {
-    if (leaf.stem < 0) continue;
-    const auto s = static_cast<std::size_t>(leaf.stem);
-    const Rigid& m =
-        motion[s][static_cast<std::size_t>(nearest_stretch(skeleton.stems[s], leaf.base))];
-    leaf.base = m.apply(leaf.base);
-    leaf.direction = normalize(m.rotate(leaf.direction));
-    leaf.normal = normalize(m.rotate(leaf.normal));
+  for (std::size_t i = 0; i < skeleton.leaves.size(); ++i) {
+    LeafSkeleton& leaf = skeleton.leaves[i];
+    if (leaf.stem >= 0) {
+      const auto s = static_cast<std::size_t>(leaf.stem);
+      const Rigid& m =
+          motion[s][static_cast<std::size_t>(nearest_stretch(skeleton.stems[s], leaf.base))];
+      leaf.base = m.apply(leaf.base);
+      leaf.direction = normalize(m.rotate(leaf.direction));
+      leaf.normal = normalize(m.rotate(leaf.normal));
+    }
+    // Flutter: the blade twists about its own line (the petiole's) and keeps its base.
+    const Rigid twist = rotation_about(leaf.base, leaf.direction, radians(flutter_angle(wind, i)));
+    leaf.normal = normalize(twist.rotate(leaf.normal));
   }
   // The sections last: every motion above was found on the calm positions.
   for (std::size_t i = 0; i < skeleton.stems.size(); ++i) {

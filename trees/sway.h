@@ -27,7 +27,8 @@ struct WindState {
   bool active() const { return speed != 0.0 || gust != 0.0; }
 };
 
-// The paper's a0 in degrees, capped (kMaxSwayAmplitude).
+// The paper's a0 in degrees, uncapped: it is not a turn itself (a1 and a2 scale it by the
+// wind, and each joint turns by its share of them).
 double sway_amplitude(double length, double z, double radius_z);
 
 // Turns about each axis at the joint at unit position `z` of a stem of `length`, base radius
@@ -44,10 +45,20 @@ SwayAngles sway_angles(const WindState& wind, double length, double z, double ra
 // any stem.
 void complete_attachments(TreeSkeleton& skeleton);
 
+// Leaf flutter, degrees: leaf `leaf` twists about its petiole's line by
+// min(kMaxFlutter, kFlutterPerSpeed x (speed + gust)) x sin(2 pi (f t + phase)), its rate f
+// between kFlutterHz and its phase drawn from the wind's phase seed.
+double flutter_angle(const WindState& wind, std::size_t leaf);
+inline constexpr double kFlutterPerSpeed = 3.0;
+inline constexpr double kMaxFlutter = 45.0;
+inline constexpr double kFlutterHz[2] = {1.5, 3.0};
+
 // Sways `skeleton` in place (nothing when the wind is calm).
 void apply_sway(TreeSkeleton& skeleton, const WindState& wind);
 
-// Upper bound of a0 in degrees (docs/SPECIES.md "Wind").
-inline constexpr double kMaxSwayAmplitude = 180.0;
+// Bound of a stem's sway summed along it, degrees: each joint turns by at most its share of
+// this about each axis, so that no stem folds over in the strongest wind (docs/SPECIES.md
+// "Wind"). It binds only in winds beyond the paper's light to moderate range.
+inline constexpr double kMaxStemTurn = 90.0;
 
 }  // namespace landsim::trees

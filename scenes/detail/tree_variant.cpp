@@ -15,7 +15,8 @@ std::uint64_t variant_seed(std::uint64_t seed, int bit, std::uint32_t variant) {
 }  // namespace
 
 renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t species_index,
-                                          std::uint32_t variant, double time) {
+                                          std::uint32_t variant, double time,
+                                          std::uint32_t phase_group) {
   const SpeciesSettings& sp = s.species[species_index];
   renderer::TreePrototype p;
   const std::uint64_t vs = variant_seed(s.render.seed, sp.bit, variant);
@@ -31,6 +32,8 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
                       : sp.age_min;
   options.wind_speed = s.wind.speed;
   options.wind_gust = s.wind.gust;
+  // Group 0 sways with the variant's own phases; the others with phases of their own.
+  if (phase_group > 0) options.sway_seed = hash_combine(hash_combine(vs, 0x5741u), phase_group);
   p.geometry = trees::generate(sp.species, options).geometry;
   p.degradation = trees::degradation_factors(s.render.quality, season, sp.evergreen);
   p.species = static_cast<std::uint16_t>(species_index);

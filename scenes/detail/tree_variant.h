@@ -9,7 +9,9 @@
 
 namespace landsim::scenes::detail {
 
+// `phase_group` (0 to [wind] phase_groups - 1): the same tree swaying with other phases.
 renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t species_index,
-                                          std::uint32_t variant, double time);
+                                          std::uint32_t variant, double time,
+                                          std::uint32_t phase_group = 0);
 
 }  // namespace landsim::scenes::detail

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "tests/support/temp_dir.h"
@@ -27,8 +28,13 @@ TEST(Sway, AnglesFollowThePapersFormulaAtAJoint) {
   EXPECT_NEAR(a.y, 9.95899, 1e-5);
   // At the tip of a linearly tapered stem a0 stays 4 L / r_0: (1 - Z) / r_Z is constant.
   EXPECT_NEAR(sway_amplitude(2.0, 0.9, 0.008), 4.0 * 2.0 / 0.08, 1e-9);
-  // The cap: a twig far thinner than its length.
-  EXPECT_EQ(sway_amplitude(1.0, 0.0, 0.001), kMaxSwayAmplitude);
+  // a0 is not capped (a twig 1000 times thinner than long: 4000 degrees), but each joint's
+  // turn is bounded by its share of kMaxStemTurn.
+  EXPECT_EQ(sway_amplitude(1.0, 0.0, 0.001), 4000.0);
+  const SwayAngles storm = sway_angles({0.0, 100.0, 100.0, 1}, 1.0, 0.0, 0.001, 0.001, 0.25,
+                                       std::numbers::pi / 2, -std::numbers::pi / 2);
+  EXPECT_EQ(storm.x, 0.25 * kMaxStemTurn);
+  EXPECT_EQ(storm.y, -0.25 * kMaxStemTurn);
   // Calm: no angle.
   const SwayAngles calm = sway_angles({30.0, 0.0, 0.0, 1}, 2.0, 0.25, 0.05, 0.08, 0.5, 0.3, 1.1);
   EXPECT_EQ(calm.x, 0.0);
