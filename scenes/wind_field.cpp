@@ -44,11 +44,11 @@ Vec3 tree_lean(const WindSettings& w, double x, double y, double time) {
 
 std::uint32_t phase_group(const WindSettings& w, double x, double y, std::uint64_t seed) {
   if (w.phase_groups <= 1) return 0;
-  // A hash of the position to the millimetre: a tree keeps its group in every frame.
-  const auto xi = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(x * 1000.0)));
-  const auto yi = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(y * 1000.0)));
-  const std::uint64_t h = mix64(hash_combine(hash_combine(seed, xi), yi));
-  return static_cast<std::uint32_t>(h % static_cast<std::uint64_t>(w.phase_groups));
+  // Patches of one group, as large as the gusts: neighbours sway together, trees far apart
+  // mostly do not. Fixed in place, so a tree keeps its group in every frame.
+  const double n = value_noise(x, y, w.gust_scale, hash_combine(seed, kGustSeed));
+  return std::min(static_cast<std::uint32_t>(n * w.phase_groups),
+                  static_cast<std::uint32_t>(w.phase_groups - 1));
 }
 
 }  // namespace landsim::scenes

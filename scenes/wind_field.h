@@ -3,7 +3,7 @@
 // travel downwind at the wind's speed, patches `gust_scale` across, so that neighbouring
 // trees move together and distant ones do not. Each tree leans downwind with the local wind
 // (a rigid turn about its trunk base, in its instance transform), and sways with the phases
-// of one of its variant's phase groups, chosen by a hash of where it stands.
+// of one of its variant's phase groups, which covers patches as large as the gusts.
 #include <cstdint>
 
 #include "core/vec3.h"
@@ -22,7 +22,8 @@ Vec3 downwind(const WindSettings& w);
 // that the crown moves downwind by kLeanPerSpeed2 x local_wind^2 degrees (at most kMaxLean).
 Vec3 tree_lean(const WindSettings& w, double x, double y, double time);
 
-// The phase group (0 to phase_groups - 1) of a tree standing at (x, y).
+// The phase group (0 to phase_groups - 1) of a tree standing at (x, y): value noise of
+// wavelength gust_scale, cut into equal bands.
 std::uint32_t phase_group(const WindSettings& w, double x, double y, std::uint64_t seed);
 
 // Lean per squared unit of wind speed, and its bound, degrees: drag grows with the square of

@@ -78,7 +78,8 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "detail_roughness = 0.6\n"
          "[[ground.rules]]\nmeasure = \"slope\"\nabove = 30.0\nbelow = 80.0\nsoftness = 3.0\n"
          "on = [\"terrain\", \"grass\"]\nbecomes = \"rock\"\ntint = [1.1, 1.0, 0.9]\n\n"
-         "[wind]\nspeed = 4.0\ngust = 2.0\n\n"
+         "[wind]\nspeed = 4.0\ngust = 2.0\ndirection = 200.0\ngust_scale = 40.0\nphase_groups = "
+         "2\n\n"
          "[sun]\ndate = 2026-06-21\ntime = 13:00:00\nutc_offset = 12.0\nlatitude = "
          "-36.88\nlongitude = 174.76\n"
          "irradiance = [3.0, 3.0, 3.0]\n\n[sky]\nmodel = \"preetham\"\nturbidity = 2.5\n\n"
@@ -143,6 +144,9 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(s.species[0].variants, 2);
   EXPECT_DOUBLE_EQ(s.species[0].min_spacing, 3.0);
   EXPECT_EQ(s.species[0].species.name, "palm");
+  EXPECT_DOUBLE_EQ(s.wind.direction_deg, 200.0);
+  EXPECT_DOUBLE_EQ(s.wind.gust_scale, 40.0);
+  EXPECT_EQ(s.wind.phase_groups, 2);
   ASSERT_EQ(s.objects.size(), 1u);
   EXPECT_EQ(s.objects[0].name, "car");
   EXPECT_EQ(s.objects[0].file, source_file("data/objects/car.gltf").string());

@@ -107,6 +107,27 @@ TEST(WindField, AVariantSwaysInPhaseGroupsAndNeighboursLeanAlike) {
   ASSERT_GT(near_pairs, 5);
   ASSERT_GT(far_pairs, 100);
   EXPECT_LT(near / near_pairs, 0.3 * (far / far_pairs));
+  // Phase groups come in patches: trees of one variant within 5 m mostly sway in one group,
+  // far apart mostly not (three groups: a third by chance).
+  int near_same = 0, near_count = 0, far_same = 0, far_count = 0;
+  for (std::size_t i = 0; i < scene.instances.size(); ++i)
+    for (std::size_t j = i + 1; j < scene.instances.size(); ++j) {
+      const auto& p = scene.instances[i];
+      const auto& q = scene.instances[j];
+      if (p.prototype / 3 != q.prototype / 3) continue;  // another variant
+      const double d = std::hypot(p.position.x - q.position.x, p.position.y - q.position.y);
+      const bool same = p.prototype == q.prototype;
+      if (d < 5.0) {
+        near_same += same;
+        ++near_count;
+      } else if (d > 250.0) {
+        far_same += same;
+        ++far_count;
+      }
+    }
+  ASSERT_GT(near_count, 3);
+  EXPECT_GT(near_same, near_count * 7 / 10);
+  EXPECT_LT(far_same, far_count * 6 / 10);
 }
 
 TEST(WindField, AFrameIsTheSameWhateverWasBuiltBeforeIt) {
