@@ -9,6 +9,7 @@
 #include <numbers>
 #include <set>
 
+#include "renderer/render.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"
 
@@ -147,6 +148,28 @@ TEST(WindField, AFrameIsTheSameWhateverWasBuiltBeforeIt) {
   const renderer::Scene calm = build_scene(load_scenario(dir.write("c.toml", forest(""))), 2.0);
   EXPECT_EQ(calm.prototypes.size(), 2u);
   for (const renderer::TreeInstance& t : calm.instances) ASSERT_FALSE(t.leans());
+}
+
+TEST(WindField, RangeDegradationKeepsWorkingInEveryFrame) {
+  TempDir dir;
+  // The forest seen from afar: far trees are drawn at coarser levels in windy frames too.
+  const Scenario s = load_scenario(dir.write(
+      "w.toml", forest(kWind) + "[[views]]\nname = \"far\"\nposition = [300.0, -900.0, 500.0]\n"
+                                "target = [300.0, 400.0, 150.0]\nwidth = 96\nheight = 64\n"));
+  for (const double t : {0.5, 2.0}) {
+    const renderer::Scene scene = build_scene(s, t);
+    const renderer::Film film = renderer::Renderer(scene).render(scene.views[1], {});
+    std::uint32_t coarsest = 0;
+    int trees = 0;
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x)
+        if (film.object(x, y) == 2 || film.object(x, y) == 3) {
+          ++trees;
+          coarsest = std::max(coarsest, film.level(x, y));
+        }
+    EXPECT_GT(trees, 20) << t;
+    EXPECT_GT(coarsest, 0u) << "frame " << t << ": far trees at full detail";
+  }
 }
 
 }  // namespace

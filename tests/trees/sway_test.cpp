@@ -26,6 +26,17 @@ TEST(Sway, AnglesFollowThePapersFormulaAtAJoint) {
   const SwayAngles a = sway_angles(wind, 2.0, 0.25, 0.05, 0.08, 0.5, 0.3, 1.1);
   EXPECT_NEAR(a.x, 3.80277, 1e-5);
   EXPECT_NEAR(a.y, 9.95899, 1e-5);
+  // Other joints of another stem: speed 3, gust 1, t = 12 s, phases 2.0 and 4.5, a fifth of
+  // the stem. Z = 0, r = 0.08: a0 = 100, a1 = 6, a2 = 2 + 3 = 5, rate = 0.032;
+  // x: (6 sin 2.032 + 5 sin 1.4224) / 5 = 2.06363, y: (6 sin 4.532 + 5 sin 3.1724) / 5 =
+  // -1.21133. Z = 0.75, r = 0.03: a0 = 66.667, every angle 2/3 of those.
+  const WindState light{12.0, 3.0, 1.0, 1};
+  const SwayAngles base = sway_angles(light, 2.0, 0.0, 0.08, 0.08, 0.4, 2.0, 4.5);
+  EXPECT_NEAR(base.x, 2.06363, 1e-5);
+  EXPECT_NEAR(base.y, -1.21133, 1e-5);
+  const SwayAngles upper = sway_angles(light, 2.0, 0.75, 0.03, 0.08, 0.4, 2.0, 4.5);
+  EXPECT_NEAR(upper.x, 2.06363 * 2.0 / 3.0, 1e-5);
+  EXPECT_NEAR(upper.y, -1.21133 * 2.0 / 3.0, 1e-5);
   // At the tip of a linearly tapered stem a0 stays 4 L / r_0: (1 - Z) / r_Z is constant.
   EXPECT_NEAR(sway_amplitude(2.0, 0.9, 0.008), 4.0 * 2.0 / 0.08, 1e-9);
   // a0 is not capped (a twig 1000 times thinner than long: 4000 degrees), but each joint's
