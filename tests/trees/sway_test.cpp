@@ -63,6 +63,26 @@ TEST(Sway, AThickerOrShorterStemSwaysLess) {
   EXPECT_NEAR(angle(2.0, 0.1), 0.5 * angle(2.0, 0.05), 1e-12);  // a0 is 1 / r
 }
 
+TEST(Sway, LeavesFlutterFasterThanStemsSwayWithinTheirBound) {
+  const WindState wind{3.0, 5.0, 4.0, 11};
+  // min(45, 3 x (5 + 4)) = 27 degrees at most; leaves differ, and each changes within 0.1 s.
+  double largest = 0.0;
+  int changed = 0;
+  for (std::size_t leaf = 0; leaf < 200; ++leaf) {
+    const double a = flutter_angle(wind, leaf);
+    largest = std::max(largest, std::abs(a));
+    WindState later = wind;
+    later.time += 0.1;
+    changed += std::abs(flutter_angle(later, leaf) - a) > 1.0;
+  }
+  EXPECT_LE(largest, 27.0 + 1e-9);
+  EXPECT_GT(largest, 20.0);
+  EXPECT_GT(changed, 150);
+  EXPECT_NE(flutter_angle(wind, 0), flutter_angle(wind, 1));
+  EXPECT_EQ(flutter_angle({3.0, 0.0, 0.0, 11}, 0), 0.0);  // calm
+  EXPECT_LE(std::abs(flutter_angle({3.0, 100.0, 100.0, 11}, 5)), kMaxFlutter);
+}
+
 Species species(const std::string& file) {
   return load_species(source_file("data/species/" + file).string());
 }
