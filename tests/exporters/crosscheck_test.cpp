@@ -135,6 +135,21 @@ void expect_agreement(const CrosscheckReport& r) {
   EXPECT_TRUE(r.pass);
 }
 
+TEST(Crosscheck, SwayingAndLeaningTreesAgreeWithPovRay) {
+  TempDir dir;
+  // A strong wind: every tree swayed in its phase group and leaning by several degrees.
+  const Scenario s =
+      small_scene(dir, "fanpalm.xml", "[wind]\nspeed = 20.0\ngust = 10.0\ndirection = 90.0\n");
+  const renderer::Scene scene = build_scene(s, 1.5);
+  ASSERT_GE(scene.instances.size(), 2u);
+  for (const renderer::TreeInstance& t : scene.instances) ASSERT_TRUE(t.leans());
+  ASSERT_GT(tree_pixels_in_view(scene), 20);
+  CrosscheckOptions o;
+  o.out_dir = dir / "check";
+  o.spp = 1;
+  expect_agreement(crosscheck(s, scene, o));
+}
+
 TEST(Crosscheck, GraphPathsTreesAgreeWithPovRay) {
   TempDir dir;
   expect_agreement(crosscheck_species(dir, "graph_column.toml"));
