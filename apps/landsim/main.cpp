@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "command.h"
+#include "compare_command.h"
 #include "core/input_error.h"
 #include "core/input_warnings.h"
 #include "core/module_loader.h"
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
       cmd::command(app, cmd::add_export_obj_command, cmd::run_export_obj),
       cmd::command(app, cmd::add_export_pov_command, cmd::run_export_pov),
       cmd::command(app, cmd::add_crosscheck_command, cmd::run_crosscheck),
+      cmd::command(app, cmd::add_compare_command, cmd::run_compare),
       cmd::command(app, cmd::add_featuremap_command, cmd::run_featuremap_build),
       cmd::command(app, cmd::add_discover_command, cmd::run_discover),
       cmd::command(app, cmd::add_grow_command, cmd::run_grow),

@@ -509,6 +509,26 @@ TEST(Cli, TheTargetLayerAndTheManifestAgreeOnEveryObject) {
   EXPECT_EQ(resumed["images"][0]["objects"], objects);
 }
 
+TEST(Cli, CompareExitsZeroForEqualSetsThreeForChangedOnesTwoForNoSet) {
+  TempDir dir;
+  const auto a = dir / "a", b = dir / "b";
+  ASSERT_EQ(run("render --out " + a.string() + " --width 48 --spp 2", dir).exit_code, 0);
+  std::filesystem::copy(a, b, std::filesystem::copy_options::recursive);
+  const Result same = run("compare " + a.string() + " " + b.string(), dir);
+  EXPECT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_NE(same.out.find("pass: 1 images compared"), std::string::npos) << same.out;
+  // Twice the samples: the same scene with less noise.
+  ASSERT_EQ(run("render --out " + b.string() + " --width 48 --spp 4", dir).exit_code, 0);
+  const Result changed = run(
+      "compare " + b.string() + " " + a.string() + " --json --out " + (dir / "r").string(), dir);
+  EXPECT_EQ(changed.exit_code, 3) << changed.err;
+  EXPECT_FALSE(nlohmann::json::parse(changed.out)["pass"].get<bool>());
+  EXPECT_TRUE(std::filesystem::exists(dir / "r" / "report.html"));
+  const Result none = run("compare " + (dir / "nothing").string() + " " + a.string(), dir);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("manifest.json"), std::string::npos) << none.err;
+}
+
 TEST(Cli, DefaultSceneWithSizeOverridesKeepsTheAspect) {
   TempDir dir;
   const auto out = dir / "out";

@@ -126,5 +126,13 @@ TEST(JsonContract, Crosscheck) {
   expect_contract("crosscheck", file.string() + " --spp 1 --out " + (dir / "c").string(), dir);
 }
 
+TEST(JsonContract, Compare) {
+  TempDir dir;
+  const auto set = dir / "set";
+  ASSERT_EQ(testing::run_landsim("render --spp 1 --width 32 --out " + set.string(), dir).exit_code,
+            0);
+  expect_contract("compare", set.string() + " " + set.string(), dir);
+}
+
 }  // namespace
 }  // namespace landsim
