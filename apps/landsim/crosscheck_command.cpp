@@ -49,14 +49,14 @@ int run_crosscheck(const CrosscheckArgs& args) {
   o.max_region_diff = args.max_region_diff;
   const exporters::CrosscheckReport r = exporters::crosscheck(s, scene, o);
   if (args.json) {
-    std::cout << nlohmann::json{{"object_iou", r.object_iou},
-                                {"luminance_mean_rel_diff", r.luminance_mean_rel_diff},
-                                {"luminance_region_max_rel_diff", r.luminance_region_max_rel_diff},
-                                {"landsim_seconds", r.landsim_seconds},
-                                {"povray_seconds", r.povray_seconds},
-                                {"pass", r.pass}}
-                     .dump()
-              << "\n";
+    nlohmann::json j{{"object_iou", r.object_iou},
+                     {"luminance_mean_rel_diff", r.luminance_mean_rel_diff},
+                     {"luminance_region_max_rel_diff", r.luminance_region_max_rel_diff},
+                     {"landsim_seconds", r.landsim_seconds},
+                     {"povray_seconds", r.povray_seconds},
+                     {"pass", r.pass}};
+    if (r.scene_object_iou) j["scene_object_iou"] = *r.scene_object_iou;
+    std::cout << j.dump() << "\n";
   } else {
     std::cout << fmt::format(
         "{}: object IoU {:.4f}, mean luminance difference {:.2f}%, worst region {:.2f}%; "
