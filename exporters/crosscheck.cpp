@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
+#include "core/input_error.h"
 #include "exporters/pov_export.h"
 #include "renderer/exposure.h"
 #include "renderer/image_output.h"
@@ -176,6 +177,8 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
        {{"min_iou", o.min_iou},
         {"max_mean_diff", o.max_mean_diff},
         {"max_region_diff", o.max_region_diff}}},
+      {"coverage_measured", r.coverage_measured},
+      {"shift", r.shift ? nlohmann::json(*r.shift) : nlohmann::json()},
       {"pass", r.pass}};
   {
     AtomicFile json(dir / "report.json");
@@ -204,6 +207,107 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
   html.commit();
 }
 
+// The image at (x, y) shifted by (dx, dy) pixels: bilinear, edges clamped.
+renderer::FloatImage shifted(const renderer::FloatImage& in, double dx, double dy) {
+  renderer::FloatImage out = in;
+  for (int y = 0; y < in.height; ++y)
+    for (int x = 0; x < in.width; ++x) {
+      const double sx = std::clamp(x - dx, 0.0, in.width - 1.0);
+      const double sy = std::clamp(y - dy, 0.0, in.height - 1.0);
+      const int x0 = static_cast<int>(sx), y0 = static_cast<int>(sy);
+      const int x1 = std::min(x0 + 1, in.width - 1), y1 = std::min(y0 + 1, in.height - 1);
+      const double tx = sx - x0, ty = sy - y0;
+      for (int c = 0; c < in.channels; ++c)
+        out.pixels[(static_cast<std::size_t>(y) * in.width + x) * in.channels + c] =
+            static_cast<float>((in.at(x0, y0, c) * (1 - tx) + in.at(x1, y0, c) * tx) * (1 - ty) +
+                               (in.at(x0, y1, c) * (1 - tx) + in.at(x1, y1, c) * tx) * ty);
+    }
+  return out;
+}
+
+// Mean relative luminance difference over landsim's object pixels, the reference shifted by
+// (dx, dy).
+double misfit(const renderer::Film& film, const renderer::FloatImage& ref, double dx, double dy) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  float px[3];
+  for (int y = 1; y + 1 < film.height(); ++y)
+    for (int x = 1; x + 1 < film.width(); ++x) {
+      if (film.object(x, y) == 0) continue;
+      const double sx = std::clamp(x - dx, 0.0, ref.width - 1.0);
+      const double sy = std::clamp(y - dy, 0.0, ref.height - 1.0);
+      pixel3(ref, static_cast<int>(std::lround(sx)), static_cast<int>(std::lround(sy)), px);
+      const double la = film.luminance(x, y), lb = luminance(px);
+      sum += std::abs(la - lb) / std::max(la, 1e-6);
+      ++n;
+    }
+  return n > 0 ? sum / static_cast<double>(n) : 0.0;
+}
+
+// The translation of `ref` (whole pixels, then quarter pixels around the best) that fits
+// landsim's render best, within `reach` pixels.
+std::array<double, 2> best_shift(const renderer::Film& film, const renderer::FloatImage& ref,
+                                 int reach) {
+  std::array<double, 2> best{0.0, 0.0};
+  double best_misfit = misfit(film, ref, 0.0, 0.0);
+  const auto search = [&](double cx, double cy, double step, int steps) {
+    for (int j = -steps; j <= steps; ++j)
+      for (int i = -steps; i <= steps; ++i) {
+        const double dx = cx + i * step, dy = cy + j * step;
+        if (std::abs(dx) > reach || std::abs(dy) > reach) continue;
+        const double m = misfit(film, shifted(ref, dx, dy), 0.0, 0.0);
+        if (m < best_misfit - 1e-12) {
+          best_misfit = m;
+          best = {dx, dy};
+        }
+      }
+  };
+  search(0.0, 0.0, 1.0, reach);
+  search(best[0], best[1], 0.25, 3);
+  return best;
+}
+
+// The user's reference image (and its mask, or its alpha) in landsim's units, the same size
+// as the render, translated by --align's search when asked.
+void load_reference(const CrosscheckOptions& o, const renderer::Film& film, double exposure_gain,
+                    renderer::FloatImage& ref, renderer::FloatImage& mask, CrosscheckReport& r) {
+  renderer::FloatImage image;
+  std::string error;
+  if (!renderer::image_io().read(o.reference.string(), true, image, error))
+    throw InputError(o.reference.string() + ": cannot read the reference image: " + error);
+  if (image.width != film.width() || image.height != film.height())
+    throw InputError(fmt::format(
+        "{}: the reference is {} x {} pixels, the view renders {} x {} (give the view that "
+        "size, or --width/--height)",
+        o.reference.string(), image.width, image.height, film.width(), film.height()));
+  // An integer image is display-referred: taken as an image at the export's exposure.
+  if (image.display_referred)
+    for (float& v : image.pixels) v = static_cast<float>(v / exposure_gain);
+  if (!o.mask.empty()) {
+    if (!renderer::image_io().read(o.mask.string(), false, mask, error))
+      throw InputError(o.mask.string() + ": cannot read the mask: " + error);
+    if (mask.width != film.width() || mask.height != film.height())
+      throw InputError(fmt::format("{}: the mask is {} x {} pixels, the view renders {} x {}",
+                                   o.mask.string(), mask.width, mask.height, film.width(),
+                                   film.height()));
+  } else if (image.channels == 4) {
+    // Alpha as coverage: objects (red, LS_Mask's ground colour) where it is over 0.5.
+    mask = {image.width, image.height, 3, std::vector<float>(3 * image.pixels.size() / 4, 0.0f)};
+    for (std::size_t i = 0; i < image.pixels.size() / 4; ++i)
+      mask.pixels[3 * i] = image.pixels[4 * i + 3] > 0.5f ? 1.0f : 0.0f;
+  } else {
+    r.coverage_measured = false;
+  }
+  if (o.align > 0) {
+    r.shift = best_shift(film, image, o.align);
+    image = shifted(image, (*r.shift)[0], (*r.shift)[1]);
+    if (r.coverage_measured) mask = shifted(mask, (*r.shift)[0], (*r.shift)[1]);
+    spdlog::info("crosscheck: the reference fits best shifted by ({:.2f}, {:.2f}) pixels",
+                 (*r.shift)[0], (*r.shift)[1]);
+  }
+  ref = std::move(image);
+}
+
 }  // namespace
 
 CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Scene& scene,
@@ -217,10 +321,13 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   pov_options.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
   pov_options.sky_horizon = pov_options.fog_colour;
   const std::filesystem::path pov_dir = o.out_dir / "pov";
-  renderer::View pov_view = view;
-  pov_view.position += o.pov_camera_shift;
-  pov_view.target += o.pov_camera_shift;
-  export_pov(scene, pov_view, pov_dir, pov_options);
+  std::filesystem::create_directories(o.out_dir);
+  if (o.reference.empty()) {
+    renderer::View pov_view = view;
+    pov_view.position += o.pov_camera_shift;
+    pov_view.target += o.pov_camera_shift;
+    export_pov(scene, pov_view, pov_dir, pov_options);
+  }
 
   // landsim in the comparable mode, first sample at the pixel centre as POV-Ray samples.
   renderer::Scene comparable = scene;
@@ -242,21 +349,26 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   auto start = std::chrono::steady_clock::now();
   const renderer::Film film = renderer::Renderer(comparable).render(view, ro);
   r.landsim_seconds = seconds_since(start);
-  spdlog::info("crosscheck: landsim done in {:.1f} s; POV-Ray rendering (its log: {})",
-               r.landsim_seconds, (pov_dir / "povray.log").string());
+  spdlog::info("crosscheck: landsim done in {:.1f} s", r.landsim_seconds);
   renderer::write_exr(film, o.out_dir / "landsim.exr", {{"mode", "POV-comparable"}});
 
-  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(o.spp)))));
-  const std::string size = fmt::format("+W{} +H{} -D -V", view.width, view.height);
-  r.povray_seconds = run_povray(
-      pov_dir,
-      size +
-          fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1", n),
-      true);
-  spdlog::info("crosscheck: POV-Ray done in {:.1f} s; its class mask", r.povray_seconds);
-  run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1", false);
-  const renderer::FloatImage pov = read_image(pov_dir / "pov.exr");
-  const renderer::FloatImage mask = read_image(pov_dir / "mask.png");
+  renderer::FloatImage pov, mask;
+  if (o.reference.empty()) {
+    spdlog::info("crosscheck: POV-Ray rendering (its log: {})", (pov_dir / "povray.log").string());
+    const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(o.spp)))));
+    const std::string size = fmt::format("+W{} +H{} -D -V", view.width, view.height);
+    r.povray_seconds = run_povray(
+        pov_dir,
+        size + fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1",
+                           n),
+        true);
+    spdlog::info("crosscheck: POV-Ray done in {:.1f} s; its class mask", r.povray_seconds);
+    run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1", false);
+    pov = read_image(pov_dir / "pov.exr");
+    mask = read_image(pov_dir / "mask.png");
+  } else {
+    load_reference(o, film, pov_exposure_gain(scene, sky), pov, mask, r);
+  }
 
   const int w = film.width(), h = film.height();
   std::vector<Cover> a(static_cast<std::size_t>(w) * h), b(a.size());
@@ -268,9 +380,13 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      pixel3(mask, x, y, mk);
       a[i] = ours(film.object(x, y));
-      b[i] = theirs(mk);
+      if (r.coverage_measured) {
+        pixel3(mask, x, y, mk);
+        b[i] = theirs(mk);
+      } else {
+        b[i] = a[i];  // no mask: compare where landsim sees an object
+      }
       if (a[i] == Cover::sky || b[i] == Cover::sky) continue;
       pixel3(pov, x, y, px);
       const double la = film.luminance(x, y), lb = luminance(px);
@@ -302,7 +418,12 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
     r.luminance_region_max_rel_diff = std::max(r.luminance_region_max_rel_diff,
                                                std::abs(region_a[k] - region_b[k]) / region_b[k]);
   }
-  r.pass = r.object_iou >= o.min_iou && r.luminance_mean_rel_diff <= o.max_mean_diff &&
+  if (!r.coverage_measured) {
+    r.object_iou = r.tree_iou = r.ground_iou = 0.0;
+    r.scene_object_iou.reset();
+  }
+  r.pass = (!r.coverage_measured || r.object_iou >= o.min_iou) &&
+           r.luminance_mean_rel_diff <= o.max_mean_diff &&
            r.luminance_region_max_rel_diff <= o.max_region_diff;
   write_side_by_side(film, pov, heat, o.out_dir / "side_by_side.png");
   write_reports(r, o, o.out_dir);

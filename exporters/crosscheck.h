@@ -3,6 +3,7 @@
 // POV-comparable mode and with POV-Ray (colour, and flat class colours for coverage), and
 // compare: object coverage (intersection over union of the tree and ground masks) and
 // relative luminance over the pixels both see as objects, overall and per region.
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,6 +23,16 @@ struct CrosscheckOptions {
   double max_region_diff = 0.25;
   // Moves POV-Ray's camera (scene frame, metres): only to show that the check can fail.
   Vec3 pov_camera_shift;
+  // A reference image of the user's instead of POV-Ray run on the spot (docs/CROSSCHECK.md
+  // "Against a reference image"): any format the image module reads, float files taken as
+  // cd/m2, integer files as an image at the export's exposure (pov_exposure_gain).
+  std::filesystem::path reference;
+  // Its class mask (LS_Mask's colours); without one, the reference's alpha (objects where
+  // it is over 0.5) or no coverage at all.
+  std::filesystem::path mask;
+  // Before comparing, search translations of the reference of up to this many pixels (in
+  // quarter pixels) for the one that fits landsim's render best.
+  int align = 0;
 };
 
 struct CrosscheckReport {
@@ -30,6 +41,10 @@ struct CrosscheckReport {
   std::optional<double> scene_object_iou;  // vehicles, structures ([[objects]]), when any
   double luminance_mean_rel_diff = 0.0;
   double luminance_region_max_rel_diff = 0.0;
+  // Whether a class mask was compared (POV-Ray's, the --mask, or the reference's alpha);
+  // when not, the IoUs stay 0 and do not count against passing.
+  bool coverage_measured = true;
+  std::optional<std::array<double, 2>> shift;  // the --align translation applied, pixels
   double landsim_seconds = 0.0;
   double povray_seconds = 0.0;
   bool pass = false;

@@ -10,6 +10,8 @@
 #include <numbers>
 
 #include "core/atomic_file.h"
+#include "renderer/colour_matching.h"
+#include "renderer/exposure.h"
 #include "renderer/grass_patch.h"
 
 namespace landsim::exporters {
@@ -200,6 +202,14 @@ void write_objects(fmt::ostream& out, const renderer::Scene& scene) {
 }
 
 }  // namespace
+
+double pov_exposure_gain(const renderer::Scene& scene, const renderer::SkyModel& sky) {
+  if (scene.settings.exposure_ev100) return renderer::preview_gain(*scene.settings.exposure_ev100);
+  const Vec3f sun =
+      scene.sun.irradiance * static_cast<float>(std::max(0.0, normalize(scene.sun.direction).z));
+  const double e = renderer::rec709_luminance(Vec3(sun + sky.horizontal_irradiance()));
+  return e > 0.0 ? std::numbers::pi / e : 1.0;
+}
 
 std::string sanitize_for_pov(const std::string& text) {
   std::string out;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "renderer/scene.h"
+#include "renderer/sky.h"
 
 namespace landsim::exporters {
 
@@ -23,6 +24,12 @@ struct PovExportOptions {
   // cd/m2 and lux, POV-Ray's output is what it computes.
   double exposure_gain = 1.0;
 };
+
+// The default of the export's LS_Exposure: the scene's fixed exposure, or one that renders a
+// white horizontal surface in the sun and sky's light as white: an incident-light meter's
+// choice, since POV-Ray cannot meter the image it has not yet made (docs/ATMOSPHERE.md
+// "Exposure").
+double pov_exposure_gain(const renderer::Scene& scene, const renderer::SkyModel& sky);
 
 // Writes `dir`/scene.pov and `dir`/meshes.inc for `view`. Declaring LS_Mask=1 on the POV-Ray
 // command line renders flat class colours instead (ground red, bark green, leaves blue, scene

@@ -13,6 +13,8 @@ namespace landsim::renderer {
 struct FloatImage {
   int width = 0, height = 0, channels = 0;
   std::vector<float> pixels;
+  // Read from an integer file (8 or 16 bits: sRGB-encoded, display-referred), not a float one.
+  bool display_referred = false;
   float at(int x, int y, int c) const {
     return pixels[(static_cast<std::size_t>(y) * width + x) * channels + c];
   }

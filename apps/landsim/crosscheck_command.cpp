@@ -6,6 +6,7 @@
 
 #include <iostream>
 
+#include "core/input_error.h"
 #include "exporters/crosscheck.h"
 #include "scenario_input.h"
 #include "scenes/scene_builder.h"
@@ -32,6 +33,15 @@ CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
+  cmd->add_option("--reference", args.reference,
+                  "Compare with this image instead of running POV-Ray (float files in cd/m2, "
+                  "8-bit ones at the export's exposure)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--mask", args.mask, "The reference's class mask (LS_Mask's colours)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--align", args.align,
+                  "Search translations of the reference up to this many pixels first")
+      ->check(CLI::Range(0, 16));
   return cmd;
 }
 
@@ -47,6 +57,11 @@ int run_crosscheck(const CrosscheckArgs& args) {
   o.min_iou = args.min_iou;
   o.max_mean_diff = args.max_mean_diff;
   o.max_region_diff = args.max_region_diff;
+  o.reference = args.reference;
+  o.mask = args.mask;
+  o.align = args.align;
+  if (!o.mask.empty() && o.reference.empty())
+    throw InputError("crosscheck --mask: only with --reference (POV-Ray makes its own mask)");
   const exporters::CrosscheckReport r = exporters::crosscheck(s, scene, o);
   if (args.json) {
     nlohmann::json j{{"object_iou", r.object_iou},
@@ -56,6 +71,7 @@ int run_crosscheck(const CrosscheckArgs& args) {
                      {"povray_seconds", r.povray_seconds},
                      {"pass", r.pass}};
     if (r.scene_object_iou) j["scene_object_iou"] = *r.scene_object_iou;
+    if (r.shift) j["shift"] = *r.shift;
     std::cout << j.dump() << "\n";
   } else {
     std::cout << fmt::format(

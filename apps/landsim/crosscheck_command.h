@@ -1,6 +1,7 @@
 #pragma once
 // `landsim crosscheck SCENARIO --out DIR [--view NAME] [--spp N] [--min-iou X]
-//                     [--max-mean-diff X] [--max-region-diff X] [--json]`
+//                     [--max-mean-diff X] [--max-region-diff X] [--json]
+//                     [--reference IMAGE [--mask MASK] [--align N]]`
 #include <optional>
 #include <string>
 
@@ -21,6 +22,8 @@ struct CrosscheckArgs {
   double max_mean_diff = 0.05;
   double max_region_diff = 0.25;
   bool json = false;
+  std::string reference, mask;  // a reference image of the user's, and its class mask
+  int align = 0;                // pixels of translation searched
 };
 
 // Exit code of a cross-check that ran but did not pass.

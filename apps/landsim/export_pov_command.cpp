@@ -27,22 +27,6 @@ CLI::App* add_export_pov_command(CLI::App& app, ExportPovArgs& args) {
   return cmd;
 }
 
-namespace {
-
-// The scenario's fixed exposure, or one that renders a white horizontal surface in the sun
-// and sky's light as white: an incident-light meter's choice, since POV-Ray cannot meter
-// the image it has not yet made (docs/ATMOSPHERE.md "Exposure").
-double pov_exposure_gain(const scenes::Scenario& s, const renderer::Scene& scene,
-                         const renderer::SkyModel& sky) {
-  if (s.render.exposure_ev100) return renderer::preview_gain(*s.render.exposure_ev100);
-  const Vec3f sun =
-      scene.sun.irradiance * static_cast<float>(std::max(0.0, normalize(scene.sun.direction).z));
-  const double e = renderer::rec709_luminance(Vec3(sun + sky.horizontal_irradiance()));
-  return e > 0.0 ? std::numbers::pi / e : 1.0;
-}
-
-}  // namespace
-
 int run_export_pov(const ExportPovArgs& args) {
   const scenes::Scenario s = scenario_or_default(args.scenario);
   if (args.frame >= static_cast<int>(s.render.frames.size())) {
@@ -56,7 +40,7 @@ int run_export_pov(const ExportPovArgs& args) {
   o.fog_colour = sky.radiance({1.0f, 0.0f, 0.02f});
   o.sky_zenith = sky.radiance({0.0f, 0.0f, 1.0f});
   o.sky_horizon = o.fog_colour;
-  o.exposure_gain = pov_exposure_gain(s, scene, sky);
+  o.exposure_gain = exporters::pov_exposure_gain(scene, sky);
   exporters::export_pov(scene, scene.views[view_index(s, args.view)], args.out, o);
   const auto size_mb = [&](const char* name) {
     return static_cast<double>(std::filesystem::file_size(std::filesystem::path(args.out) / name)) /

@@ -23,8 +23,9 @@ bool read(const std::string& path, bool to_linear, FloatImage& image, std::strin
     error = buf.geterror();
     return false;
   }
-  const bool encoded = buf.spec().format.basetype != OIIO::TypeDesc::FLOAT &&
-                       buf.spec().format.basetype != OIIO::TypeDesc::HALF;
+  // The file's own format (the buffer holds floats once read with the FLOAT conversion).
+  const bool encoded = buf.nativespec().format.basetype != OIIO::TypeDesc::FLOAT &&
+                       buf.nativespec().format.basetype != OIIO::TypeDesc::HALF;
   if (to_linear && encoded) buf = OIIO::ImageBufAlgo::colorconvert(buf, "sRGB", "linear");
   if (buf.has_error()) {
     error = buf.geterror();
@@ -34,6 +35,7 @@ bool read(const std::string& path, bool to_linear, FloatImage& image, std::strin
   image.width = spec.width;
   image.height = spec.height;
   image.channels = spec.nchannels;
+  image.display_referred = encoded;
   image.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
   if (!buf.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, image.pixels.data())) {
     error = buf.geterror();

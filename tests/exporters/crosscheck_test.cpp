@@ -8,8 +8,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/input_error.h"
 #include "exporters/pov_export.h"
+#include "renderer/image_io.h"
+#include "renderer/image_output.h"
 #include "renderer/render.h"
+#include "renderer/sky.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
@@ -133,6 +137,84 @@ void expect_agreement(const CrosscheckReport& r) {
   EXPECT_GT(r.tree_iou, 0.9);
   EXPECT_LE(r.luminance_mean_rel_diff, 0.05);
   EXPECT_TRUE(r.pass);
+}
+
+// A reference of the user's: POV-Ray's own images from an earlier run, landsim's render, the
+// render shifted by two pixels, an 8-bit preview of it, an image of the wrong size.
+TEST(Crosscheck, AReferenceImageComparesLikePovRayRunOnTheSpot) {
+  TempDir dir;
+  const Scenario s = small_scene(dir);
+  const renderer::Scene scene = build_scene(s);
+  CrosscheckOptions o;
+  o.out_dir = dir / "run";
+  o.spp = 1;
+  const CrosscheckReport live = crosscheck(s, scene, o);
+  // POV-Ray's images of that run, given back: the same numbers.
+  CrosscheckOptions ref = o;
+  ref.out_dir = dir / "ref";
+  ref.reference = dir / "run" / "pov" / "pov.exr";
+  ref.mask = dir / "run" / "pov" / "mask.png";
+  const CrosscheckReport again = crosscheck(s, scene, ref);
+  EXPECT_EQ(again.object_iou, live.object_iou);
+  EXPECT_EQ(again.luminance_mean_rel_diff, live.luminance_mean_rel_diff);
+  EXPECT_EQ(again.luminance_region_max_rel_diff, live.luminance_region_max_rel_diff);
+  // landsim's own render: identical, no coverage without a mask.
+  ref.reference = dir / "run" / "landsim.exr";
+  ref.mask.clear();
+  const CrosscheckReport own = crosscheck(s, scene, ref);
+  EXPECT_EQ(own.luminance_mean_rel_diff, 0.0);
+  EXPECT_EQ(own.luminance_region_max_rel_diff, 0.0);
+  EXPECT_FALSE(own.coverage_measured);
+  EXPECT_TRUE(own.pass);
+  // Shifted two pixels right: fails; --align finds the shift and passes.
+  renderer::Film film = renderer::read_exr(dir / "run" / "landsim.exr");
+  renderer::Film moved = film;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const int from = std::max(0, x - 2);
+      for (int c = 0; c < 3; ++c)
+        moved.rgb_data()[3 * (static_cast<std::size_t>(y) * film.width() + x) + c] =
+            film.rgb_data()[3 * (static_cast<std::size_t>(y) * film.width() + from) + c];
+    }
+  renderer::write_exr(moved, dir / "moved.exr", {});
+  ref.reference = dir / "moved.exr";
+  ref.max_region_diff = 0.05;  // a regression check's tolerance
+  const CrosscheckReport unaligned = crosscheck(s, scene, ref);
+  EXPECT_FALSE(unaligned.pass) << unaligned.luminance_region_max_rel_diff;
+  ref.align = 3;
+  const CrosscheckReport aligned = crosscheck(s, scene, ref);
+  ASSERT_TRUE(aligned.shift);
+  EXPECT_NEAR((*aligned.shift)[0], -2.0, 0.26);
+  EXPECT_NEAR((*aligned.shift)[1], 0.0, 0.26);
+  EXPECT_TRUE(aligned.pass) << aligned.luminance_region_max_rel_diff;
+  ref.align = 0;
+  ref.max_region_diff = o.max_region_diff;
+  // An 8-bit sRGB image of the render at the export's exposure: within the quantisation.
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
+  const auto gain = static_cast<float>(pov_exposure_gain(scene, sky));
+  renderer::FloatImage png{film.width(), film.height(), 3, film.rgb_data()};
+  for (float& v : png.pixels) v = std::min(1.0f, v * gain);
+  std::string error, warning;
+  ASSERT_TRUE(
+      renderer::image_io().write_png((dir / "ref.png").string(), png, true, {}, error, warning))
+      << error;
+  ref.reference = dir / "ref.png";
+  const CrosscheckReport eight = crosscheck(s, scene, ref);
+  EXPECT_LT(eight.luminance_mean_rel_diff, 0.01);
+  EXPECT_TRUE(eight.pass);
+  // The wrong size: refused, both sizes named.
+  png.width /= 2;
+  png.pixels.resize(static_cast<std::size_t>(png.width) * png.height * 3);
+  ASSERT_TRUE(
+      renderer::image_io().write_png((dir / "small.png").string(), png, true, {}, error, warning));
+  ref.reference = dir / "small.png";
+  try {
+    crosscheck(s, scene, ref);
+    FAIL() << "a reference of the wrong size was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("48 x 64"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("96 x 64"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Crosscheck, SwayingAndLeaningTreesAgreeWithPovRay) {
