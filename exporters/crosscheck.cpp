@@ -113,11 +113,12 @@ constexpr float kHeatFullScale = 0.5f;
 // Rows under the panels for the labels and the heat map's colour bar.
 constexpr int kLegendRows = 34;
 
-// landsim | POV-Ray | heat map, both renders at landsim's automatic exposure (the same gain,
-// so their brightness compares), and under them the panels' names and the heat map's colour
-// bar with its unit.
+// landsim | POV-Ray (or the reference) | heat map, both renders at landsim's automatic exposure
+// (the same gain, so their brightness compares), and under them the panels' names and the heat
+// map's colour bar with its unit.
 void write_side_by_side(const renderer::Film& film, const renderer::FloatImage& pov,
-                        const std::vector<float>& heat, const std::filesystem::path& path) {
+                        const std::vector<float>& heat, const std::string& other,
+                        const std::filesystem::path& path) {
   const int w = film.width(), h = film.height();
   const int rows = h + kLegendRows;
   renderer::FloatImage out{3 * w, rows, 3,
@@ -150,7 +151,7 @@ void write_side_by_side(const renderer::Film& film, const renderer::FloatImage& 
     }
   const std::vector<renderer::ImageLabel> labels = {
       {2, h + 28, "landsim"},
-      {w + 2, h + 28, "POV-Ray"},
+      {w + 2, h + 28, other},
       {2 * w + 2, h + 28, "0"},
       {2 * w + 24, h + 28, "|dL|/L"},
       {2 * w + std::max(80, w - 44), h + 28, fmt::format("{:.0f}%+", 100.0f * kHeatFullScale)}};
@@ -425,7 +426,8 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   r.pass = (!r.coverage_measured || r.object_iou >= o.min_iou) &&
            r.luminance_mean_rel_diff <= o.max_mean_diff &&
            r.luminance_region_max_rel_diff <= o.max_region_diff;
-  write_side_by_side(film, pov, heat, o.out_dir / "side_by_side.png");
+  write_side_by_side(film, pov, heat, o.reference.empty() ? "POV-Ray" : "reference",
+                     o.out_dir / "side_by_side.png");
   write_reports(r, o, o.out_dir);
   return r;
 }
