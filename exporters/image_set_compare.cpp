@@ -170,6 +170,14 @@ SetComparison compare_image_sets(const std::filesystem::path& a, const std::file
   return c;
 }
 
+std::string comparison_json(const SetComparison& c) {
+  nlohmann::json images = nlohmann::json::array();
+  for (const ImageDifference& d : c.images) images.push_back(to_json(d));
+  return nlohmann::json{
+      {"images", images}, {"only_in_a", c.only_in_a}, {"only_in_b", c.only_in_b}, {"pass", c.pass}}
+      .dump();
+}
+
 void write_compare_reports(const SetComparison& c, const CompareOptions& o,
                            const std::filesystem::path& a, const std::filesystem::path& b,
                            const std::filesystem::path& dir) {

@@ -44,6 +44,9 @@ struct SetComparison {
 SetComparison compare_image_sets(const std::filesystem::path& a, const std::filesystem::path& b,
                                  const CompareOptions& options);
 
+// The comparison as one JSON object (`landsim compare --json`, docs/JSON.md).
+std::string comparison_json(const SetComparison& c);
+
 // report.json and report.html in `dir` (written atomically).
 void write_compare_reports(const SetComparison& c, const CompareOptions& options,
                            const std::filesystem::path& a, const std::filesystem::path& b,

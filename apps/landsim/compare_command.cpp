@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <iostream>
 
@@ -51,24 +50,7 @@ int run_compare(const CompareArgs& args) {
   std::size_t failed = 0;
   for (const exporters::ImageDifference& d : c.images) failed += d.pass ? 0 : 1;
   if (args.json) {
-    nlohmann::json images = nlohmann::json::array();
-    for (const exporters::ImageDifference& d : c.images)
-      images.push_back({{"view", d.view},
-                        {"frame_index", d.frame},
-                        {"luminance_mean_rel_diff", d.luminance_mean_rel_diff},
-                        {"luminance_region_max_rel_diff", d.luminance_region_max_rel_diff},
-                        {"depth_mean_rel_diff", d.depth_mean_rel_diff},
-                        {"normal_mean_angle_deg", d.normal_mean_angle_deg},
-                        {"object_mismatch", d.object_mismatch},
-                        {"species_mismatch", d.species_mismatch},
-                        {"size_mismatch", d.size_mismatch},
-                        {"pass", d.pass}});
-    std::cout << nlohmann::json{{"images", images},
-                                {"only_in_a", c.only_in_a},
-                                {"only_in_b", c.only_in_b},
-                                {"pass", c.pass}}
-                     .dump()
-              << "\n";
+    std::cout << exporters::comparison_json(c) << "\n";
   } else {
     for (const exporters::ImageDifference& d : c.images)
       if (!d.pass)
