@@ -226,20 +226,17 @@ renderer::FloatImage shifted(const renderer::FloatImage& in, double dx, double d
   return out;
 }
 
-// Mean relative luminance difference over landsim's object pixels, the reference shifted by
-// (dx, dy).
-double misfit(const renderer::Film& film, const renderer::FloatImage& ref, double dx, double dy) {
+// Mean relative luminance difference of `ref` over landsim's object pixels.
+double misfit(const renderer::Film& film, const renderer::FloatImage& ref) {
   double sum = 0.0;
   std::size_t n = 0;
   float px[3];
-  for (int y = 1; y + 1 < film.height(); ++y)
-    for (int x = 1; x + 1 < film.width(); ++x) {
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
       if (film.object(x, y) == 0) continue;
-      const double sx = std::clamp(x - dx, 0.0, ref.width - 1.0);
-      const double sy = std::clamp(y - dy, 0.0, ref.height - 1.0);
-      pixel3(ref, static_cast<int>(std::lround(sx)), static_cast<int>(std::lround(sy)), px);
-      const double la = film.luminance(x, y), lb = luminance(px);
-      sum += std::abs(la - lb) / std::max(la, 1e-6);
+      pixel3(ref, x, y, px);
+      const double la = film.luminance(x, y);
+      sum += std::abs(la - luminance(px)) / std::max(la, 1e-6);
       ++n;
     }
   return n > 0 ? sum / static_cast<double>(n) : 0.0;
@@ -250,13 +247,13 @@ double misfit(const renderer::Film& film, const renderer::FloatImage& ref, doubl
 std::array<double, 2> best_shift(const renderer::Film& film, const renderer::FloatImage& ref,
                                  int reach) {
   std::array<double, 2> best{0.0, 0.0};
-  double best_misfit = misfit(film, ref, 0.0, 0.0);
+  double best_misfit = misfit(film, ref);
   const auto search = [&](double cx, double cy, double step, int steps) {
     for (int j = -steps; j <= steps; ++j)
       for (int i = -steps; i <= steps; ++i) {
         const double dx = cx + i * step, dy = cy + j * step;
         if (std::abs(dx) > reach || std::abs(dy) > reach) continue;
-        const double m = misfit(film, shifted(ref, dx, dy), 0.0, 0.0);
+        const double m = misfit(film, shifted(ref, dx, dy));
         if (m < best_misfit - 1e-12) {
           best_misfit = m;
           best = {dx, dy};

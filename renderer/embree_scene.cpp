@@ -119,11 +119,6 @@ Vec3f rotate_z(const Vec3f& v, double angle) {
   return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
-// A direction of a tree's frame, turned about z already, turned by the tree's lean.
-Vec3f leaned(const TreeInstance& inst, const Vec3f& v) {
-  return inst.leans() ? Vec3f(inst.apply_lean(Vec3(v))) : v;
-}
-
 // A triangle hit's vertex normal (attribute 0), turned by `rotation` about z; `fallback`
 // where the interpolation degenerates.
 Vec3f interpolated_normal(RTCGeometry geom, const RTCHit& hit, double rotation,
@@ -162,13 +157,9 @@ std::array<float, 12> object_matrix(const ObjectInstance& o) {
   return m;
 }
 
-// A direction in an object's frame turned into the scene's (the transform's linear part is
-// a rotation times a uniform scale, so normals transform like directions).
+// A direction in an object's frame turned into the scene's, unit.
 Vec3f object_to_scene(const ObjectInstance& o, const Vec3f& d) {
-  const auto& m = o.transform;
-  return normalize(Vec3f{static_cast<float>(m[0] * d.x + m[3] * d.y + m[6] * d.z),
-                         static_cast<float>(m[1] * d.x + m[4] * d.y + m[7] * d.z),
-                         static_cast<float>(m[2] * d.x + m[5] * d.y + m[8] * d.z)});
+  return normalize(Vec3f(o.turn(Vec3(d))));
 }
 
 struct EmbreeScene::Impl {
@@ -178,7 +169,16 @@ struct EmbreeScene::Impl {
   std::vector<std::unique_ptr<detail::PrototypeLevels>> prototypes;
   std::vector<RTCScene> grass_patches;      // (type (0-2) x variant) x level
   std::vector<RTCScene> object_prototypes;  // one per Scene::object_prototypes
-  std::vector<TopLevelEntry> top;           // by top-level geometry ID
+  // Each tree's lean as a rotation's columns, found once (empty when no tree leans).
+  std::vector<std::array<Vec3f, 3>> leans;
+
+  // A direction of tree `index`'s frame, turned about z already, turned by its lean.
+  Vec3f leaned(std::int32_t index, const Vec3f& v) const {
+    if (leans.empty()) return v;
+    const std::array<Vec3f, 3>& m = leans[static_cast<std::size_t>(index)];
+    return m[0] * v.x + m[1] * v.y + m[2] * v.z;
+  }
+  std::vector<TopLevelEntry> top;  // by top-level geometry ID
   const Scene* source = nullptr;
   // What a grass patch's filter needs: its blades' roots, its type, where its instances are.
   struct GrassFilter {
@@ -425,6 +425,13 @@ EmbreeScene::EmbreeScene(const Scene& scene, const View* view, Contents contents
     impl_->top.resize(id + 1);
   }
   const std::vector<detail::LevelBlend> blends = impl_->build_prototypes(scene, view);
+  if (std::any_of(scene.instances.begin(), scene.instances.end(),
+                  [](const TreeInstance& t) { return t.leans(); })) {
+    impl_->leans.reserve(scene.instances.size());
+    for (const TreeInstance& t : scene.instances)
+      impl_->leans.push_back({Vec3f(t.apply_lean({1, 0, 0})), Vec3f(t.apply_lean({0, 1, 0})),
+                              Vec3f(t.apply_lean({0, 0, 1}))});
+  }
   impl_->errors.check("building the tree prototypes");
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     impl_->add_instance(scene.instances[i], static_cast<std::int32_t>(i), blends[i]);
@@ -516,14 +523,14 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& ray, float t_near, float t_
   hit.far_primitive = info.kind != detail::PrimitiveKind::triangles;
   // Instanced hits report normals in the prototype's space: turn them into the world's
   // (the instance transform is a rotation about z and a uniform scale).
-  hit.geometric_normal = normalize(leaned(inst, rotate_z(ng, inst.rotation)));
+  hit.geometric_normal = normalize(impl_->leaned(hit.instance, rotate_z(ng, inst.rotation)));
   if (hit.far_primitive) {
     hit.shading_normal = hit.geometric_normal;  // lines and discs: their own normal
     return hit;
   }
   RTCGeometry owner = rtcGetGeometry(level.scene, rh.hit.geomID);
-  hit.shading_normal =
-      leaned(inst, interpolated_normal(owner, rh.hit, inst.rotation, hit.geometric_normal));
+  hit.shading_normal = impl_->leaned(
+      hit.instance, interpolated_normal(owner, rh.hit, inst.rotation, hit.geometric_normal));
   if (hit.object == ObjectClass::bark && impl_->source->prototypes[inst.prototype].bark_texture)
     texture_coordinates(owner, rh.hit, hit);
   return hit;

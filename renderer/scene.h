@@ -185,13 +185,10 @@ struct TreeInstance {
   // after the rotation, as axis x angle (radians); zero: upright.
   Vec3 lean{};
   bool leans() const { return lean.x != 0.0 || lean.y != 0.0 || lean.z != 0.0; }
-  // The lean as a rotation of `v` (Rodrigues).
+  // The lean as a rotation of `v`.
   Vec3 apply_lean(const Vec3& v) const {
     const double angle = length(lean);
-    if (angle == 0.0) return v;
-    const Vec3 u = lean / angle;
-    const double c = std::cos(angle), s = std::sin(angle);
-    return v * c + cross(u, v) * s + u * (dot(u, v) * (1.0 - c));
+    return angle == 0.0 ? v : rotate_about(v, lean / angle, angle);
   }
 };
 
@@ -226,11 +223,15 @@ struct ObjectInstance {
   // the translation.
   std::array<double, 12> transform{1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
   std::vector<ObjectMaterial> materials;  // one per prototype material, overrides applied
-  Vec3 apply(const Vec3f& p) const {
+  // A direction of the object's frame in the scene's (the transform's linear part; normals
+  // transform alike, the scale being uniform).
+  Vec3 turn(const Vec3& d) const {
     const auto& m = transform;
-    return {m[0] * p.x + m[3] * p.y + m[6] * p.z + m[9],
-            m[1] * p.x + m[4] * p.y + m[7] * p.z + m[10],
-            m[2] * p.x + m[5] * p.y + m[8] * p.z + m[11]};
+    return {m[0] * d.x + m[3] * d.y + m[6] * d.z, m[1] * d.x + m[4] * d.y + m[7] * d.z,
+            m[2] * d.x + m[5] * d.y + m[8] * d.z};
+  }
+  Vec3 apply(const Vec3f& p) const {
+    return turn(Vec3(p)) + Vec3{transform[9], transform[10], transform[11]};
   }
 };
 

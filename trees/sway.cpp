@@ -30,14 +30,11 @@ struct Rigid {
   }
 };
 
-// Rotation by `angle` radians about the unit axis `u` through `pivot` (Rodrigues).
+// Rotation by `angle` radians about the unit axis `u` through `pivot`.
 Rigid rotation_about(const Vec3& pivot, const Vec3& u, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  const auto turn = [&](const Vec3& v) {
-    return v * c + cross(u, v) * s + u * (dot(u, v) * (1 - c));
-  };
   Rigid q;
-  q.r = {turn({1, 0, 0}), turn({0, 1, 0}), turn({0, 0, 1})};
+  q.r = {rotate_about({1, 0, 0}, u, angle), rotate_about({0, 1, 0}, u, angle),
+         rotate_about({0, 0, 1}, u, angle)};
   q.t = pivot - q.rotate(pivot);
   return q;
 }
@@ -260,8 +257,8 @@ void apply_sway(TreeSkeleton& skeleton, const WindState& wind) {
       leaf.normal = normalize(m.rotate(leaf.normal));
     }
     // Flutter: the blade twists about its own line (the petiole's) and keeps its base.
-    const Rigid twist = rotation_about(leaf.base, leaf.direction, radians(flutter_angle(wind, i)));
-    leaf.normal = normalize(twist.rotate(leaf.normal));
+    leaf.normal =
+        normalize(rotate_about(leaf.normal, leaf.direction, radians(flutter_angle(wind, i))));
   }
   // The sections last: every motion above was found on the calm positions.
   for (std::size_t i = 0; i < skeleton.stems.size(); ++i) {

@@ -44,16 +44,16 @@ Matrix3 heading_rotation(double heading_deg) {
   return {c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0};
 }
 
-// The shortest rotation taking +z to the unit vector `n` (Rodrigues' formula).
+// The shortest rotation taking +z to the unit vector `n`: about z x n.
 Matrix3 tilt_to(const Vec3& n) {
   const Vec3 k{-n.y, n.x, 0.0};  // z x n
-  const double c = n.z;
-  const Matrix3 kx{0.0, -k.z, k.y, k.z, 0.0, -k.x, -k.y, k.x, 0.0};
-  const Matrix3 kx2 = mul(kx, kx);
-  const double f = 1.0 / (1.0 + c);
-  Matrix3 r{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
-  for (int i = 0; i < 9; ++i) r[i] += kx[i] + kx2[i] * f;
-  return r;
+  const double sin_angle = length(k);
+  if (sin_angle < 1e-12) return {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
+  const double angle = std::atan2(sin_angle, n.z);
+  const Vec3 u = k / sin_angle;
+  const Vec3 x = rotate_about({1, 0, 0}, u, angle), y = rotate_about({0, 1, 0}, u, angle),
+             z = rotate_about({0, 0, 1}, u, angle);
+  return {x.x, y.x, z.x, x.y, y.y, z.y, x.z, y.z, z.z};  // row-major, the columns turned
 }
 
 std::string where(const ObjectSettings& o, const std::string& location, std::string_view key) {
@@ -177,6 +177,13 @@ Vec3 ground_plane_normal(const renderer::ObjectPrototype& p, const Matrix3& turn
   const double b = det(mb) / d, c = det(mc) / d;
   return normalize(Vec3{-b, -c, 1.0});
 }
+
+// An object's transform (object frame -> scene frame, column-major 3 x 4) and the radius of
+// its footprint about its position.
+struct ObjectPlacement {
+  std::array<double, 12> transform{};
+  double footprint_radius = 0.0;
+};
 
 // Places `p` for `o`: heading, then (aligned) the tilt to the ground's plane, scaled; then
 // lowered onto the ground until one vertex touches it and none is below it.

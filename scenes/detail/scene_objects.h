@@ -22,11 +22,4 @@ void add_objects(const Scenario& s, renderer::Scene& scene,
 // at the object's `file` key when it cannot be read or has no faces.
 const MeshData& read_object_mesh(const ObjectSettings& o, std::map<std::string, MeshData>& files);
 
-// An object's transform (object frame -> scene frame, column-major 3 x 4) and the radius of
-// its footprint about its position, as add_objects places it.
-struct ObjectPlacement {
-  std::array<double, 12> transform{};
-  double footprint_radius = 0.0;
-};
-
 }  // namespace landsim::scenes::detail
