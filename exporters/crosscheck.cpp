@@ -17,6 +17,7 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "exporters/pov_camera.h"
 #include "exporters/pov_export.h"
 #include "renderer/exposure.h"
 #include "renderer/image_output.h"
@@ -34,27 +35,49 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// Runs POV-Ray in `dir` (so that meshes.inc is found); returns seconds. Its output goes to
-// povray.log; with `progress`, its "Rendered N of M pixels (P%)" lines are reported by tenths.
-double run_povray(const std::filesystem::path& dir, const std::string& args, bool progress) {
+// Runs POV-Ray on `scene` from the directory `cwd` (where its includes are found), writing
+// `output` (relative to cwd, or in /tmp: POV-Ray's default I/O restrictions allow no other
+// place); returns seconds. Its output is appended to `log`; with `progress`, its "Rendered N
+// of M pixels (P%)" lines are reported by tenths. Paths reach the shell as environment
+// variables, so no file name can inject a command.
+double run_povray(const std::filesystem::path& cwd, const std::filesystem::path& scene,
+                  const std::string& output, const std::string& args, bool progress,
+                  const std::filesystem::path& log) {
   const auto start = std::chrono::steady_clock::now();
-  // POV-Ray rewrites its progress line with carriage returns: one line per update.
-  const std::string cmd = "cd '" + dir.string() + "' && povray scene.pov " + args +
-                          (progress ? " +V" : "") + " 2>&1 | tr '\\r' '\\n' | tee -a povray.log";
-  FILE* pipe = ::popen(("bash -c \"set -o pipefail; " + cmd + "\"").c_str(), "r");
+  ::setenv("LS_POV_DIR", cwd.c_str(), 1);
+  ::setenv("LS_POV_SCENE", scene.c_str(), 1);
+  ::setenv("LS_POV_OUTPUT", output.c_str(), 1);
+  // POV-Ray's own option parser takes names with spaces or semicolons only in double quotes.
+  const std::string cmd =
+      "cd \"$LS_POV_DIR\" && exec povray \"+I\\\"$LS_POV_SCENE\\\"\" "
+      "\"+O\\\"$LS_POV_OUTPUT\\\"\" " +
+      args + (progress ? " +V" : "") + " 2>&1";
+  FILE* pipe = ::popen(cmd.c_str(), "r");
   if (pipe == nullptr) throw std::runtime_error("cannot run POV-Ray");
+  std::ofstream log_file(log, std::ios::app);
   static const std::regex kPercent(R"(Rendered \d+ of \d+ pixels \((\d+)%\))");
-  std::array<char, 4096> line{};
   int reported = -1;
-  while (std::fgets(line.data(), static_cast<int>(line.size()), pipe) != nullptr) {
-    std::cmatch m;
-    if (!progress || !std::regex_search(line.data(), m, kPercent)) continue;
-    const int percent = std::stoi(m[1].str());
-    if (percent / 10 > reported / 10) spdlog::info("crosscheck: POV-Ray {}%", percent);
-    reported = percent;
+  std::string line;
+  // POV-Ray rewrites its progress line with carriage returns: each is a line of its own.
+  const auto finish_line = [&] {
+    log_file << line << '\n';
+    std::smatch m;
+    if (progress && std::regex_search(line, m, kPercent)) {
+      const int percent = std::stoi(m[1].str());
+      if (percent / 10 > reported / 10) spdlog::info("crosscheck: POV-Ray {}%", percent);
+      reported = percent;
+    }
+    line.clear();
+  };
+  for (int c = std::fgetc(pipe); c != EOF; c = std::fgetc(pipe)) {
+    if (c == '\r' || c == '\n') {
+      finish_line();
+    } else {
+      line.push_back(static_cast<char>(c));
+    }
   }
-  if (::pclose(pipe) != 0)
-    throw std::runtime_error("POV-Ray failed: see " + (dir / "povray.log").string());
+  if (!line.empty()) finish_line();
+  if (::pclose(pipe) != 0) throw std::runtime_error("POV-Ray failed: see " + log.string());
   return seconds_since(start);
 }
 
@@ -162,6 +185,18 @@ void write_side_by_side(const renderer::Film& film, const renderer::FloatImage& 
   file.commit();
 }
 
+}  // namespace
+
+nlohmann::json camera_json(const std::optional<renderer::View>& camera) {
+  if (!camera) return nullptr;
+  const auto v = [](const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); };
+  return {{"position", v(camera->position)},
+          {"target", v(camera->target)},
+          {"fov_y_deg", camera->fov_y_deg}};
+}
+
+namespace {
+
 void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
                    const std::filesystem::path& dir) {
   const nlohmann::json j = {
@@ -180,6 +215,7 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
         {"max_region_diff", o.max_region_diff}}},
       {"coverage_measured", r.coverage_measured},
       {"shift", r.shift ? nlohmann::json(*r.shift) : nlohmann::json()},
+      {"camera", camera_json(r.camera)},
       {"pass", r.pass}};
   {
     AtomicFile json(dir / "report.json");
@@ -198,13 +234,20 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
       "IoU<td>{:.4f}\n"
       "<tr><td>ground IoU<td>{:.4f}\n{}<tr><td>mean luminance difference<td>{:.2f}% (max {:.0f}%)\n"
       "<tr><td>largest region difference<td>{:.2f}% (max {:.0f}%)\n<tr><td>landsim<td>{:.2f} s\n"
-      "<tr><td>POV-Ray<td>{:.2f} s</table>\n",
+      "<tr><td>POV-Ray<td>{:.2f} s\n{}</table>\n",
       r.pass ? "pass" : "FAIL", r.scene_object_iou ? ", scene objects" : "", r.object_iou,
       o.min_iou, r.tree_iou, r.ground_iou,
       r.scene_object_iou ? fmt::format("<tr><td>scene objects IoU<td>{:.4f}\n", *r.scene_object_iou)
                          : std::string(),
       100 * r.luminance_mean_rel_diff, 100 * o.max_mean_diff, 100 * r.luminance_region_max_rel_diff,
-      100 * o.max_region_diff, r.landsim_seconds, r.povray_seconds);
+      100 * o.max_region_diff, r.landsim_seconds, r.povray_seconds,
+      r.camera
+          ? fmt::format("<tr><td>camera read from {}<td>at ({:.2f}, {:.2f}, {:.2f}) looking at "
+                        "({:.2f}, {:.2f}, {:.2f}), {:.2f} degrees high\n",
+                        o.pov_scene.filename().string(), r.camera->position.x, r.camera->position.y,
+                        r.camera->position.z, r.camera->target.x, r.camera->target.y,
+                        r.camera->target.z, r.camera->fov_y_deg)
+          : std::string());
   html.commit();
 }
 
@@ -306,12 +349,83 @@ void load_reference(const CrosscheckOptions& o, const renderer::Film& film, doub
   ref = std::move(image);
 }
 
+// Where POV-Ray runs: the directory it starts in, the scene file, and where its images go
+// ("" : the run directory itself; else a directory under /tmp).
+struct PovRun {
+  std::filesystem::path cwd, scene, out, log;
+};
+
+// POV-Ray's colour image (EXR in cd/m2: LS_Exposure 1) with about `spp` samples (the nearest
+// n x n antialiasing grid) and, with `mask`, its flat class colours (LS_Mask 1): pov.exr and
+// mask.png in the run's output directory. Returns the colour render's seconds.
+double render_with_povray(const PovRun& run, const renderer::View& view, int spp, bool mask) {
+  spdlog::info("crosscheck: POV-Ray rendering (its log: {})", run.log.string());
+  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(spp)))));
+  const std::string size = fmt::format("+W{} +H{} -D -V", view.width, view.height);
+  const auto output = [&](const char* name) {
+    return run.out.empty() ? std::string(name) : (run.out / name).string();
+  };
+  const double seconds = run_povray(
+      run.cwd, run.scene, output("pov.exr"),
+      size + fmt::format(" +FE +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1", n), true,
+      run.log);
+  spdlog::info("crosscheck: POV-Ray done in {:.1f} s", seconds);
+  if (mask) {
+    spdlog::info("crosscheck: POV-Ray's class mask");
+    run_povray(run.cwd, run.scene, output("mask.png"), size + " +FN -A Declare=LS_Mask=1", false,
+               run.log);
+  }
+  return seconds;
+}
+
+// The user's own scene (--pov) rendered by POV-Ray from its own directory, its images moved
+// into pov_dir. Its class mask only when the scene uses LS_Mask (as landsim's export does).
+void render_user_scene(const CrosscheckOptions& o, const renderer::View& view,
+                       const std::filesystem::path& pov_dir, renderer::FloatImage& pov,
+                       renderer::FloatImage& mask, CrosscheckReport& r) {
+  std::filesystem::create_directories(pov_dir);
+  const std::filesystem::path file = std::filesystem::absolute(o.pov_scene);
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const bool has_mask = text.find("LS_Mask") != std::string::npos;
+  std::string tmp = "/tmp/landsim-pov-XXXXXX";
+  if (::mkdtemp(tmp.data()) == nullptr) throw std::runtime_error("cannot make a directory in /tmp");
+  const std::filesystem::path out = tmp;
+  if (file.filename().string().find('"') != std::string::npos)
+    throw InputError(file.string() + ": POV-Ray cannot read a file whose name has a double quote");
+  const PovRun run{file.parent_path(), file.filename(), out, pov_dir / "povray.log"};
+  try {
+    r.povray_seconds = render_with_povray(run, view, o.spp, has_mask);
+    for (const char* name : {"pov.exr", "mask.png"})
+      if (std::filesystem::exists(out / name))
+        std::filesystem::copy_file(out / name, pov_dir / name,
+                                   std::filesystem::copy_options::overwrite_existing);
+  } catch (...) {
+    std::filesystem::remove_all(out);
+    throw;
+  }
+  std::filesystem::remove_all(out);
+  pov = read_image(pov_dir / "pov.exr");
+  if (has_mask) {
+    mask = read_image(pov_dir / "mask.png");
+  } else {
+    spdlog::warn("crosscheck: {} does not use LS_Mask: object coverage is not compared",
+                 file.string());
+    r.coverage_measured = false;
+  }
+}
+
 }  // namespace
 
 CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Scene& scene,
                             const CrosscheckOptions& o) {
   (void)scenario;
-  const renderer::View& view = scene.views.at(o.view);
+  CrosscheckReport r;
+  renderer::View view = scene.views.at(o.view);
+  if (!o.pov_scene.empty()) {
+    view = pov_camera_view(read_pov_camera(o.pov_scene, view.width, view.height), view);
+    r.camera = view;
+  }
   const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
   PovExportOptions pov_options;
   pov_options.ambient_irradiance = sky.horizontal_irradiance();
@@ -320,7 +434,7 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   pov_options.sky_horizon = pov_options.fog_colour;
   const std::filesystem::path pov_dir = o.out_dir / "pov";
   std::filesystem::create_directories(o.out_dir);
-  if (o.reference.empty()) {
+  if (o.reference.empty() && o.pov_scene.empty()) {
     renderer::View pov_view = view;
     pov_view.position += o.pov_camera_shift;
     pov_view.target += o.pov_camera_shift;
@@ -336,7 +450,6 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   ro.threads = o.threads;
   ro.centre_first_sample = true;
   ro.comparable = renderer::ComparableLight{pov_options.ambient_irradiance, pov_options.fog_colour};
-  CrosscheckReport r;
   spdlog::info("crosscheck: landsim (POV-comparable mode), {} x {}, {} spp", view.width,
                view.height, o.spp);
   ro.progress = [last = -1](double f) mutable {
@@ -351,21 +464,15 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   renderer::write_exr(film, o.out_dir / "landsim.exr", {{"mode", "POV-comparable"}});
 
   renderer::FloatImage pov, mask;
-  if (o.reference.empty()) {
-    spdlog::info("crosscheck: POV-Ray rendering (its log: {})", (pov_dir / "povray.log").string());
-    const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(o.spp)))));
-    const std::string size = fmt::format("+W{} +H{} -D -V", view.width, view.height);
-    r.povray_seconds = run_povray(
-        pov_dir,
-        size + fmt::format(" +FE +Opov.exr +A0.0 +AM1 +R{} Declare=LS_Mask=0 Declare=LS_Exposure=1",
-                           n),
-        true);
-    spdlog::info("crosscheck: POV-Ray done in {:.1f} s; its class mask", r.povray_seconds);
-    run_povray(pov_dir, size + " +FN +Omask.png -A Declare=LS_Mask=1", false);
+  if (!o.reference.empty()) {
+    load_reference(o, film, pov_exposure_gain(scene, sky), pov, mask, r);
+  } else if (!o.pov_scene.empty()) {
+    render_user_scene(o, view, pov_dir, pov, mask, r);
+  } else {
+    PovRun run{pov_dir, "scene.pov", "", pov_dir / "povray.log"};
+    r.povray_seconds = render_with_povray(run, view, o.spp, true);
     pov = read_image(pov_dir / "pov.exr");
     mask = read_image(pov_dir / "mask.png");
-  } else {
-    load_reference(o, film, pov_exposure_gain(scene, sky), pov, mask, r);
   }
 
   const int w = film.width(), h = film.height();

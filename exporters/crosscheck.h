@@ -5,6 +5,7 @@
 // relative luminance over the pixels both see as objects, overall and per region.
 #include <array>
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 
@@ -33,6 +34,9 @@ struct CrosscheckOptions {
   // Before comparing, search translations of the reference of up to this many pixels (in
   // quarter pixels) for the one that fits landsim's render best.
   int align = 0;
+  // A user's own POV-Ray scene, rendered by POV-Ray instead of the export, landsim rendering
+  // the view at that scene's camera (docs/CROSSCHECK.md "Against a POV-Ray scene").
+  std::filesystem::path pov_scene;
 };
 
 struct CrosscheckReport {
@@ -45,6 +49,7 @@ struct CrosscheckReport {
   // when not, the IoUs stay 0 and do not count against passing.
   bool coverage_measured = true;
   std::optional<std::array<double, 2>> shift;  // the --align translation applied, pixels
+  std::optional<renderer::View> camera;        // with pov_scene: the view read from its camera
   double landsim_seconds = 0.0;
   double povray_seconds = 0.0;
   bool pass = false;
@@ -55,5 +60,8 @@ struct CrosscheckReport {
 // std::runtime_error when POV-Ray cannot be run.
 CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Scene& scene,
                             const CrosscheckOptions& options);
+
+// The report's `camera` (position, target in the scene frame, fov_y_deg), null without one.
+nlohmann::json camera_json(const std::optional<renderer::View>& camera);
 
 }  // namespace landsim::exporters

@@ -42,6 +42,10 @@ CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
   cmd->add_option("--align", args.align,
                   "Search translations of the reference up to this many pixels first")
       ->check(CLI::Range(0, 16));
+  cmd->add_option("--pov", args.pov,
+                  "Render this POV-Ray scene with POV-Ray and landsim at its camera, and compare")
+      ->check(CLI::ExistingFile)
+      ->excludes("--reference");
   return cmd;
 }
 
@@ -60,6 +64,7 @@ int run_crosscheck(const CrosscheckArgs& args) {
   o.reference = args.reference;
   o.mask = args.mask;
   o.align = args.align;
+  o.pov_scene = args.pov;
   if (!o.mask.empty() && o.reference.empty())
     throw InputError("crosscheck --mask: only with --reference (POV-Ray makes its own mask)");
   const exporters::CrosscheckReport r = exporters::crosscheck(s, scene, o);
@@ -72,6 +77,7 @@ int run_crosscheck(const CrosscheckArgs& args) {
                      {"pass", r.pass}};
     if (r.scene_object_iou) j["scene_object_iou"] = *r.scene_object_iou;
     if (r.shift) j["shift"] = *r.shift;
+    if (r.camera) j["camera"] = exporters::camera_json(r.camera);
     std::cout << j.dump() << "\n";
   } else {
     std::cout << fmt::format(

@@ -1,7 +1,7 @@
 #pragma once
 // `landsim crosscheck SCENARIO --out DIR [--view NAME] [--spp N] [--min-iou X]
 //                     [--max-mean-diff X] [--max-region-diff X] [--json]
-//                     [--reference IMAGE [--mask MASK] [--align N]]`
+//                     [--reference IMAGE [--mask MASK] [--align N] | --pov FILE.pov]`
 #include <optional>
 #include <string>
 
@@ -24,6 +24,7 @@ struct CrosscheckArgs {
   bool json = false;
   std::string reference, mask;  // a reference image of the user's, and its class mask
   int align = 0;                // pixels of translation searched
+  std::string pov;              // a POV-Ray scene of the user's, rendered at its camera
 };
 
 // Exit code of a cross-check that ran but did not pass.

@@ -745,6 +745,26 @@ TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
       run("export-pov " + file.string() + " --out " + (dir / "p2").string() + " --frame 5", dir)
           .exit_code,
       2);
+  // The export as a user's own scene: compared at its camera; a camera landsim cannot match
+  // and --pov with --reference are refused (exit 2), nothing written.
+  const std::string scene_pov = (dir / "pov" / "scene.pov").string();
+  const Result own = run("crosscheck " + file.string() + " --out " + (dir / "own").string() +
+                             " --spp 1 --json --pov " + scene_pov,
+                         dir);
+  ASSERT_EQ(own.exit_code, 0) << own.err;
+  EXPECT_EQ(nlohmann::json::parse(own.out)["pass"], true) << own.out;
+  dir.write("turned.pov", "// a user's scene\ncamera {\n  location <1, 2, 3>\n  rotate y*30\n}\n");
+  const Result turned = run("crosscheck " + file.string() + " --out " + (dir / "t").string() +
+                                " --pov " + (dir / "turned.pov").string(),
+                            dir);
+  EXPECT_EQ(turned.exit_code, 2);
+  EXPECT_NE(turned.err.find("turned.pov:4: camera: rotate"), std::string::npos) << turned.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "t" / "report.json"));
+  const Result both = run("crosscheck " + file.string() + " --out " + (dir / "u").string() +
+                              " --pov " + scene_pov + " --reference " + scene_pov,
+                          dir);
+  EXPECT_EQ(both.exit_code, 2) << both.err;
+  EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
 }
 
 TEST(Cli, InfoDescribesTheDefaultScene) {

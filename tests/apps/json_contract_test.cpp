@@ -124,6 +124,15 @@ TEST(JsonContract, Crosscheck) {
                               "position = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, 130.0]\n"
                               "width = 32\nheight = 18\n");
   expect_contract("crosscheck", file.string() + " --spp 1 --out " + (dir / "c").string(), dir);
+  // With --pov the camera it read is reported too.
+  ASSERT_EQ(
+      testing::run_landsim("export-pov " + file.string() + " --out " + (dir / "p").string(), dir)
+          .exit_code,
+      0);
+  expect_contract("crosscheck",
+                  file.string() + " --spp 1 --out " + (dir / "d").string() + " --pov " +
+                      (dir / "p" / "scene.pov").string(),
+                  dir);
 }
 
 TEST(JsonContract, Compare) {

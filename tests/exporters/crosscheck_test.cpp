@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <fstream>
+#include <numbers>
+#include <regex>
 #include <sstream>
 
 #include "core/input_error.h"
@@ -269,6 +274,89 @@ TEST(Crosscheck, AMovedCameraFails) {
   const CrosscheckReport r = crosscheck(s, scene, o);
   EXPECT_LT(r.object_iou, 0.98);
   EXPECT_FALSE(r.pass);
+}
+
+// A user's own POV-Ray scene: the stand seen from elsewhere (the export of a run whose POV-Ray
+// camera was moved), its camera block rewritten as a user writes one. landsim at the
+// scenario's view does not match POV-Ray's framing; landsim at the file's camera does.
+TEST(Crosscheck, AUsersPovSceneIsComparedAtItsCamera) {
+  TempDir dir;
+  const Scenario s = small_scene(dir);
+  const renderer::Scene scene = build_scene(s);
+  CrosscheckOptions o;
+  o.out_dir = dir / "moved";
+  o.spp = 1;
+  o.pov_camera_shift = {6.0, -4.0, 2.0};
+  const CrosscheckReport at_view = crosscheck(s, scene, o);
+  EXPECT_LT(at_view.object_iou, 0.95);
+  // The camera as a user writes it: POV-Ray's frame (y up), the aspect from the image size,
+  // the horizontal angle.
+  const renderer::View& v = scene.views[0];
+  const Vec3 p = v.position + o.pov_camera_shift, t = v.target + o.pov_camera_shift;
+  const double aspect = static_cast<double>(v.width) / v.height;
+  const double angle = 2.0 * std::atan(std::tan(v.fov_y_deg * std::numbers::pi / 360.0) * aspect) *
+                       180.0 / std::numbers::pi;
+  std::string text = landsim::testing::read_file(o.out_dir / "pov" / "scene.pov");
+  text = std::regex_replace(
+      text, std::regex("camera \\{[^}]*\\}"),
+      fmt::format("camera {{\n  location <{}, {}, {}>  // the stand, from the south-east\n"
+                  "  right x*image_width/image_height\n  angle {}\n  look_at <{}, {}, {}>\n}}",
+                  p.x, p.z, p.y, angle, t.x, t.z, t.y));
+  const auto user = dir / "user" / "scene.pov";
+  std::filesystem::create_directories(user.parent_path());
+  std::ofstream(user) << text;
+  std::filesystem::copy_file(o.out_dir / "pov" / "meshes.inc", dir / "user" / "meshes.inc");
+  CrosscheckOptions mine = o;
+  mine.out_dir = dir / "mine";
+  mine.pov_camera_shift = {};
+  mine.pov_scene = user;
+  const CrosscheckReport r = crosscheck(s, scene, mine);
+  ASSERT_TRUE(r.camera);
+  EXPECT_NEAR(length(r.camera->position - p), 0.0, 1e-6);
+  EXPECT_NEAR(r.camera->fov_y_deg, v.fov_y_deg, 1e-6);
+  EXPECT_GE(r.object_iou, 0.98);
+  EXPECT_GT(r.tree_iou, 0.9);
+  EXPECT_TRUE(r.pass);
+  EXPECT_TRUE(std::filesystem::exists(mine.out_dir / "pov" / "pov.exr"));
+  EXPECT_FALSE(std::filesystem::exists(mine.out_dir / "pov" / "scene.pov"));  // not exported
+}
+
+// A scene of the user's own making, without LS_Mask, in a directory whose name a shell would
+// misread: POV-Ray renders it there, coverage is not compared.
+TEST(Crosscheck, AUsersSceneWithoutAMaskComparesLuminanceOnly) {
+  TempDir dir;
+  const Scenario s = small_scene(dir);
+  const renderer::Scene scene = build_scene(s);
+  const auto user = dir / "it's $HOME; a `dir`" / "my hill; 2.pov";
+  std::filesystem::create_directories(user.parent_path());
+  const renderer::View& v = scene.views[0];
+  std::ofstream(user) << fmt::format(
+      "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 }}\n#include \"ground.inc\"\n"
+      "camera {{ location <{}, {}, {}> look_at <{}, {}, {}> right x*1.5 angle 60 }}\n"
+      "light_source {{ <0, 1e6, 0> color rgb 3000 parallel point_at 0 }}\n",
+      v.position.x, v.position.z, v.position.y, v.target.x, v.target.z, v.target.y);
+  std::ofstream(user.parent_path() / "ground.inc")
+      << "plane { y, -30 pigment { rgb 0.3 } finish { diffuse 1 } }\n";
+  CrosscheckOptions o;
+  o.out_dir = dir / "check";
+  o.spp = 1;
+  o.pov_scene = user;
+  const CrosscheckReport r = crosscheck(s, scene, o);
+  EXPECT_FALSE(r.coverage_measured);
+  EXPECT_EQ(r.object_iou, 0.0);
+  EXPECT_GT(r.povray_seconds, 0.0);
+  const renderer::FloatImage pov = [&] {
+    renderer::FloatImage image;
+    std::string error;
+    EXPECT_TRUE(
+        renderer::image_io().read((o.out_dir / "pov" / "pov.exr").string(), false, image, error))
+        << error;
+    return image;
+  }();
+  ASSERT_EQ(pov.width, 96);
+  // The grey plane, lit from overhead, where the view looks down on it.
+  EXPECT_GT(pov.at(48, 60, 1), 0.0f);
+  EXPECT_FALSE(std::filesystem::exists(o.out_dir / "pov" / "mask.png"));
 }
 
 TEST(PovExport, UnsafeNamesCannotInjectDirectives) {
