@@ -127,7 +127,7 @@ struct SpeciesSettings {
   double colour_variation = 0.0;
   double min_spacing = 0.0;
   bool evergreen = false;  // keeps its leaves in winter and its colour in autumn
-  // Measured-growth species: the variants' ages, evenly from the first to the second (equal
+  // The variants' ages in years, evenly from the first to the second (equal
   // for one age); negative: the species file's age.
   double age_min = -1.0, age_max = -1.0;
   std::string bark_texture;  // resolved path of an image, or empty

@@ -323,14 +323,12 @@ const toml::array* tables(const toml::table& root, std::string_view key, const s
   return a;
 }
 
-// The optional `age` of a [[species]] table: years, or [youngest, oldest] across variants;
-// only measured-growth species grow with age.
+// The optional `age` of a [[species]] table: years, or [youngest, oldest] across variants
+// (every core; trees/tree_age.h, docs/SPECIES.md "Age").
 void read_age(TableReader& r, const toml::table& t, SpeciesSettings& s) {
   r.allow("age");
   const toml::node* n = t.get("age");
   if (n == nullptr) return;
-  if (!trees::uses_core<trees::measured_growth::Parameters>(s.species))
-    r.fail("age", "only measured-growth species (core = \"measured_growth\") take an age");
   const auto years = [&](const toml::node& v) {
     const auto x = v.value<double>();
     if (!x || !(*x >= 0.0 && *x <= 500.0))

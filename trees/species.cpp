@@ -57,6 +57,21 @@ const std::vector<std::string> kCoreNames = {"weber_penn", "graph_paths", "self_
 
 std::string core_name(const Species& species) { return kCoreNames[species.parameters.index()]; }
 
+// [age]: the file's tree's age in years and the height-age curve of younger ones.
+void read_age(params::TableReader t, AgeCurve& age) {
+  if (const auto m = t.optional_number("mature", {0.0, 1000.0, true})) age.mature = *m;
+  age.kappa = t.number("kappa", {0.1, 20.0}, age.kappa);
+  age.shape = t.number("shape", {0.1, 5.0}, age.shape);
+}
+
+// One growth step a year for the self-organising core (Palubicki et al. 2009's cycles);
+// kDefaultMatureAge for the others.
+void set_default_mature_age(Species& s) {
+  if (s.age.mature >= 0.0) return;
+  const auto* so = std::get_if<self_organizing::Parameters>(&s.parameters);
+  s.age.mature = so != nullptr ? so->steps : kDefaultMatureAge;
+}
+
 Species parse_species_toml(std::string_view text, const std::string& source,
                            params::Declarations* declared) {
   toml::table root;
@@ -85,6 +100,8 @@ Species parse_species_toml(std::string_view text, const std::string& source,
     s.parameters = measured_growth::read_parameters(r, source);
   else
     s.parameters = weber_penn::read_parameters(r, source);
+  if (core != "measured_growth") read_age(r.table("age"), s.age);
+  set_default_mature_age(s);
   r.finish();
   return s;
 }
@@ -145,6 +162,7 @@ Species parse_arbaro_xml(std::string_view text, const std::string& source) {
   const weber_penn::Parameters parameters = weber_penn::parse_parameters(params, source);
   warn_arbaro_defaults(params, parameters, source);
   s.parameters = parameters;
+  set_default_mature_age(s);
   return s;
 }
 
@@ -187,26 +205,76 @@ void count_stems(const TreeSkeleton& skeleton, std::size_t levels, TreeStats& st
 
 }  // namespace
 
+namespace {
+
+// Every point and radius of `s` times f about the tree's base (leaves keep their size).
+void scale_skeleton(TreeSkeleton& s, double f) {
+  for (StemSkeleton& stem : s.stems)
+    for (CrossSection& c : stem.sections) {
+      c.position = c.position * f;
+      c.radius *= f;
+    }
+  for (LeafSkeleton& leaf : s.leaves) leaf.base = leaf.base * f;
+}
+
+// Graph paths at `age`: the levels it has reached, the whole tree scaled to its size.
+TreeSkeleton graph_paths_at(graph_paths::Parameters p, const AgeCurve& curve, double age,
+                            std::uint64_t seed) {
+  if (age < 0.0) return graph_paths::generate_skeleton(p, seed);
+  p.iteration.levels = levels_at(curve, age, p.iteration.levels + 1) - 1;
+  TreeSkeleton s = graph_paths::generate_skeleton(p, seed);
+  scale_skeleton(s, size_fraction(curve, age));
+  return s;
+}
+
+// Weber & Penn at `age`: Scale (and its variation) by the size fraction, Levels by the
+// levels reached; everything else is relative to Scale.
+weber_penn::Parameters weber_penn_at(weber_penn::Parameters p, const AgeCurve& curve, double age) {
+  if (age < 0.0) return p;
+  const double f = size_fraction(curve, age);
+  p.scale *= f;
+  p.scale_v *= f;
+  p.levels = levels_at(curve, age, p.levels);
+  return p;
+}
+
+}  // namespace
+
 TreeSkeleton core_skeleton(const Species& species, const TreeOptions& options) {
+  // Measured growth takes its ages itself; the other cores' within [0, mature].
+  const bool measured = uses_core<measured_growth::Parameters>(species);
+  const double age = options.age >= 0.0 && !measured
+                         ? clamp_age(species.age, options.age, species.name.c_str())
+                         : -1.0;
   if (const auto* p = std::get_if<graph_paths::Parameters>(&species.parameters))
-    return graph_paths::generate_skeleton(*p, options.seed);
+    return graph_paths_at(*p, species.age, age, options.seed);
   if (const auto* p = std::get_if<measured_growth::Parameters>(&species.parameters))
     return measured_growth::generate_skeleton(*p, options.seed, options.age);
   if (const auto* p = std::get_if<harmonic::Parameters>(&species.parameters)) {
     // Level of detail for this core: fewer cross-sections per chain at lower quality.
     const int stride = std::max(1, static_cast<int>(std::lround(1.0 / options.quality)));
-    return harmonic::generate_skeleton(*p, options.seed, {.max_level = 5, .stride = stride});
+    // Its particles' own age: the share of the individual's max age the tree has lived.
+    const double share = age < 0.0 ? 1.0 : age / species.age.mature;
+    return harmonic::generate_skeleton(*p, options.seed, {.max_level = 5, .stride = stride},
+                                       nullptr, share);
   }
-  if (const auto* p = std::get_if<self_organizing::Parameters>(&species.parameters))
-    return self_organizing::generate_skeleton(*p, options.seed);
+  if (const auto* p = std::get_if<self_organizing::Parameters>(&species.parameters)) {
+    if (age < 0.0) return self_organizing::generate_skeleton(*p, options.seed);
+    self_organizing::Parameters young = *p;
+    young.steps = steps_at(species.age, age, p->steps);
+    return self_organizing::generate_skeleton(young, options.seed);
+  }
   weber_penn::GenerateOptions o;
   o.seed = options.seed;
   o.quality = options.quality;
-  return weber_penn::generate_skeleton(std::get<weber_penn::Parameters>(species.parameters), o);
+  return weber_penn::generate_skeleton(
+      weber_penn_at(std::get<weber_penn::Parameters>(species.parameters), species.age, age), o);
 }
 
-Tree generate(const Species& species, const TreeOptions& options) {
-  TreeSkeleton skeleton = core_skeleton(species, options);
+namespace {
+
+// A core's skeleton swayed, coloured, counted and meshed.
+Tree finish(TreeSkeleton skeleton, const Species& species, const TreeOptions& options) {
   // Wind sway (Weber & Penn section 4.7), the same for every core (trees/sway.h); the phases
   // from the tree's seed.
   apply_sway(skeleton, {options.time, options.wind_speed, options.wind_gust,
@@ -219,6 +287,35 @@ Tree generate(const Species& species, const TreeOptions& options) {
       mesh_tree(skeleton, wp != nullptr ? weber_penn::mesh_resolution(*wp) : MeshResolution{});
   measure(tree);
   return tree;
+}
+
+}  // namespace
+
+Tree generate(const Species& species, const TreeOptions& options) {
+  return finish(core_skeleton(species, options), species, options);
+}
+
+std::vector<Tree> generate_ages(const Species& species, const TreeOptions& options,
+                                const std::vector<double>& ages) {
+  std::vector<Tree> trees;
+  const auto* so = std::get_if<self_organizing::Parameters>(&species.parameters);
+  if (so == nullptr) {
+    for (double age : ages) {
+      TreeOptions o = options;
+      o.age = age;
+      trees.push_back(generate(species, o));
+    }
+    return trees;
+  }
+  // Self-organising: grown once, each age recovered from the time stamps.
+  std::vector<int> steps;
+  for (double age : ages)
+    steps.push_back(
+        steps_at(species.age, clamp_age(species.age, age, species.name.c_str()), so->steps));
+  std::vector<TreeSkeleton> skeletons =
+      self_organizing::skeletons_at_steps(*so, options.seed, steps);
+  for (TreeSkeleton& s : skeletons) trees.push_back(finish(std::move(s), species, options));
+  return trees;
 }
 
 }  // namespace landsim::trees

@@ -14,6 +14,7 @@
 #include "trees/measured_growth/parameters.h"
 #include "trees/self_organizing/parameters.h"
 #include "trees/skeleton.h"
+#include "trees/tree_age.h"
 #include "trees/weber_penn/parameters.h"
 
 namespace landsim::params {
@@ -28,6 +29,9 @@ struct Species {
   std::string name;
   std::string source;  // the file, for messages
   TreeColours colours;
+  // The age of the file's tree and the height-age curve younger ones follow (not used by
+  // measured growth, whose ages are its data's years).
+  AgeCurve age;
   std::variant<weber_penn::Parameters, graph_paths::Parameters, self_organizing::Parameters,
                harmonic::Parameters, measured_growth::Parameters>
       parameters;
@@ -56,7 +60,7 @@ struct TreeOptions {
   double wind_speed = 0.0;
   double wind_gust = 0.0;
   double quality = 1.0;  // leaf quality factor, (0, 1]
-  double age = -1.0;     // years, for the measured-growth core (< 0: the species' age)
+  double age = -1.0;     // years (< 0: the species file's tree; trees/tree_age.h)
   // Seeds the sway's phases; 0: `seed` (a variant's phase groups share its structure and
   // differ here).
   std::uint64_t sway_seed = 0;
@@ -80,5 +84,11 @@ struct Tree {
 TreeSkeleton core_skeleton(const Species& species, const TreeOptions& options);
 
 Tree generate(const Species& species, const TreeOptions& options);
+
+// The same tree (options' seed) at each of `ages` (years): as generate with options.age set
+// to each, the self-organising core growing once and recovering the younger trees from its
+// time stamps.
+std::vector<Tree> generate_ages(const Species& species, const TreeOptions& options,
+                                const std::vector<double>& ages);
 
 }  // namespace landsim::trees

@@ -24,12 +24,13 @@ namespace landsim::app {
 
 CLI::App* add_grow_command(CLI::App& app, GrowArgs& args) {
   CLI::App* cmd = app.add_subcommand(
-      "grow", "Grow a measured-growth species through several ages: images and a growth table");
-  cmd->add_option("species", args.species, "Species file (core = \"measured_growth\")")->required();
-  cmd->add_option("--ages", args.ages, "Ages in years, comma-separated")
+      "grow", "One tree of a species through several ages: images and a growth table");
+  cmd->add_option("species", args.species, "Species file (any core)")->required();
+  cmd->add_option("--ages", args.ages,
+                  "Ages in years, comma-separated (default: 10,20,30,40,50 for measured "
+                  "growth, a fifth to all of the species' mature age otherwise)")
       ->delimiter(',')
-      ->check(CLI::Range(0.0, 500.0))
-      ->capture_default_str();
+      ->check(CLI::Range(0.0, 500.0));
   cmd->add_option("--out", args.out, "Output directory")->required();
   cmd->add_option("--seed", args.seed, "Variant seed")->capture_default_str();
   cmd->add_option("--width", args.width, "Image width")->check(CLI::Range(16, 8192));
@@ -83,38 +84,76 @@ renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& spec
 
 }  // namespace
 
+namespace {
+
+// The ages asked for, or the core's defaults.
+std::vector<double> ages_to_grow(const GrowArgs& args, const trees::Species& species) {
+  if (!args.ages.empty()) return args.ages;
+  if (trees::uses_core<trees::measured_growth::Parameters>(species)) return {10, 20, 30, 40, 50};
+  std::vector<double> ages;
+  for (int k = 1; k <= 5; ++k)
+    ages.push_back(std::round(species.age.mature * k / 5.0 * 10.0) / 10.0);
+  return ages;
+}
+
+// The age a core draws for `requested` (its data's range, or 1 year to the mature age).
+double age_used(const trees::Species& species, double requested) {
+  if (const auto* p = std::get_if<trees::measured_growth::Parameters>(&species.parameters))
+    return std::clamp(requested, 0.0, p->allometry.max_age);  // generate warns
+  return std::clamp(requested, std::min(1.0, species.age.mature), species.age.mature);
+}
+
+std::size_t stem_count(const trees::Tree& tree) {
+  std::size_t n = 0;
+  for (int k : tree.stats.stems_per_level) n += static_cast<std::size_t>(k);
+  return n;
+}
+
+}  // namespace
+
 int run_grow(const GrowArgs& args) {
   const trees::Species species = trees::load_species(args.species);
-  if (!trees::uses_core<trees::measured_growth::Parameters>(species))
-    throw InputError(args.species +
-                     ": core: `landsim grow` needs a measured-growth species "
-                     "(core = \"measured_growth\"), got " +
-                     trees::core_name(species));
   scenes::check_image_size(args.width, args.height, "--width/--height");
-  const auto& p = std::get<trees::measured_growth::Parameters>(species.parameters);
+  const std::vector<double> ages = ages_to_grow(args, species);
+  const auto* measured = std::get_if<trees::measured_growth::Parameters>(&species.parameters);
   const std::filesystem::path out(args.out);
   std::filesystem::create_directories(out);
-  const double oldest = *std::max_element(args.ages.begin(), args.ages.end());
-  const auto& a = p.allometry;
-  const double frame_size = std::max(a.f_height(std::min(oldest, a.max_age)), 1.0);
+  std::vector<trees::Tree> trees = trees::generate_ages(species, {.seed = args.seed}, ages);
+  // One camera for every age, framing the tallest.
+  double frame_size = 1.0;
+  for (const trees::Tree& t : trees) frame_size = std::max(frame_size, t.stats.height);
   nlohmann::json rows = nlohmann::json::array();
-  for (double requested : args.ages) {
-    const double age = trees::measured_growth::clamp_age(p, requested);
-    const trees::Tree tree = trees::generate(species, {.seed = args.seed, .age = age});
+  for (std::size_t i = 0; i < ages.size(); ++i) {
+    const double requested = ages[i], age = age_used(species, requested);
+    const trees::Tree& tree = trees[i];
     renderer::View view;
     const renderer::Scene scene = growth_scene(tree, species, frame_size, args, view);
     const renderer::Film film = renderer::Renderer(scene).render(view, {});
     const std::string stem = fmt::format("age_{:03d}", static_cast<int>(std::lround(requested)));
     renderer::write_exr(film, out / (stem + ".exr"),
                         {{"species", species.name}, {"age_years", fmt::format("{}", age)}});
-    renderer::write_preview_png(film, out / (stem + ".png"), std::nullopt);
-    rows.push_back({{"age", requested},
-                    {"age_used", age},
-                    {"image", stem + ".png"},
-                    {"model", dimensions_json(trees::measured_growth::measure(tree.geometry))},
-                    {"equations", equations_json(a, age)}});
+    renderer::write_preview_png(film, out / (stem + ".png"), std::nullopt,
+                                {{6, 16, fmt::format("{:g} years, {}", age, species.name)}});
+    nlohmann::json row = {
+        {"age", requested},
+        {"age_used", age},
+        {"image", stem + ".png"},
+        {"model", dimensions_json(trees::measured_growth::measure(tree.geometry))},
+        {"stems", stem_count(tree)},
+        {"leaves", tree.stats.leaves}};
+    if (measured != nullptr) {
+      // The equations' mean tree, and this tree's own sizes (its draw from their scatter).
+      row["equations"] = equations_json(measured->allometry, age);
+      row["individual"] = equations_json(
+          trees::measured_growth::individual(measured->allometry, args.seed, measured->scatter),
+          age);
+    }
+    rows.push_back(row);
   }
-  const nlohmann::json table = {{"species", species.name}, {"seed", args.seed}, {"ages", rows}};
+  const nlohmann::json table = {{"species", species.name},
+                                {"core", trees::core_name(species)},
+                                {"seed", args.seed},
+                                {"ages", rows}};
   AtomicFile file(out / "growth.json");
   std::ofstream(file.temp_path()) << table.dump(2) << "\n";
   file.commit();

@@ -1,7 +1,9 @@
 #pragma once
-// `landsim grow SPECIES --ages 10,20,30 --out DIR`: a measured-growth species at several ages
-// (the seed paper's Figure 3): one image per age under the same camera, with a person-sized
-// figure for scale, and growth.json: the model's measured dimensions beside the equations'.
+// `landsim grow SPECIES --ages 10,20,30 --out DIR`: one tree of any core's species at several
+// ages (the measured-growth paper's Figure 3 for every core): one image per age under the
+// same camera, with a person-sized figure for scale and the age written in it, and
+// growth.json: the model's measured dimensions, stems and leaves per age (beside the
+// equations' for measured growth).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,7 +16,7 @@ namespace landsim::app {
 
 struct GrowArgs {
   std::string species;
-  std::vector<double> ages{10, 20, 30, 40, 50};
+  std::vector<double> ages;  // empty: the core's defaults
   std::string out;
   std::uint64_t seed = 1;
   int width = 480;

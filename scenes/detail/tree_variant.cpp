@@ -25,7 +25,7 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
   options.seed = vs;
   options.time = time;
   options.quality = s.render.quality;
-  // Measured-growth ages: evenly from the youngest to the oldest across the variants.
+  // Ages: evenly from the youngest to the oldest across the variants (every core).
   if (sp.age_min >= 0.0)
     options.age = sp.variants > 1
                       ? sp.age_min + (sp.age_max - sp.age_min) * variant / (sp.variants - 1)

@@ -108,6 +108,12 @@ TEST(JsonContract, Grow) {
   TempDir dir;
   expect_contract("grow", species("london_plane.toml") + " --ages 10 --out " + (dir / "g").string(),
                   dir);
+  expect_contract("grow",
+                  species("harmonic_cherry.toml") +
+                      " --ages 10 --width 32 --height 32 --spp 1 "
+                      "--out " +
+                      (dir / "h").string(),
+                  dir);
 }
 
 TEST(JsonContract, Discover) {

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/input_error.h"
+#include "scenes/detail/tree_variant.h"
 #include "scenes/scenario.h"
 #include "scenes/scene_builder.h"
 #include "terrain/raster_files.h"
@@ -210,17 +211,33 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_NEAR(std::remainder(s.sun.azimuth_deg, 360.0), 0.0, 10.0);
 }
 
-TEST(FullScenario, AgesGoToMeasuredGrowthSpeciesOnly) {
+// Every core takes an age: the London plane's [15, 40] given to a Weber & Penn species is
+// kept; ages out of order are refused at the species.
+TEST(FullScenario, AgesGoToEveryCore) {
   Fixture f;
   std::string text = f.text();
   const std::string plane = "/species/london_plane.toml";
   text.replace(text.find(plane), plane.size(), "/species/quaking_aspen.toml");
+  const Scenario s = load_scenario(f.dir.write("aged.toml", text));
+  EXPECT_DOUBLE_EQ(s.species[1].age_min, 15.0);
+  EXPECT_DOUBLE_EQ(s.species[1].age_max, 40.0);
+  // Its two variants: 15 years, and 40 (the aspen's file is a 30-year tree: drawn at 30).
+  const auto top = [&](std::uint32_t variant) {
+    const renderer::TreePrototype p = scenes::detail::make_tree_variant(s, 1, variant, 0.0, 0);
+    float z = 0.0f;
+    for (const Vec3f& v : p.geometry.group(trees::Group::trunk).triangles.vertices)
+      z = std::max(z, v.z);
+    return z;
+  };
+  EXPECT_LT(top(0), 0.85f * top(1));
+  const std::string range = "age = [15.0, 40.0]";
+  text.replace(text.find(range), range.size(), "age = [40.0, 15.0]");
   try {
-    load_scenario(f.dir.write("aged.toml", text));
-    FAIL() << "an age for a Weber & Penn species was accepted";
+    load_scenario(f.dir.write("reversed.toml", text));
+    FAIL() << "ages out of order were accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("species[1]"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("age"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("youngest first"), std::string::npos) << e.what();
   }
 }
 

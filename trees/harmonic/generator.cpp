@@ -72,9 +72,13 @@ TreeSkeleton growth_skeleton(const Parameters& p, const Growth& growth, const De
 }
 
 TreeSkeleton generate_skeleton(const Parameters& species, std::uint64_t seed, const Detail& detail,
-                               Growth* growth) {
+                               Growth* growth, double age_share) {
   const Parameters individual = vary(species, seed);
-  Growth g = grow(individual, seed);
+  Growth g =
+      grow(individual, seed,
+           age_share >= 1.0
+               ? -1
+               : static_cast<int>(std::lround(individual.max_age() * std::max(age_share, 0.0))));
   TreeSkeleton skeleton = growth_skeleton(individual, g, detail);
   if (growth != nullptr) *growth = std::move(g);
   return skeleton;

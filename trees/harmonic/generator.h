@@ -18,7 +18,10 @@ struct Detail {
 };
 
 TreeSkeleton growth_skeleton(const Parameters& p, const Growth& growth, const Detail& detail = {});
+// `age_share`: the share of the individual's max age grown (1: all of it; a younger tree is
+// the older one's first steps).
 TreeSkeleton generate_skeleton(const Parameters& species, std::uint64_t seed,
-                               const Detail& detail = {}, Growth* growth = nullptr);
+                               const Detail& detail = {}, Growth* growth = nullptr,
+                               double age_share = 1.0);
 
 }  // namespace landsim::trees::harmonic

@@ -14,11 +14,18 @@ double clamp_age(const Parameters& p, double age) {
   return clamped;
 }
 
+Parameters tree_parameters(const Parameters& p, std::uint64_t seed) {
+  Parameters tree = p;
+  tree.allometry = individual(p.allometry, seed, p.scatter);
+  return tree;
+}
+
 TreeSkeleton generate_skeleton(const Parameters& p, std::uint64_t seed, double age,
                                TreeAtAge* tree) {
   const double t = clamp_age(p, age < 0.0 ? p.age : age);
-  const TreeAtAge at = evaluate(p, derive(p, seed, t), t);
-  TreeSkeleton s = tree_skeleton(p, at, seed);
+  const Parameters tree_p = tree_parameters(p, seed);
+  const TreeAtAge at = evaluate(tree_p, derive(tree_p, seed, t), t);
+  TreeSkeleton s = tree_skeleton(tree_p, at, seed);
   if (tree != nullptr) *tree = at;
   return s;
 }

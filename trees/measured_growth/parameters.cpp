@@ -26,6 +26,9 @@ Equation read_equation(TableReader r) {
   e.min = r.number("min", kCoefficient, e.min);
   e.max = r.number("max", kCoefficient, e.max);
   if (!(e.min < e.max)) r.fail("max", "expected a range with min < max");
+  e.sigma = r.number("sigma", {0, 1e6}, e.sigma);
+  if (!parse_weight(r.choice("weight", {"1", "1/x", "1/x^2", "1/sqrt(x)"}, "1"), e.weight))
+    r.fail("weight", "expected \"1\", \"1/x\", \"1/x^2\" or \"1/sqrt(x)\"");
   r.finish();
   return e;
 }
@@ -54,6 +57,7 @@ void read_growth(TableReader r, Parameters& p) {
   p.c_dbh = r.number("c_dbh", {0.1, 10}, p.c_dbh);
   p.divergence = r.angle("divergence", {0, 360}, p.divergence);
   p.angle_noise = r.angle("angle_noise", {0, 45}, p.angle_noise);
+  p.scatter = r.number("scatter", {0, 3}, p.scatter);
   r.finish();
 }
 

@@ -25,6 +25,9 @@ struct Parameters {
   double angle_noise = 0.087;       // radians: random part of the bifurcation angle
   double leaf_area = 0.025;         // m2 per leaf
   double leaf_threshold = 0.03;     // metres: leaves on branches thinner than this
+  // Each tree's deviation from the equations, in units of the database's scatter (its
+  // Sigma): 1 as measured, 0 every tree the equations' mean.
+  double scatter = 1.0;
 };
 
 // Reads the core's tables ([allometry.*], [growth], [leaves]); InputError names file, line,

@@ -76,7 +76,14 @@ std::vector<std::uint32_t> Plant::remove(std::uint32_t i) {
   return gone;
 }
 
-std::vector<std::uint32_t> Plant::cut_above(std::uint32_t i, double width) {
+std::vector<std::uint32_t> Plant::shed(std::uint32_t root, double width, int step) {
+  Internode& parent = internodes_[internodes_[root].parent];
+  parent.shed_lateral_width = std::max(parent.shed_lateral_width, width);
+  removals_.push_back({step, root, width, false});
+  return remove(root);
+}
+
+std::vector<std::uint32_t> Plant::cut_above(std::uint32_t i, double width, int step) {
   Internode& n = internodes_[i];
   std::vector<std::uint32_t> gone;
   for (std::uint32_t child : {n.main, n.lateral})
@@ -88,8 +95,38 @@ std::vector<std::uint32_t> Plant::cut_above(std::uint32_t i, double width) {
   n.terminal_bud = n.lateral_bud = false;
   n.frozen_width = width;
   n.shed_lateral_width = 0.0;
+  removals_.push_back({step, i, width, true});
   std::sort(gone.begin(), gone.end());
   return gone;
+}
+
+Plant Plant::at_step(int step) const {
+  const auto born = std::partition_point(internodes_.begin(), internodes_.end(),
+                                         [step](const Internode& n) { return n.birth <= step; });
+  Plant young(*this);
+  young.internodes_.resize(static_cast<std::size_t>(born - internodes_.begin()));
+  young.removals_.clear();
+  const auto n = static_cast<std::uint32_t>(young.internodes_.size());
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Internode& x = young.internodes_[i];
+    x.alive = true;
+    x.stub = false;
+    x.frozen_width = x.shed_lateral_width = x.width = 0.0;
+    if (x.main >= n) x.main = kNone;
+    if (x.lateral >= n) x.lateral = kNone;
+    // A bud lives until its shoot grows (or a cut takes it); the seedling has no lateral.
+    x.terminal_bud = x.main == kNone;
+    x.lateral_bud = x.lateral == kNone && i != 0;
+  }
+  young.living_ = n;
+  for (const Removal& r : removals_) {
+    if (r.step > step) break;
+    if (r.cut)
+      young.cut_above(r.internode, r.width, r.step);
+    else
+      young.shed(r.internode, r.width, r.step);
+  }
+  return young;
 }
 
 bool Plant::starts_branch(std::uint32_t i) const {

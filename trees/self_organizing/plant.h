@@ -44,6 +44,15 @@ struct Internode {
   double shoot_vigour = 0.0;  // the vigour of the bud whose shoot this internode is part of
 };
 
+// A branch shed or cut at a step, with the width it kept: the plant's history of losses, so
+// that the tree of an earlier step can be recovered from the grown one (Plant::at_step).
+struct Removal {
+  int step = 0;
+  std::uint32_t internode = 0;  // the shed branch's first internode, or the cut stub
+  double width = 0.0;
+  bool cut = false;  // pruned (cut_above) rather than shed
+};
+
 // A bud: the node at the internode's tip, terminal or lateral.
 struct BudRef {
   std::uint32_t internode;
@@ -72,17 +81,29 @@ class Plant {
 
   // Every living internode from i up (i included), in index order.
   std::vector<std::uint32_t> subtree(std::uint32_t i) const;
-  // Marks the subtree from i dead (shedding); returns the internodes removed.
-  std::vector<std::uint32_t> remove(std::uint32_t i);
-  // Removes everything above i and i's buds; i stays as a stub of width `width`.
-  std::vector<std::uint32_t> cut_above(std::uint32_t i, double width);
+  // Sheds the branch starting at `root` at `step`: its subtree dies, its parent keeps its
+  // `width` in the pipe sum. Returns the internodes removed.
+  std::vector<std::uint32_t> shed(std::uint32_t root, double width, int step);
+  // Removes everything above i and i's buds at `step`; i stays as a stub of width `width`.
+  std::vector<std::uint32_t> cut_above(std::uint32_t i, double width, int step);
+
+  // The plant as it was after growth step `step` (TreeSketch's ungrow, section 3): the
+  // internodes born by then (an index prefix: internodes are appended in growth order), with
+  // the buds they had, and the sheddings and cuts up to that step replayed. Widths are not
+  // set: assign them (pipe_model.h) as after growing.
+  Plant at_step(int step) const;
+  const std::vector<Removal>& removals() const { return removals_; }
 
   // True if i is the first internode of a branch (its parent's lateral).
   bool starts_branch(std::uint32_t i) const;
 
  private:
+  // Marks the subtree from i dead; returns the internodes removed.
+  std::vector<std::uint32_t> remove(std::uint32_t i);
+
   std::vector<Internode> internodes_;
   std::size_t living_ = 0;
+  std::vector<Removal> removals_;  // in the order they happened
 };
 
 }  // namespace landsim::trees::self_organizing

@@ -44,7 +44,7 @@ class Simulation {
     set_bud_light(buds, directions);
     gather_light(plant_);
     distribute_vigour(plant_, p_.vigour.alpha, p_.vigour.apical_control);
-    shed();
+    shed(s);
     const int grown = grow_shoots(buds, space, s);
     return grown > 0 || more_markers_after(s);
   }
@@ -62,7 +62,7 @@ class Simulation {
                          " is not a living branch internode at step " + std::to_string(s) +
                          " (the tree has " + std::to_string(plant_.size()) + " internodes)");
       assign_widths(plant_, p_.width);
-      for (std::uint32_t gone : plant_.cut_above(cut.internode, plant_[cut.internode].width))
+      for (std::uint32_t gone : plant_.cut_above(cut.internode, plant_[cut.internode].width, s))
         shadows_.cast(plant_[gone].tip, -1.0);
     }
   }
@@ -96,15 +96,13 @@ class Simulation {
     }
   }
 
-  void shed() {
+  void shed(int s) {
     if (!(p_.vigour.shedding > 0.0)) return;
     const std::vector<std::uint32_t> branches = branches_to_shed(plant_, p_.vigour.shedding);
     if (branches.empty()) return;
     assign_widths(plant_, p_.width);  // the kept widths of the shed branches
     for (std::uint32_t root : branches) {
-      Internode& parent = plant_[plant_[root].parent];
-      parent.shed_lateral_width = std::max(parent.shed_lateral_width, plant_[root].width);
-      const auto gone = plant_.remove(root);
+      const auto gone = plant_.shed(root, plant_[root].width, s);
       for (std::uint32_t k : gone) shadows_.cast(plant_[k].tip, -1.0);
       ++shed_branches;
       shed_internodes += gone.size();

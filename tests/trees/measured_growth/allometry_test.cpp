@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "tests/support/temp_dir.h"
+#include "trees/measured_growth/parameters.h"
+#include "trees/species.h"
 
 namespace landsim::trees::measured_growth {
 namespace {
@@ -41,6 +43,14 @@ void expect_row(const std::vector<std::string>& row, const Equation& e) {
   EXPECT_DOUBLE_EQ(number(row[11]), e.d) << row[4];
   EXPECT_DOUBLE_EQ(number(row[13]), e.min) << row[4];
   EXPECT_DOUBLE_EQ(number(row[14]), e.max) << row[4];
+  // The scatter: Sigma, and the model weight with its variable written as x.
+  EXPECT_DOUBLE_EQ(number(row[15]), e.sigma) << row[4];
+  std::string weight = row[6];
+  for (const char* v : {"dbh", "age"})
+    if (const std::size_t at = weight.find(v); at != std::string::npos) weight.replace(at, 3, "x");
+  Weight w{};
+  ASSERT_TRUE(parse_weight(weight, w)) << row[6];
+  EXPECT_EQ(w, e.weight) << row[4];
 }
 
 TEST(Allometry, ModestoEquationsAreTheDatabasesRows) {
@@ -54,6 +64,14 @@ TEST(Allometry, ModestoEquationsAreTheDatabasesRows) {
   expect_row(rows.at("crown dia"), a.crown_diameter);
   expect_row(rows.at("crown ht"), a.crown_height);
   expect_row(rows.at("leaf area"), a.leaf_area);
+  // The species file carries the same rows.
+  const auto file = std::get<Parameters>(
+      load_species(testing::source_file("data/species/london_plane.toml")).parameters);
+  expect_row(rows.at("dbh"), file.allometry.dbh);
+  expect_row(rows.at("tree ht"), file.allometry.height);
+  expect_row(rows.at("crown dia"), file.allometry.crown_diameter);
+  expect_row(rows.at("crown ht"), file.allometry.crown_height);
+  expect_row(rows.at("leaf area"), file.allometry.leaf_area);
 }
 
 TEST(Allometry, ModestoAtTwentyYearsAsTheDataReadmeGivesIt) {

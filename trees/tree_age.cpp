@@ -1,0 +1,37 @@
+#include "trees/tree_age.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace landsim::trees {
+
+double size_fraction(const AgeCurve& curve, double age) {
+  const double t = std::clamp(age / curve.mature, 0.0, 1.0);
+  const auto h = [&](double x) { return std::pow(1.0 - std::exp(-curve.kappa * x), curve.shape); };
+  return t >= 1.0 ? 1.0 : h(t) / h(1.0);
+}
+
+int levels_at(const AgeCurve& curve, double age, int levels) {
+  const double f = size_fraction(curve, age);
+  // A hair below the exact product: 3 levels at a fraction of exactly 2/3 stay 2.
+  return std::clamp(static_cast<int>(std::ceil(levels * f - 1e-9)), 1, std::max(levels, 1));
+}
+
+int steps_at(const AgeCurve& curve, double age, int steps) {
+  const double t = std::clamp(age / curve.mature, 0.0, 1.0);
+  return static_cast<int>(std::lround(steps * t));
+}
+
+double clamp_age(const AgeCurve& curve, double age, const char* species) {
+  // Below a year a tree drawn by scaling would shrink towards nothing: a year is the least.
+  const double youngest = std::min(1.0, curve.mature);
+  const double clamped = std::clamp(age, youngest, curve.mature);
+  if (clamped != age)
+    spdlog::warn("{}: age {} is outside {} to {} years (its species file's tree): using {}",
+                 species, age, youngest, curve.mature, clamped);
+  return clamped;
+}
+
+}  // namespace landsim::trees
