@@ -16,7 +16,10 @@ double size_fraction(const AgeCurve& curve, double age) {
 int levels_at(const AgeCurve& curve, double age, int levels) {
   const double f = size_fraction(curve, age);
   // A hair below the exact product: 3 levels at a fraction of exactly 2/3 stay 2.
-  return std::clamp(static_cast<int>(std::ceil(levels * f - 1e-9)), 1, std::max(levels, 1));
+  // At least two (a trunk and its branches) where the tree has them: a one-level Weber &
+  // Penn tree is a bare pole with a few leaves along it, no young tree looks like that.
+  const int least = std::min(2, std::max(levels, 1));
+  return std::clamp(static_cast<int>(std::ceil(levels * f - 1e-9)), least, std::max(levels, 1));
 }
 
 int steps_at(const AgeCurve& curve, double age, int steps) {

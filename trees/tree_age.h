@@ -22,7 +22,7 @@ inline constexpr double kDefaultMatureAge = 30.0;
 double size_fraction(const AgeCurve& curve, double age);
 
 // The levels (orders of branching) a tree of `levels` at maturity has at `age`:
-// ceil(levels * size_fraction), at least 1.
+// ceil(levels * size_fraction), at least 2 (or `levels` if fewer).
 int levels_at(const AgeCurve& curve, double age, int levels);
 
 // Growth steps (of `steps` at maturity) taken by `age`: round(steps * age / mature).

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <numbers>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
@@ -58,19 +59,24 @@ nlohmann::json equations_json(const trees::measured_growth::Allometry& a, double
           {"leaf_area_m2", a.f_leaf_area(age)}};
 }
 
-// The tree and, beside it, the figure; the camera the same for every age: framing the oldest.
-renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& species,
-                             double frame_size, const GrowArgs& args, renderer::View& view) {
-  renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * frame_size));
+// The tree as a prototype with the species' colours.
+renderer::TreePrototype prototype(const trees::Tree& tree, const trees::Species& species) {
   renderer::TreePrototype t;
   t.geometry = tree.geometry;
   t.bark_albedo = species.colours.bark;
   t.leaf_reflectance = species.colours.leaf;
   t.leaf_transmittance = species.colours.leaf * 0.5f;
+  return t;
+}
+
+// The tree and, beside it, the figure; the camera the same for every age: framing the oldest.
+renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& species,
+                             double frame_size, const GrowArgs& args, renderer::View& view) {
+  renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * frame_size));
   renderer::TreePrototype person;
   person.geometry = exporters::person_figure();
   person.bark_albedo = {0.35f, 0.12f, 0.10f};
-  s.prototypes = {t, person};
+  s.prototypes = {prototype(tree, species), person};
   s.instances = {{0, {0, 0, 0}, 0.0, 1.0}, {1, {0.4 * frame_size, -2.0, 0}, 0.0, 1.0}};
   s.settings.spp = args.spp;
   s.settings.seed = args.seed;
@@ -80,6 +86,52 @@ renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& spec
           args.width, args.height};
 
   return s;
+}
+
+// growth.png: every age side by side, youngest on the left (the measured-growth paper's
+// figure of ages 10 to 50), seen from the south under one camera, the person beside the
+// youngest, each age written above its tree.
+void write_growth_figure(const std::vector<trees::Tree>& trees, const trees::Species& species,
+                         const std::vector<double>& ages, const GrowArgs& args,
+                         const std::filesystem::path& path) {
+  double height = 1.0, crown = 1.0;
+  for (const trees::Tree& t : trees) {
+    height = std::max(height, t.stats.height);
+    crown = std::max(crown, 2.0 * t.stats.crown_radius);
+  }
+  const double spacing = 1.15 * std::max(crown, 0.5 * height);
+  const auto n = static_cast<double>(trees.size());
+  renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * (n * spacing + height)));
+  renderer::TreePrototype person;
+  person.geometry = exporters::person_figure();
+  person.bark_albedo = {0.35f, 0.12f, 0.10f};
+  s.prototypes = {person};
+  const auto x_of = [&](std::size_t i) {
+    return (static_cast<double>(i) - 0.5 * (n - 1)) * spacing;
+  };
+  s.instances = {{0, {x_of(0) - 0.4 * spacing, -1.0, 0}, 0.0, 1.0}};
+  for (std::size_t i = 0; i < trees.size(); ++i) {
+    s.prototypes.push_back(prototype(trees[i], species));
+    s.instances.push_back({static_cast<std::uint32_t>(i + 1), {x_of(i), 0, 0}, 0.0, 1.0});
+  }
+  s.settings.spp = args.spp;
+  s.settings.seed = args.seed;
+  // Framing: the row's width (and a margin) across, the tallest tree (and room for the
+  // labels) up; the camera on the horizontal through mid-height.
+  const int h_px = args.height;
+  const int w_px = std::clamp(static_cast<int>(std::lround(h_px * 0.75 * n)), h_px, 8192);
+  const double half_y = std::tan(15.0 * std::numbers::pi / 180.0);
+  const double half_x = half_y * w_px / h_px;
+  const double d = std::max(0.55 * (n * spacing) / half_x, 0.65 * height / half_y);
+  const Vec3 centre{0, 0, 0.5 * height};
+  const renderer::View view{"growth", centre + Vec3{0, -d, 0}, centre, 30.0, w_px, h_px};
+  const renderer::Film film = renderer::Renderer(s).render(view, {});
+  std::vector<renderer::ImageLabel> labels;
+  for (std::size_t i = 0; i < trees.size(); ++i) {
+    const double x = 0.5 * w_px * (1.0 + x_of(i) / (d * half_x));
+    labels.push_back({static_cast<int>(x) - 24, 16, fmt::format("{:g} years", ages[i])});
+  }
+  renderer::write_preview_png(film, path, std::nullopt, labels);
 }
 
 }  // namespace
@@ -92,7 +144,9 @@ std::vector<double> ages_to_grow(const GrowArgs& args, const trees::Species& spe
   if (trees::uses_core<trees::measured_growth::Parameters>(species)) return {10, 20, 30, 40, 50};
   std::vector<double> ages;
   for (int k = 1; k <= 5; ++k)
-    ages.push_back(std::round(species.age.mature * k / 5.0 * 10.0) / 10.0);
+    ages.push_back(species.age.mature >= 5.0  // whole years, unless it matures within five
+                       ? std::round(species.age.mature * k / 5.0)
+                       : std::round(species.age.mature * k / 5.0 * 10.0) / 10.0);
   return ages;
 }
 
@@ -150,6 +204,9 @@ int run_grow(const GrowArgs& args) {
     }
     rows.push_back(row);
   }
+  std::vector<double> used;
+  for (double a : ages) used.push_back(age_used(species, a));
+  write_growth_figure(trees, species, used, args, out / "growth.png");
   const nlohmann::json table = {{"species", species.name},
                                 {"core", trees::core_name(species)},
                                 {"seed", args.seed},

@@ -378,7 +378,7 @@ TEST(Cli, GrowWritesAnImagePerAgeAndTheGrowthTable) {
       run("grow " + plane + " --ages 10,30,90 --width 48 --height 48 --spp 1 --out " + out.string(),
           dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* f : {"age_010.png", "age_030.exr", "age_090.png", "growth.json"})
+  for (const char* f : {"age_010.png", "age_030.exr", "age_090.png", "growth.json", "growth.png"})
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
   EXPECT_NE(r.err.find("outside the growth data"), std::string::npos) << "age 90 is clamped";
   const auto table = nlohmann::json::parse(testing::read_file(out / "growth.json"));

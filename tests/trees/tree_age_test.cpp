@@ -38,9 +38,11 @@ TEST(TreeAge, TheCurveHasItsDocumentedValues) {
     EXPECT_GT(size_fraction(c, t), last) << t;
     last = size_fraction(c, t);
   }
-  EXPECT_EQ(levels_at(c, 6.0, 3), 1);   // ceil(3 x 0.28)
+  EXPECT_EQ(levels_at(c, 6.0, 3), 2);   // ceil(3 x 0.28) = 1, but a trunk and branches
   EXPECT_EQ(levels_at(c, 15.0, 3), 3);  // ceil(3 x 0.685)
-  EXPECT_EQ(levels_at(c, 1.0, 4), 1);
+  EXPECT_EQ(levels_at(c, 1.0, 4), 2);
+  EXPECT_EQ(levels_at(c, 1.0, 1), 1);
+  EXPECT_EQ(levels_at(c, 9.0, 4), 2);  // ceil(4 x 0.43)
   EXPECT_EQ(steps_at(c, 15.0, 20), 10);
   EXPECT_EQ(steps_at(c, 100.0, 20), 20);
   EXPECT_EQ(clamp_age(c, 0.2, "x"), 1.0);
