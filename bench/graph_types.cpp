@@ -100,9 +100,10 @@ int main() {
   std::printf("%zu nodes, %zu endpoints, spacing %.3f m\n", nodes.size(), endpoints.size(),
               spacing);
   const Row yao = measure(nodes, {.search_radius = 2.5 * spacing}, root, endpoints);
-  std::printf("Yao graph (54 cones, search 2.5 spacings): %.2f edges per node, %zu endpoints "
-              "unreachable, path stretch %.3f, %.2f s\n",
-              yao.edges_per_node, yao.unreachable, yao.stretch, yao.seconds);
+  std::printf(
+      "Yao graph (54 cones, search 2.5 spacings): %.2f edges per node, %zu endpoints "
+      "unreachable, path stretch %.3f, %.2f s\n",
+      yao.edges_per_node, yao.unreachable, yao.stretch, yao.seconds);
   // The smallest threshold (in steps of 0.05 spacing) that reaches every endpoint.
   Row tuned;
   double tuned_at = 0.0;
@@ -112,9 +113,10 @@ int main() {
     tuned_at = t;
     if (tuned.unreachable == 0) break;
   }
-  std::printf("threshold %.2f spacings (the smallest reaching every endpoint): %.2f edges per "
-              "node, %zu unreachable, path stretch %.3f, %.2f s\n",
-              tuned_at, tuned.edges_per_node, tuned.unreachable, tuned.stretch, tuned.seconds);
+  std::printf(
+      "threshold %.2f spacings (the smallest reaching every endpoint): %.2f edges per "
+      "node, %zu unreachable, path stretch %.3f, %.2f s\n",
+      tuned_at, tuned.edges_per_node, tuned.unreachable, tuned.stretch, tuned.seconds);
   // The smallest threshold whose paths wander no more than 2% beyond the Yao graph's.
   Row straight;
   double straight_at = 0.0;
@@ -124,9 +126,10 @@ int main() {
     straight_at = t;
     if (straight.unreachable == 0 && straight.stretch <= 1.02 * yao.stretch) break;
   }
-  std::printf("threshold %.2f spacings (paths as straight as the Yao graph's, within 2%%): %.2f "
-              "edges per node, path stretch %.3f, %.2f s\n",
-              straight_at, straight.edges_per_node, straight.stretch, straight.seconds);
+  std::printf(
+      "threshold %.2f spacings (paths as straight as the Yao graph's, within 2%%): %.2f "
+      "edges per node, path stretch %.3f, %.2f s\n",
+      straight_at, straight.edges_per_node, straight.stretch, straight.seconds);
   // The threshold whose edge count comes nearest the Yao graph's.
   Row low;
   double low_at = 0.0, best = 1e300;
@@ -140,9 +143,9 @@ int main() {
     }
     if (r.edges_per_node > yao.edges_per_node) break;
   }
-  std::printf("threshold %.2f spacings (the Yao graph's edge count): %.2f edges per node, %zu of "
-              "%zu endpoints unreachable, path stretch %.3f, %.2f s\n",
-              low_at, low.edges_per_node, low.unreachable, endpoints.size(), low.stretch,
-              low.seconds);
+  std::printf(
+      "threshold %.2f spacings (the Yao graph's edge count): %.2f edges per node, %zu of "
+      "%zu endpoints unreachable, path stretch %.3f, %.2f s\n",
+      low_at, low.edges_per_node, low.unreachable, endpoints.size(), low.stretch, low.seconds);
   return 0;
 }
