@@ -1,6 +1,6 @@
 #pragma once
 // `landsim tree SPECIES_FILE [--seed N] [--time T --wind S --gust G] [--quality Q]
-//                            [--obj FILE] [--json]`
+//                            [--age YEARS] [--obj FILE] [--internodes FILE.csv] [--json]`
 #include <cstdint>
 #include <string>
 
@@ -17,7 +17,9 @@ struct TreeArgs {
   double wind = 0.0;
   double gust = 0.0;
   double quality = 1.0;
+  double age = -1.0;  // years; < 0: the species file's tree
   std::string obj;
+  std::string internodes;  // self-organising: the internodes, for prunings and constraints
   bool json = false;
 };
 

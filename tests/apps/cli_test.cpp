@@ -396,6 +396,47 @@ TEST(Cli, GrowWritesAnImagePerAgeAndTheGrowthTable) {
   EXPECT_GT(off_mean, 0.02);
 }
 
+// The internodes of a self-organising tree, listed so that a pruning can name one: pruning a
+// listed branch makes a tree with fewer stems; another core has none (exit 2, no file).
+TEST(Cli, TreeListsInternodesAPruningCanName) {
+  TempDir dir;
+  const std::string upright =
+      testing::read_file(testing::source_file("data/species/so_upright.toml"));
+  const auto species = dir.write("so.toml", upright);
+  const Result r =
+      run("tree " + species.string() + " --json --internodes " + (dir / "in.csv").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const int stems = nlohmann::json::parse(r.out)["stems"]["total"];
+  std::istringstream csv(testing::read_file(dir / "in.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("internode,parent,step,", 0), 0u) << line;
+  // The first branch that started by step 4 and is alive at the end.
+  std::string chosen;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    std::vector<std::string> c;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) c.push_back(cell);
+    if (chosen.empty() && c[7] == "1" && c[5] == "1" && std::stoi(c[2]) <= 4) chosen = c[0];
+  }
+  EXPECT_GT(rows, stems);  // an internode per row, several per stem
+  ASSERT_FALSE(chosen.empty());
+  const auto pruned =
+      dir.write("pruned.toml", upright + "\n[[prune]]\nstep = 5\ninternode = " + chosen + "\n");
+  const Result after = run("tree " + pruned.string() + " --json", dir);
+  ASSERT_EQ(after.exit_code, 0) << after.err;
+  EXPECT_LT(nlohmann::json::parse(after.out)["stems"]["total"].get<int>(), stems);
+  const Result other =
+      run("tree " + testing::source_file("data/species/quaking_aspen.toml").string() +
+              " --internodes " + (dir / "x.csv").string(),
+          dir);
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("only self-organising"), std::string::npos) << other.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.csv"));
+}
+
 // Every core grows: a Weber & Penn tree through the default ages (a fifth to all of its
 // mature age) gets taller and gains stems; the age is written in each picture.
 TEST(Cli, GrowTakesEveryCore) {

@@ -168,6 +168,7 @@ Pruning read_prune(TableReader r) {
   Pruning c;
   c.step = static_cast<int>(r.integer("step", 1, 500, c.step));
   c.internode = static_cast<std::uint32_t>(r.integer("internode", 1, 100000000, c.internode));
+  c.stub = r.boolean("stub", c.stub);
   r.finish();
   return c;
 }

@@ -100,9 +100,13 @@ struct LeafParameters {
   double width = 0.05;
 };
 
+// TreeSketch section 4 "Pruning": the branch from `internode` up is removed, and the widths
+// below it are as if it had never grown; with `stub`, the internode stays as a stub that
+// keeps its width (the paper's width constraint below the cut).
 struct Pruning {
   int step = 1;                 // before this step's growth
-  std::uint32_t internode = 1;  // the branch from this internode up is cut; it stays as a stub
+  std::uint32_t internode = 1;  // the first internode removed (or the stub)
+  bool stub = false;
 };
 
 struct Parameters {

@@ -79,7 +79,7 @@ std::vector<std::uint32_t> Plant::remove(std::uint32_t i) {
 std::vector<std::uint32_t> Plant::shed(std::uint32_t root, double width, int step) {
   Internode& parent = internodes_[internodes_[root].parent];
   parent.shed_lateral_width = std::max(parent.shed_lateral_width, width);
-  removals_.push_back({step, root, width, false});
+  removals_.push_back({step, root, width, Removal::Kind::shed});
   return remove(root);
 }
 
@@ -95,9 +95,14 @@ std::vector<std::uint32_t> Plant::cut_above(std::uint32_t i, double width, int s
   n.terminal_bud = n.lateral_bud = false;
   n.frozen_width = width;
   n.shed_lateral_width = 0.0;
-  removals_.push_back({step, i, width, true});
+  removals_.push_back({step, i, width, Removal::Kind::stub});
   std::sort(gone.begin(), gone.end());
   return gone;
+}
+
+std::vector<std::uint32_t> Plant::prune(std::uint32_t i, int step) {
+  removals_.push_back({step, i, 0.0, Removal::Kind::pruned});
+  return remove(i);
 }
 
 Plant Plant::at_step(int step) const {
@@ -121,10 +126,17 @@ Plant Plant::at_step(int step) const {
   young.living_ = n;
   for (const Removal& r : removals_) {
     if (r.step > step) break;
-    if (r.cut)
-      young.cut_above(r.internode, r.width, r.step);
-    else
-      young.shed(r.internode, r.width, r.step);
+    switch (r.kind) {
+      case Removal::Kind::shed:
+        young.shed(r.internode, r.width, r.step);
+        break;
+      case Removal::Kind::stub:
+        young.cut_above(r.internode, r.width, r.step);
+        break;
+      case Removal::Kind::pruned:
+        young.prune(r.internode, r.step);
+        break;
+    }
   }
   return young;
 }

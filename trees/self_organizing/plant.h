@@ -47,10 +47,11 @@ struct Internode {
 // A branch shed or cut at a step, with the width it kept: the plant's history of losses, so
 // that the tree of an earlier step can be recovered from the grown one (Plant::at_step).
 struct Removal {
+  enum class Kind { shed, stub, pruned };
   int step = 0;
-  std::uint32_t internode = 0;  // the shed branch's first internode, or the cut stub
-  double width = 0.0;
-  bool cut = false;  // pruned (cut_above) rather than shed
+  std::uint32_t internode = 0;  // the shed or pruned branch's first internode, or the stub
+  double width = 0.0;           // kept in the pipe sum (shed, stub); 0 when pruned
+  Kind kind = Kind::shed;
 };
 
 // A bud: the node at the internode's tip, terminal or lateral.
@@ -86,6 +87,9 @@ class Plant {
   std::vector<std::uint32_t> shed(std::uint32_t root, double width, int step);
   // Removes everything above i and i's buds at `step`; i stays as a stub of width `width`.
   std::vector<std::uint32_t> cut_above(std::uint32_t i, double width, int step);
+  // Prunes the branch from i up at `step`: it dies, and its parent keeps none of its width
+  // (the tree as if it had never grown); the bud it grew from does not grow again.
+  std::vector<std::uint32_t> prune(std::uint32_t i, int step);
 
   // The plant as it was after growth step `step` (TreeSketch's ungrow, section 3): the
   // internodes born by then (an index prefix: internodes are appended in growth order), with

@@ -61,9 +61,14 @@ class Simulation {
         throw InputError("prune: internode " + std::to_string(cut.internode) +
                          " is not a living branch internode at step " + std::to_string(s) +
                          " (the tree has " + std::to_string(plant_.size()) + " internodes)");
-      assign_widths(plant_, p_.width);
-      for (std::uint32_t gone : plant_.cut_above(cut.internode, plant_[cut.internode].width, s))
-        shadows_.cast(plant_[gone].tip, -1.0);
+      std::vector<std::uint32_t> gone;
+      if (cut.stub) {
+        assign_widths(plant_, p_.width);  // the width the stub keeps
+        gone = plant_.cut_above(cut.internode, plant_[cut.internode].width, s);
+      } else {
+        gone = plant_.prune(cut.internode, s);
+      }
+      for (std::uint32_t k : gone) shadows_.cast(plant_[k].tip, -1.0);
     }
   }
 

@@ -85,7 +85,7 @@ TEST(SelfOrganizing, PruningLeavesAStubThatKeepsItsWidth) {
     if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > p.width.tip) branch = i;
   ASSERT_NE(branch, 0u);
   p.steps = 20;
-  p.prunings = {{10, branch}};
+  p.prunings = {{10, branch, true}};
   const Plant after = grow(p, 7);
   EXPECT_TRUE(after[branch].alive);
   EXPECT_TRUE(after[branch].stub);
@@ -95,6 +95,31 @@ TEST(SelfOrganizing, PruningLeavesAStubThatKeepsItsWidth) {
   EXPECT_DOUBLE_EQ(after[branch].width, at_nine[branch].width);
   p.prunings = {{3, 999999}};
   EXPECT_THROW(grow(p, 7), InputError);
+}
+
+// TreeSketch's default pruning: the branch goes at its base and the widths below are as if
+// it had never grown (the stub of the test above keeps them instead).
+TEST(SelfOrganizing, PruningRemovesTheBranchAsIfItNeverGrew) {
+  Parameters p = crown(EnvelopeKind::silhouette);
+  p.steps = 9;
+  const Plant at_nine = grow(p, 7);
+  std::uint32_t branch = 0;
+  for (std::uint32_t i = 1; i < at_nine.size() && branch == 0; ++i)
+    if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > 2 * p.width.tip)
+      branch = i;
+  ASSERT_NE(branch, 0u);
+  const std::uint32_t parent = at_nine[branch].parent;
+  p.steps = 10;
+  p.prunings = {{10, branch, false}};
+  const Plant pruned = grow(p, 7);
+  EXPECT_FALSE(pruned[branch].alive);
+  EXPECT_FALSE(pruned[parent].lateral_bud);  // the bud that grew it does not grow again
+  // The parent's width is the pipe sum of what it still carries, nothing of the branch.
+  const double kept = pruned[parent].width;
+  EXPECT_EQ(pruned[parent].shed_lateral_width, 0.0);
+  p.prunings = {{10, branch, true}};
+  const Plant stubbed = grow(p, 7);
+  EXPECT_LT(kept, stubbed[parent].width);
 }
 
 TEST(SelfOrganizing, HeavySheddingRemovesBranches) {

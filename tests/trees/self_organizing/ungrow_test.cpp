@@ -10,7 +10,7 @@
 namespace landsim::trees::self_organizing {
 namespace {
 
-// A crown in strong shade that sheds branches, with one branch cut at step 10.
+// A crown in strong shade that sheds branches, with two branches cut at step 10.
 Parameters shedding_crown() {
   Parameters p;
   p.steps = 20;
@@ -22,15 +22,22 @@ Parameters shedding_crown() {
   p.envelope.density = 80;
   p.light.a = 0.2;
   p.vigour.shedding = 0.6;
-  // A branch that exists at step 9 and has branched: cut before step 10's growth.
+  // Two branches that exist at step 9 and have branched, neither on the other: before step
+  // 10's growth one is cut to a stub, the other pruned away (TreeSketch's default).
   Parameters nine = p;
   nine.steps = 9;
   const Plant at_nine = grow(nine, 7);
-  for (std::uint32_t i = 1; i < at_nine.size(); ++i)
-    if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > p.width.tip) {
-      p.prunings = {{10, i}};
-      break;
-    }
+  std::vector<std::uint32_t> chosen;
+  const auto descends = [&](std::uint32_t i, std::uint32_t from) {
+    for (std::uint32_t k = i; k != kNone; k = at_nine[k].parent)
+      if (k == from) return true;
+    return false;
+  };
+  for (std::uint32_t i = 1; i < at_nine.size() && chosen.size() < 2; ++i)
+    if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > p.width.tip &&
+        (chosen.empty() || !descends(i, chosen[0])))
+      chosen.push_back(i);
+  if (chosen.size() == 2) p.prunings = {{10, chosen[0], true}, {10, chosen[1], false}};
   return p;
 }
 
@@ -58,9 +65,15 @@ TEST(SelfOrganizingUngrow, AnEarlierStepFromTheStampsIsTheTreeGrownThatLong) {
   ASSERT_FALSE(p.prunings.empty());
   const Plant grown = grow(p, 7);
   // The history holds sheddings before the end and the cut at step 10.
-  int sheds = 0, cuts = 0;
-  for (const Removal& r : grown.removals()) (r.cut ? cuts : sheds) += r.step < 20 ? 1 : 0;
-  ASSERT_EQ(cuts, 1);
+  int sheds = 0, stubs = 0, pruned = 0;
+  for (const Removal& r : grown.removals()) {
+    if (r.step >= 20) continue;
+    sheds += r.kind == Removal::Kind::shed;
+    stubs += r.kind == Removal::Kind::stub;
+    pruned += r.kind == Removal::Kind::pruned;
+  }
+  ASSERT_EQ(stubs, 1);
+  ASSERT_EQ(pruned, 1);
   ASSERT_GT(sheds, 3);
   for (int k : {0, 1, 5, 9, 10, 13, 17, 20}) {
     Plant young = grown.at_step(k);
