@@ -173,6 +173,25 @@ Pruning read_prune(TableReader r) {
   return c;
 }
 
+// A [[phase]]: the rules before it (`before`) with the tables it gives changed.
+GrowthPhase read_phase(TableReader r, const GrowthPhase& before) {
+  GrowthPhase ph = before;
+  ph.selective = false;
+  ph.from_step = static_cast<int>(r.integer("from_step", 1, 500));  // order: the caller
+  read_vigour(r.table("vigour"), ph.vigour);
+  read_gravimorphism(r.table("gravimorphism"), ph.gravimorphism);
+  read_direction(r.table("direction"), ph.direction);
+  if (const auto radius = r.optional_number("region_radius", {0.0, 1000.0, true})) {
+    ph.selective = true;
+    ph.region_radius = *radius;
+    ph.region_centre = r.vec3("region_centre");
+  } else if (r.has("region_centre")) {
+    r.fail("region_radius", "expected a radius in metres with region_centre");
+  }
+  r.finish();
+  return ph;
+}
+
 }  // namespace
 
 Parameters read_parameters(params::TableReader& root, const std::string& source) {
@@ -190,6 +209,17 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
     p.width.constraints.push_back(read_constraint(t));
   for (TableReader& t : root.tables("stroke")) p.strokes.push_back(read_stroke(t));
   for (TableReader& t : root.tables("prune")) p.prunings.push_back(read_prune(t));
+  GrowthPhase rules{0, p.vigour, p.gravimorphism, p.direction, false, {}, 0.0};
+  for (TableReader& t : root.tables("phase")) {
+    const int previous = rules.from_step;
+    rules = read_phase(t, rules);
+    if (rules.from_step <= previous)
+      t.fail("from_step",
+             "expected phases in order of from_step, each later than the one "
+             "before (" +
+                 std::to_string(previous) + ")");
+    p.phases.push_back(rules);
+  }
   if (p.envelope.kind == EnvelopeKind::none && p.strokes.empty() && p.space.autonomous_markers == 0)
     throw InputError(source +
                      ": no markers of free space: give an [envelope], a [[stroke]] or "

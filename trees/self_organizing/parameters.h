@@ -109,6 +109,21 @@ struct Pruning {
   bool stub = false;
 };
 
+// Growth rules changed from a step on (TreeSketch section 3: the modeler changes parameters
+// as the tree grows): the vigour, gravimorphism and direction parameters in effect from
+// `from_step`, each phase starting from the rules before it. With a region, selective growth:
+// only buds within it grow (the rest of the tree waits), as the paper's brush confines
+// growth to where it is applied.
+struct GrowthPhase {
+  int from_step = 1;
+  VigourParameters vigour;
+  Gravimorphism gravimorphism;
+  DirectionParameters direction;
+  bool selective = false;
+  Vec3 region_centre;
+  double region_radius = 0.0;
+};
+
 struct Parameters {
   int steps = 20;
   double internode_length = 0.1;
@@ -122,6 +137,7 @@ struct Parameters {
   Envelope envelope;
   std::vector<BrushStroke> strokes;
   std::vector<Pruning> prunings;
+  std::vector<GrowthPhase> phases;       // by ascending from_step
   std::size_t max_internodes = 1000000;  // growth beyond this is refused (InputError)
   std::size_t max_markers = 20000000;    // markers held at once beyond this: refused too
 };

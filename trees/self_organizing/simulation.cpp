@@ -19,7 +19,8 @@ namespace {
 class Simulation {
  public:
   Simulation(const Parameters& p, std::uint64_t seed)
-      : p_(p),
+      : base_(p),
+        p_(p),
         plant_(p.internode_length),
         shadows_(p.light, p.light.voxel * p.internode_length),
         marker_rng_(seed, 1),
@@ -30,6 +31,7 @@ class Simulation {
 
   // One step; false when nothing grew and no markers can still come.
   bool step(int s) {
+    follow_phase(s);
     prune(s);
     const std::vector<BudRef> buds = plant_.buds();
     std::vector<Vec3> positions(buds.size()), directions(buds.size());
@@ -46,7 +48,9 @@ class Simulation {
     distribute_vigour(plant_, p_.vigour.alpha, p_.vigour.apical_control);
     shed(s);
     const int grown = grow_shoots(buds, space, s);
-    return grown > 0 || more_markers_after(s);
+    // A phase still to begin may let growth resume (a region elsewhere, other rules).
+    return grown > 0 || more_markers_after(s) ||
+           (!base_.phases.empty() && base_.phases.back().from_step > s);
   }
 
   Plant& plant() { return plant_; }
@@ -118,12 +122,14 @@ class Simulation {
     // Only buds with space grow: n = floor(v / v_max * n_max) among them.
     double v_max = 0.0;
     for (std::size_t b = 0; b < buds.size(); ++b)
-      if (space[b].markers > 0) v_max = std::max(v_max, vigour_of(buds[b]));
+      if (space[b].markers > 0 && may_grow(plant_[buds[b].internode]))
+        v_max = std::max(v_max, vigour_of(buds[b]));
     if (!(v_max > 0.0)) return 0;
     int grown = 0;
     for (std::size_t b = 0; b < buds.size(); ++b) {
       const Internode& n = plant_[buds[b].internode];
-      if (space[b].markers == 0 || !n.alive || (buds[b].lateral ? !n.lateral_bud : !n.terminal_bud))
+      if (space[b].markers == 0 || !n.alive ||
+          (buds[b].lateral ? !n.lateral_bud : !n.terminal_bud) || !may_grow(n))
         continue;
       const int metamers =
           static_cast<int>(std::floor(vigour_of(buds[b]) / v_max * p_.vigour.max_shoot));
@@ -156,7 +162,25 @@ class Simulation {
     return false;
   }
 
-  const Parameters& p_;
+  // The rules in effect at step s: the last phase begun by then, or the species' own.
+  void follow_phase(int s) {
+    phase_ = nullptr;
+    for (const GrowthPhase& ph : base_.phases)
+      if (ph.from_step <= s) phase_ = &ph;
+    p_.vigour = phase_ != nullptr ? phase_->vigour : base_.vigour;
+    p_.gravimorphism = phase_ != nullptr ? phase_->gravimorphism : base_.gravimorphism;
+    p_.direction = phase_ != nullptr ? phase_->direction : base_.direction;
+  }
+
+  // Selective growth: outside the phase's region no bud grows.
+  bool may_grow(const Internode& n) const {
+    return phase_ == nullptr || !phase_->selective ||
+           length(n.tip - phase_->region_centre) <= phase_->region_radius;
+  }
+
+  const Parameters& base_;
+  Parameters p_;  // the species' parameters with the current phase's rules
+  const GrowthPhase* phase_ = nullptr;
   Plant plant_;
   ShadowGrid shadows_;
   MarkerSet markers_;

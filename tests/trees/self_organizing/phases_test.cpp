@@ -1,0 +1,130 @@
+// Growth rules changed part-way through growth, and selective growth (TreeSketch section 3):
+// the tree before a phase is untouched by it, the rules act after it begins, a region confines
+// growth while it holds, and a later phase lets the rest grow again; ungrow stays exact.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "tests/trees/species_files.h"
+#include "trees/self_organizing/pipe_model.h"
+#include "trees/self_organizing/simulation.h"
+#include "trees/species.h"
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+Parameters upright() {
+  return std::get<Parameters>(
+      load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species/so_upright.toml")
+          .parameters);
+}
+
+// Mean vertical component of the direction of branch internodes (order 1+) born from `from`.
+double mean_rise(const Plant& plant, int from) {
+  double sum = 0.0;
+  int n = 0;
+  for (const Internode& i : plant.internodes())
+    if (i.alive && i.order > 0 && i.birth >= from) sum += i.direction.z, ++n;
+  return n > 0 ? sum / n : 0.0;
+}
+
+TEST(SelfOrganizingPhases, RulesChangedFromAStepActOnlyFromThere) {
+  const Parameters base = upright();
+  Parameters weeping = base;
+  GrowthPhase ph{8, base.vigour, base.gravimorphism, base.direction, false, {}, 0.0};
+  ph.direction.set_point = 150.0 * std::numbers::pi / 180.0;  // branches bend down
+  ph.direction.tropism = 0.8;
+  weeping.phases = {ph};
+  const Plant a = grow(base, 3), b = grow(weeping, 3);
+  // Up to step 7 the two trees are one.
+  Parameters seven = base;
+  seven.steps = 7;
+  const std::size_t before = grow(seven, 3).size();
+  ASSERT_GT(b.size(), before);
+  for (std::uint32_t i = 0; i < before; ++i) EXPECT_EQ(a[i].tip, b[i].tip);
+  // After it, the new shoots point lower.
+  EXPECT_LT(mean_rise(b, 9), mean_rise(a, 9) - 0.1);
+}
+
+TEST(SelfOrganizingPhases, ARegionConfinesGrowthUntilALaterPhase) {
+  const Parameters base = upright();
+  Parameters seven = base;
+  seven.steps = 7;
+  const Plant at_seven = grow(seven, 3);
+  // The region: around the tip of a branch that stands at step 7, 1 m across.
+  Vec3 centre;
+  for (const Internode& i : at_seven.internodes())
+    if (i.alive && i.order == 1 && i.lateral_bud) centre = i.tip;
+  Parameters p = base;
+  GrowthPhase confined{8, base.vigour, base.gravimorphism, base.direction, true, centre, 1.0};
+  GrowthPhase free{12, base.vigour, base.gravimorphism, base.direction, false, {}, 0.0};
+  p.phases = {confined, free};
+  const Plant plant = grow(p, 3);
+  const double reach = 1.0 + base.vigour.max_shoot * base.internode_length + 1e-9;
+  int inside = 0, outside_later = 0;
+  for (const Internode& i : plant.internodes()) {
+    if (i.birth >= 8 && i.birth < 12) {
+      EXPECT_LE(length(i.base - centre), reach) << "born " << i.birth;
+      ++inside;
+    }
+    outside_later += i.birth >= 12 && length(i.base - centre) > reach;
+  }
+  EXPECT_GT(inside, 5);          // the region grew
+  EXPECT_GT(outside_later, 20);  // and the rest resumed after it
+}
+
+TEST(SelfOrganizingPhases, UngrowIsExactThroughPhases) {
+  const Parameters base = upright();
+  Parameters p = base;
+  GrowthPhase ph{6, base.vigour, base.gravimorphism, base.direction, false, {}, 0.0};
+  ph.direction.set_point = 1.2;
+  ph.vigour.apical_control = 0.7;
+  GrowthPhase confined = ph;
+  confined.from_step = 10;
+  confined.selective = true;
+  confined.region_centre = {0, 0, 2};
+  confined.region_radius = 1.5;
+  p.phases = {ph, confined};
+  const Plant grown = grow(p, 5);
+  for (int k : {5, 6, 9, 10, 13, p.steps}) {
+    Plant young = grown.at_step(k);
+    assign_widths(young, p.width);
+    Parameters q = p;
+    q.steps = k;
+    const Plant direct = grow(q, 5);
+    ASSERT_EQ(young.size(), direct.size()) << k;
+    for (std::uint32_t i = 0; i < direct.size(); ++i) {
+      EXPECT_EQ(young[i].tip, direct[i].tip);
+      if (direct[i].alive) EXPECT_EQ(young[i].width, direct[i].width);
+    }
+  }
+}
+
+TEST(SelfOrganizingPhases, PhasesReadFromTheSpeciesFileInOrder) {
+  const std::string head = "core = \"self_organizing\"\n[space]\nautonomous_markers = 4\n";
+  const Species s = parse_species_toml(
+      head +
+          "[direction]\ntropism = 0.2\n[[phase]]\nfrom_step = 5\n[phase.direction]\n"
+          "set_point = 120\n[[phase]]\nfrom_step = 9\nregion_centre = [0, 0, 2]\n"
+          "region_radius = 1.5\n[phase.vigour]\napical_control = 0.8\n",
+      "p.toml");
+  const Parameters& p = std::get<Parameters>(s.parameters);
+  ASSERT_EQ(p.phases.size(), 2u);
+  EXPECT_NEAR(p.phases[0].direction.set_point, 120.0 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_DOUBLE_EQ(p.phases[0].direction.tropism, 0.2);  // kept from before
+  // The second phase starts from the first's rules.
+  EXPECT_NEAR(p.phases[1].direction.set_point, 120.0 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_DOUBLE_EQ(p.phases[1].vigour.apical_control, 0.8);
+  EXPECT_TRUE(p.phases[1].selective);
+  EXPECT_FALSE(p.phases[0].selective);
+  const std::string disordered = trees::testing::species_error(
+      head + "[[phase]]\nfrom_step = 9\n[[phase]]\nfrom_step = 5\n", "p.toml");
+  EXPECT_NE(disordered.find("from_step"), std::string::npos) << disordered;
+  EXPECT_NE(disordered.find("in order"), std::string::npos) << disordered;
+  const std::string no_radius = trees::testing::species_error(
+      head + "[[phase]]\nfrom_step = 4\nregion_centre = [0, 0, 1]\n", "p.toml");
+  EXPECT_NE(no_radius.find("region_radius"), std::string::npos) << no_radius;
+}
+
+}  // namespace
+}  // namespace landsim::trees::self_organizing
