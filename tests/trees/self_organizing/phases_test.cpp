@@ -95,7 +95,9 @@ TEST(SelfOrganizingPhases, UngrowIsExactThroughPhases) {
     ASSERT_EQ(young.size(), direct.size()) << k;
     for (std::uint32_t i = 0; i < direct.size(); ++i) {
       EXPECT_EQ(young[i].tip, direct[i].tip);
-      if (direct[i].alive) EXPECT_EQ(young[i].width, direct[i].width);
+      if (direct[i].alive) {
+        EXPECT_EQ(young[i].width, direct[i].width);
+      }
     }
   }
 }

@@ -56,7 +56,9 @@ void expect_same_plant(const Plant& a, const Plant& b, int step) {
     EXPECT_EQ(x.lateral_bud, y.lateral_bud) << "internode " << i << " at step " << step;
     EXPECT_EQ(x.shed_lateral_width, y.shed_lateral_width) << "internode " << i;
     // Widths of the living (a dead internode keeps whatever width it last had; it is not drawn).
-    if (x.alive) EXPECT_EQ(x.width, y.width) << "internode " << i << " at step " << step;
+    if (x.alive) {
+      EXPECT_EQ(x.width, y.width) << "internode " << i << " at step " << step;
+    }
   }
 }
 
@@ -97,7 +99,7 @@ TEST(SelfOrganizingUngrow, AYoungerTreeIsPartOfTheOlder) {
     EXPECT_EQ(young[i].birth, old[i].birth);
     EXPECT_LE(young[i].birth, 8);
   }
-  EXPECT_GT(old[young.size()].birth, 8);  // what follows grew later
+  EXPECT_GT(old[static_cast<std::uint32_t>(young.size())].birth, 8);  // what follows grew later
 }
 
 TEST(SelfOrganizingUngrow, SkeletonsOfSeveralStepsFromOneGrowth) {
