@@ -104,28 +104,26 @@ int main() {
       "Yao graph (54 cones, search 2.5 spacings): %.2f edges per node, %zu endpoints "
       "unreachable, path stretch %.3f, %.2f s\n",
       yao.edges_per_node, yao.unreachable, yao.stretch, yao.seconds);
-  // The smallest threshold (in steps of 0.05 spacing) that reaches every endpoint.
-  Row tuned;
-  double tuned_at = 0.0;
-  for (double t = 1.0; t <= 3.0; t += 0.05) {
-    tuned = measure(nodes, {.policy = GraphPolicy::threshold, .threshold = t * spacing}, root,
-                    endpoints);
-    tuned_at = t;
-    if (tuned.unreachable == 0) break;
-  }
+  // The smallest threshold (in steps of 0.05 spacing) whose graph passes `good`.
+  const auto smallest = [&](auto good, double& at) {
+    Row r;
+    for (at = 1.0; at <= 3.0; at += 0.05) {
+      r = measure(nodes, {.policy = GraphPolicy::threshold, .threshold = at * spacing}, root,
+                  endpoints);
+      if (good(r)) break;
+    }
+    return r;
+  };
+  double tuned_at = 0.0, straight_at = 0.0;
+  const Row tuned = smallest([](const Row& r) { return r.unreachable == 0; }, tuned_at);
   std::printf(
       "threshold %.2f spacings (the smallest reaching every endpoint): %.2f edges per "
       "node, %zu unreachable, path stretch %.3f, %.2f s\n",
       tuned_at, tuned.edges_per_node, tuned.unreachable, tuned.stretch, tuned.seconds);
   // The smallest threshold whose paths wander no more than 2% beyond the Yao graph's.
-  Row straight;
-  double straight_at = 0.0;
-  for (double t = 1.0; t <= 3.0; t += 0.05) {
-    straight = measure(nodes, {.policy = GraphPolicy::threshold, .threshold = t * spacing}, root,
-                       endpoints);
-    straight_at = t;
-    if (straight.unreachable == 0 && straight.stretch <= 1.02 * yao.stretch) break;
-  }
+  const Row straight =
+      smallest([&](const Row& r) { return r.unreachable == 0 && r.stretch <= 1.02 * yao.stretch; },
+               straight_at);
   std::printf(
       "threshold %.2f spacings (paths as straight as the Yao graph's, within 2%%): %.2f "
       "edges per node, path stretch %.3f, %.2f s\n",

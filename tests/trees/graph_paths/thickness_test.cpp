@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/trees/modesto_trees.h"
 #include "trees/graph_paths/generator.h"
 #include "trees/species.h"
 
@@ -42,19 +43,10 @@ double median_tip_radius(const TreeSkeleton& s) {
 // ln(DBH) against ln(height) over the 27 Modesto London planes (data/allometry/): the slope
 // is the exponent a trunk's diameter grows with its tree's size.
 double measured_exponent() {
-  std::ifstream in(std::filesystem::path(LANDSIM_SOURCE_DIR) /
-                   "data/allometry/modesto_london_plane_trees.csv");
-  std::string line;
-  std::getline(in, line);
   std::vector<double> x, y;
-  while (std::getline(in, line)) {
-    const std::size_t q1 = line.find('"'), q2 = line.find('"', q1 + 1);
-    line.erase(q1, q2 - q1 + 1);
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    x.push_back(std::log(std::stod(cells[6])));  // height, m
-    y.push_back(std::log(std::stod(cells[5])));  // DBH, cm
+  for (const testing::ModestoTree& t : testing::modesto_trees()) {
+    x.push_back(std::log(t.height_m));
+    y.push_back(std::log(t.dbh_cm));
   }
   double mx = 0, my = 0;
   for (std::size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];

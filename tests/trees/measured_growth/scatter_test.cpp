@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/trees/modesto_trees.h"
 #include "trees/measured_growth/allometry.h"
 #include "trees/measured_growth/generator.h"
 #include "trees/measured_growth/parameters.h"
@@ -24,32 +25,6 @@ Parameters london_plane() {
           .parameters);
 }
 
-struct MeasuredTree {
-  double age, dbh, height, crown_diameter;
-};
-
-// data/allometry/modesto_london_plane_trees.csv.
-std::vector<MeasuredTree> modesto_trees() {
-  std::ifstream in(std::filesystem::path(LANDSIM_SOURCE_DIR) /
-                   "data/allometry/modesto_london_plane_trees.csv");
-  std::vector<MeasuredTree> trees;
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    // The city is quoted with a comma inside: drop the quoted field first.
-    const std::size_t q1 = line.find('"'), q2 = line.find('"', q1 + 1);
-    line.erase(q1, q2 - q1 + 1);
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    // Region, (the city, emptied), SpCode, name, Age, DBH, TreeHt, CrnBase, CrnHt, CdiaPar,
-    // CDiaPerp, AvgCdia, Leaf.
-    trees.push_back(
-        {std::stod(cells[4]), std::stod(cells[5]), std::stod(cells[6]), std::stod(cells[11])});
-  }
-  return trees;
-}
-
 double rms(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x * x;
@@ -60,13 +35,13 @@ double rms(const std::vector<double>& v) {
 // was fitted to, sqrt(Sigma) is their spread (within 25%), Sigma itself is not (off 4x-75x).
 TEST(MeasuredGrowthScatter, SigmaIsTheWeightedMeanSquareOnTheDatabasesOwnTrees) {
   const Allometry a = london_plane().allometry;
-  const std::vector<MeasuredTree> trees = modesto_trees();
+  const std::vector<trees::testing::ModestoTree> trees = trees::testing::modesto_trees();
   ASSERT_EQ(trees.size(), 27u);
   std::vector<double> dbh, height, crown;
-  for (const MeasuredTree& t : trees) {
-    if (t.age > 0) dbh.push_back((t.dbh - a.dbh.unclamped(t.age)) / std::pow(t.age, 0.25));
-    height.push_back((t.height - a.height.unclamped(t.dbh)) / t.dbh);
-    crown.push_back((t.crown_diameter - a.crown_diameter.unclamped(t.dbh)) / t.dbh);
+  for (const trees::testing::ModestoTree& t : trees) {
+    if (t.age > 0) dbh.push_back((t.dbh_cm - a.dbh.unclamped(t.age)) / std::pow(t.age, 0.25));
+    height.push_back((t.height_m - a.height.unclamped(t.dbh_cm)) / t.dbh_cm);
+    crown.push_back((t.crown_diameter_m - a.crown_diameter.unclamped(t.dbh_cm)) / t.dbh_cm);
   }
   for (auto [spread, sigma] :
        {std::pair{rms(dbh), a.dbh.sigma}, std::pair{rms(height), a.height.sigma},

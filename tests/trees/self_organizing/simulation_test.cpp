@@ -75,14 +75,19 @@ TEST(SelfOrganizing, ShootsFollowABrushStroke) {
   EXPECT_GT(farthest_x, 1.0);  // the tree turned along the stroke's second leg
 }
 
+// The first living branch of `plant` wider than `width` (it has branched), or 0.
+std::uint32_t first_branch(const Plant& plant, double width) {
+  for (std::uint32_t i = 1; i < plant.size(); ++i)
+    if (plant[i].alive && plant.starts_branch(i) && plant[i].width > width) return i;
+  return 0;
+}
+
 TEST(SelfOrganizing, PruningLeavesAStubThatKeepsItsWidth) {
   // Growth is sequential, so a 9-step tree is the 20-step tree as it stood before step 10.
   Parameters p = crown(EnvelopeKind::silhouette);
   p.steps = 9;
   const Plant at_nine = grow(p, 7);
-  std::uint32_t branch = 0;
-  for (std::uint32_t i = 1; i < at_nine.size() && branch == 0; ++i)
-    if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > p.width.tip) branch = i;
+  const std::uint32_t branch = first_branch(at_nine, p.width.tip);
   ASSERT_NE(branch, 0u);
   p.steps = 20;
   p.prunings = {{10, branch, true}};
@@ -103,10 +108,7 @@ TEST(SelfOrganizing, PruningRemovesTheBranchAsIfItNeverGrew) {
   Parameters p = crown(EnvelopeKind::silhouette);
   p.steps = 9;
   const Plant at_nine = grow(p, 7);
-  std::uint32_t branch = 0;
-  for (std::uint32_t i = 1; i < at_nine.size() && branch == 0; ++i)
-    if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > 2 * p.width.tip)
-      branch = i;
+  const std::uint32_t branch = first_branch(at_nine, 2 * p.width.tip);
   ASSERT_NE(branch, 0u);
   const std::uint32_t parent = at_nine[branch].parent;
   p.steps = 10;
