@@ -30,7 +30,9 @@ std::set<std::string> declared_keys(const std::string& file_prefix) {
     if (name.rfind(file_prefix, 0) != 0 || entry.path().extension() != ".toml") continue;
     params::Declarations declared;
     parse_species_toml(read_file(entry.path()), entry.path().string(), &declared);
-    for (const params::KeyDeclaration& d : declared) {
+    for (params::KeyDeclaration d : declared) {
+      // A table inside an array of tables ("phase[0].direction") is written "[phase.direction]".
+      d.table = std::regex_replace(d.table, std::regex(R"(\[\d*\]\.)"), ".");
       if (d.table.empty() && (d.key == "core" || d.key == "name" || d.key == "colours")) continue;
       if (d.table == "colours") continue;
       if (d.table.rfind("allometry.", 0) == 0) {

@@ -46,6 +46,21 @@ TEST(SelfOrganizingPhases, RulesChangedFromAStepActOnlyFromThere) {
   EXPECT_LT(mean_rise(b, 9), mean_rise(a, 9) - 0.1);
 }
 
+// The example: so_upright's first eight steps, then level growth (TreeSketch's A3 and C1).
+TEST(SelfOrganizingPhases, TheExampleGrowsUprightThenLevel) {
+  const auto load = [](const char* file) {
+    return std::get<Parameters>(
+        load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / file)
+            .parameters);
+  };
+  const Plant upright = grow(load("so_upright.toml"), 3), phased = grow(load("so_phased.toml"), 3);
+  std::uint32_t shared = 0;
+  while (shared < upright.size() && upright[shared].birth <= 8) ++shared;
+  for (std::uint32_t i = 0; i < shared; ++i) EXPECT_EQ(upright[i].tip, phased[i].tip);
+  EXPECT_GT(mean_rise(upright, 9), 0.3);
+  EXPECT_LT(std::abs(mean_rise(phased, 9)), 0.25);
+}
+
 TEST(SelfOrganizingPhases, ARegionConfinesGrowthUntilALaterPhase) {
   const Parameters base = upright();
   Parameters seven = base;
