@@ -65,9 +65,12 @@ class Grower {
     if (p_.refinement.spheres > 0) return refined_first_level();
     const Graph g = graph_in(p_.volume, p_.spacing, hash_combine(seed_, 1), hash_combine(seed_, 2));
     if (g.nodes.empty()) return;
-    const auto endpoints =
+    auto endpoints =
         shell_endpoints(g.nodes, p_.volume, p_.shell, static_cast<std::size_t>(p_.endpoints),
                         hash_combine(seed_, 3), p_.endpoint_min_z);
+    for (const Vec3& q : p_.manual_endpoints) endpoints.push_back(nearest_node(g.nodes, q));
+    std::sort(endpoints.begin(), endpoints.end());
+    endpoints.erase(std::unique(endpoints.begin(), endpoints.end()), endpoints.end());
     BranchStructure b;
     const auto index = hang(g, endpoints, p_.root, kNoNode, 0, b);
     count(g, endpoints.size());

@@ -44,6 +44,9 @@ struct Parameters {
   int endpoints = 200;
   double shell = 0.3;              // d_e, metres
   double endpoint_min_z = -1e300;  // metres: no first-level endpoints below
+  // Endpoints the modeler places (Xu & Mould 2012, Fig. 9: "endpoints selected manually"):
+  // the graph node nearest each point ends a path too, besides the random ones.
+  std::vector<Vec3> manual_endpoints;
   SkeletonOptions skeleton;
   IterationParameters iteration;
   RefinementParameters refinement;

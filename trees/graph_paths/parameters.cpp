@@ -57,6 +57,26 @@ std::vector<ProfilePoint> read_profile(TableReader& r) {
   return profile;
 }
 
+// [[x, y, z], ...] metres: endpoints the modeler places.
+std::vector<Vec3> read_points(TableReader& r, std::string_view key) {
+  const std::string expected = "[[x, y, z], ...] in metres";
+  const toml::node* n = r.value(key, expected);
+  std::vector<Vec3> points;
+  if (n == nullptr) return points;
+  const toml::array* a = n->as_array();
+  if (a == nullptr) r.fail(key, "expected " + expected);
+  for (const toml::node& point : *a) {
+    const toml::array* q = point.as_array();
+    std::optional<double> c[3];
+    for (int k = 0; k < 3 && q != nullptr && q->size() == 3; ++k) c[k] = q->get(k)->value<double>();
+    if (!c[0] || !c[1] || !c[2] || !kCoordinate.contains(*c[0]) || !kCoordinate.contains(*c[1]) ||
+        !kCoordinate.contains(*c[2]))
+      r.fail_at(point, key, "expected " + expected);
+    points.push_back({*c[0], *c[1], *c[2]});
+  }
+  return points;
+}
+
 VolumePrimitive read_primitive(TableReader& r) {
   VolumePrimitive s;
   s.kind = kind_of(r.choice(
@@ -86,6 +106,7 @@ void read_graph(TableReader r, Parameters& p) {
   p.endpoints = static_cast<int>(r.integer("endpoints", 1, 100000, p.endpoints));
   p.shell = r.number("shell", {1e-3, 100}, p.shell);
   p.endpoint_min_z = r.optional_number("endpoint_min_z", kCoordinate).value_or(p.endpoint_min_z);
+  p.manual_endpoints = read_points(r, "manual_endpoints");
   r.finish();
 }
 
@@ -195,6 +216,17 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
   for (TableReader& t : root.tables("volume")) parts.push_back(read_primitive(t));
   if (parts.empty()) throw InputError(source + ": at least one [[volume]] is required");
   p.volume = InitialVolume(std::move(parts));
+  for (std::size_t i = 0; i < p.manual_endpoints.size(); ++i) {
+    if (p.refinement.spheres > 0)
+      throw InputError(source +
+                       ": [graph] manual_endpoints: not with [refinement] (the limbs' "
+                       "spheres replace the volume the points would be in)");
+    const Vec3& q = p.manual_endpoints[i];
+    if (!p.volume.contains(q))
+      throw InputError(source + ": [graph] manual_endpoints[" + std::to_string(i) + "] (" +
+                       params::format_number(q.x) + ", " + params::format_number(q.y) + ", " +
+                       params::format_number(q.z) + ") is outside every [[volume]]");
+  }
   if (const double n = estimated_nodes(p); n > static_cast<double>(p.max_nodes))
     throw InputError(source + ": graph.spacing " + std::to_string(p.spacing) + " and " +
                      std::to_string(p.iteration.levels) + " iteration.levels would make about " +

@@ -162,6 +162,29 @@ TEST(GraphPathsGenerator, MeshesThroughTheSharedMesher) {
   EXPECT_GT(g.triangle_count(), 1000u);
 }
 
+// Endpoints the modeler places: a branch reaches each (within a node spacing), which the
+// random endpoints alone do not do.
+TEST(GraphPathsGenerator, ManualEndpointsAreReached) {
+  const std::vector<Vec3> wanted = {{1.2, 0, 3.4}, {-0.6, 0.9, 4.1}, {0.3, -1.1, 2.6}};
+  const auto nearest_tip = [](const TreeSkeleton& s, const Vec3& q) {
+    double best = 1e300;
+    for (const StemSkeleton& stem : s.stems)
+      for (const CrossSection& c : stem.sections) best = std::min(best, length(c.position - q));
+    return best;
+  };
+  Parameters p = crown_on_trunk();
+  p.endpoints = 2;
+  const TreeSkeleton plain = generate_skeleton(p, 4);
+  p.manual_endpoints = wanted;
+  const TreeSkeleton placed = generate_skeleton(p, 4);
+  int missed_before = 0;
+  for (const Vec3& q : wanted) {
+    EXPECT_LT(nearest_tip(placed, q), p.spacing);
+    missed_before += nearest_tip(plain, q) > 2 * p.spacing;
+  }
+  EXPECT_GE(missed_before, 2);
+}
+
 TEST(GraphPathsGenerator, RefusesBadSpacing) {
   Parameters p = crown_on_trunk();
   p.spacing = 0.0;

@@ -84,6 +84,22 @@ TEST(GraphPathsSpecies, BadShapesAndParametersNameTheLineAndKey) {
   EXPECT_NE(msg.find("Scale"), std::string::npos) << msg;
 }
 
+TEST(GraphPathsSpecies, ManualEndpointsAreReadAndCheckedAgainstTheVolume) {
+  const Species s = parse_species_toml(
+      kHeader + "[graph]\nmanual_endpoints = [[0.5, 0, 0.2], [0, -0.5, 0.5]]\n" + kVolume,
+      "g.toml");
+  const auto& p = std::get<Parameters>(s.parameters);
+  ASSERT_EQ(p.manual_endpoints.size(), 2u);
+  EXPECT_EQ(p.manual_endpoints[1], (Vec3{0, -0.5, 0.5}));
+  const std::string outside =
+      error_of(kHeader + "[graph]\nmanual_endpoints = [[0, 0, 0.5], [3, 0, 0]]\n" + kVolume);
+  EXPECT_NE(outside.find("manual_endpoints[1] (3, 0, 0) is outside"), std::string::npos) << outside;
+  const std::string malformed =
+      error_of(kHeader + "[graph]\nmanual_endpoints = [[0, 0]]\n" + kVolume);
+  EXPECT_NE(malformed.find("g.toml:3"), std::string::npos) << malformed;
+  EXPECT_NE(malformed.find("[[x, y, z], ...]"), std::string::npos) << malformed;
+}
+
 TEST(GraphPathsSpecies, ExplosiveSpacingIsRefusedBeforeGenerating) {
   // A 10 m sphere at 5 cm spacing: about 19 million nodes.
   const std::string msg =

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -45,9 +46,7 @@ void expect_row(const std::vector<std::string>& row, const Equation& e) {
   EXPECT_DOUBLE_EQ(number(row[14]), e.max) << row[4];
   // The scatter: Sigma, and the model weight with its variable written as x.
   EXPECT_DOUBLE_EQ(number(row[15]), e.sigma) << row[4];
-  std::string weight = row[6];
-  for (const char* v : {"dbh", "age"})
-    if (const std::size_t at = weight.find(v); at != std::string::npos) weight.replace(at, 3, "x");
+  const std::string weight = std::regex_replace(row[6], std::regex("dbh|age"), "x");
   Weight w{};
   ASSERT_TRUE(parse_weight(weight, w)) << row[6];
   EXPECT_EQ(w, e.weight) << row[4];
@@ -83,7 +82,10 @@ TEST(Allometry, ModestoAtTwentyYearsAsTheDataReadmeGivesIt) {
 }
 
 TEST(Allometry, LogLogFormAndClamping) {
-  const Equation e{ModelForm::loglogw1, -0.32476, 2.07239, 0.05105, 0, 1.34, 13.19};
+  Equation e;
+  e.form = ModelForm::loglogw1;
+  e.a = -0.32476, e.b = 2.07239, e.c = 0.05105;
+  e.min = 1.34, e.max = 13.19;
   const double x = 40.0;
   EXPECT_DOUBLE_EQ(e(x), std::exp(-0.32476 + 2.07239 * std::log(std::log(41.0) + 0.05105 / 2)));
   EXPECT_DOUBLE_EQ(e(1e6), 13.19);  // clamped to the predicted range
