@@ -4,6 +4,7 @@
 #include <unistd.h>
 #include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -47,5 +48,12 @@ class AtomicFile {
   std::filesystem::path temp_;
   bool committed_ = false;
 };
+
+// `text` as the whole of `path`, written atomically (reports, manifests, tables).
+inline void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+  AtomicFile file(path);
+  std::ofstream(file.temp_path()) << text;
+  file.commit();
+}
 
 }  // namespace landsim

@@ -63,7 +63,7 @@ renderer::Scene studio_scene(float half) {
   return s;
 }
 
-trees::TreeGeometry person_figure() {
+renderer::TreePrototype person_figure() {
   trees::TreeSkeleton figure;
   trees::StemSkeleton body;  // legs and trunk, then shoulders narrowing to the neck
   const auto add = [&](trees::StemSkeleton& stem, double z, double r) {
@@ -77,7 +77,10 @@ trees::TreeGeometry person_figure() {
     add(head, 1.52 + 0.115 * (1.0 - std::cos(a)), 0.1 * std::sin(a));
   }
   figure.stems = {body, head};
-  return trees::mesh_tree(figure, trees::MeshResolution{{12, 12, 12, 12}});
+  renderer::TreePrototype person;
+  person.geometry = trees::mesh_tree(figure, trees::MeshResolution{{12, 12, 12, 12}});
+  person.bark_albedo = {0.35f, 0.12f, 0.10f};
+  return person;
 }
 
 renderer::Film render_contact_sheet(const std::vector<trees::TreeGeometry>& trees,

@@ -42,7 +42,8 @@ void write_labelled_png(const renderer::Film& sheet, const std::vector<std::stri
 // the south-west, physical sky.
 renderer::Scene studio_scene(float half);
 
-// A person-sized reference figure, 1.75 m tall, standing at the origin (for scale).
-trees::TreeGeometry person_figure();
+// A person-sized reference figure, 1.75 m tall, standing at the origin (for scale), as a
+// prototype dressed in red.
+renderer::TreePrototype person_figure();
 
 }  // namespace landsim::exporters

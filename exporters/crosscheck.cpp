@@ -217,38 +217,41 @@ void write_reports(const CrosscheckReport& r, const CrosscheckOptions& o,
       {"shift", r.shift ? nlohmann::json(*r.shift) : nlohmann::json()},
       {"camera", camera_json(r.camera)},
       {"pass", r.pass}};
-  {
-    AtomicFile json(dir / "report.json");
-    std::ofstream(json.temp_path()) << j.dump(2) << "\n";
-    json.commit();
-  }
-  AtomicFile html(dir / "report.html");
-  std::ofstream(html.temp_path()) << fmt::format(
-      "<!doctype html><meta charset=utf-8><title>landsim cross-check</title>\n"
-      "<h1>landsim against POV-Ray: {}</h1>\n<img src=side_by_side.png alt='landsim | POV-Ray | "
-      "difference'>\n"
-      "<p>Left: landsim in its POV-comparable mode; middle: POV-Ray; both at landsim's automatic "
-      "exposure. Right: the relative luminance difference |L_landsim - L_POV| / L_POV of pixels "
-      "both see as objects, black 0 to full red at 50% and beyond (the bar below it).\n"
-      "<table><tr><td>object IoU (mean of trees, ground{})<td>{:.4f} (min {})\n<tr><td>trees "
-      "IoU<td>{:.4f}\n"
-      "<tr><td>ground IoU<td>{:.4f}\n{}<tr><td>mean luminance difference<td>{:.2f}% (max {:.0f}%)\n"
-      "<tr><td>largest region difference<td>{:.2f}% (max {:.0f}%)\n<tr><td>landsim<td>{:.2f} s\n"
-      "<tr><td>POV-Ray<td>{:.2f} s\n{}</table>\n",
-      r.pass ? "pass" : "FAIL", r.scene_object_iou ? ", scene objects" : "", r.object_iou,
-      o.min_iou, r.tree_iou, r.ground_iou,
-      r.scene_object_iou ? fmt::format("<tr><td>scene objects IoU<td>{:.4f}\n", *r.scene_object_iou)
-                         : std::string(),
-      100 * r.luminance_mean_rel_diff, 100 * o.max_mean_diff, 100 * r.luminance_region_max_rel_diff,
-      100 * o.max_region_diff, r.landsim_seconds, r.povray_seconds,
-      r.camera
-          ? fmt::format("<tr><td>camera read from {}<td>at ({:.2f}, {:.2f}, {:.2f}) looking at "
-                        "({:.2f}, {:.2f}, {:.2f}), {:.2f} degrees high\n",
-                        o.pov_scene.filename().string(), r.camera->position.x, r.camera->position.y,
-                        r.camera->position.z, r.camera->target.x, r.camera->target.y,
-                        r.camera->target.z, r.camera->fov_y_deg)
-          : std::string());
-  html.commit();
+  write_file_atomically(dir / "report.json", j.dump(2) + "\n");
+  write_file_atomically(
+      dir / "report.html",
+      fmt::format(
+          "<!doctype html><meta charset=utf-8><title>landsim cross-check</title>\n"
+          "<h1>landsim against POV-Ray: {}</h1>\n<img src=side_by_side.png alt='landsim | POV-Ray "
+          "| "
+          "difference'>\n"
+          "<p>Left: landsim in its POV-comparable mode; middle: POV-Ray; both at landsim's "
+          "automatic "
+          "exposure. Right: the relative luminance difference |L_landsim - L_POV| / L_POV of "
+          "pixels "
+          "both see as objects, black 0 to full red at 50% and beyond (the bar below it).\n"
+          "<table><tr><td>object IoU (mean of trees, ground{})<td>{:.4f} (min {})\n<tr><td>trees "
+          "IoU<td>{:.4f}\n"
+          "<tr><td>ground IoU<td>{:.4f}\n{}<tr><td>mean luminance difference<td>{:.2f}% (max "
+          "{:.0f}%)\n"
+          "<tr><td>largest region difference<td>{:.2f}% (max {:.0f}%)\n<tr><td>landsim<td>{:.2f} "
+          "s\n"
+          "<tr><td>POV-Ray<td>{:.2f} s\n{}</table>\n",
+          r.pass ? "pass" : "FAIL", r.scene_object_iou ? ", scene objects" : "", r.object_iou,
+          o.min_iou, r.tree_iou, r.ground_iou,
+          r.scene_object_iou
+              ? fmt::format("<tr><td>scene objects IoU<td>{:.4f}\n", *r.scene_object_iou)
+              : std::string(),
+          100 * r.luminance_mean_rel_diff, 100 * o.max_mean_diff,
+          100 * r.luminance_region_max_rel_diff, 100 * o.max_region_diff, r.landsim_seconds,
+          r.povray_seconds,
+          r.camera
+              ? fmt::format("<tr><td>camera read from {}<td>at ({:.2f}, {:.2f}, {:.2f}) looking at "
+                            "({:.2f}, {:.2f}, {:.2f}), {:.2f} degrees high\n",
+                            o.pov_scene.filename().string(), r.camera->position.x,
+                            r.camera->position.y, r.camera->position.z, r.camera->target.x,
+                            r.camera->target.y, r.camera->target.z, r.camera->fov_y_deg)
+              : std::string()));
 }
 
 // The image at (x, y) shifted by (dx, dy) pixels: bilinear, edges clamped.

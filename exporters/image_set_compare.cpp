@@ -195,11 +195,7 @@ void write_compare_reports(const SetComparison& c, const CompareOptions& o,
                               {"max_layer_diff", o.max_layer_diff},
                               {"max_normal_deg", o.max_normal_deg}}},
                             {"pass", c.pass}};
-  {
-    AtomicFile json(dir / "report.json");
-    std::ofstream(json.temp_path()) << j.dump(2) << "\n";
-    json.commit();
-  }
+  { write_file_atomically(dir / "report.json", j.dump(2) + "\n"); }
   std::string rows;
   for (const ImageDifference& d : c.images)
     rows += fmt::format(
@@ -213,16 +209,17 @@ void write_compare_reports(const SetComparison& c, const CompareOptions& o,
     for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
     return s.empty() ? std::string("none") : s;
   };
-  AtomicFile html(dir / "report.html");
-  std::ofstream(html.temp_path()) << fmt::format(
-      "<!doctype html><meta charset=utf-8><title>landsim compare</title>\n"
-      "<h1>{}: {} against {}</h1>\n<table><tr><th>view<th>frame<th>result<th>mean luminance"
-      "<th>worst region<th>depth<th>normal (deg)<th>object<th>species\n{}</table>\n"
-      "<p>Only in the first set: {}. Only in the second: {}.\n<p>Thresholds: mean {:.2f}%, "
-      "region {:.2f}%, layers {:.2f}%, normals {:.2f} degrees.\n",
-      c.pass ? "pass" : "FAIL", a.string(), b.string(), rows, list(c.only_in_a), list(c.only_in_b),
-      100 * o.max_mean_diff, 100 * o.max_region_diff, 100 * o.max_layer_diff, o.max_normal_deg);
-  html.commit();
+  write_file_atomically(
+      dir / "report.html",
+      fmt::format(
+          "<!doctype html><meta charset=utf-8><title>landsim compare</title>\n"
+          "<h1>{}: {} against {}</h1>\n<table><tr><th>view<th>frame<th>result<th>mean luminance"
+          "<th>worst region<th>depth<th>normal (deg)<th>object<th>species\n{}</table>\n"
+          "<p>Only in the first set: {}. Only in the second: {}.\n<p>Thresholds: mean {:.2f}%, "
+          "region {:.2f}%, layers {:.2f}%, normals {:.2f} degrees.\n",
+          c.pass ? "pass" : "FAIL", a.string(), b.string(), rows, list(c.only_in_a),
+          list(c.only_in_b), 100 * o.max_mean_diff, 100 * o.max_region_diff, 100 * o.max_layer_diff,
+          o.max_normal_deg));
 }
 
 }  // namespace landsim::exporters

@@ -259,9 +259,8 @@ TreeSkeleton core_skeleton(const Species& species, const TreeOptions& options) {
                                        nullptr, share);
   }
   if (const auto* p = std::get_if<self_organizing::Parameters>(&species.parameters)) {
-    if (age < 0.0) return self_organizing::generate_skeleton(*p, options.seed);
     self_organizing::Parameters young = *p;
-    young.steps = steps_at(species.age, age, p->steps);
+    young.steps = self_organizing_steps(species, age);
     return self_organizing::generate_skeleton(young, options.seed);
   }
   weber_penn::GenerateOptions o;
@@ -291,6 +290,12 @@ Tree finish(TreeSkeleton skeleton, const Species& species, const TreeOptions& op
 
 }  // namespace
 
+int self_organizing_steps(const Species& species, double age) {
+  const int steps = std::get<self_organizing::Parameters>(species.parameters).steps;
+  if (age < 0.0) return steps;
+  return steps_at(species.age, clamp_age(species.age, age, species.name.c_str()), steps);
+}
+
 Tree generate(const Species& species, const TreeOptions& options) {
   return finish(core_skeleton(species, options), species, options);
 }
@@ -309,9 +314,7 @@ std::vector<Tree> generate_ages(const Species& species, const TreeOptions& optio
   }
   // Self-organising: grown once, each age recovered from the time stamps.
   std::vector<int> steps;
-  for (double age : ages)
-    steps.push_back(
-        steps_at(species.age, clamp_age(species.age, age, species.name.c_str()), so->steps));
+  for (double age : ages) steps.push_back(self_organizing_steps(species, age));
   std::vector<TreeSkeleton> skeletons =
       self_organizing::skeletons_at_steps(*so, options.seed, steps);
   for (TreeSkeleton& s : skeletons) trees.push_back(finish(std::move(s), species, options));

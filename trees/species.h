@@ -85,6 +85,10 @@ TreeSkeleton core_skeleton(const Species& species, const TreeOptions& options);
 
 Tree generate(const Species& species, const TreeOptions& options);
 
+// A self-organising species' growth steps for a tree of `age` years (< 0: the file's own;
+// clamped with a warning as generate does).
+int self_organizing_steps(const Species& species, double age);
+
 // The same tree (options' seed) at each of `ages` (years): as generate with options.age set
 // to each, the self-organising core growing once and recovering the younger trees from its
 // time stamps.

@@ -27,13 +27,17 @@ int steps_at(const AgeCurve& curve, double age, int steps) {
   return static_cast<int>(std::lround(steps * t));
 }
 
+double youngest_age(const AgeCurve& curve) { return std::min(1.0, curve.mature); }
+
+double clamped_age(const AgeCurve& curve, double age) {
+  return std::clamp(age, youngest_age(curve), curve.mature);
+}
+
 double clamp_age(const AgeCurve& curve, double age, const char* species) {
-  // Below a year a tree drawn by scaling would shrink towards nothing: a year is the least.
-  const double youngest = std::min(1.0, curve.mature);
-  const double clamped = std::clamp(age, youngest, curve.mature);
+  const double clamped = clamped_age(curve, age);
   if (clamped != age)
     spdlog::warn("{}: age {} is outside {} to {} years (its species file's tree): using {}",
-                 species, age, youngest, curve.mature, clamped);
+                 species, age, youngest_age(curve), curve.mature, clamped);
   return clamped;
 }
 

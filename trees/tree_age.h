@@ -28,7 +28,12 @@ int levels_at(const AgeCurve& curve, double age, int levels);
 // Growth steps (of `steps` at maturity) taken by `age`: round(steps * age / mature).
 int steps_at(const AgeCurve& curve, double age, int steps);
 
-// `age` within [1 year, mature], with a warning naming the species when it was not.
+// The least age drawn: a year (below it a tree drawn by scaling would shrink towards
+// nothing), or the mature age if that is less.
+double youngest_age(const AgeCurve& curve);
+// `age` within [youngest_age, mature].
+double clamped_age(const AgeCurve& curve, double age);
+// The same, with a warning naming the species when it was not within.
 double clamp_age(const AgeCurve& curve, double age, const char* species);
 
 }  // namespace landsim::trees

@@ -73,10 +73,7 @@ renderer::TreePrototype prototype(const trees::Tree& tree, const trees::Species&
 renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& species,
                              double frame_size, const GrowArgs& args, renderer::View& view) {
   renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * frame_size));
-  renderer::TreePrototype person;
-  person.geometry = exporters::person_figure();
-  person.bark_albedo = {0.35f, 0.12f, 0.10f};
-  s.prototypes = {prototype(tree, species), person};
+  s.prototypes = {prototype(tree, species), exporters::person_figure()};
   s.instances = {{0, {0, 0, 0}, 0.0, 1.0}, {1, {0.4 * frame_size, -2.0, 0}, 0.0, 1.0}};
   s.settings.spp = args.spp;
   s.settings.seed = args.seed;
@@ -102,10 +99,7 @@ void write_growth_figure(const std::vector<trees::Tree>& trees, const trees::Spe
   const double spacing = 1.15 * std::max(crown, 0.5 * height);
   const auto n = static_cast<double>(trees.size());
   renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * (n * spacing + height)));
-  renderer::TreePrototype person;
-  person.geometry = exporters::person_figure();
-  person.bark_albedo = {0.35f, 0.12f, 0.10f};
-  s.prototypes = {person};
+  s.prototypes = {exporters::person_figure()};
   const auto x_of = [&](std::size_t i) {
     return (static_cast<double>(i) - 0.5 * (n - 1)) * spacing;
   };
@@ -154,7 +148,7 @@ std::vector<double> ages_to_grow(const GrowArgs& args, const trees::Species& spe
 double age_used(const trees::Species& species, double requested) {
   if (const auto* p = std::get_if<trees::measured_growth::Parameters>(&species.parameters))
     return std::clamp(requested, 0.0, p->allometry.max_age);  // generate warns
-  return std::clamp(requested, std::min(1.0, species.age.mature), species.age.mature);
+  return trees::clamped_age(species.age, requested);
 }
 
 std::size_t stem_count(const trees::Tree& tree) {
@@ -211,9 +205,7 @@ int run_grow(const GrowArgs& args) {
                                 {"core", trees::core_name(species)},
                                 {"seed", args.seed},
                                 {"ages", rows}};
-  AtomicFile file(out / "growth.json");
-  std::ofstream(file.temp_path()) << table.dump(2) << "\n";
-  file.commit();
+  write_file_atomically(out / "growth.json", table.dump(2) + "\n");
   if (args.json)
     std::cout << table.dump() << "\n";
   else

@@ -139,9 +139,7 @@ void write_manifest(const std::filesystem::path& path, const scenes::Scenario& s
       {"sun", {{"elevation_deg", s.sun.elevation_deg}, {"azimuth_deg", s.sun.azimuth_deg}}},
       {"wind", {{"speed", s.wind.speed}, {"gust", s.wind.gust}}},
       {"images", images}};
-  AtomicFile out(path);
-  std::ofstream(out.temp_path()) << manifest.dump(2) << "\n";
-  out.commit();
+  write_file_atomically(path, manifest.dump(2) + "\n");
 }
 
 }  // namespace

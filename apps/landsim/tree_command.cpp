@@ -53,9 +53,7 @@ void write_internodes(const trees::Species& species, const TreeArgs& args) {
                      "internodes (this one is " +
                      trees::core_name(species) + ")");
   trees::self_organizing::Parameters grown = *p;
-  if (args.age >= 0.0)
-    grown.steps = trees::steps_at(
-        species.age, trees::clamp_age(species.age, args.age, species.name.c_str()), p->steps);
+  grown.steps = trees::self_organizing_steps(species, args.age);
   const trees::self_organizing::Plant plant = trees::self_organizing::grow(grown, args.seed);
   AtomicFile file(args.internodes);
   {
