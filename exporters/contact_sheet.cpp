@@ -12,10 +12,11 @@
 namespace landsim::exporters {
 namespace {
 
-// A flat square of ground under the tree.
-terrain::GroundMesh ground_square(float half) {
+// A flat square of ground under the tree (its northern half for a cutaway).
+terrain::GroundMesh ground_square(float half, bool cutaway) {
   terrain::GroundMesh m;
-  m.vertices = {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}};
+  const float south = cutaway ? 0.0f : -half;
+  m.vertices = {{-half, south, 0}, {half, south, 0}, {half, half, 0}, {-half, half, 0}};
   m.normals.assign(4, Vec3f{0, 0, 1});
   m.indices = {0, 1, 2, 0, 2, 3};
   return m;
@@ -56,9 +57,9 @@ renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOp
 
 }  // namespace
 
-renderer::Scene studio_scene(float half) {
+renderer::Scene studio_scene(float half, bool cutaway) {
   renderer::Scene s;
-  s.ground.mesh = ground_square(half);
+  s.ground.mesh = ground_square(half, cutaway);
   s.sun.direction = normalize(Vec3{-0.5, -0.6, 0.8});
   return s;
 }

@@ -39,8 +39,9 @@ void write_labelled_png(const renderer::Film& sheet, const std::vector<std::stri
                         const ContactSheetOptions& options, const std::filesystem::path& path);
 
 // A studio for single trees: flat ground `half` metres each way from the origin, sun from
-// the south-west, physical sky.
-renderer::Scene studio_scene(float half);
+// the south-west, physical sky. A cutaway keeps only the ground north of the origin (y >= 0),
+// so what lies below the ground south of it (a root system) shows, as in a cross-section.
+renderer::Scene studio_scene(float half, bool cutaway = false);
 
 // A person-sized reference figure, 1.75 m tall, standing at the origin (for scale), as a
 // prototype dressed in red.

@@ -183,12 +183,15 @@ Species load_species(const std::filesystem::path& file) {
 
 namespace {
 
+// Height and crown radius: of what stands above the base (a root system spreads below it).
 void measure(Tree& tree) {
   for (const GroupGeometry& g : tree.geometry.groups) {
     for (const Vec3f& v : g.triangles.vertices) {
       tree.stats.height = std::max(tree.stats.height, static_cast<double>(v.z));
-      tree.stats.crown_radius = std::max(
-          tree.stats.crown_radius, std::hypot(static_cast<double>(v.x), static_cast<double>(v.y)));
+      if (v.z >= 0.0f)
+        tree.stats.crown_radius =
+            std::max(tree.stats.crown_radius,
+                     std::hypot(static_cast<double>(v.x), static_cast<double>(v.y)));
     }
   }
 }

@@ -38,6 +38,9 @@ CLI::App* add_grow_command(CLI::App& app, GrowArgs& args) {
   cmd->add_option("--height", args.height, "Image height")->check(CLI::Range(16, 8192));
   add_spp_option(*cmd, args.spp);
   cmd->add_flag("--json", args.json, "Print growth.json on stdout too");
+  cmd->add_flag("--cutaway", args.cutaway,
+                "Ground only behind the trees, framed down to the deepest root: root systems "
+                "show as in a cross-section");
   return cmd;
 }
 
@@ -69,18 +72,34 @@ renderer::TreePrototype prototype(const trees::Tree& tree, const trees::Species&
   return t;
 }
 
-// The tree and, beside it, the figure; the camera the same for every age: framing the oldest.
+// How far below the ground the deepest tree reaches (its roots), metres; 0 unless cutaway.
+double depth_shown(const std::vector<trees::Tree>& trees, const GrowArgs& args) {
+  double depth = 0.0;
+  if (args.cutaway)
+    for (const trees::Tree& t : trees)
+      depth = std::max(depth, -static_cast<double>(t.geometry.bounds()[0].z));
+  return depth;
+}
+
+// Where the figure stands: in front of the trees, or behind the cut on the ground that is left.
+double figure_y(const GrowArgs& args, double in_front) { return args.cutaway ? 1.0 : in_front; }
+
+// The tree and, beside it, the figure; the camera the same for every age: framing the oldest
+// (in a cutaway, from the deepest root up, the camera level with the ground).
 renderer::Scene growth_scene(const trees::Tree& tree, const trees::Species& species,
-                             double frame_size, const GrowArgs& args, renderer::View& view) {
-  renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * frame_size));
+                             double frame_size, double depth, const GrowArgs& args,
+                             renderer::View& view) {
+  renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * frame_size), args.cutaway);
   s.prototypes = {prototype(tree, species), exporters::person_figure()};
-  s.instances = {{0, {0, 0, 0}, 0.0, 1.0}, {1, {0.4 * frame_size, -2.0, 0}, 0.0, 1.0}};
+  s.instances = {{0, {0, 0, 0}, 0.0, 1.0},
+                 {1, {0.4 * frame_size, figure_y(args, -2.0), 0}, 0.0, 1.0}};
   s.settings.spp = args.spp;
   s.settings.seed = args.seed;
-  const Vec3 centre{0.1 * frame_size, 0, 0.5 * frame_size};
-  view = {"growth",   centre + normalize(Vec3{-0.3, -1.0, 0.1}) * (2.3 * frame_size),
-          centre,     40.0,
-          args.width, args.height};
+  frame_size += depth;
+  const Vec3 centre{0.1 * frame_size, 0, 0.5 * frame_size - depth};
+  Vec3 from = centre + normalize(Vec3{-0.3, -1.0, 0.1}) * (2.3 * frame_size);
+  if (args.cutaway) from.z = 0.0;  // the cut seen edge-on: the tree above it, roots below
+  view = {"growth", from, centre, 40.0, args.width, args.height};
 
   return s;
 }
@@ -96,14 +115,17 @@ void write_growth_figure(const std::vector<trees::Tree>& trees, const trees::Spe
     height = std::max(height, t.stats.height);
     crown = std::max(crown, 2.0 * t.stats.crown_radius);
   }
+  const double depth = depth_shown(trees, args);
+  height += depth;
   const double spacing = 1.15 * std::max(crown, 0.5 * height);
   const auto n = static_cast<double>(trees.size());
-  renderer::Scene s = exporters::studio_scene(static_cast<float>(20.0 * (n * spacing + height)));
+  renderer::Scene s =
+      exporters::studio_scene(static_cast<float>(20.0 * (n * spacing + height)), args.cutaway);
   s.prototypes = {exporters::person_figure()};
   const auto x_of = [&](std::size_t i) {
     return (static_cast<double>(i) - 0.5 * (n - 1)) * spacing;
   };
-  s.instances = {{0, {x_of(0) - 0.4 * spacing, -1.0, 0}, 0.0, 1.0}};
+  s.instances = {{0, {x_of(0) - 0.4 * spacing, figure_y(args, -1.0), 0}, 0.0, 1.0}};
   for (std::size_t i = 0; i < trees.size(); ++i) {
     s.prototypes.push_back(prototype(trees[i], species));
     s.instances.push_back({static_cast<std::uint32_t>(i + 1), {x_of(i), 0, 0}, 0.0, 1.0});
@@ -117,8 +139,10 @@ void write_growth_figure(const std::vector<trees::Tree>& trees, const trees::Spe
   const double half_y = std::tan(15.0 * std::numbers::pi / 180.0);
   const double half_x = half_y * w_px / h_px;
   const double d = std::max(0.55 * (n * spacing) / half_x, 0.65 * height / half_y);
-  const Vec3 centre{0, 0, 0.5 * height};
-  const renderer::View view{"growth", centre + Vec3{0, -d, 0}, centre, 30.0, w_px, h_px};
+  const Vec3 centre{0, 0, 0.5 * height - depth};
+  // In a cutaway the camera is level with the ground, looking up at the middle.
+  const Vec3 from = centre + Vec3{0, -d, args.cutaway ? -centre.z : 0.0};
+  const renderer::View view{"growth", from, centre, 30.0, w_px, h_px};
   const renderer::Film film = renderer::Renderer(s).render(view, {});
   std::vector<renderer::ImageLabel> labels;
   for (std::size_t i = 0; i < trees.size(); ++i) {
@@ -170,12 +194,13 @@ int run_grow(const GrowArgs& args) {
   // One camera for every age, framing the tallest.
   double frame_size = 1.0;
   for (const trees::Tree& t : trees) frame_size = std::max(frame_size, t.stats.height);
+  const double depth = depth_shown(trees, args);
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t i = 0; i < ages.size(); ++i) {
     const double requested = ages[i], age = age_used(species, requested);
     const trees::Tree& tree = trees[i];
     renderer::View view;
-    const renderer::Scene scene = growth_scene(tree, species, frame_size, args, view);
+    const renderer::Scene scene = growth_scene(tree, species, frame_size, depth, args, view);
     const renderer::Film film = renderer::Renderer(scene).render(view, {});
     const std::string stem = fmt::format("age_{:03d}", static_cast<int>(std::lround(requested)));
     renderer::write_exr(film, out / (stem + ".exr"),

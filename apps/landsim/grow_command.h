@@ -23,6 +23,7 @@ struct GrowArgs {
   int height = 480;
   int spp = 16;
   bool json = false;
+  bool cutaway = false;  // ground only behind the trees: roots below it show
 };
 
 CLI::App* add_grow_command(CLI::App& app, GrowArgs& args);

@@ -471,6 +471,42 @@ TEST(Cli, GrowTakesEveryCore) {
   EXPECT_GT(differ, 5);
 }
 
+// A cutaway shows the root system below the cut: in the picture's lower half (below the
+// ground, seen edge-on) a rooted species draws its roots; a rootless one leaves it empty.
+TEST(Cli, GrowCutawayShowsTheRootsBelowTheGround) {
+  TempDir dir;
+  const auto below_ground = [&](const std::string& species) {
+    const auto out = dir / species;
+    const auto file = testing::source_file("data/species/" + species + ".toml").string();
+    const Result r =
+        run("grow " + file + " --ages 30 --cutaway --width 96 --height 96 --spp 1 --out " +
+                out.string(),
+            dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    auto png = OIIO::ImageInput::open((out / "age_030.png").string());
+    std::vector<unsigned char> p(96 * 96 * 3);
+    if (!png || !png->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, p.data())) return -1;
+    const auto at = [&](int x, int y, int c) { return static_cast<int>(p[3 * (y * 96 + x) + c]); };
+    const auto differ = [&](int x, int y, int x0, int y0) {
+      int d = 0;
+      for (int c = 0; c < 3; ++c) d += std::abs(at(x, y, c) - at(x0, y0, c));
+      return d;
+    };
+    // The cut is the first row whose left edge is not sky (the sky is bluer than red, the
+    // empty space under the ground is not); two rows below it on, count pixels unlike their
+    // row's first (that space darkens row by row).
+    int cut = 0;
+    while (cut < 95 && at(0, cut, 0) < at(0, cut, 2)) ++cut;
+    int marked = 0;
+    for (int y = cut + 2; y < 96; ++y) {
+      for (int x = 0; x < 96; ++x) marked += differ(x, y, 0, y) > 30;
+    }
+    return marked;
+  };
+  EXPECT_GT(below_ground("graph_rooted"), 10);
+  EXPECT_EQ(below_ground("graph_round_crown"), 0);
+}
+
 TEST(Cli, RendersAScenarioToExrAndPngWithJson) {
   TempDir dir;
   const auto file = dir.write("ok.toml", scenario("", "", "spp = 2"));

@@ -36,6 +36,14 @@ Vec3 droop(const Vec3& v, double angle) {
   return normalize(v * std::cos(angle) + cross(k, v) * std::sin(angle));
 }
 
+// A level's subgraph axis: v_g (or straight down or up), then turned by the level's rotation.
+Vec3 subgraph_axis(const Level& level, const Vec3& v_g) {
+  const Vec3 v = level.orientation == Orientation::down ? Vec3{0, 0, -1}
+                 : level.orientation == Orientation::up ? Vec3{0, 0, 1}
+                                                        : v_g;
+  return droop(v, level.rotation);
+}
+
 // 1 + s (1 - 2 f), f the angle between v and the light over pi: above 1 toward the light.
 double light_factor(const IterationParameters& it, const Vec3& v) {
   const double f = std::acos(std::clamp(dot(v, normalize(it.light)), -1.0, 1.0)) / std::numbers::pi;
@@ -49,13 +57,17 @@ class Grower {
 
   BranchTree grow() {
     first_level();
-    double radius = p_.iteration.radius;
-    for (int level = 1; level <= p_.iteration.levels && !buds_.empty(); ++level) {
+    const std::vector<Level> levels = resolve_levels(p_.iteration);
+    std::vector<Bud> earlier;  // endpoints of the levels before the current one's
+    for (int k = 1; k <= static_cast<int>(levels.size()) && !buds_.empty(); ++k) {
+      const Level& level = levels[static_cast<std::size_t>(k - 1)];
       std::vector<Bud> next;
       for (const Bud& bud : buds_)
-        if (!p_.iteration.use_lifespan || bud.lifespan > 0.0) subgraph(bud, level, radius, next);
+        if (!p_.iteration.use_lifespan || bud.lifespan > 0.0) subgraph(bud, k, level, next);
+      if (level.every_endpoint)
+        for (const Bud& bud : earlier) subgraph(bud, k, level, next);
+      earlier.insert(earlier.end(), buds_.begin(), buds_.end());
       buds_ = std::move(next);
-      radius *= p_.iteration.size_ratio;
     }
     return std::move(tree_);
   }
@@ -88,14 +100,26 @@ class Grower {
       const std::uint64_t s = hash_combine(hash_combine(seed_, 5), k);
       const Graph g = graph_in(parts[k].volume, p_.spacing, hash_combine(s, 1), hash_combine(s, 2));
       if (g.nodes.size() < 2) continue;
-      const auto endpoints = shell_endpoints(g.nodes, InitialVolume({parts[k].sphere}), p_.shell,
-                                             allotted[k], hash_combine(s, 3), p_.endpoint_min_z);
+      auto endpoints = shell_endpoints(g.nodes, InitialVolume({parts[k].sphere}), p_.shell,
+                                       allotted[k], hash_combine(s, 3), p_.endpoint_min_z);
+      for (const Vec3& q : p_.manual_endpoints)
+        if (nearest_part(parts, q) == k) endpoints.push_back(nearest_node(g.nodes, q));
+      std::sort(endpoints.begin(), endpoints.end());
+      endpoints.erase(std::unique(endpoints.begin(), endpoints.end()), endpoints.end());
       BranchStructure b;
       const auto index = hang(g, endpoints, p_.junction, junction, 0, b);
       count(g, endpoints.size());
       for (std::size_t i = 0; i < index.size(); ++i)
         if (b.endpoint[i]) buds_.push_back({index[i], p_.junction, p_.iteration.lifespan});
     }
+  }
+
+  // The limb whose sphere's centre is nearest q (the first of equals).
+  static std::size_t nearest_part(const std::vector<Subvolume>& parts, const Vec3& q) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < parts.size(); ++k)
+      if (length(parts[k].sphere.origin - q) < length(parts[best].sphere.origin - q)) best = k;
+    return best;
   }
 
   // A bare root when the junction is at the root, else the least-cost path up a cylinder.
@@ -123,29 +147,29 @@ class Grower {
     return index.back();
   }
 
-  void subgraph(const Bud& bud, int level, double radius, std::vector<Bud>& next) {
-    const IterationParameters& it = p_.iteration;
+  void subgraph(const Bud& bud, int k, const Level& level, std::vector<Bud>& next) {
     const Vec3 apex = tree_.position[bud.node];
     const Vec3 along = apex - bud.previous_root;
     if (!(dot(along, along) > 0.0)) return;
     VolumePrimitive cone;
     cone.kind = PrimitiveKind::sphere_portion;
     cone.origin = apex;
-    cone.axis = droop(normalize(along), it.rotation);
-    cone.radius = radius;
-    cone.half_angle = it.half_angle;
+    cone.axis = subgraph_axis(level, normalize(along));
+    cone.radius = level.radius;
+    cone.half_angle = level.half_angle;
     const InitialVolume volume({cone});
-    const double factor = light_factor(it, cone.axis);
+    const double factor = light_factor(p_.iteration, cone.axis);
     const std::uint64_t s =
-        hash_combine(hash_combine(seed_, static_cast<std::uint64_t>(level)), bud.node);
-    const double spacing = radius * it.spacing_ratio;
+        hash_combine(hash_combine(seed_, static_cast<std::uint64_t>(k)), bud.node);
+    const double spacing = level.radius * level.spacing_ratio;
     const Graph g = graph_in(volume, spacing, hash_combine(s, 1), hash_combine(s, 2));
     if (g.nodes.size() < 2) return;
-    const auto wanted = static_cast<std::size_t>(std::max(1.0, std::round(it.endpoints * factor)));
+    const auto wanted =
+        static_cast<std::size_t>(std::max(1.0, std::round(level.endpoints * factor)));
     const auto endpoints =
-        shell_endpoints(g.nodes, volume, it.shell * radius, wanted, hash_combine(s, 3));
+        shell_endpoints(g.nodes, volume, level.shell * level.radius, wanted, hash_combine(s, 3));
     BranchStructure b;
-    const auto index = hang(g, endpoints, apex, bud.node, level, b);
+    const auto index = hang(g, endpoints, apex, bud.node, k, b);
     count(g, endpoints.size());
     tree_.endpoint[bud.node] = false;  // it grew: no longer a tip
     Random rng(s, 0x11fe);
@@ -166,9 +190,11 @@ class Grower {
   // The random graph over `volume`'s Poisson-disc nodes (the same steps at every level).
   Graph graph_in(const InitialVolume& volume, double spacing, std::uint64_t node_seed,
                  std::uint64_t weight_seed) const {
-    return build_graph(
-        poisson_disc(volume, {.spacing = spacing, .max_nodes = p_.max_nodes}, node_seed),
-        graph_options(p_, spacing), weight_seed);
+    std::vector<Vec3> nodes =
+        poisson_disc(volume, {.spacing = spacing, .max_nodes = p_.max_nodes}, node_seed);
+    if (p_.node_max_z < 1e300)
+      std::erase_if(nodes, [&](const Vec3& q) { return q.z > p_.node_max_z; });
+    return build_graph(std::move(nodes), graph_options(p_, spacing), weight_seed);
   }
 
   // The union of the endpoints' least-cost paths to the node nearest `root`, hung from the
@@ -196,14 +222,26 @@ class Grower {
 
 }  // namespace
 
+BranchTree grow_branch_tree(const Parameters& p, std::uint64_t seed, GraphStatistics& stats) {
+  BranchTree tree = Grower(p, seed, stats).grow();
+  stats.structure_nodes += tree.size();
+  return tree;
+}
+
+std::vector<double> level_powers(const Parameters& p) {
+  std::vector<double> z{p.skeleton.thickness_power};
+  for (const Level& level : resolve_levels(p.iteration)) z.push_back(level.power);
+  return z;
+}
+
 TreeSkeleton generate_skeleton(const Parameters& p, std::uint64_t seed,
                                GraphStatistics* statistics) {
   GraphStatistics stats;
-  const BranchTree tree = Grower(p, seed, stats).grow();
-  stats.structure_nodes = tree.size();
+  const BranchTree tree = grow_branch_tree(p, seed, stats);
+  TreeSkeleton skeleton = branch_skeleton(tree, thickness(tree, level_powers(p)), p.skeleton);
+  if (p.roots.radius > 0.0) attach_roots(skeleton, root_skeleton(p, seed, stats));
   if (statistics != nullptr) *statistics = stats;
-  const std::vector<double> w = thickness(tree, {p.skeleton.thickness_power, p.iteration.power});
-  return branch_skeleton(tree, w, p.skeleton);
+  return skeleton;
 }
 
 }  // namespace landsim::trees::graph_paths

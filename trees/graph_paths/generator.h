@@ -7,30 +7,13 @@
 
 #include "trees/graph_paths/branch_skeleton.h"
 #include "trees/graph_paths/initial_volume.h"
+#include "trees/graph_paths/iteration_levels.h"
 #include "trees/graph_paths/random_graph.h"
 #include "trees/graph_paths/refinement.h"
+#include "trees/graph_paths/root_system.h"
 #include "trees/skeleton.h"
 
 namespace landsim::trees::graph_paths {
-
-// The iterated subgraphs of later levels: around each endpoint a cone-shaped graph (a portion
-// of a sphere of half-angle a) oriented along v_g, from the previous root to the endpoint.
-struct IterationParameters {
-  int levels = 0;              // iterated levels after the first
-  double radius = 0.8;         // metres: the first iterated level's subgraph radius
-  double size_ratio = 0.5;     // each further level's radius relative to the one before
-  double half_angle = 0.7;     // radians: a
-  double spacing_ratio = 0.2;  // node spacing as a fraction of the subgraph radius
-  int endpoints = 5;           // per subgraph (before the light's factor)
-  double shell = 0.3;          // endpoint shell, as a fraction of the subgraph radius
-  double rotation = 0.0;       // radians per level turning v_g downward (negative: up)
-  bool use_lifespan = false;   // the paper's lifespan rule (bushes)
-  double lifespan = 3.0;       // the first level's endpoints' lifespan
-  double terminate_probability = 0.3;
-  double power = 1.5;  // z of the iterated levels
-  Vec3 light{0, 0, 1};
-  double light_strength = 0.0;  // 0: the light plays no part; up to 1
-};
 
 struct Parameters {
   InitialVolume volume;
@@ -45,12 +28,16 @@ struct Parameters {
   double shell = 0.3;              // d_e, metres
   double endpoint_min_z = -1e300;  // metres: no first-level endpoints below
   // Endpoints the modeler places (Xu & Mould 2012, Fig. 9: "endpoints selected manually"):
-  // the graph node nearest each point ends a path too, besides the random ones.
+  // the graph node nearest each point ends a path too, besides the random ones. With
+  // refinement, each point joins the limb whose sphere is nearest.
   std::vector<Vec3> manual_endpoints;
   SkeletonOptions skeleton;
   IterationParameters iteration;
   RefinementParameters refinement;
   Vec3 junction{0, 0, 0};  // refinement: where the limbs' cones meet the trunk
+  RootParameters roots;    // below the root point (root_system.h); off by default
+  // No graph node above this height (a root system's subgraphs stay below the ground).
+  double node_max_z = 1e300;
   std::size_t max_nodes = 2000000;
 };
 
@@ -61,6 +48,14 @@ struct GraphStatistics {
   std::size_t structure_nodes = 0;
 };
 
+// The whole structure as one tree of nodes (first level, then the iterated levels), before
+// thickness; statistics accumulate into `stats`.
+BranchTree grow_branch_tree(const Parameters& p, std::uint64_t seed, GraphStatistics& stats);
+
+// The z of each level of `tree` for thickness(): the first level's, then each iterated one's.
+std::vector<double> level_powers(const Parameters& p);
+
+// The tree's stems and leaves, and below the root its root system when p.roots asks for one.
 TreeSkeleton generate_skeleton(const Parameters& p, std::uint64_t seed,
                                GraphStatistics* statistics = nullptr);
 

@@ -124,8 +124,35 @@ void read_leaves(TableReader r, SkeletonOptions& o) {
   r.finish();
 }
 
+Orientation orientation_of(const std::string& s) {
+  return s == "down" ? Orientation::down : s == "up" ? Orientation::up : Orientation::along;
+}
+
+// One [[iteration.level]] row: only what it names.
+LevelSettings read_level(TableReader& r) {
+  LevelSettings s;
+  s.radius = r.optional_number("radius", {1e-3, 100});
+  if (r.has("half_angle")) s.half_angle = r.angle("half_angle", {5, 180}, 0.0);
+  s.spacing_ratio = r.optional_number("spacing_ratio", {0.05, 1});
+  if (r.has("endpoints")) s.endpoints = static_cast<int>(r.integer("endpoints", 1, 64));
+  s.shell = r.optional_number("shell", {0.01, 1});
+  if (r.has("rotation")) s.rotation = r.angle("rotation", {-90, 90}, 0.0);
+  s.power = r.optional_number("power", {0.1, 5});
+  if (r.has("orientation"))
+    s.orientation = orientation_of(r.choice("orientation", {"along", "down", "up"}));
+  s.every_endpoint = r.boolean("every_endpoint", false);
+  r.finish();
+  return s;
+}
+
 void read_iteration(TableReader r, IterationParameters& it) {
-  it.levels = static_cast<int>(r.integer("levels", 0, 6, it.levels));
+  for (TableReader& row : r.tables("level")) it.table.push_back(read_level(row));
+  const auto rows = static_cast<std::int64_t>(it.table.size());
+  it.levels = static_cast<int>(r.integer("levels", 0, 7, rows > 0 ? rows : it.levels));
+  if (it.levels < rows)
+    r.fail("levels", "expected at least " + std::to_string(rows) +
+                         " (one level per [[iteration.level]] row), not " +
+                         std::to_string(it.levels));
   it.radius = r.number("radius", {1e-3, 100}, it.radius);
   it.size_ratio = r.number("size_ratio", {0.05, 1}, it.size_ratio);
   it.half_angle = r.angle("half_angle", {5, 180}, it.half_angle);
@@ -141,6 +168,23 @@ void read_iteration(TableReader r, IterationParameters& it) {
   it.power = r.number("power", {0.1, 5}, it.power);
   it.light = direction(r, "light", it.light);
   it.light_strength = r.number("light_strength", {0, 1}, it.light_strength);
+  r.finish();
+}
+
+void read_roots(TableReader r, RootParameters& roots) {
+  roots.radius = r.number("radius", {0.01, 100}, roots.radius);
+  roots.depth = r.number("depth", {0.01, 100}, roots.radius);
+  roots.spacing = r.number("spacing", {1e-3, 100}, 0.0);
+  roots.taproot = r.boolean("taproot", roots.taproot);
+  roots.laterals = static_cast<int>(r.integer("laterals", 0, 10000, roots.laterals));
+  roots.shell = r.number("shell", {0.01, 1}, roots.shell);
+  roots.levels = static_cast<int>(r.integer("levels", 0, 4, roots.levels));
+  roots.level_radius = r.number("level_radius", {0.05, 1}, roots.level_radius);
+  roots.level_endpoints =
+      static_cast<int>(r.integer("level_endpoints", 1, 64, roots.level_endpoints));
+  roots.power = r.number("power", {0.1, 5}, roots.power);
+  if (r.has("radius") && roots.laterals == 0 && !roots.taproot)
+    r.fail("laterals", "expected at least 1 when taproot = false (no root would grow)");
   r.finish();
 }
 
@@ -189,19 +233,24 @@ double estimated_nodes(const Parameters& p) {
   if (p.refinement.spheres > 0)
     v = p.refinement.spheres * 4.0 * std::numbers::pi * std::pow(p.refinement.radius, 3) / 3.0;
   double nodes = kNodesPerCubicSpacing * v / std::pow(p.spacing, 3);
-  // Every endpoint of a level grows a subgraph at the next, each with the same node count
-  // (radius and spacing shrink together); the light can raise endpoint counts by 1 + strength.
-  const IterationParameters& it = p.iteration;
-  VolumePrimitive sector;
-  sector.kind = PrimitiveKind::sphere_portion;
-  sector.radius = 1.0;
-  sector.half_angle = it.half_angle;
-  const double per_subgraph =
-      kNodesPerCubicSpacing * primitive_volume(sector) / std::pow(it.spacing_ratio, 3);
-  const double fan = it.endpoints * (1.0 + it.light_strength);
-  double subgraphs = p.endpoints;
-  for (int level = 1; level <= it.levels; ++level, subgraphs *= fan)
-    nodes += subgraphs * per_subgraph;
+  // Every endpoint of a level grows a subgraph at the next (a level with every_endpoint at
+  // the earlier levels' too), each with the same node count (radius and spacing shrink
+  // together); the light can raise endpoint counts by 1 + strength.
+  double subgraphs = p.endpoints + static_cast<double>(p.manual_endpoints.size());
+  double earlier = 0.0;
+  for (const Level& level : resolve_levels(p.iteration)) {
+    VolumePrimitive sector;
+    sector.kind = PrimitiveKind::sphere_portion;
+    sector.radius = 1.0;
+    sector.half_angle = level.half_angle;
+    const double per_subgraph =
+        kNodesPerCubicSpacing * primitive_volume(sector) / std::pow(level.spacing_ratio, 3);
+    const double growing = subgraphs + (level.every_endpoint ? earlier : 0.0);
+    nodes += growing * per_subgraph;
+    earlier += subgraphs;
+    subgraphs = growing * level.endpoints * (1.0 + p.iteration.light_strength);
+  }
+  if (p.roots.radius > 0.0) nodes += estimated_nodes(root_parameters(p));
   return nodes;
 }
 
@@ -212,15 +261,12 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
   read_leaves(root.table("leaves"), p.skeleton);
   read_iteration(root.table("iteration"), p.iteration);
   read_refinement(root.table("refinement"), p);
+  read_roots(root.table("roots"), p.roots);
   std::vector<VolumePrimitive> parts;
   for (TableReader& t : root.tables("volume")) parts.push_back(read_primitive(t));
   if (parts.empty()) throw InputError(source + ": at least one [[volume]] is required");
   p.volume = InitialVolume(std::move(parts));
   for (std::size_t i = 0; i < p.manual_endpoints.size(); ++i) {
-    if (p.refinement.spheres > 0)
-      throw InputError(source +
-                       ": [graph] manual_endpoints: not with [refinement] (the limbs' "
-                       "spheres replace the volume the points would be in)");
     const Vec3& q = p.manual_endpoints[i];
     if (!p.volume.contains(q))
       throw InputError(source + ": [graph] manual_endpoints[" + std::to_string(i) + "] (" +
