@@ -2,16 +2,28 @@
 
 #include <algorithm>
 
+#include "trees/self_organizing/bending.h"
 #include "trees/self_organizing/pipe_model.h"
 #include "trees/self_organizing/plant_skeleton.h"
 
 namespace landsim::trees::self_organizing {
+namespace {
+
+// The modeler's bends, in order, on the grown plant; a younger plant (ungrown) takes those
+// whose internodes it already has.
+void apply_bends(Plant& plant, const std::vector<Bend>& bends, bool grown) {
+  for (const Bend& b : bends)
+    if (grown || !bend_path(plant, b).empty()) bend(plant, b);
+}
+
+}  // namespace
 
 TreeSkeleton generate_skeleton(const Parameters& p, std::uint64_t seed,
                                GrowthStatistics* statistics) {
   GrowthStatistics local;
   GrowthStatistics& stats = statistics != nullptr ? *statistics : local;
-  const Plant plant = grow(p, seed, &stats);
+  Plant plant = grow(p, seed, &stats);
+  apply_bends(plant, p.bends, true);
   return plant_skeleton(plant, p.leaves);
 }
 
@@ -25,6 +37,7 @@ std::vector<TreeSkeleton> skeletons_at_steps(const Parameters& p, std::uint64_t 
   for (int k : steps) {
     Plant young = grown.at_step(k);
     assign_widths(young, p.width);
+    apply_bends(young, p.bends, k >= p.steps);
     out.push_back(plant_skeleton(young, p.leaves));
   }
   return out;

@@ -36,7 +36,6 @@ static Vec3 bud_heading(const Plant& plant, const BudRef& bud, double deflection
 int grow_shoot(Plant& plant, const Parameters& p, BudRef bud, int n, const Vec3& environment,
                int step, Random& rng, ShadowGrid& shadows) {
   const DirectionParameters& d = p.direction;
-  const bool confine = p.envelope.kind != EnvelopeKind::none && p.envelope.confine;
   int grown = 0;
   for (; grown < n; ++grown) {
     const Internode& from = plant[bud.internode];
@@ -49,8 +48,8 @@ int grow_shoot(Plant& plant, const Parameters& p, BudRef bud, int n, const Vec3&
     h = random_turn(length(h) > 1e-9 ? normalize(h) : heading, d.noise, rng);
     const Vec3 base = from.tip;
     const Vec3 tip = base + h * p.internode_length;
-    // The ground is an obstacle, and a confining envelope a wall.
-    if (tip.z < 0.0 || (confine && !p.envelope.contains(tip))) break;
+    // The ground is an obstacle, and a confining envelope or lasso a wall.
+    if (tip.z < 0.0 || p.confined_out(tip, step)) break;
     frame = perpendicular_near(h, frame);
     const int rank = bud.lateral ? 0 : from.rank + 1;
     const Vec3 toward = rotate_about(frame, h, rank * d.phyllotaxis);

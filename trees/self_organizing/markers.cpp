@@ -56,6 +56,16 @@ void add_envelope_markers(const Envelope& envelope, Random& rng, MarkerSet& mark
   }
 }
 
+void add_lasso_markers(const Lasso& lasso, Random& rng, MarkerSet& markers) {
+  const auto [lo, hi] = lasso.bounds();
+  const Vec3 size = hi - lo;
+  const auto darts = static_cast<std::size_t>(lasso.outline().density * size.x * size.y * size.z);
+  for (std::size_t k = 0; k < darts; ++k) {
+    const Vec3 p{rng.uniform(lo.x, hi.x), rng.uniform(lo.y, hi.y), rng.uniform(lo.z, hi.z)};
+    if (lasso.contains(p)) markers.add(p, MarkerSet::kForever);
+  }
+}
+
 bool brush_position(const BrushStroke& stroke, int step, StrokePoint& where) {
   if (stroke.points.empty() || step < stroke.start_step) return false;
   const double t = (step - stroke.start_step) * stroke.points_per_step;

@@ -1,8 +1,8 @@
 #pragma once
 // Markers of free space (Runions 2007, TreeSketch 2012): points the buds compete for. They
-// come from the envelope (once), from brush strokes (the brush's moving sphere, each marker
-// living a set number of steps) or autonomously from every bud's perception cone (living one
-// step). A marker inside any bud's occupancy sphere is consumed.
+// come from the envelope (once), from lassos (each at its step), from brush strokes (the brush's
+// moving sphere, each marker living a set number of steps) or autonomously from every bud's
+// perception cone (living one step). A marker inside any bud's occupancy sphere is consumed.
 #include <cstdint>
 #include <vector>
 
@@ -35,6 +35,8 @@ class MarkerSet {
 
 // Uniform in the envelope at its density (rejection from its bounds).
 void add_envelope_markers(const Envelope& envelope, Random& rng, MarkerSet& markers);
+// Uniform in the lasso's inflated envelope at its density, living until growth stops.
+void add_lasso_markers(const Lasso& lasso, Random& rng, MarkerSet& markers);
 // This step's markers of a stroke: in the brush's sphere where the brush is at `step`.
 void add_stroke_markers(const BrushStroke& stroke, int step, Random& rng, MarkerSet& markers);
 // `count` markers uniform in the cone (apex, axis, full angle, radius), living this step only.

@@ -147,6 +147,51 @@ void read_envelope(TableReader r, Envelope& e) {
   r.finish();
 }
 
+Lasso read_lasso(TableReader r) {
+  LassoOutline o;
+  for (const std::vector<double>& uv :
+       read_rows(r, "outline", {{-100, 100}, {-10, 200}}, 3,
+                 "[[across, height], ...]: at least three points of a closed outline in the "
+                 "drawing plane, metres"))
+    o.outline.push_back({uv[0], uv[1]});
+  if (o.outline.size() < 3)
+    r.fail("outline", "expected [[across, height], ...] with at least three points");
+  o.origin = r.vec3("origin", {-1e3, 1e3}, o.origin);
+  o.azimuth = r.angle("azimuth", {-360, 360}, o.azimuth);
+  o.thickness = r.number("thickness", {0.05, 10}, o.thickness);
+  o.density = r.number("density", {0.1, 100000}, o.density);
+  o.start_step = static_cast<int>(r.integer("start_step", 1, 500, o.start_step));
+  o.confine = r.boolean("confine", o.confine);
+  Lasso lasso(std::move(o));
+  const auto [lo, hi] = lasso.bounds();
+  const Vec3 size = hi - lo;
+  const double darts = lasso.outline().density * size.x * size.y * size.z;
+  if (darts > kMaxMarkers)
+    r.fail("density", "expected at most " + params::format_number(kMaxMarkers) +
+                          " markers over the lasso's bounds; got " + params::format_number(darts));
+  r.finish();
+  return lasso;
+}
+
+// [[bend]]: base, and handles [[internode, x, y, z], ...] (the last one's internode is E).
+Bend read_bend(TableReader r) {
+  Bend b;
+  b.base = static_cast<std::uint32_t>(r.integer("base", 0, 100000000));
+  constexpr Range kCoordinate{-1e3, 1e3};
+  for (const std::vector<double>& h :
+       read_rows(r, "handles", {{0, 1e8}, kCoordinate, kCoordinate, kCoordinate}, 1,
+                 "[[internode, x, y, z], ...]: at least one handle, the last the end internode"))
+    if (h[0] != std::floor(h[0]))
+      r.fail("handles", "expected a whole internode number first in each handle, got " +
+                            params::format_number(h[0]));
+    else
+      b.handles.push_back({static_cast<std::uint32_t>(h[0]), {h[1], h[2], h[3]}});
+  if (b.handles.empty()) r.fail("handles", "expected [[internode, x, y, z], ...]");
+  b.stretch = r.number("stretch", {0, 1}, b.stretch);
+  r.finish();
+  return b;
+}
+
 BrushStroke read_stroke(TableReader r) {
   BrushStroke s;
   constexpr Range kCoordinate{-1e3, 1e3};
@@ -194,6 +239,20 @@ GrowthPhase read_phase(TableReader r, const GrowthPhase& before) {
 
 }  // namespace
 
+bool Parameters::confined_out(const Vec3& p, int step) const {
+  bool confined = false;
+  if (envelope.kind != EnvelopeKind::none && envelope.confine) {
+    if (envelope.contains(p)) return false;
+    confined = true;
+  }
+  for (const Lasso& lasso : lassos) {
+    if (!lasso.outline().confine || lasso.outline().start_step > step) continue;
+    if (lasso.contains(p)) return false;
+    confined = true;
+  }
+  return confined;
+}
+
 Parameters read_parameters(params::TableReader& root, const std::string& source) {
   Parameters p;
   read_growth(root.table("growth"), p);
@@ -207,7 +266,9 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
   if (root.has("envelope")) read_envelope(root.table("envelope"), p.envelope);
   for (TableReader& t : root.tables("width_constraint"))
     p.width.constraints.push_back(read_constraint(t));
+  for (TableReader& t : root.tables("lasso")) p.lassos.push_back(read_lasso(t));
   for (TableReader& t : root.tables("stroke")) p.strokes.push_back(read_stroke(t));
+  for (TableReader& t : root.tables("bend")) p.bends.push_back(read_bend(t));
   for (TableReader& t : root.tables("prune")) p.prunings.push_back(read_prune(t));
   GrowthPhase rules{0, p.vigour, p.gravimorphism, p.direction, false, {}, 0.0};
   for (TableReader& t : root.tables("phase")) {
@@ -220,10 +281,11 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
                  std::to_string(previous) + ")");
     p.phases.push_back(rules);
   }
-  if (p.envelope.kind == EnvelopeKind::none && p.strokes.empty() && p.space.autonomous_markers == 0)
+  if (p.envelope.kind == EnvelopeKind::none && p.lassos.empty() && p.strokes.empty() &&
+      p.space.autonomous_markers == 0)
     throw InputError(source +
-                     ": no markers of free space: give an [envelope], a [[stroke]] or "
-                     "space.autonomous_markers, or the tree cannot grow");
+                     ": no markers of free space: give an [envelope], a [[lasso]], a [[stroke]] "
+                     "or space.autonomous_markers, or the tree cannot grow");
   return p;
 }
 

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "trees/self_organizing/bending.h"
 #include "trees/self_organizing/envelope.h"
+#include "trees/self_organizing/lasso.h"
 
 namespace landsim::params {
 class TableReader;
@@ -125,6 +127,10 @@ struct GrowthPhase {
 };
 
 struct Parameters {
+  // True if a shoot may not reach p at `step`: some envelope or lasso confines growth by then
+  // and p lies in none of them.
+  bool confined_out(const Vec3& p, int step) const;
+
   int steps = 20;
   double internode_length = 0.1;
   SpaceParameters space;
@@ -135,9 +141,11 @@ struct Parameters {
   WidthParameters width;
   LeafParameters leaves;
   Envelope envelope;
+  std::vector<Lasso> lassos;  // of the whole tree or of parts, each from its step
   std::vector<BrushStroke> strokes;
   std::vector<Pruning> prunings;
   std::vector<GrowthPhase> phases;       // by ascending from_step
+  std::vector<Bend> bends;               // edits of the grown tree, in order (bending.h)
   std::size_t max_internodes = 1000000;  // growth beyond this is refused (InputError)
   std::size_t max_markers = 20000000;    // markers held at once beyond this: refused too
 };

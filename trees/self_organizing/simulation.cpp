@@ -79,6 +79,8 @@ class Simulation {
   // This step's markers; autonomous ones in the cones of the buds at `positions`.
   void add_markers(int s, const std::vector<Vec3>& positions, const std::vector<Vec3>& directions) {
     markers_.expire(s);
+    for (const Lasso& lasso : p_.lassos)
+      if (lasso.outline().start_step == s) add_lasso_markers(lasso, marker_rng_, markers_);
     for (const BrushStroke& stroke : p_.strokes)
       add_stroke_markers(stroke, s, marker_rng_, markers_);
     if (p_.space.autonomous_markers > 0) {
@@ -154,6 +156,8 @@ class Simulation {
   }
 
   bool more_markers_after(int s) const {
+    for (const Lasso& lasso : p_.lassos)
+      if (lasso.outline().start_step > s) return true;
     if (p_.space.autonomous_markers > 0) return false;  // nothing grew with them: nothing will
     for (const BrushStroke& stroke : p_.strokes) {
       StrokePoint where;

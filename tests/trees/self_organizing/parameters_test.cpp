@@ -91,6 +91,52 @@ TEST(SelfOrganizingSpecies, ExplosiveMarkerCountsAreRefused) {
   EXPECT_NE(e.find("[envelope] density"), std::string::npos) << e;
 }
 
+TEST(SelfOrganizingSpecies, LassosAndBendsAreReadAndCheckedAtTheirLines) {
+  const Species s = parse_species_toml(
+      kHeader +
+          "[[lasso]]\noutline = [[-1, 0], [1, 0], [0, 3]]\norigin = [1, 2, 0]\nazimuth = 90\n"
+          "thickness = 0.5\ndensity = 20\nstart_step = 3\nconfine = false\n"
+          "[[bend]]\nbase = 4\nhandles = [[9, 0.5, 0, 2], [12, 1, 0, 2.5]]\nstretch = 0.25\n",
+      "t.toml");
+  const auto& p = std::get<Parameters>(s.parameters);
+  ASSERT_EQ(p.lassos.size(), 1u);
+  const LassoOutline& o = p.lassos[0].outline();
+  EXPECT_EQ(o.outline.size(), 3u);
+  EXPECT_EQ(o.origin, (Vec3{1, 2, 0}));
+  EXPECT_NEAR(o.azimuth, 0.5 * std::numbers::pi, 1e-12);
+  EXPECT_DOUBLE_EQ(o.thickness, 0.5);
+  EXPECT_EQ(o.start_step, 3);
+  EXPECT_FALSE(o.confine);
+  ASSERT_EQ(p.bends.size(), 1u);
+  EXPECT_EQ(p.bends[0].base, 4u);
+  ASSERT_EQ(p.bends[0].handles.size(), 2u);
+  EXPECT_EQ(p.bends[0].handles[1].internode, 12u);
+  EXPECT_EQ(p.bends[0].handles[1].target, (Vec3{1, 0, 2.5}));
+  EXPECT_DOUBLE_EQ(p.bends[0].stretch, 0.25);
+  const std::string two = error_of(kHeader + "[[lasso]]\noutline = [[0, 0], [1, 1]]\n");
+  EXPECT_NE(two.find("so.toml:3"), std::string::npos) << two;
+  EXPECT_NE(two.find("at least three points"), std::string::npos) << two;
+  const std::string whole =
+      error_of(kHeader + kSpace + "[[bend]]\nbase = 1\nhandles = [[2.5, 0, 0, 1]]\n");
+  EXPECT_NE(whole.find("whole internode"), std::string::npos) << whole;
+  const std::string dense =
+      error_of(kHeader + "[[lasso]]\noutline = [[-90, 0], [90, 0], [0, 190]]\ndensity = 100000\n");
+  EXPECT_NE(dense.find("[lasso[0]] density"), std::string::npos) << dense;
+}
+
+// A bend whose handle is not on a path up from its base is refused when the tree is grown.
+TEST(SelfOrganizingSpecies, ABendOffItsPathIsRefusedWhenGrowing) {
+  const Species s = parse_species_toml(
+      kHeader + kSpace + "[growth]\nsteps = 6\n[[bend]]\nbase = 3\nhandles = [[0, 0, 0, 1]]\n",
+      "t.toml");
+  try {
+    generate_skeleton(std::get<Parameters>(s.parameters), 1);
+    ADD_FAILURE() << "no refusal";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("base internode 3"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SelfOrganizingSpecies, TheExampleSpeciesGrowDistinctShapes) {
   trees::testing::expect_shapes("self_organizing",
                                 {{"so_upright.toml", 9, 15, 3, 8},
@@ -99,7 +145,8 @@ TEST(SelfOrganizingSpecies, TheExampleSpeciesGrowDistinctShapes) {
                                  {"so_epitonic.toml", 7, 12, 1.5, 4.5},
                                  {"so_shedding.toml", 9, 14, 2, 5},
                                  {"so_envelope.toml", 7.5, 9.01, 2.5, 3.31},
-                                 {"so_brushed.toml", 5, 8, 3, 6}},
+                                 {"so_brushed.toml", 5, 8, 3, 6},
+                                 {"so_lasso.toml", 5, 5.8, 3.5, 5}},
                                 3, 500);
 }
 

@@ -50,8 +50,7 @@ TEST(SelfOrganizingPhases, RulesChangedFromAStepActOnlyFromThere) {
 TEST(SelfOrganizingPhases, TheExampleGrowsUprightThenLevel) {
   const auto load = [](const char* file) {
     return std::get<Parameters>(
-        load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / file)
-            .parameters);
+        load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species" / file).parameters);
   };
   const Plant upright = grow(load("so_upright.toml"), 3), phased = grow(load("so_phased.toml"), 3);
   std::uint32_t shared = 0;

@@ -1,0 +1,147 @@
+// TreeSketch's branch bending (PriMo on the skeleton): with rigid internodes every length is
+// kept, the end reaches toward its handle with the bend spread over the path's joints, and
+// everything hanging from the path keeps its place relative to its internode.
+#include "trees/self_organizing/bending.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/input_error.h"
+#include "tests/trees/self_organizing/test_species.h"
+#include "trees/self_organizing/simulation.h"
+
+namespace landsim::trees::self_organizing {
+namespace {
+
+// A grown crown and, in it, a branch at least `min_length` internodes long with side
+// branches: its first internode (B) and its last along the main axis (E).
+struct Branch {
+  Plant plant{0.1};
+  std::uint32_t base = 0, end = 0;
+};
+
+Branch grown_branch(std::size_t min_length) {
+  Branch b;
+  b.plant = grow(testing::ellipsoid_crown(14), 3);
+  for (std::uint32_t i = 1; i < b.plant.size(); ++i) {
+    if (!b.plant[i].alive || !b.plant.starts_branch(i)) continue;
+    std::size_t n = 1, sides = 0;
+    std::uint32_t e = i;
+    while (b.plant[e].main != kNone && b.plant[b.plant[e].main].alive) {
+      sides += b.plant[e].lateral != kNone;
+      e = b.plant[e].main, ++n;
+    }
+    if (n >= min_length && sides >= 2) {
+      b.base = i, b.end = e;
+      return b;
+    }
+  }
+  ADD_FAILURE() << "no branch of " << min_length << " internodes";
+  return b;
+}
+
+double length_of(const Internode& n) { return length(n.tip - n.base); }
+
+TEST(Bending, KeepsEveryInternodesLengthAndCarriesTheRestRigidly) {
+  Branch b = grown_branch(6);
+  const Plant before = b.plant;
+  const Vec3 target = before[b.end].tip + Vec3{0, 0, -0.6};
+  const double was = length(before[b.end].tip - target);
+  bend(b.plant, {.base = b.base, .handles = {{b.end, target}}});
+  EXPECT_LT(length(b.plant[b.end].tip - target), 0.35 * was);
+  const std::vector<std::uint32_t> path =
+      bend_path(before, {.base = b.base, .handles = {{b.end, target}}});
+  const auto on_path = [&](std::uint32_t i) {
+    return std::find(path.begin(), path.end(), i) != path.end();
+  };
+  std::size_t moved = 0;
+  for (std::uint32_t i = 0; i < before.size(); ++i) {
+    // Rigid prisms: no internode stretches.
+    ASSERT_NEAR(length_of(b.plant[i]), length_of(before[i]), 1e-9) << i;
+    moved += length(b.plant[i].tip - before[i].tip) > 1e-6;
+    // Off the path (which bends at its joints), a child keeps its angle to the internode it
+    // grows from; everywhere, its joint.
+    const std::uint32_t parent = before[i].parent;
+    if (parent == kNone) continue;
+    ASSERT_LT(length(b.plant[i].base - b.plant[parent].tip), 1e-9) << i;
+    if (on_path(i)) continue;
+    ASSERT_NEAR(dot(b.plant[i].direction, b.plant[parent].direction),
+                dot(before[i].direction, before[parent].direction), 1e-9)
+        << i;
+  }
+  EXPECT_GT(moved, 6u);
+  // Below B nothing moves.
+  for (std::uint32_t k = before[b.base].parent; k != kNone; k = before[k].parent)
+    EXPECT_EQ(b.plant[k].tip, before[k].tip);
+}
+
+TEST(Bending, SpreadsTheTurnOverThePathsJoints) {
+  Branch b = grown_branch(6);
+  const Plant before = b.plant;
+  bend(b.plant, {.base = b.base, .handles = {{b.end, before[b.end].tip + Vec3{0, 0, -0.6}}}});
+  // The change of each joint's angle along the path: no joint takes the whole turn.
+  std::vector<double> turn;
+  for (std::uint32_t k = b.base; k != b.end; k = before[k].main) {
+    const std::uint32_t next = before[k].main;
+    const double a0 =
+        std::acos(std::clamp(dot(before[k].direction, before[next].direction), -1.0, 1.0));
+    const double a1 =
+        std::acos(std::clamp(dot(b.plant[k].direction, b.plant[next].direction), -1.0, 1.0));
+    turn.push_back(std::abs(a1 - a0));
+  }
+  // Also B's own turn at its base.
+  turn.push_back(
+      std::acos(std::clamp(dot(before[b.base].direction, b.plant[b.base].direction), -1.0, 1.0)));
+  double total = 0.0, largest = 0.0;
+  for (double t : turn) total += t, largest = std::max(largest, t);
+  EXPECT_GT(total, 0.1);
+  EXPECT_LT(largest, 0.5 * total);
+}
+
+TEST(Bending, StretchingReachesBeyondThePathsLength) {
+  Branch b = grown_branch(6);
+  const Plant before = b.plant;
+  const Vec3 from = before[b.base].base, to = before[b.end].tip;
+  double path = 0.0;
+  for (std::uint32_t k = b.base;; k = before[k].main) {
+    path += length_of(before[k]);
+    if (k == b.end) break;
+  }
+  const Vec3 far = from + normalize(to - from) * (1.4 * path);  // out of a rigid path's reach
+  Plant rigid = before;
+  bend(rigid, {.base = b.base, .handles = {{b.end, far}}});
+  EXPECT_GT(length(rigid[b.end].tip - far), 0.3 * path);
+  bend(b.plant, {.base = b.base, .handles = {{b.end, far}}, .stretch = 1.0});
+  EXPECT_LT(length(b.plant[b.end].tip - far), 0.02);
+  EXPECT_GT(length_of(b.plant[b.end]), 1.2 * length_of(before[b.end]));
+}
+
+TEST(Bending, AMiddleHandleAndTheEndAreBothReached) {
+  Branch b = grown_branch(6);
+  const Plant before = b.plant;
+  std::uint32_t middle = b.base;
+  for (int k = 0; k < 3; ++k) middle = before[middle].main;
+  const Vec3 mid_target = before[middle].tip + Vec3{0.2, 0.1, 0};
+  const Vec3 end_target = before[b.end].tip + Vec3{0.2, 0.1, -0.2};
+  bend(b.plant, {.base = b.base, .handles = {{middle, mid_target}, {b.end, end_target}}});
+  EXPECT_LT(length(b.plant[middle].tip - mid_target), 0.05);
+  EXPECT_LT(length(b.plant[b.end].tip - end_target), 0.08);
+}
+
+TEST(Bending, HandlesOffThePathAreRefused) {
+  Branch b = grown_branch(6);
+  // The trunk's first internode is below B: not on a path up from it.
+  EXPECT_TRUE(bend_path(b.plant, {.base = b.base, .handles = {{0, {0, 0, 0}}}}).empty());
+  try {
+    bend(b.plant, {.base = b.base, .handles = {{0, {0, 0, 0}}}});
+    ADD_FAILURE() << "no refusal";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("base internode " + std::to_string(b.base)),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace landsim::trees::self_organizing
