@@ -31,9 +31,7 @@ renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOp
   renderer::Scene s = studio_scene(20.0f * size);
   renderer::TreePrototype proto;
   proto.geometry = tree;
-  proto.bark_albedo = tree.colours.bark;
-  proto.leaf_reflectance = tree.colours.leaf;
-  proto.leaf_transmittance = tree.colours.leaf * 0.5f;
+  proto.dress(tree.colours);
   s.prototypes.push_back(std::move(proto));
   s.instances.push_back({0, {0, 0, 0}, 0.0, 1.0});
   s.settings.spp = o.spp;

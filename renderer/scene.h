@@ -174,6 +174,18 @@ struct TreePrototype {
   std::uint16_t species = 0;  // index in the scenario's species table
   // The paper's s and d for this tree (quality, season, evergreen).
   trees::DegradationFactors degradation;
+
+  // The species' colours as they are: bark, leaves (transmitting kLeafTransmittanceRatio of
+  // their reflectance), and the second leaf colour (weak leaves, or a harmonic species'
+  // flowers) as the tint at vigour 0.
+  void dress(const trees::TreeColours& c) {
+    bark_albedo = c.bark;
+    leaf_reflectance = c.leaf;
+    leaf_transmittance = c.leaf * kLeafTransmittanceRatio;
+    leaf_weak_tint = {c.leaf.x > 0 ? c.leaf_weak.x / c.leaf.x : 1.0f,
+                      c.leaf.y > 0 ? c.leaf_weak.y / c.leaf.y : 1.0f,
+                      c.leaf.z > 0 ? c.leaf_weak.z / c.leaf.z : 1.0f};
+  }
 };
 
 struct TreeInstance {

@@ -40,6 +40,11 @@ void read_colours(params::TableReader t, TreeColours& colours) {
   colours.bark = Vec3f(t.vec3("bark", kUnit, Vec3(colours.bark)));
   colours.leaf = Vec3f(t.vec3("leaf", kUnit, Vec3(colours.leaf)));
   colours.leaf_weak = Vec3f(t.vec3("leaf_weak", kUnit, Vec3(colours.leaf_weak)));
+  // A harmonic species' flowers are leaves drawn in the second leaf colour: `flower` names it.
+  if (t.has("flower")) {
+    if (t.has("leaf_weak")) t.fail("flower", "expected flower or leaf_weak, not both (one colour)");
+    colours.leaf_weak = Vec3f(t.vec3("flower", kUnit));
+  }
   t.finish();
 }
 

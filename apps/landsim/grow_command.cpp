@@ -66,9 +66,7 @@ nlohmann::json equations_json(const trees::measured_growth::Allometry& a, double
 renderer::TreePrototype prototype(const trees::Tree& tree, const trees::Species& species) {
   renderer::TreePrototype t;
   t.geometry = tree.geometry;
-  t.bark_albedo = species.colours.bark;
-  t.leaf_reflectance = species.colours.leaf;
-  t.leaf_transmittance = species.colours.leaf * 0.5f;
+  t.dress(species.colours);
   return t;
 }
 

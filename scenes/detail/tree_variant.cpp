@@ -37,7 +37,7 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
   p.geometry = trees::generate(sp.species, options).geometry;
   p.degradation = trees::degradation_factors(s.render.quality, season, sp.evergreen);
   p.species = static_cast<std::uint16_t>(species_index);
-  p.bark_albedo = sp.species.colours.bark;
+  p.dress(sp.species.colours);
   // Per-variant colour variation: one brightness factor and a slight hue shift.
   const CounterRng r(vs, 17, 0);
   const auto v = static_cast<float>(sp.colour_variation);
@@ -59,10 +59,6 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
     }
   }
   p.leaf_transmittance = p.leaf_reflectance * renderer::kLeafTransmittanceRatio;
-  const Vec3f& leaf = sp.species.colours.leaf;
-  const Vec3f& weak = sp.species.colours.leaf_weak;
-  p.leaf_weak_tint = {leaf.x > 0 ? weak.x / leaf.x : 1.0f, leaf.y > 0 ? weak.y / leaf.y : 1.0f,
-                      leaf.z > 0 ? weak.z / leaf.z : 1.0f};
   return p;
 }
 

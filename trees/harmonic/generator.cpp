@@ -38,6 +38,13 @@ StemSkeleton part_stem(const SemanticParticle& part) {
   };
   if (part.kind == 1) {  // a cone: widest a third of the way, closing to a point
     add(0.0, 0.15), add(0.33, 0.32), add(0.7, 0.22), add(1.0, 0.0);
+  } else if (part.kind == 3) {  // a thorn: a slender cone from a broad foot
+    add(0.0, 0.18), add(0.25, 0.1), add(1.0, 0.0);
+  } else if (part.kind == 4) {  // an auxiliary bud: an ovoid, pointed at its tip
+    for (int k = 0; k <= 5; ++k) {
+      const double a = std::numbers::pi * k / 5.0;
+      add(0.5 * (1.0 - std::cos(a)), 0.22 * std::sin(a) + (k == 0 ? 0.08 : 0.0));
+    }
   } else {  // a seed ball on a short stalk
     add(0.0, 0.05), add(0.3, 0.05);
     for (int k = 0; k <= 6; ++k) {
@@ -46,6 +53,24 @@ StemSkeleton part_stem(const SemanticParticle& part) {
     }
   }
   return stem;
+}
+
+// A flower: its petals as leaves fanned about the way it faces, drawn at vigour 0 so they
+// take the species' flower colour ([colours] flower).
+void add_flower(const SemanticParticle& f, std::vector<LeafSkeleton>& leaves) {
+  const Vec3 x = perpendicular_near(f.direction, f.normal);
+  const Vec3 y = cross(f.direction, x);
+  for (int k = 0; k < f.petals; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / f.petals;
+    LeafSkeleton petal;
+    petal.base = f.position + f.direction * (0.05 * f.size);
+    petal.direction = normalize((x * std::cos(a) + y * std::sin(a)) + f.direction * 0.25);
+    petal.normal = normalize(f.direction - petal.direction * dot(f.direction, petal.direction));
+    petal.length = 0.5 * f.size;
+    petal.width = 0.45 * f.size;
+    petal.vigour = 0.0f;
+    leaves.push_back(petal);
+  }
 }
 
 LeafSkeleton leaf_of(const Parameters& p, const SemanticParticle& l) {
@@ -66,7 +91,11 @@ TreeSkeleton growth_skeleton(const Parameters& p, const Growth& growth, const De
   for (const Chain& chain : growth.chains)
     if (chain.level <= detail.max_level && chain.particles.size() >= 2)
       skeleton.stems.push_back(chain_stem(p, chain, growth.age, stride));
-  for (const SemanticParticle& part : growth.parts) skeleton.stems.push_back(part_stem(part));
+  for (const SemanticParticle& part : growth.parts)
+    if (part.kind == 2)
+      add_flower(part, skeleton.leaves);
+    else
+      skeleton.stems.push_back(part_stem(part));
   for (const SemanticParticle& l : growth.leaves) skeleton.leaves.push_back(leaf_of(p, l));
   return skeleton;
 }

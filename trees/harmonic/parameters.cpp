@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 #include "core/input_error.h"
 #include "params/table_reader.h"
@@ -57,6 +58,55 @@ void read_block(params::TableReader& r, const BlockShape& b, Parameters& p) {
   for (std::size_t row = 0; row < b.rows; ++row) read_row(r, *a->get(row), b, row, p);
 }
 
+// harmonic_terms = [[level, frequency, amplitude, phase], ...]: at most three per level, so
+// that with the layout's own a level sums the paper's four terms.
+void read_terms(params::TableReader& r, Parameters& p) {
+  const std::string expected =
+      "[[level, frequency, amplitude, phase], ...]: level 0-3, frequency 0-3.2 radians per "
+      "step, amplitude 0-30 degrees, phase 0-360 degrees";
+  const toml::node* n = r.value("harmonic_terms", expected, "none");
+  if (n == nullptr) return;
+  const toml::array* a = n->as_array();
+  if (a == nullptr) r.fail("harmonic_terms", "expected " + expected);
+  std::array<int, 4> per_level{};
+  for (const toml::node& row : *a) {
+    const toml::array* q = row.as_array();
+    std::array<std::optional<double>, 4> v;
+    for (std::size_t k = 0; k < 4 && q != nullptr && q->size() == 4; ++k)
+      v[k] = q->get(k)->value<double>();
+    if (!v[0] || !v[1] || !v[2] || !v[3] || *v[0] != std::round(*v[0]) || *v[0] < 0 || *v[0] > 3 ||
+        *v[1] < 0 || *v[1] > 3.2 || *v[2] < 0 || *v[2] > 30 || *v[3] < 0 || *v[3] > 360)
+      r.fail_at(row, "harmonic_terms", "expected " + expected);
+    const int level = static_cast<int>(*v[0]);
+    if (++per_level[static_cast<std::size_t>(level)] > 3)
+      r.fail_at(row, "harmonic_terms",
+                "expected at most 3 further terms for level " + std::to_string(level) +
+                    " (with the harmonics row, the paper's 4)");
+    p.terms.push_back({level, *v[1], *v[2] * kDegree, *v[3] * kDegree});
+  }
+}
+
+void read_elongation(params::TableReader r, Elongation& e) {
+  e.initial = r.number("initial", {0.05, 1}, e.initial);
+  e.steps = static_cast<int>(r.integer("steps", 0, 400, e.steps));
+  r.finish();
+}
+
+PartSettings read_part(params::TableReader& r) {
+  PartSettings s;
+  const std::string kind = r.choice("kind", {"flower", "thorn", "bud"});
+  s.kind = kind == "flower" ? PartKind::flower : kind == "thorn" ? PartKind::thorn : PartKind::bud;
+  s.at_nodes = r.boolean("at_nodes", s.at_nodes);
+  s.spacing = static_cast<int>(r.integer("spacing", 1, 100, s.spacing));
+  s.probability = r.number("probability", {0, 1}, s.probability);
+  s.size = r.number("size", {0.001, 0.5}, s.size);
+  s.level = static_cast<int>(r.integer("level", 0, 5, s.level));
+  s.angle = r.angle("angle", {0, 180}, s.angle);
+  s.petals = static_cast<int>(r.integer("petals", 3, 12, s.petals));
+  r.finish();
+  return s;
+}
+
 }  // namespace
 
 double Parameters::at(Block b, std::size_t row, std::size_t k) const {
@@ -102,6 +152,14 @@ double Parameters::harmonic_phase(int level) const {
   return at(Block::harmonic, static_cast<std::size_t>(level), 2) * kDegree;
 }
 
+double Parameters::harmonic_turn(int level, int age) const {
+  double turn =
+      harmonic_amplitude(level) * std::sin(age * harmonic_frequency(level) + harmonic_phase(level));
+  for (const HarmonicTerm& t : terms)
+    if (t.level == std::min(level, 3)) turn += t.amplitude * std::sin(age * t.frequency + t.phase);
+  return turn;
+}
+
 Parameters default_parameters() {
   Parameters p;
   const auto& specs = parameter_specs();
@@ -113,6 +171,9 @@ Parameters default_parameters() {
 Parameters read_parameters(params::TableReader& root, const std::string& /*source*/) {
   Parameters p = default_parameters();
   for (Block b : kBlocks) read_block(root, block_shape(b), p);
+  read_terms(root, p);
+  read_elongation(root.table("elongation"), p.elongation);
+  for (params::TableReader& t : root.tables("part")) p.parts.push_back(read_part(t));
   return p;
 }
 
@@ -136,6 +197,46 @@ Parameters sample_discovery(std::uint64_t seed) {
   return p;
 }
 
+namespace {
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+// The keys beyond the 100 floats, when set: harmonic_terms, then the [elongation] and
+// [[part]] tables (after every top-level key, as TOML needs).
+std::string format_extensions(const Parameters& p) {
+  std::string out;
+  if (!p.terms.empty()) {
+    out += "harmonic_terms = [";
+    for (std::size_t i = 0; i < p.terms.size(); ++i) {
+      const HarmonicTerm& t = p.terms[i];
+      out += (i == 0 ? "[" : ", [") + std::to_string(t.level) + ", " + number(t.frequency) + ", " +
+             number(t.amplitude / kDegree) + ", " + number(t.phase / kDegree) + "]";
+    }
+    out += "]\n";
+  }
+  if (p.elongation.steps > 0)
+    out += "[elongation]\ninitial = " + number(p.elongation.initial) +
+           "\nsteps = " + std::to_string(p.elongation.steps) + "\n";
+  for (const PartSettings& s : p.parts) {
+    const char* kind = s.kind == PartKind::flower  ? "flower"
+                       : s.kind == PartKind::thorn ? "thorn"
+                                                   : "bud";
+    out += std::string("[[part]]\nkind = \"") + kind +
+           "\"\nat_nodes = " + (s.at_nodes ? "true" : "false") +
+           "\nspacing = " + std::to_string(s.spacing) + "\nprobability = " + number(s.probability) +
+           "\nsize = " + number(s.size) + "\nlevel = " + std::to_string(s.level) +
+           "\nangle = " + number(s.angle / kDegree) + "\npetals = " + std::to_string(s.petals) +
+           "\n";
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string format_parameters(const Parameters& p) {
   std::string out;
   for (Block b : kBlocks) {
@@ -153,7 +254,7 @@ std::string format_parameters(const Parameters& p) {
     }
     out += "]\n";
   }
-  return out;
+  return out + format_extensions(p);
 }
 
 }  // namespace landsim::trees::harmonic

@@ -2,10 +2,12 @@
 // Harmonic-core parameters: the 100 floats of layout.h, with typed views of each block.
 // Species files give each block as an array (rows of arrays where a block has one row per
 // level); the wrong number of values or a value outside its range is refused.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "trees/harmonic/layout.h"
 
@@ -30,8 +32,49 @@ struct ArcSection {
   double bend;  // radians over the section: positive turns up, negative down
 };
 
+// Beyond the 100 floats (the paper: "each additional tree part adds 14 parameters", and its
+// appendix's terms per level, which its 12 harmonic floats cannot hold):
+
+// A further harmonic term of one level, summed with the layout's row for that level.
+struct HarmonicTerm {
+  int level = 0;           // 0-3 (deeper levels use 3's)
+  double frequency = 0.0;  // radians per step
+  double amplitude = 0.0;  // radians
+  double phase = 0.0;      // radians
+};
+
+// Internode growth (the paper's section 2.3: "internodes begin at a small size and then all
+// internodes in the tree are grown simultaneously on each time step"): an internode is
+// `initial` of its full length when laid down and reaches it `steps` steps later.
+struct Elongation {
+  double initial = 1.0;
+  int steps = 0;  // 0: full length at once
+  double factor(int age) const {
+    return steps <= 0 ? 1.0 : initial + (1.0 - initial) * std::min(1.0, double(age) / steps);
+  }
+};
+
+// A semantic part beyond the layout's leaves and seed balls or cones: flowers (petals in the
+// species' flower colour), thorns (bark cones) and auxiliary buds (small bark ovoids in the
+// node's axil).
+enum class PartKind { flower, thorn, bud };
+
+struct PartSettings {
+  PartKind kind = PartKind::thorn;
+  int spacing = 2;        // steps between chances (ignored at_nodes)
+  bool at_nodes = false;  // one chance at every node instead
+  double probability = 1.0;
+  double size = 0.01;  // metres: thorn length, bud length, flower diameter
+  int level = 0;       // lowest level that carries it
+  double angle = 1.0;  // radians from the shoot's heading
+  int petals = 5;      // flowers
+};
+
 struct Parameters {
   std::array<double, kParameterCount> values{};
+  std::vector<HarmonicTerm> terms;
+  Elongation elongation;
+  std::vector<PartSettings> parts;
 
   double at(Block b, std::size_t row, std::size_t k) const;
   int max_age() const { return static_cast<int>(values[0]); }
@@ -49,6 +92,8 @@ struct Parameters {
   double harmonic_frequency(int level) const;  // radians per step
   double harmonic_amplitude(int level) const;  // radians
   double harmonic_phase(int level) const;      // radians
+  // H at a bud's age on `level`: the layout's term plus the level's further terms.
+  double harmonic_turn(int level, int age) const;
   double semantic(std::size_t k) const { return values[88 + k]; }
 };
 

@@ -91,12 +91,8 @@ class Grower {
       const Vec3 axis = q.rotate({std::cos(around), std::sin(around), 0.0});
       q = Quaternion::about(axis, turn) * q;
     }
-    const double amplitude = p_.harmonic_amplitude(bud.level);
-    if (amplitude > 0.0) {
-      const double angle = amplitude * std::sin(bud.age * p_.harmonic_frequency(bud.level) +
-                                                p_.harmonic_phase(bud.level));
-      q = Quaternion::about(side_of(q), angle) * q;
-    }
+    const double angle = p_.harmonic_turn(bud.level, bud.age);
+    if (angle != 0.0) q = Quaternion::about(side_of(q), angle) * q;
     if (lp.twist != 0.0) q = Quaternion::about(heading_of(q), lp.twist) * q;
     if (p_.tropism() != 0.0) q = Quaternion::about(upward_axis(q), p_.tropism()) * q;
     q = q.normalized();
@@ -107,6 +103,8 @@ class Grower {
     Bud& bud = buds_[index];
     const LevelParameters lp = p_.level(bud.level);
     const int n = bud.nodes++;
+    for (const PartSettings& part : p_.parts)
+      if (part.at_nodes) drop_part(part, bud, at);
     if (bud.level + 1 >= p_.levels() || rng_.unit() >= lp.branch_probability) return;
     // The child's heading: the parent's, turned by the branch angle about a side axis
     // that rotates by the divergence from node to node.
@@ -118,20 +116,47 @@ class Grower {
     const LevelParameters next = p_.level(bud.level + 1);
     Chain chain{bud.level + 1,
                 growth_.chains[bud.chain].girth_rate * next.radius_ratio,
-                {{at, heading_of(child), t}}};
+                {{at, heading_of(child), t}},
+                bud.chain,
+                growth_.chains[bud.chain].particles.size() - 1};
     growth_.chains.push_back(std::move(chain));
     buds_.push_back({growth_.chains.size() - 1, child, bud.level + 1});
+  }
+
+  // One of the species' further parts, if the level carries it and the chance falls.
+  void drop_part(const PartSettings& part, const Bud& bud, const Vec3& at) {
+    if (bud.level < part.level || rng_.unit() >= part.probability) return;
+    const double around = rng_.uniform(0.0, 2.0 * std::numbers::pi);
+    const Vec3 across = bud.orientation.rotate({std::cos(around), std::sin(around), 0.0});
+    const Vec3 h = heading_of(bud.orientation);
+    const Vec3 direction = normalize(h * std::cos(part.angle) + across * std::sin(part.angle));
+    const int kind = part.kind == PartKind::flower ? 2 : part.kind == PartKind::thorn ? 3 : 4;
+    SemanticParticle s{at, direction, across, part.size, kind, part.petals};
+    tag(s, bud);
+    growth_.parts.push_back(s);
+  }
+
+  // Where a semantic particle was dropped: the bud's chain, at its newest particle.
+  void tag(SemanticParticle& s, const Bud& bud) const {
+    s.chain = bud.chain;
+    s.particle = growth_.chains[bud.chain].particles.size() - 1;
   }
 
   void drop_semantics(const Bud& bud, const Vec3& at, const Vec3& h) {
     const auto s = [&](std::size_t k) { return p_.semantic(k); };
     if (bud.level >= static_cast<int>(s(4)) && bud.age % static_cast<int>(s(0)) == 0 &&
-        rng_.unit() < s(1))
+        rng_.unit() < s(1)) {
       growth_.leaves.push_back(leaf(bud, at, h));
+      tag(growth_.leaves.back(), bud);
+    }
     if (s(7) > 0.0 && bud.level >= static_cast<int>(s(10)) &&
-        bud.age % static_cast<int>(s(6)) == 0 && rng_.unit() < s(7))
+        bud.age % static_cast<int>(s(6)) == 0 && rng_.unit() < s(7)) {
       growth_.parts.push_back(
           {at, normalize(h * 0.3 + Vec3{0, 0, -1}), Vec3{1, 0, 0}, s(8), static_cast<int>(s(9))});
+      tag(growth_.parts.back(), bud);
+    }
+    for (const PartSettings& part : p_.parts)
+      if (!part.at_nodes && bud.age % part.spacing == 0) drop_part(part, bud, at);
   }
 
   // A leaf off to one side of the shoot, drooping by leaf_droop, its face tilted from the
@@ -174,7 +199,28 @@ std::size_t Growth::particles() const {
 }
 
 Growth grow(const Parameters& p, std::uint64_t seed, int age, std::size_t max_particles) {
-  return Grower(p, seed, max_particles).run(age < 0 ? p.max_age() : age);
+  Growth g = Grower(p, seed, max_particles).run(age < 0 ? p.max_age() : age);
+  elongate(p, g);
+  return g;
+}
+
+void elongate(const Parameters& p, Growth& g) {
+  if (p.elongation.steps <= 0) return;
+  // Chains are stored parents first, so a chain's start has moved before the chain is redone.
+  for (std::size_t c = 0; c < g.chains.size(); ++c) {
+    Chain& chain = g.chains[c];
+    if (c > 0)
+      chain.particles[0].position =
+          g.chains[chain.parent_chain].particles[chain.parent_particle].position;
+    const double full = p.step_length() * p.level(chain.level).step_scale;
+    for (std::size_t k = 1; k < chain.particles.size(); ++k) {
+      Particle& q = chain.particles[k];
+      q.position = chain.particles[k - 1].position +
+                   q.heading * (full * p.elongation.factor(g.age - q.birth));
+    }
+  }
+  for (auto* list : {&g.leaves, &g.parts})
+    for (SemanticParticle& s : *list) s.position = g.chains[s.chain].particles[s.particle].position;
 }
 
 double particle_radius(const Parameters& p, const Chain& chain, const Particle& particle, int age) {

@@ -7,7 +7,8 @@
 // node_spacing steps a node forms with the node probability, and a node starts a bud of
 // the next level with the branch probability, at the branch angle, rotated by the
 // divergence from node to node. A bud dies at its terminal age; growth ends at max age.
-// Semantic particles (leaves, and a second part kind) are dropped at their own spacing.
+// Semantic particles (leaves, and a second part kind) are dropped at their own spacing, and
+// the species' further parts (flowers, thorns, auxiliary buds) at theirs or at the nodes.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -28,14 +29,18 @@ struct Chain {
   int level = 0;
   double girth_rate = 0.0;  // metres of radius per step of age
   std::vector<Particle> particles;
+  std::size_t parent_chain = 0;     // the chain it grew from, and the particle there
+  std::size_t parent_particle = 0;  // (the trunk: itself, 0)
 };
 
 struct SemanticParticle {
   Vec3 position;
-  Vec3 direction;  // unit: along the leaf, or the part's axis
+  Vec3 direction;  // unit: along the leaf, or the part's axis (a flower: where it faces)
   Vec3 normal;     // unit: the leaf's face
   double size = 0.0;
-  int kind = 0;  // leaves: 0; parts: 0 seed ball, 1 cone
+  int kind = 0;  // leaves: 0; parts: 0 seed ball, 1 cone, 2 flower, 3 thorn, 4 bud
+  int petals = 0;
+  std::size_t chain = 0, particle = 0;  // where it was dropped (elongation moves it along)
 };
 
 struct Growth {
@@ -52,6 +57,11 @@ struct Growth {
 // More than `max_particles` is refused (InputError), never an out-of-memory crash.
 Growth grow(const Parameters& p, std::uint64_t seed, int age = -1,
             std::size_t max_particles = 5000000);
+
+// Internode growth: every particle's position again, each internode `elongation.factor` of its
+// full length at the growth's age, children and semantic particles moved with the particle
+// they grew at. Growth calls it; a no-op when elongation is off.
+void elongate(const Parameters& p, Growth& growth);
 
 // A particle's radius at the growth's age: the tip radius, thickened every step since it
 // was left (secondary growth).

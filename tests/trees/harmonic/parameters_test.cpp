@@ -81,14 +81,17 @@ TEST(HarmonicSpecies, VariationStaysInRangeAndZeroChangesNothing) {
   EXPECT_EQ(vary(p, 17).values, p.values);
 }
 
-TEST(HarmonicSpecies, TheSixExampleSpeciesGrowDistinctShapes) {
+TEST(HarmonicSpecies, TheExampleSpeciesGrowDistinctShapes) {
   trees::testing::expect_shapes("harmonic",
                                 {{"harmonic_ponderosa_pine.toml", 13, 20, 2, 5},
                                  {"harmonic_snow_gum.toml", 4, 8, 2.5, 6},
                                  {"harmonic_paper_birch.toml", 8, 12, 1.5, 4},
                                  {"harmonic_cherry.toml", 3.5, 7, 1.8, 4},
                                  {"harmonic_american_elm.toml", 7.5, 12, 4, 8},
-                                 {"harmonic_juniper.toml", 3.5, 6, 0.8, 2}},
+                                 {"harmonic_juniper.toml", 3.5, 6, 0.8, 2},
+                                 {"harmonic_sweet_briar.toml", 1.0, 2.5, 1.2, 3},
+                                 {"harmonic_gumbo_limbo.toml", 5, 10, 3.5, 8},
+                                 {"harmonic_silvertree.toml", 5, 8, 1.2, 2.5}},
                                 1, 500);
 }
 
