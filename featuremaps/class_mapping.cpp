@@ -59,9 +59,13 @@ SpeciesShare read_share(const toml::node& node, const std::string& file) {
 ClassMapping load_class_mapping(const std::string& path) {
   const std::optional<std::string> text = terrain::read_text_file(path);
   if (!text) throw InputError(path + ": class mapping file not found");
+  return parse_class_mapping(*text, path);
+}
+
+ClassMapping parse_class_mapping(std::string_view text, const std::string& path) {
   toml::table root;
   try {
-    root = toml::parse(*text, path);
+    root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
     throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": " +

@@ -4,6 +4,7 @@
 // fractions) and a grass type.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "featuremaps/vegetation_map.h"
@@ -29,6 +30,8 @@ struct ClassMapping {
 
 // Reads a mapping TOML file ([[class]] tables, see docs/SCENARIO.md). Throws InputError.
 ClassMapping load_class_mapping(const std::string& path);
+// The same from text already read; `path` names it in messages.
+ClassMapping parse_class_mapping(std::string_view text, const std::string& path);
 
 // Same grid and placement as `classes` (read as numbers; nodata and unmapped classes get no
 // vegetation). The choice per cell depends only on `seed` and the cell.

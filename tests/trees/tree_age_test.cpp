@@ -88,7 +88,8 @@ TEST(TreeAge, WeberPennAndGraphPathsScaleByTheCurve) {
 // The harmonic core's younger tree is the older one's first steps: every chain of the
 // younger growth is a prefix of the older's.
 TEST(TreeAge, AYoungerHarmonicTreeIsTheOldersFirstSteps) {
-  const auto& p = std::get<harmonic::Parameters>(species("harmonic_cherry.toml").parameters);
+  const Species cherry = species("harmonic_cherry.toml");
+  const auto& p = std::get<harmonic::Parameters>(cherry.parameters);
   const harmonic::Parameters individual = harmonic::vary(p, 4);
   const harmonic::Growth young = harmonic::grow(individual, 4, individual.max_age() / 3);
   const harmonic::Growth old = harmonic::grow(individual, 4);

@@ -72,11 +72,12 @@ class Grower {
       throw InputError("harmonic growth would exceed " + std::to_string(max_particles_) +
                        " particles: lower general.max_age, the levels or the branch "
                        "probabilities");
-    ++bud.age;
+    const int age = ++bud.age;
     drop_semantics(bud, at, h);
-    if (bud.age % std::max(lp.node_spacing, 1) == 0 && rng_.unit() < lp.node_probability)
+    // form_node may add a bud, moving buds_: `bud` is not to be used after it.
+    if (age % std::max(lp.node_spacing, 1) == 0 && rng_.unit() < lp.node_probability)
       form_node(index, at, t);
-    if (bud.age >= lp.terminal_age) buds_[index].alive = false;
+    if (age >= lp.terminal_age) buds_[index].alive = false;
   }
 
   // B <- B R W H, then twist and tropism.

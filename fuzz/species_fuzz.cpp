@@ -1,0 +1,9 @@
+// Species TOML of every core (the `core` key picks the reader: Weber & Penn, graph paths,
+// self-organising, harmonic, measured growth).
+#include "fuzz/fuzz_input.h"
+#include "trees/species.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return landsim::fuzz::refused_or_read(
+      [&] { landsim::trees::parse_species_toml(landsim::fuzz::text_of(data, size), "fuzz.toml"); });
+}

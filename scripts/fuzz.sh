@@ -1,0 +1,75 @@
+#!/bin/sh
+# Builds landsim's libFuzzer targets with clang, AddressSanitizer and UBSan (build-fuzz/),
+# lays out their seed corpora and dictionaries from the project's own files, and runs each
+# target for SECONDS (default 30). A crash, leak, undefined behaviour, a hang past 10 s or
+# more than 2 GB is a finding: the target stops, its input is saved in build-fuzz/findings/,
+# and this script exits non-zero. docs/RELIABILITY.md says how to run long campaigns.
+#
+#   scripts/fuzz.sh [SECONDS] [TARGET...]      e.g. scripts/fuzz.sh 600 species_fuzz
+set -eu
+cd "$(dirname "$0")/.."
+SECONDS_EACH="${1:-30}"
+[ $# -gt 0 ] && shift
+TARGETS="${*:-species_fuzz arbaro_fuzz class_mapping_fuzz scenario_fuzz elevation_fuzz vegetation_fuzz tree_fuzz}"
+B=build-fuzz
+
+cmake -S . -B "$B" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_C_COMPILER=clang -DLANDSIM_FUZZ=ON -DLANDSIM_BUILD_BENCH=OFF >/dev/null
+cmake --build "$B" --parallel "$(nproc)" --target landsim $TARGETS
+
+# Seed corpora: every input of the kind the project ships, and the regression inputs.
+C="$B/corpus"
+rm -rf "$C" && mkdir -p "$C" "$B/findings"
+for t in $TARGETS; do mkdir -p "$C/$t"; done
+cp data/species/*.toml "$C/species_fuzz/"
+cp data/species/*.toml "$C/tree_fuzz/"
+cp data/species/*.xml "$C/arbaro_fuzz/"
+cp scenes/examples/*_classes.toml "$C/class_mapping_fuzz/"
+for f in scenes/examples/*.toml; do
+  case "$f" in *_classes.toml) ;; *) cp "$f" "$C/scenario_fuzz/" ;; esac
+done
+cp data/terrain/volcano.asc data/terrain/bei_elev.asc "$C/elevation_fuzz/"
+gdal_translate -q -of GTiff data/terrain/volcano.asc "$C/elevation_fuzz/volcano.tif"
+gdal_translate -q -of PNG -ot UInt16 -scale data/terrain/volcano.asc "$C/elevation_fuzz/volcano.png"
+LANDSIM_MODULE_DIR="$B/bin" "$B/bin/landsim" featuremap build data/featuremaps/volcano_landcover.asc \
+  --map scenes/examples/volcano_classes.toml --out "$C/vegetation_fuzz/volcano.tif" >/dev/null
+for t in $TARGETS; do
+  [ -d "fuzz/regressions/$t" ] && cp fuzz/regressions/$t/* "$C/$t/" 2>/dev/null || true
+done
+
+# Dictionaries: the documented keys (backquoted names in the docs' tables) and TOML syntax.
+D="$B/dict"
+mkdir -p "$D"
+keys() { grep -ho '`[A-Za-z0-9_]*`' "$@" | tr -d '`' | sort -u | sed 's/.*/"&"/'; }
+syntax='"=" "[" "]" "[[" "]]" "," "\"" "true" "false" "1e308" "-1" "nan" "inf" "#"'
+{ keys docs/SPECIES.md docs/HARMONIC.md; echo "$syntax" | tr ' ' '\n'; } > "$D/toml_species.dict"
+{ keys docs/SCENARIO.md; echo "$syntax" | tr ' ' '\n'; } > "$D/toml_scenario.dict"
+printf '%s\n' '"<arbaro>"' '"<species"' '"<param"' '"name="' '"value="' '"/>"' '"</species>"' \
+  '"Levels"' '"Shape"' '"0Branches"' '"LeafShape"' '"&amp;"' '"<!--"' > "$D/xml.dict"
+
+export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$(pwd)/fuzz/lsan.supp:print_suppressions=0:use_tls=0"
+export LANDSIM_MODULE_DIR="$(pwd)/$B/bin"
+status=0
+for t in $TARGETS; do
+  case "$t" in
+    arbaro_fuzz) dict="$D/xml.dict" ;;
+    scenario_fuzz) dict="$D/toml_scenario.dict" ;;
+    elevation_fuzz|vegetation_fuzz) dict="" ;;
+    *) dict="$D/toml_species.dict" ;;
+  esac
+  log="$B/findings/$t.log"
+  if "$B/bin/$t" "$C/$t" ${dict:+-dict=$dict} -max_total_time="$SECONDS_EACH" -timeout=10 \
+      -rss_limit_mb=2048 -malloc_limit_mb=2048 -print_final_stats=1 \
+      -artifact_prefix="$B/findings/$t-" >"$log" 2>&1; then
+    result=clean
+  else
+    result="FINDING (see $log)"
+    status=1
+  fi
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo 0)
+  echo "$t: $runs runs, $cov edges, $result"
+done
+exit $status
