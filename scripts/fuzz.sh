@@ -6,21 +6,31 @@
 # and this script exits non-zero. docs/RELIABILITY.md says how to run long campaigns.
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]      e.g. scripts/fuzz.sh 600 species_fuzz
+#
+# With FUZZ_SEED set (CI: scripts/sanitize.sh), each target also stops after a fixed number of
+# inputs (20000; 30 for tree_fuzz, which grows every tree it reads) from that seed: the same
+# inputs every run, so a CI run cannot fail on an input no earlier run has tried.
 set -eu
 cd "$(dirname "$0")/.."
 SECONDS_EACH="${1:-30}"
 [ $# -gt 0 ] && shift
-TARGETS="${*:-species_fuzz arbaro_fuzz class_mapping_fuzz scenario_fuzz elevation_fuzz vegetation_fuzz tree_fuzz}"
+ALL="species_fuzz arbaro_fuzz class_mapping_fuzz scenario_fuzz elevation_fuzz vegetation_fuzz tree_fuzz"
+TARGETS="${*:-$ALL}"
 B=build-fuzz
 
 cmake -S . -B "$B" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_C_COMPILER=clang -DLANDSIM_FUZZ=ON -DLANDSIM_BUILD_BENCH=OFF >/dev/null
-cmake --build "$B" --parallel "$(nproc)" --target landsim $TARGETS
+cmake --build "$B" --parallel "$(nproc)" --target landsim $ALL
+
+export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$(pwd)/fuzz/lsan.supp:print_suppressions=0:use_tls=0"
+export LANDSIM_MODULE_DIR="$(pwd)/$B/bin"
 
 # Seed corpora: every input of the kind the project ships, and the regression inputs.
 C="$B/corpus"
 rm -rf "$C" && mkdir -p "$C" "$B/findings"
-for t in $TARGETS; do mkdir -p "$C/$t"; done
+for t in $ALL; do mkdir -p "$C/$t"; done
 cp data/species/*.toml "$C/species_fuzz/"
 cp data/species/*.toml "$C/tree_fuzz/"
 cp data/species/*.xml "$C/arbaro_fuzz/"
@@ -31,7 +41,7 @@ done
 cp data/terrain/volcano.asc data/terrain/bei_elev.asc "$C/elevation_fuzz/"
 gdal_translate -q -of GTiff data/terrain/volcano.asc "$C/elevation_fuzz/volcano.tif"
 gdal_translate -q -of PNG -ot UInt16 -scale data/terrain/volcano.asc "$C/elevation_fuzz/volcano.png"
-LANDSIM_MODULE_DIR="$B/bin" "$B/bin/landsim" featuremap build data/featuremaps/volcano_landcover.asc \
+"$B/bin/landsim" featuremap build data/featuremaps/volcano_landcover.asc \
   --map scenes/examples/volcano_classes.toml --out "$C/vegetation_fuzz/volcano.tif" >/dev/null
 for t in $TARGETS; do
   [ -d "fuzz/regressions/$t" ] && cp fuzz/regressions/$t/* "$C/$t/" 2>/dev/null || true
@@ -40,17 +50,13 @@ done
 # Dictionaries: the documented keys (backquoted names in the docs' tables) and TOML syntax.
 D="$B/dict"
 mkdir -p "$D"
-keys() { grep -ho '`[A-Za-z0-9_]*`' "$@" | tr -d '`' | sort -u | sed 's/.*/"&"/'; }
+keys() { grep -ho '`[A-Za-z0-9_]\+`' "$@" | tr -d '`' | sort -u | sed 's/.*/"&"/'; }
 syntax='"=" "[" "]" "[[" "]]" "," "\"" "true" "false" "1e308" "-1" "nan" "inf" "#"'
 { keys docs/SPECIES.md docs/HARMONIC.md; echo "$syntax" | tr ' ' '\n'; } > "$D/toml_species.dict"
 { keys docs/SCENARIO.md; echo "$syntax" | tr ' ' '\n'; } > "$D/toml_scenario.dict"
 printf '%s\n' '"<arbaro>"' '"<species"' '"<param"' '"name="' '"value="' '"/>"' '"</species>"' \
   '"Levels"' '"Shape"' '"0Branches"' '"LeafShape"' '"&amp;"' '"<!--"' > "$D/xml.dict"
 
-export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-export LSAN_OPTIONS="suppressions=$(pwd)/fuzz/lsan.supp:print_suppressions=0:use_tls=0"
-export LANDSIM_MODULE_DIR="$(pwd)/$B/bin"
 status=0
 for t in $TARGETS; do
   case "$t" in
@@ -60,7 +66,13 @@ for t in $TARGETS; do
     *) dict="$D/toml_species.dict" ;;
   esac
   log="$B/findings/$t.log"
-  if "$B/bin/$t" "$C/$t" ${dict:+-dict=$dict} -max_total_time="$SECONDS_EACH" -timeout=10 \
+  fixed=""
+  if [ -n "${FUZZ_SEED:-}" ]; then
+    runs=20000
+    [ "$t" = tree_fuzz ] && runs=30
+    fixed="-seed=$FUZZ_SEED -runs=$runs"
+  fi
+  if "$B/bin/$t" "$C/$t" ${dict:+-dict=$dict} $fixed -max_total_time="$SECONDS_EACH" -timeout=10 \
       -rss_limit_mb=2048 -malloc_limit_mb=2048 -print_final_stats=1 \
       -artifact_prefix="$B/findings/$t-" >"$log" 2>&1; then
     result=clean
