@@ -5,26 +5,13 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "tests/trees/graph_paths/crown_on_trunk.h"
 #include "trees/mesher.h"
 
 namespace landsim::trees::graph_paths {
 namespace {
 
-Parameters crown_on_trunk() {
-  VolumePrimitive crown;
-  crown.origin = {0, 0, 3};
-  crown.radius = 1.5;
-  VolumePrimitive trunk;
-  trunk.kind = PrimitiveKind::cylinder;
-  trunk.radius = 0.2;
-  trunk.height = 2.0;
-  Parameters p;
-  p.volume = InitialVolume({crown, trunk});
-  p.spacing = 0.15;
-  p.endpoints = 120;
-  p.shell = 0.3;
-  return p;
-}
+using testing::crown_on_trunk;
 
 std::vector<double> radii_along(const StemSkeleton& s) {
   std::vector<double> r;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/counter_rng.h"
+#include "tests/trees/graph_paths/crown_on_trunk.h"
 #include "tests/trees/species_files.h"
 #include "trees/graph_paths/generator.h"
 #include "trees/graph_paths/refinement.h"
@@ -11,18 +12,9 @@
 namespace landsim::trees::graph_paths {
 namespace {
 
+// The tests' crown (1.2 m) on its trunk, with a root ball 1.5 m wide and 1 m deep.
 Parameters rooted() {
-  VolumePrimitive crown;
-  crown.origin = {0, 0, 3};
-  crown.radius = 1.2;
-  VolumePrimitive trunk;
-  trunk.kind = PrimitiveKind::cylinder;
-  trunk.radius = 0.2;
-  trunk.height = 2.0;
-  Parameters p;
-  p.volume = InitialVolume({crown, trunk});
-  p.spacing = 0.15;
-  p.endpoints = 40;
+  Parameters p = testing::crown_on_trunk(1.2, 40);
   p.endpoint_min_z = 2.0;
   p.roots.radius = 1.5;
   p.roots.depth = 1.0;
