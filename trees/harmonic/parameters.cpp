@@ -74,9 +74,14 @@ void read_terms(params::TableReader& r, Parameters& p) {
     std::array<std::optional<double>, 4> v;
     for (std::size_t k = 0; k < 4 && q != nullptr && q->size() == 4; ++k)
       v[k] = q->get(k)->value<double>();
-    if (!v[0] || !v[1] || !v[2] || !v[3] || *v[0] != std::round(*v[0]) || *v[0] < 0 || *v[0] > 3 ||
-        *v[1] < 0 || *v[1] > 3.2 || *v[2] < 0 || *v[2] > 30 || *v[3] < 0 || *v[3] > 360)
-      r.fail_at(row, "harmonic_terms", "expected " + expected);
+    // Frequency, amplitude and phase within the harmonics row's own ranges.
+    const std::size_t first = block_shape(Block::harmonic).offset;
+    bool in_range = v[0] && *v[0] == std::round(*v[0]) && *v[0] >= 0 && *v[0] <= 3;
+    for (std::size_t k = 1; k < 4 && in_range; ++k) {
+      const ParameterSpec& spec = parameter_specs()[first + k - 1];
+      in_range = v[k] && *v[k] >= spec.min && *v[k] <= spec.max;
+    }
+    if (!in_range) r.fail_at(row, "harmonic_terms", "expected " + expected);
     const int level = static_cast<int>(*v[0]);
     if (++per_level[static_cast<std::size_t>(level)] > 3)
       r.fail_at(row, "harmonic_terms",

@@ -19,7 +19,10 @@ double segment_distance(const Point& a, const Point& b, double u, double v) {
 
 }  // namespace
 
-Lasso::Lasso(LassoOutline outline) : o_(std::move(outline)) {
+Lasso::Lasso(LassoOutline outline)
+    : o_(std::move(outline)),
+      across_{std::cos(o_.azimuth), std::sin(o_.azimuth), 0.0},
+      depth_{-across_.y, across_.x, 0.0} {
   double u1 = -1e300, v1 = -1e300;
   u0_ = v0_ = 1e300;
   for (const Point& q : o_.outline) {
@@ -87,19 +90,15 @@ double Lasso::half_depth(double u, double v) const {
 }
 
 bool Lasso::contains(const Vec3& p) const {
-  const Vec3 across{std::cos(o_.azimuth), std::sin(o_.azimuth), 0.0};
-  const Vec3 depth{-across.y, across.x, 0.0};
   const Vec3 q = p - o_.origin;
-  return std::abs(dot(q, depth)) <= half_depth(dot(q, across), q.z);
+  return std::abs(dot(q, depth_)) <= half_depth(dot(q, across_), q.z);
 }
 
 std::array<Vec3, 2> Lasso::bounds() const {
-  const Vec3 across{std::cos(o_.azimuth), std::sin(o_.azimuth), 0.0};
-  const Vec3 depth{-across.y, across.x, 0.0};
   Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const Point& q : o_.outline)
     for (double w : {-max_half_depth_, max_half_depth_}) {
-      const Vec3 p = o_.origin + across * q[0] + depth * w + Vec3{0, 0, q[1]};
+      const Vec3 p = o_.origin + across_ * q[0] + depth_ * w + Vec3{0, 0, q[1]};
       lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
       hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
     }

@@ -42,6 +42,7 @@ class Lasso {
   bool inside_outline(double across, double height) const;
 
   LassoOutline o_;
+  Vec3 across_, depth_;                // the drawing plane's horizontal axis and its normal
   double u0_ = 0, v0_ = 0, cell_ = 1;  // the image's corner and cell size
   int nu_ = 0, nv_ = 0;
   std::vector<float> half_depth_;  // per cell
