@@ -1,8 +1,11 @@
 #include "renderer/film.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace landsim::renderer {
 
-Film::Film(int width, int height)
+Film::Film(int width, int height, std::vector<std::string> band_names)
     : width_(width),
       height_(height),
       rgb_(3 * pixel_count()),
@@ -13,7 +16,27 @@ Film::Film(int width, int height)
       species_(pixel_count(), kNoId),
       instance_(pixel_count(), kNoId),
       level_(pixel_count()),
-      target_(pixel_count()) {}
+      target_(pixel_count()),
+      band_names_(std::move(band_names)),
+      bands_(band_names_.size(), std::vector<float>(pixel_count())) {}
+
+bool Film::order_bands(const std::vector<std::string>& names) {
+  if (names.size() != band_names_.size()) return false;
+  std::vector<std::vector<float>> ordered;
+  for (const std::string& name : names) {
+    const auto it = std::find(band_names_.begin(), band_names_.end(), name);
+    if (it == band_names_.end()) return false;
+    ordered.push_back(bands_[static_cast<std::size_t>(it - band_names_.begin())]);
+  }
+  bands_ = std::move(ordered);
+  band_names_ = names;
+  return true;
+}
+
+void Film::set_bands(int x, int y, const float* bands) {
+  const std::size_t i = index(x, y);
+  for (auto& plane : bands_) plane[i] = *bands++;
+}
 
 void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
   const std::size_t i = index(x, y);

@@ -3,6 +3,7 @@
 // RGB, row 0 at the top.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/vec3.h"
@@ -25,13 +26,26 @@ struct PixelAovs {
 
 class Film {
  public:
-  Film(int width, int height);
+  // `band_names`: the sensor bands (renderer/scene.h SpectralBand) the film also holds, one
+  // plane each, in band radiance (W m^-2 sr^-1).
+  Film(int width, int height, std::vector<std::string> band_names = {});
 
   int width() const { return width_; }
   int height() const { return height_; }
   std::size_t pixel_count() const { return static_cast<std::size_t>(width_) * height_; }
 
   void set(int x, int y, const Vec3f& rgb, const PixelAovs& aovs);
+  // The pixel's band radiances, band_count() of them.
+  void set_bands(int x, int y, const float* bands);
+  int band_count() const { return static_cast<int>(band_names_.size()); }
+  const std::string& band_name(int b) const { return band_names_[static_cast<std::size_t>(b)]; }
+  const std::vector<std::string>& band_names() const { return band_names_; }
+  float band(int x, int y, int b) const { return bands_[static_cast<std::size_t>(b)][index(x, y)]; }
+  // Puts the band planes in the order of `names` (EXR files list channels alphabetically);
+  // false, and nothing changed, unless the film holds exactly those bands.
+  bool order_bands(const std::vector<std::string>& names);
+  std::vector<float>& band_data(int b) { return bands_[static_cast<std::size_t>(b)]; }
+  const std::vector<float>& band_data(int b) const { return bands_[static_cast<std::size_t>(b)]; }
   Vec3f rgb(int x, int y) const;
   float luminance(int x, int y) const;  // Rec. 709
   float depth(int x, int y) const { return depth_[index(x, y)]; }
@@ -75,6 +89,8 @@ class Film {
   int height_;
   std::vector<float> rgb_, depth_, normal_, albedo_;
   std::vector<std::uint32_t> object_, species_, instance_, level_, target_;
+  std::vector<std::string> band_names_;
+  std::vector<std::vector<float>> bands_;  // per band, a plane
 };
 
 }  // namespace landsim::renderer

@@ -17,9 +17,10 @@ float smith_g1(float alpha, float c) {
 
 }  // namespace
 
+float schlick_weight(float c) { return std::pow(1.0f - std::clamp(c, 0.0f, 1.0f), 5.0f); }
+
 Vec3f schlick_fresnel(const Vec3f& f0, float c) {
-  const float m = std::pow(1.0f - std::clamp(c, 0.0f, 1.0f), 5.0f);
-  return f0 + (Vec3f{1.0f, 1.0f, 1.0f} - f0) * m;
+  return f0 + (Vec3f{1.0f, 1.0f, 1.0f} - f0) * schlick_weight(c);
 }
 
 float ggx_distribution(float alpha, float cos_h) {
@@ -29,15 +30,20 @@ float ggx_distribution(float alpha, float cos_h) {
   return a2 / (kPi * d * d);
 }
 
-Vec3f ggx_reflection(const Vec3f& f0, float alpha, const Vec3f& n, const Vec3f& wo,
-                     const Vec3f& l) {
+float ggx_lobe(float alpha, const Vec3f& n, const Vec3f& wo, const Vec3f& l) {
   const float cos_o = dot(n, wo), cos_l = dot(n, l);
-  if (cos_o <= 0.0f || cos_l <= 0.0f) return {};
+  if (cos_o <= 0.0f || cos_l <= 0.0f) return 0.0f;
   const Vec3f h = normalize(wo + l);
   const float g = smith_g1(alpha, cos_o) * smith_g1(alpha, cos_l);
   // f cos_l = F D G / (4 cos_o cos_l) x cos_l
-  return schlick_fresnel(f0, dot(wo, h)) *
-         (ggx_distribution(alpha, dot(n, h)) * g / (4.0f * cos_o));
+  return ggx_distribution(alpha, dot(n, h)) * g / (4.0f * cos_o);
+}
+
+Vec3f ggx_reflection(const Vec3f& f0, float alpha, const Vec3f& n, const Vec3f& wo,
+                     const Vec3f& l) {
+  const float lobe = ggx_lobe(alpha, n, wo, l);
+  if (lobe <= 0.0f) return {};
+  return schlick_fresnel(f0, dot(wo, normalize(wo + l))) * lobe;
 }
 
 Vec3f ggx_sample(float alpha, const Vec3f& n, const Vec3f& wo, float u1, float u2) {

@@ -12,6 +12,8 @@ inline constexpr float kMinGlossyAlpha = 0.01f;
 
 // Schlick's Fresnel reflectance for normal reflectance f0 at cos theta = `c`.
 Vec3f schlick_fresnel(const Vec3f& f0, float c);
+// Schlick's (1 - c)^5: F = F0 + (1 - F0) x this, for any number of wavelengths.
+float schlick_weight(float c);
 
 // GGX normal distribution D(h) for cos theta_h = `cos_h`.
 float ggx_distribution(float alpha, float cos_h);
@@ -19,6 +21,8 @@ float ggx_distribution(float alpha, float cos_h);
 // f x cos theta_l of the coat for light from `l` toward `wo` (both leaving the surface),
 // Fresnel included; zero below the surface.
 Vec3f ggx_reflection(const Vec3f& f0, float alpha, const Vec3f& n, const Vec3f& wo, const Vec3f& l);
+// The same without the Fresnel factor: D G / (4 cos_o), zero below either horizon.
+float ggx_lobe(float alpha, const Vec3f& n, const Vec3f& wo, const Vec3f& l);
 
 // A direction leaving the surface, drawn in proportion to D(h) cos theta_h over half
 // vectors and reflected about the drawn half vector; may point below the surface.

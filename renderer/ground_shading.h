@@ -63,6 +63,7 @@ struct Ground;
 struct ShadedGround {
   Vec3f albedo;
   bool water = false;
+  int material = 0;  // the id after the rules (rock on a steep slope of soil...)
 };
 // `texture` false leaves the image textures out (their mean, 1): for exports that colour
 // vertices, where sampling an image would alias.

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/spectral_colour.h"
+
 namespace landsim::renderer {
 namespace {
 
 constexpr int kSteps = 4096;
+// The spectral table is coarser (each entry is 32 bins): 0.35 degrees.
+constexpr int kSpectralSteps = 1024;
 
 // A pseudo-angle of (x, y) in [0, 4): monotonic in the azimuth, one division instead of an
 // atan2 (which cost 1% of a forest render). The table is uniform in it, not in degrees:
@@ -25,11 +29,25 @@ Vec3f direction_of(float a) {
 
 }  // namespace
 
-HorizonRadiance::HorizonRadiance(const SkyModel& sky) : mean_(sky.mean_radiance()) {
+HorizonRadiance::HorizonRadiance(const SkyModel& sky)
+    : mean_(sky.mean_radiance()), mean_spectrum_(emission_spectrum(mean_)) {
   table_.reserve(kSteps + 1);
   for (int i = 0; i <= kSteps; ++i)
     table_.push_back(
         sky.horizon_band_radiance(direction_of(4.0f * static_cast<float>(i % kSteps) / kSteps)));
+  spectral_table_.reserve(kSpectralSteps + 1);
+  for (int i = 0; i <= kSpectralSteps; ++i)
+    spectral_table_.push_back(sky.horizon_band_spectral(
+        direction_of(4.0f * static_cast<float>(i % kSpectralSteps) / kSpectralSteps)));
+}
+
+Spectrum HorizonRadiance::spectral(const Vec3f& d) const {
+  if (d.x * d.x + d.y * d.y <= 1e-6f) return mean_spectrum_;
+  const float x = pseudo_angle(d.x, d.y) * (kSpectralSteps / 4.0f);
+  const int i = std::clamp(static_cast<int>(x), 0, kSpectralSteps - 1);
+  const float f = x - static_cast<float>(i);
+  return spectral_table_[static_cast<std::size_t>(i)] * (1.0f - f) +
+         spectral_table_[static_cast<std::size_t>(i + 1)] * f;
 }
 
 Vec3f HorizonRadiance::radiance(const Vec3f& d) const {

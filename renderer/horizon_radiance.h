@@ -16,10 +16,14 @@ class HorizonRadiance {
   explicit HorizonRadiance(const SkyModel& sky);
   // At the azimuth of `direction` (any length); straight up or down, the sky's mean.
   Vec3f radiance(const Vec3f& direction) const;
+  // The same spectrally (SkyModel::horizon_band_spectral).
+  Spectrum spectral(const Vec3f& direction) const;
 
  private:
   std::vector<Vec3f> table_;  // kSteps + 1 entries, the last equal to the first
   Vec3f mean_;
+  std::vector<Spectrum> spectral_table_;
+  Spectrum mean_spectrum_;
 };
 
 }  // namespace landsim::renderer

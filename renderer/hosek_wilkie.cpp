@@ -43,16 +43,27 @@ double elevation_parameter(double elevation) {
 
 }  // namespace
 
-HosekWilkieSky::HosekWilkieSky(double elevation, double turbidity, const Vec3& albedo) {
+HosekWilkieSky::HosekWilkieSky(double elevation, double turbidity, const Vec3& albedo)
+    : HosekWilkieSky(elevation, turbidity, std::array<double, 3>{albedo.x, albedo.y, albedo.z}.data(),
+                     3, false) {}
+
+HosekWilkieSky HosekWilkieSky::spectral(double elevation, double turbidity,
+                                        const std::array<double, 11>& albedo) {
+  return {elevation, turbidity, albedo.data(), Tables::kWavelengths, true};
+}
+
+HosekWilkieSky::HosekWilkieSky(double elevation, double turbidity, const double* albedo,
+                               int channels, bool spectral)
+    : parameters_(static_cast<std::size_t>(channels)),
+      overall_(static_cast<std::size_t>(channels)) {
   const Tables& t = hosek_wilkie_tables();
   const double x = elevation_parameter(elevation);
   const TurbidityPair tp = turbidity_pair(turbidity);
-  double overall[3];
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < channels; ++c) {
     const double a = std::clamp(albedo[c], 0.0, 1.0);
     // Parameter p of one table (albedo, turbidity): the Bezier over its control points.
     const auto config = [&](int alb, int turb, int p) {
-      return bezier5(t.control_points(c, alb, turb) + p, Tables::kParameters, x);
+      return bezier5(t.control_points(c, alb, turb, spectral) + p, Tables::kParameters, x);
     };
     const auto blended = [&](auto&& value) {
       const double low = (1.0 - a) * value(0, tp.lower) + a * value(1, tp.lower);
@@ -62,32 +73,41 @@ HosekWilkieSky::HosekWilkieSky(double elevation, double turbidity, const Vec3& a
     for (int p = 0; p < Tables::kParameters; ++p)
       parameters_[static_cast<std::size_t>(c)][static_cast<std::size_t>(p)] =
           blended([&](int alb, int turb) { return config(alb, turb, p); });
-    overall[c] =
-        blended([&](int alb, int turb) { return bezier5(t.radiance_points(c, alb, turb), 1, x); });
+    overall_[static_cast<std::size_t>(c)] = blended([&](int alb, int turb) {
+      return bezier5(t.radiance_points(c, alb, turb, spectral), 1, x);
+    });
+    // The RGB tables integrate spectral radiance against the colour-matching functions
+    // without the luminous efficacy: 683 lm/W makes Y luminance in cd/m2
+    // (data/sky/PROVENANCE.md). The spectral ones are W m^-2 sr^-1 nm^-1 as they stand.
+    if (!spectral) overall_[static_cast<std::size_t>(c)] *= kLumensPerWatt;
   }
-  // The tables integrate spectral radiance against the colour-matching functions without
-  // the luminous efficacy: 683 lm/W makes Y luminance in cd/m2 (data/sky/PROVENANCE.md).
-  overall_ = Vec3{overall[0], overall[1], overall[2]} * kLumensPerWatt;
 }
 
-Vec3 HosekWilkieSky::radiance_cos(double cos_theta_in, double cos_gamma_in) const {
+Vec3 HosekWilkieSky::radiance_cos(double cos_theta, double cos_gamma) const {
+  double out[Tables::kWavelengths];
+  channels_cos(cos_theta, cos_gamma, out);
+  return {out[0], out[1], out[2]};
+}
+
+void HosekWilkieSky::channels_cos(double cos_theta_in, double cos_gamma_in, double* out) const {
   const double cos_theta = std::clamp(cos_theta_in, 0.0, 1.0);
   const double cos_gamma = std::clamp(cos_gamma_in, -1.0, 1.0);
   const double gamma = std::acos(cos_gamma);
-  double out[3];
-  for (int c = 0; c < 3; ++c) {
+  const double sqrt_cos_theta = std::sqrt(cos_theta);
+  for (std::size_t c = 0; c < overall_.size(); ++c) {
     // The extended Perez formula of the 2012 paper (its Mie term chi(H, gamma) and the
     // zenith term I sqrt(cos theta) added to Perez), parameters in file order.
-    const auto& k = parameters_[static_cast<std::size_t>(c)];
+    const auto& k = parameters_[c];
     const double a = k[0], b = k[1], cc = k[2], d = k[3], e = k[4], f = k[5], g = k[6], i = k[7],
                  h = k[8];
     const double mie =
         (1.0 + cos_gamma * cos_gamma) / std::pow(1.0 + h * h - 2.0 * h * cos_gamma, 1.5);
     const double zenith_term = 1.0 + a * std::exp(b / (cos_theta + 0.01));
-    out[c] = zenith_term * (cc + d * std::exp(e * gamma) + f * cos_gamma * cos_gamma + g * mie +
-                            i * std::sqrt(cos_theta));
+    out[c] = zenith_term *
+             (cc + d * std::exp(e * gamma) + f * cos_gamma * cos_gamma + g * mie +
+              i * sqrt_cos_theta) *
+             overall_[c];
   }
-  return Vec3{out[0], out[1], out[2]} * overall_;
 }
 
 HosekWilkieSun::HosekWilkieSun(double elevation, double turbidity) {

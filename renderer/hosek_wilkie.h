@@ -18,21 +18,31 @@ namespace landsim::renderer {
 class HosekWilkieSky {
  public:
   // `solar_elevation` in radians (clamped to [0, pi/2]), turbidity 1-10, ground albedo per
-  // channel in [0, 1].
+  // channel in [0, 1]. Three channels: linear Rec. 709 from the RGB tables.
   HosekWilkieSky(double solar_elevation, double turbidity, const Vec3& ground_albedo);
+  // The spectral tables' 11 wavelengths (320-720 nm in steps of 40), ground albedo at each:
+  // channels in W m^-2 sr^-1 nm^-1.
+  static HosekWilkieSky spectral(double solar_elevation, double turbidity,
+                                 const std::array<double, 11>& ground_albedo);
 
   // Radiance from a direction at zenith angle `theta` (at most pi/2) and angle `gamma` from
-  // the sun.
+  // the sun (RGB skies).
   Vec3 radiance(double theta, double gamma) const {
     return radiance_cos(std::cos(theta), std::cos(gamma));
   }
   // The same from the cosines (what a renderer has: dot products), without the round trip
   // through the angles; gamma itself is needed only for the exp(E gamma) term.
   Vec3 radiance_cos(double cos_theta, double cos_gamma) const;
+  // Every channel's radiance into `out` (3 or 11 values).
+  void channels_cos(double cos_theta, double cos_gamma, double* out) const;
+  int channel_count() const { return static_cast<int>(overall_.size()); }
 
  private:
-  std::array<std::array<double, 9>, 3> parameters_{};  // per channel, A..I, H in file order
-  Vec3 overall_;                                       // L_M per channel, times 683
+  HosekWilkieSky(double solar_elevation, double turbidity, const double* ground_albedo,
+                 int channels, bool spectral);
+
+  std::vector<std::array<double, 9>> parameters_;  // per channel, A..I, H in file order
+  std::vector<double> overall_;                     // L_M per channel (RGB: times 683)
 };
 
 class HosekWilkieSun {

@@ -13,6 +13,8 @@ extern const std::string_view kHosekWilkieRgbCoefficientsCsv;
 extern const std::string_view kHosekWilkieRgbRadianceCsv;
 extern const std::string_view kHosekWilkieSolarRadianceCsv;
 extern const std::string_view kHosekWilkieLimbDarkeningCsv;
+extern const std::string_view kHosekWilkieSpectralCoefficientsCsv;
+extern const std::string_view kHosekWilkieSpectralRadianceCsv;
 
 namespace {
 
@@ -81,6 +83,10 @@ HosekWilkieTables load() {
   fill(t.coefficients, coefficients, 4, HosekWilkieTables::kParameters,
        "hosek_wilkie_rgb_coefficients.csv");
   fill(t.radiance, radiance, 4, 1, "hosek_wilkie_rgb_radiance.csv");
+  fill(t.spectral_coefficients, kHosekWilkieSpectralCoefficientsCsv, 4,
+       HosekWilkieTables::kParameters, "hosek_wilkie_spectral_coefficients.csv");
+  fill(t.spectral_radiance, kHosekWilkieSpectralRadianceCsv, 4, 1,
+       "hosek_wilkie_spectral_radiance.csv");
   fill(t.solar, kHosekWilkieSolarRadianceCsv, 4, 1, "hosek_wilkie_solar_radiance.csv");
   fill(t.limb_darkening, kHosekWilkieLimbDarkeningCsv, 1, 6, "hosek_wilkie_limb_darkening.csv");
   return t;

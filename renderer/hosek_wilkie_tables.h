@@ -20,18 +20,25 @@ struct HosekWilkieTables {
   std::array<double, kChannels * 2 * kTurbidities * kControlPoints * kParameters> coefficients;
   // [channel][albedo][turbidity - 1][control point]: the overall radiance L_M
   std::array<double, kChannels * 2 * kTurbidities * kControlPoints> radiance;
+  // The same for the spectral tables: [wavelength][albedo][turbidity - 1][control point]...
+  std::array<double, kWavelengths * 2 * kTurbidities * kControlPoints * kParameters>
+      spectral_coefficients;
+  std::array<double, kWavelengths * 2 * kTurbidities * kControlPoints> spectral_radiance;
   // [wavelength][turbidity - 1][segment][cubic, quadratic, linear, constant term]
   std::array<double, kWavelengths * kTurbidities * kSolarSegments * 4> solar;
   // [wavelength][power 0..5] of the cosine on the solar disc
   std::array<double, kWavelengths * 6> limb_darkening;
 
-  const double* control_points(int channel, int albedo, int turbidity_index) const {
-    return &coefficients[static_cast<std::size_t>(
-        ((channel * 2 + albedo) * kTurbidities + turbidity_index) * kControlPoints * kParameters)];
+  // `spectral`: channel is a wavelength of the spectral tables, else R, G, B.
+  const double* control_points(int channel, int albedo, int turbidity_index,
+                               bool spectral = false) const {
+    return (spectral ? spectral_coefficients.data() : coefficients.data()) + static_cast<std::size_t>(
+        ((channel * 2 + albedo) * kTurbidities + turbidity_index) * kControlPoints * kParameters);
   }
-  const double* radiance_points(int channel, int albedo, int turbidity_index) const {
-    return &radiance[static_cast<std::size_t>(
-        ((channel * 2 + albedo) * kTurbidities + turbidity_index) * kControlPoints)];
+  const double* radiance_points(int channel, int albedo, int turbidity_index,
+                                bool spectral = false) const {
+    return (spectral ? spectral_radiance.data() : radiance.data()) + static_cast<std::size_t>(
+        ((channel * 2 + albedo) * kTurbidities + turbidity_index) * kControlPoints);
   }
   const double* solar_segment(int wavelength, int turbidity_index, int segment) const {
     return &solar[static_cast<std::size_t>(

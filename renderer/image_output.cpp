@@ -16,6 +16,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 #include "core/atomic_file.h"
@@ -86,6 +87,10 @@ constexpr Channel kChannels[] = {{"R", false},        {"G", false},        {"B",
                                  {"albedo.B", false}, {"object", true},    {"species", true},
                                  {"instance", true},  {"lod", true},       {"target", true}};
 
+// Sensor bands are channels of their own: "band." and the band's name.
+constexpr std::string_view kBandPrefix = "band.";
+std::string band_channel(const std::string& name) { return std::string(kBandPrefix) + name; }
+
 // The frame buffer for every channel of `film` (const_cast: OpenEXR's Slice wants a
 // non-const pointer even for writing).
 Imf::FrameBuffer frame_buffer(Film& film) {
@@ -106,6 +111,8 @@ Imf::FrameBuffer frame_buffer(Film& film) {
   add_slice(fb, "instance", Imf::UINT, film.instance_data(), 1, 0, w);
   add_slice(fb, "lod", Imf::UINT, film.level_data(), 1, 0, w);
   add_slice(fb, "target", Imf::UINT, film.target_data(), 1, 0, w);
+  for (int b = 0; b < film.band_count(); ++b)
+    add_slice(fb, band_channel(film.band_name(b)).c_str(), Imf::FLOAT, film.band_data(b), 1, 0, w);
   return fb;
 }
 
@@ -125,6 +132,9 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
   header.compression() = compressed ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
   for (const Channel& c : kChannels)
     header.channels().insert(c.name, Imf::Channel(c.id ? Imf::UINT : Imf::FLOAT));
+  for (const std::string& name : film.band_names())
+    header.channels().insert(band_channel(name), Imf::Channel(Imf::FLOAT));
+  if (film.band_count() > 0) header.insert("landsim/band_unit", Imf::StringAttribute(kBandUnit));
   for (const auto& [key, value] : metadata)
     header.insert("landsim/" + key, Imf::StringAttribute(value));
   if (camera != nullptr) {
@@ -174,7 +184,12 @@ ImageMetadata landsim_metadata(const Imf::Header& header) {
 Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata) {
   Imf::InputFile in(path.c_str());
   const Imath::Box2i dw = in.header().dataWindow();
-  Film film(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
+  std::vector<std::string> bands;
+  for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it) {
+    const std::string name = it.name();
+    if (name.rfind(kBandPrefix, 0) == 0) bands.push_back(name.substr(kBandPrefix.size()));
+  }
+  Film film(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1, std::move(bands));
   for (const Channel& c : kChannels) {
     if (in.header().channels().findChannel(c.name) == nullptr) {
       throw std::runtime_error(path.string() + ": not a landsim image (no channel " + c.name + ")");

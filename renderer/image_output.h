@@ -27,6 +27,9 @@ struct CameraMatrices {
 inline constexpr const char* kRadianceUnit =
     "scene-linear Rec. 709 radiance; Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance in cd/m2";
 
+// Sensor bands' layers ("band.<name>"): band radiance, the integral of spectral radiance
+// times the band's response.
+inline constexpr const char* kBandUnit = "W m-2 sr-1";
 // Channels: R, G, B (radiance, kRadianceUnit); Y (luminance, cd/m2); Z (depth, metres, infinity for
 // sky); N.X, N.Y, N.Z (normal); albedo.R, albedo.G, albedo.B; object, species, instance, lod
 // (32-bit unsigned; 4294967295 = none). String attributes "landsim/<key>"; OpenEXR's standard

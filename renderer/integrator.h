@@ -2,6 +2,7 @@
 // What the renderer asks of a light-transport integrator: the radiance of one camera ray and
 // what its first hit saw. Two integrators answer: PathTracer (the physical light transport)
 // and ComparableTracer (the direct light POV-Ray also computes, for the cross-check).
+#include <array>
 #include <cstdint>
 
 #include "core/counter_rng.h"
@@ -23,8 +24,15 @@ struct FirstHit {
   std::uint32_t target = 0;    // scene object index + 1, 0 for anything else
 };
 
+// Sensor bands a sample is also measured in (renderer/scene.h SpectralBand); at most this
+// many per image set.
+inline constexpr int kMaxBands = 8;
+
 struct PathSample {
-  Vec3f radiance;
+  Vec3f radiance;  // linear Rec. 709, Y in cd/m2
+  // Band radiance, W m^-2 sr^-1, of the scene's bands in order (zero beyond them, and from
+  // integrators that are not spectral).
+  std::array<float, kMaxBands> bands{};
   FirstHit first;
   std::uint32_t rays = 0;  // rays traced for this sample (camera, bounce and shadow rays)
 };

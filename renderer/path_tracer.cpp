@@ -2,6 +2,7 @@
 
 #include "renderer/detail/sample_dimensions.h"
 #include "renderer/glossy.h"
+#include "renderer/spectral_colour.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,18 +45,33 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
       haze_(scene.haze),
       sun_direction_(Vec3f(normalize(scene.sun.direction))),
-      roulette_threshold_(kShadowRouletteFraction * max_component(sky_.mean_radiance())),
+      // The roulette compares spectral contributions: the sky's mean as a spectrum.
+      roulette_threshold_(kShadowRouletteFraction *
+                          max_component(emission_spectrum(sky_.mean_radiance()))),
       horizon_(sky_),
       sun_transmittance_at_base_(static_cast<float>(haze_.transmittance(
-          Vec3{0.0, 0.0, scene.haze.base_height}, Vec3(sun_direction_), kInfiniteDistance))) {}
+          Vec3{0.0, 0.0, scene.haze.base_height}, Vec3(sun_direction_), kInfiniteDistance))),
+      sun_spectrum_(sky_.sun_spectral_irradiance()),
+      haze_albedo_(reflectance_spectrum(haze_.albedo())) {}
 
-Vec3f PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                            const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const {
-  const SunSample sun = sample_sun(scene_, embree_, sun_direction_, v, m, u1, u2, rays, throughput,
-                                   roulette(u_roulette));
-  if (max_component(sun.light) <= 0.0f) return {};
-  return sun.light * static_cast<float>(haze_.transmittance(
-                         Vec3(sun.ray.origin), Vec3(sun.ray.direction), kInfiniteDistance));
+Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
+                               const SpectralMaterial& s, float u1, float u2,
+                               const Spectrum& throughput, float u_roulette,
+                               std::uint32_t& rays) const {
+  // As sample_sun (renderer/surface.h) with the spectral material: one direction in the disc.
+  const Vec3f l = sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
+  bool front = false;
+  const Spectrum f = reflected_light(s, m, v, l, front);
+  if (max_component(f) <= 0.0f) return {};
+  const Spectrum light = f * sun_spectrum_;
+  const float weight =
+      shadow_roulette_weight(max_component(throughput * light), roulette(u_roulette));
+  if (weight == 0.0f) return {};
+  ++rays;
+  const Ray ray{offset_point(v.p, front ? v.ng : -v.ng), l};
+  if (embree_.occluded(ray, 0.0f, kInfinity, v.mask)) return {};
+  return light * (weight * static_cast<float>(haze_.transmittance(
+                               Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance)));
 }
 
 // The probability of sampling the glossy coat rather than the diffuse base: the coat's
@@ -78,14 +94,17 @@ float PathTracer::bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m,
   return (c > 0.0f ? r / (r + t) : t / (r + t)) * std::abs(c) / kPi;
 }
 
-Vec3f PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                            const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const {
+Spectrum PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m,
+                               const SpectralMaterial& s, float u1, float u2,
+                               const Spectrum& throughput, float u_roulette,
+                               std::uint32_t& rays) const {
   float pdf = 0.0f;
   const Vec3f l = sky_.sample(u1, u2, pdf);
   bool front = false;
-  const Vec3f f = reflected_light(m, v, l, front);
+  const Spectrum f = reflected_light(s, m, v, l, front);
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
-  const Vec3f light = f * sky_.radiance(l) * (power_heuristic(pdf, bsdf_pdf(v, m, l)) / pdf);
+  const Spectrum light =
+      f * sky_.spectral_radiance(l) * (power_heuristic(pdf, bsdf_pdf(v, m, l)) / pdf);
   const float weight =
       shadow_roulette_weight(max_component(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
@@ -97,9 +116,9 @@ Vec3f PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m, flo
   return light * (weight * t_haze);
 }
 
-Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, float u,
-                                  const Vec3f& throughput, const ShadowRoulette& roulette,
-                                  std::uint32_t mask, std::uint32_t& rays) const {
+Spectrum PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, float u,
+                                     const Spectrum& throughput, const ShadowRoulette& roulette,
+                                     std::uint32_t mask, std::uint32_t& rays) const {
   const Vec3 o(ray.origin), d(ray.direction);
   const double scattered = -std::expm1(-depth);  // 1 - T over the segment
   if (scattered <= 0.0) return {};
@@ -107,28 +126,41 @@ Vec3f PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, float 
   const double s = haze_.sample_distance(o, d, t, u, depth);
   const Vec3f p = ray.origin + ray.direction * static_cast<float>(s);
   const auto phase = static_cast<float>(haze_.phase(dot(ray.direction, sun_direction_)));
-  const Vec3f a = haze_.albedo();
+  const Spectrum& a = haze_albedo_;
   // Unshadowed, the sun scattered here adds a x sun x (1 - T): the roulette's contribution.
-  Vec3f sun =
-      scene_.sun.irradiance * phase *
-      static_cast<float>(haze_.transmittance(Vec3(p), Vec3(sun_direction_), kInfiniteDistance));
+  Spectrum sun =
+      sun_spectrum_ *
+      (phase *
+       static_cast<float>(haze_.transmittance(Vec3(p), Vec3(sun_direction_), kInfiniteDistance)));
   const float weight = shadow_roulette_weight(
       max_component(throughput * a * sun) * static_cast<float>(scattered), roulette);
   if (weight > 0.0f) {
     ++rays;
-    sun = embree_.occluded({p, sun_direction_}, 0.0f, kInfinity, mask) ? Vec3f{} : sun * weight;
+    sun = embree_.occluded({p, sun_direction_}, 0.0f, kInfinity, mask) ? Spectrum{} : sun * weight;
   } else {
     sun = {};
   }
   // Skylight (multiple scattering, which single scattering alone misses) as an ambient
   // source, sized so that an unshadowed, endless horizontal view sees exactly the sky's
   // horizon radiance in that direction: distant ridges fade toward the horizon colour.
-  const Vec3f horizon = horizon_.radiance(ray.direction);
-  const Vec3f sun_at_base = scene_.sun.irradiance * phase * sun_transmittance_at_base_;
-  const Vec3f ambient{std::max(0.0f, horizon.x / a.x - sun_at_base.x),
-                      std::max(0.0f, horizon.y / a.y - sun_at_base.y),
-                      std::max(0.0f, horizon.z / a.z - sun_at_base.z)};
+  const Spectrum horizon = horizon_.spectral(ray.direction);
+  const float sun_at_base = phase * sun_transmittance_at_base_;
+  Spectrum ambient;
+  for (int k = 0; k < kSpectrumBins; ++k)
+    ambient[k] = a[k] > 0.0f ? std::max(0.0f, horizon[k] / a[k] - sun_spectrum_[k] * sun_at_base)
+                             : 0.0f;
   return a * (ambient + sun) * static_cast<float>(scattered);
+}
+
+void PathTracer::finish(PathSample& out, const Spectrum& radiance) const {
+  out.radiance = spectrum_to_rgb(radiance);
+  const std::size_t bands = std::min<std::size_t>(scene_.bands.size(), kMaxBands);
+  for (std::size_t b = 0; b < bands; ++b) {
+    const Spectrum& w = scene_.bands[b].weight;
+    float sum = 0.0f;
+    for (int k = 0; k < kSpectrumBins; ++k) sum += w[k] * radiance[k];
+    out.bands[b] = sum;
+  }
 }
 
 PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
@@ -136,7 +168,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
   PathSample out;
   out.first.depth = kInfinity;
   Ray ray = camera_ray;
-  Vec3f throughput{1.0f, 1.0f, 1.0f};
+  Spectrum throughput = Spectrum::constant(1.0f);
+  Spectrum radiance;
   float last_pdf = 0.0f;      // BSDF pdf of the ray being traced (for MIS with sky NEE)
   bool last_specular = true;  // camera rays and mirror bounces see the sky unweighted
 
@@ -164,29 +197,30 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       // rays rouletted.
       const ShadowRoulette r =
           bounce == 0 ? ShadowRoulette{} : roulette(rng.uniform(dim + kHazeRoulette));
-      out.radiance += throughput * haze_in_scatter(ray, t, depth, rng.uniform(dim + kHaze),
+      radiance += throughput * haze_in_scatter(ray, t, depth, rng.uniform(dim + kHaze),
                                                    throughput, r, mask, out.rays);
       throughput = throughput * transmitted;
     }
     if (!hit) {
       const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
-      out.radiance += throughput * sky_.radiance(ray.direction) * w;
+      radiance += throughput * sky_.spectral_radiance(ray.direction) * w;
       // The sun's disc is seen only along specular paths: every diffuse vertex already took
       // it by next-event estimation.
-      if (last_specular) out.radiance += throughput * sky_.sun_radiance(ray.direction);
+      if (last_specular) radiance += throughput * sky_.sun_spectral_radiance(ray.direction);
       break;
     }
     const ShadingPoint v = shading_point(ray, *hit, mask);
     const SurfaceMaterial m = surface_material(scene_, *hit, v);
+    const SpectralMaterial sm = spectral_material(m);
     if (bounce == 0) out.first = first_hit(scene_, *hit, v, m);
     const float fresnel = water_fresnel(m, ray.direction, v.ng);
     // The roulette sees what reaches the pixel: the throughput and the water's share.
-    const Vec3f seen = throughput * (1.0f - fresnel);
-    Vec3f direct = sun_light(v, m, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), seen,
-                             rng.uniform(dim + kSunRoulette), out.rays);
-    direct += sky_light(v, m, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
+    const Spectrum seen = throughput * (1.0f - fresnel);
+    Spectrum direct = sun_light(v, m, sm, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1),
+                                seen, rng.uniform(dim + kSunRoulette), out.rays);
+    direct += sky_light(v, m, sm, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
                         rng.uniform(dim + kSkyRoulette), out.rays);
-    out.radiance += throughput * direct * (1.0f - fresnel);
+    radiance += seen * direct;
 
     if (m.water && rng.uniform(dim + kFresnel) < fresnel) {
       // Mirror reflection off the water's (geometric) surface, chosen with probability F.
@@ -205,7 +239,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       const Vec3f next = coat ? ggx_sample(m.alpha, v.n, v.wo, u, rng.uniform(dim + kDir))
                               : sample_cosine(v.n, u, rng.uniform(dim + kDir));
       bool front = false;
-      const Vec3f f = reflected_light(m, v, next, front);
+      const Spectrum f = reflected_light(sm, m, v, next, front);
       const float pdf = bsdf_pdf(v, m, next);
       if (!front || pdf <= 0.0f || max_component(f) <= 0.0f) break;
       throughput = throughput * f / pdf;
@@ -232,8 +266,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
         sample_cosine(reflect ? v.n : -v.n, std::min(u, 0.99999994f), rng.uniform(dim + kDir));
     if (dot(next, reflect ? v.ng : -v.ng) <= 0.0f)
       break;  // shading normal pointed it into the surface
-    throughput =
-        throughput * (reflect ? m.reflectance / p_reflect : m.transmittance / (1.0f - p_reflect));
+    throughput = throughput * (reflect ? sm.reflectance / p_reflect
+                                       : sm.transmittance / (1.0f - p_reflect));
     last_pdf = bsdf_pdf(v, m, next);
     last_specular = false;
     if (bounce >= kRouletteAfter) {
@@ -243,6 +277,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     }
     ray = {offset_point(v.p, reflect ? v.ng : -v.ng), next};
   }
+  finish(out, radiance);
   return out;
 }
 

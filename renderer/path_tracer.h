@@ -1,5 +1,7 @@
 #pragma once
-// Unidirectional path tracer, the physical integrator: Lambertian and two-sided (leaf,
+// Unidirectional spectral path tracer, the physical integrator: every path carries the 32
+// wavelength bins of renderer/spectrum.h, its RGB comes from them through the CIE functions
+// (docs/SPECTRAL.md); Lambertian and two-sided (leaf,
 // grass) surfaces, a Fresnel water mirror; next-event estimation to the sun disc and to the
 // sky (importance-sampled, combined with the BSDF's own sampling by multiple importance
 // sampling); exponential haze with analytic transmittance and single scattering of sunlight
@@ -31,17 +33,21 @@ class PathTracer : public Integrator {
  private:
   // Light at a vertex, as the path's `throughput` so far will see it (the throughput
   // decides the shadow ray's roulette; it is not applied to the result).
-  Vec3f sun_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                  const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const;
-  Vec3f sky_light(const ShadingPoint& v, const SurfaceMaterial& m, float u1, float u2,
-                  const Vec3f& throughput, float u_roulette, std::uint32_t& rays) const;
+  Spectrum sun_light(const ShadingPoint& v, const SurfaceMaterial& m, const SpectralMaterial& s,
+                     float u1, float u2, const Spectrum& throughput, float u_roulette,
+                     std::uint32_t& rays) const;
+  Spectrum sky_light(const ShadingPoint& v, const SurfaceMaterial& m, const SpectralMaterial& s,
+                     float u1, float u2, const Spectrum& throughput, float u_roulette,
+                     std::uint32_t& rays) const;
   // Sunlight scattered toward the viewer by haze along a segment; `t` may be infinite.
   // `depth`: the segment's optical depth.
-  Vec3f haze_in_scatter(const Ray& ray, double t, double depth, float u, const Vec3f& throughput,
-                        const ShadowRoulette& roulette, std::uint32_t mask,
-                        std::uint32_t& rays) const;
+  Spectrum haze_in_scatter(const Ray& ray, double t, double depth, float u,
+                           const Spectrum& throughput, const ShadowRoulette& roulette,
+                           std::uint32_t mask, std::uint32_t& rays) const;
   ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
   float bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m, const Vec3f& dir) const;
+  // The sun, sky and ground colours of `settings`' bands, and the RGB, from a path's spectrum.
+  void finish(PathSample& out, const Spectrum& radiance) const;
 
   const Scene& scene_;
   const EmbreeScene& embree_;
@@ -51,6 +57,8 @@ class PathTracer : public Integrator {
   float roulette_threshold_;  // shadow rays adding less than this to a pixel are rouletted
   HorizonRadiance horizon_;   // the haze's ambient term, by azimuth
   float sun_transmittance_at_base_;
+  Spectrum sun_spectrum_;   // irradiance on a surface facing the sun
+  Spectrum haze_albedo_;
 };
 
 }  // namespace landsim::renderer

@@ -56,6 +56,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(view.width) +
                          static_cast<std::uint64_t>(x);
       Vec3f sum{};
+      std::array<float, kMaxBands> band_sum{};
       FirstHit first;
       const std::uint32_t mask = pixel_ray_mask(pixel);
       for (int s = 0; s < settings.spp; ++s) {
@@ -63,6 +64,8 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
         const Ray ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
         const PathSample sample = tracer.trace(ray, rng, mask);
         sum += sample.radiance;
+        for (int b = 0; b < film.band_count(); ++b)
+          band_sum[static_cast<std::size_t>(b)] += sample.bands[static_cast<std::size_t>(b)];
         rays += sample.rays;
         if (s == 0) first = sample.first;  // AOVs from the first sample: no blending of ids
       }
@@ -75,7 +78,10 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       if (first.species >= 0) aovs.species = static_cast<std::uint32_t>(first.species);
       aovs.level = first.level;
       aovs.target = first.target;
-      film.set(x, y, sum * (1.0f / static_cast<float>(settings.spp)), aovs);
+      const float inverse_spp = 1.0f / static_cast<float>(settings.spp);
+      film.set(x, y, sum * inverse_spp, aovs);
+      for (float& b : band_sum) b *= inverse_spp;
+      film.set_bands(x, y, band_sum.data());
     }
   }
   return rays;
@@ -101,7 +107,7 @@ int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) 
     if (k == "tiles_done") done = v;
   }
   if (key != options.render_key || done.empty() || saved.width() != film.width() ||
-      saved.height() != film.height()) {
+      saved.height() != film.height() || !saved.order_bands(film.band_names())) {
     spdlog::warn("{}: checkpoint of another render, starting afresh", options.checkpoint.string());
     return 0;
   }
@@ -150,6 +156,8 @@ ViewRenderer::~ViewRenderer() = default;
 
 int ViewRenderer::tile_count() const { return tile_grid(view_).count(); }
 
+Film ViewRenderer::new_film() const { return make_film(scene_, view_); }
+
 std::uint64_t ViewRenderer::render_tiles(int first, int last, Film& film,
                                          const std::function<void()>& tile_done) const {
   const TileGrid grid = tile_grid(view_);
@@ -169,7 +177,7 @@ std::uint64_t ViewRenderer::render_tiles(int first, int last, Film& film,
 
 Film Renderer::render(const View& view, const RenderOptions& options, RenderStats* stats) const {
   const auto start = std::chrono::steady_clock::now();
-  Film film(view.width, view.height);
+  Film film = make_film(scene_, view);
   const ViewRenderer tiles(*this, view, options);
   const double setup =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -225,8 +233,14 @@ void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_
             nullptr, false);
 }
 
+Film make_film(const Scene& scene, const View& view) {
+  std::vector<std::string> names;
+  for (const SpectralBand& b : scene.bands) names.push_back(b.name);
+  return Film(view.width, view.height, std::move(names));
+}
+
 // A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
-// species, instance and level: 14 words per pixel.
+// species, instance, level and target: 15 words per pixel, then the bands (float bits).
 constexpr std::size_t kWordsPerPixel = 15;
 
 std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
@@ -240,6 +254,7 @@ std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
                    {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y),
                     bits(n.z), bits(a.x), bits(a.y), bits(a.z), film.object(x, y),
                     film.species(x, y), film.instance(x, y), film.level(x, y), film.target(x, y)});
+      for (int b = 0; b < film.band_count(); ++b) words.push_back(bits(film.band(x, y, b)));
     });
   return words;
 }
@@ -250,7 +265,8 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
   std::size_t k = 0;
   for (int tile = first; tile < last; ++tile)
     for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
-      if (k + kWordsPerPixel > words.size()) throw std::runtime_error("tile data too short");
+      const std::size_t per_pixel = kWordsPerPixel + static_cast<std::size_t>(film.band_count());
+      if (k + per_pixel > words.size()) throw std::runtime_error("tile data too short");
       PixelAovs aovs;
       aovs.depth = f(k + 3);
       aovs.normal = {f(k + 4), f(k + 5), f(k + 6)};
@@ -261,7 +277,11 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
       aovs.level = words[k + 13];
       aovs.target = words[k + 14];
       film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
-      k += kWordsPerPixel;
+      std::array<float, kMaxBands> bands{};
+      for (int b = 0; b < film.band_count(); ++b)
+        bands[static_cast<std::size_t>(b)] = f(k + kWordsPerPixel + static_cast<std::size_t>(b));
+      film.set_bands(x, y, bands.data());
+      k += per_pixel;
     });
 }
 

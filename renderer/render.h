@@ -87,6 +87,8 @@ class ViewRenderer {
   ViewRenderer(const Renderer& renderer, const View& view, const RenderOptions& options);
   ~ViewRenderer();
   int tile_count() const;
+  // An empty film of the view, with the scene's bands (make_film).
+  Film new_film() const;
   // Renders tiles [first, last) into `film`; tile_done (if set) is called after each tile,
   // from any worker thread. Returns the rays traced.
   std::uint64_t render_tiles(int first, int last, Film& film,
@@ -109,6 +111,8 @@ Ray sample_ray(const Camera& camera, const CounterRng& rng, int x, int y, bool c
 // options.render_key); resume_checkpoint loads a matching one and returns its tiles_done.
 void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_done);
 int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count);
+// An empty film for `view` with a plane for each of the scene's bands.
+Film make_film(const Scene& scene, const View& view);
 // Tiles [first, last) of a film as 32-bit words (every plane, bit for bit), and back.
 std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last);
 void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, Film& film);

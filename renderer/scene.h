@@ -15,6 +15,7 @@
 
 #include "core/vec3.h"
 #include "renderer/ground_shading.h"
+#include "renderer/spectrum.h"
 #include "terrain/ground_mesh.h"
 #include "trees/degradation.h"
 #include "trees/geometry.h"
@@ -26,6 +27,14 @@ inline constexpr Vec3f kDefaultGroundAlbedo{0.18f, 0.17f, 0.12f};
 // Leaves (and grass blades) transmit a little less than they reflect (typical broadleaf
 // spectra): transmittance = this x reflectance.
 inline constexpr float kLeafTransmittanceRatio = 0.8f;
+
+// A material's measured or modelled spectra (docs/SPECTRAL.md): leaves from PROSPECT-D,
+// soils from measured spectra. Where a material has none, the path tracer upsamples its RGB
+// (renderer/spectral_colour.h). Shared: one per species variant, grass type or ground material.
+struct SpectralOptics {
+  Spectrum reflectance;
+  Spectrum transmittance;  // zero for opaque materials
+};
 
 // A ground material from the ground feature maps (soil, rock, water, road, grass cover).
 struct GroundMaterial {
@@ -49,6 +58,9 @@ struct Ground {
   std::vector<std::uint8_t> triangle_material;  // per triangle, 0 = `albedo`; may be empty
   // Noise, rules and textures that vary the materials over the ground (ground_shading.h).
   GroundShading shading;
+  // Spectra by material id (soils: the measured ones, by moisture); null: the RGB upsampled.
+  // The shading's variation multiplies them as it multiplies the albedo.
+  std::array<std::shared_ptr<const SpectralOptics>, kGroundMaterials> optics;
 
   // What ground triangle `t` is made of, for every renderer and exporter alike: its material
   // id (0: the terrain's own), and the material of an id.
@@ -91,6 +103,8 @@ struct GrassCover {
   std::vector<float> height;  // terrain height at the tile centre, scene frame
   std::vector<Vec3f> normal;  // terrain normal there
   std::array<GrassType, 3> types;
+  // Per type, the blades' spectra (leaf optics); null: the RGB upsampled.
+  std::array<std::shared_ptr<const SpectralOptics>, 3> optics;
   GrassMask mask;
 };
 
@@ -141,6 +155,13 @@ struct View {
   double detail_range_scale = 1.0;
 };
 
+// A sensor band (docs/SPECTRAL.md): the image set gets one layer of its band radiance,
+// W m^-2 sr^-1, the integral of spectral radiance times its response.
+struct SpectralBand {
+  std::string name;
+  Spectrum weight;  // the response integrated over each bin, nm
+};
+
 struct RenderSettings {
   int spp = 16;
   std::uint64_t seed = 1;
@@ -171,6 +192,9 @@ struct TreePrototype {
   Vec3f leaf_tint(float vigour) const {
     return leaf_weak_tint + (Vec3f{1.0f, 1.0f, 1.0f} - leaf_weak_tint) * vigour;
   }
+  // The leaves' spectra (PROSPECT-D, or the colour in the visible joined to a leaf's near
+  // infrared: docs/SPECTRAL.md); the vigour tint multiplies them; null: the RGB upsampled.
+  std::shared_ptr<const SpectralOptics> leaf_optics;
   std::uint16_t species = 0;  // index in the scenario's species table
   // The paper's s and d for this tree (quality, season, evergreen).
   trees::DegradationFactors degradation;
@@ -260,6 +284,7 @@ struct Scene {
   Haze haze;
   std::vector<View> views;
   RenderSettings settings;
+  std::vector<SpectralBand> bands;
 };
 
 }  // namespace landsim::renderer

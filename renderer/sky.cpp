@@ -5,7 +5,9 @@
 #include <numbers>
 
 #include "renderer/hosek_wilkie.h"
+#include "renderer/near_infrared.h"
 #include "renderer/preetham.h"
+#include "renderer/spectral_colour.h"
 
 namespace landsim::renderer {
 namespace {
@@ -59,6 +61,7 @@ SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
   upper = upper * ((0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps)) / (2.0f * kPi));
   mean_radiance_ = (upper + below_horizon_) * 0.5f;
   build_table();
+  build_spectra(sun, elevation, ground_albedo);
 }
 
 SkyModel::~SkyModel() = default;
@@ -114,6 +117,126 @@ Vec3f SkyModel::above_horizon(const Vec3f& d) const {
   // The exponent keeps a bright band near the horizon, as haze-free skies show.
   const float t = std::pow(std::clamp(d.z, 0.0f, 1.0f), 0.4f);
   return sky_.horizon_radiance * (1.0f - t) + sky_.zenith_radiance * t;
+}
+
+namespace {
+
+// The sun's irradiance at one wavelength from the limb-darkened disc of `radius`:
+// pi sin^2 R x 2 int_0^1 L(mu) mu dmu.
+double disc_irradiance(const HosekWilkieSun& sun, double wavelength_nm, double radius) {
+  constexpr int kSteps = 16;
+  double sum = 0.0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double mu = (i + 0.5) / kSteps;
+    sum += sun.spectral_radiance(wavelength_nm, mu) * mu / kSteps;
+  }
+  return 2.0 * std::numbers::pi * std::sin(radius) * std::sin(radius) * sum;
+}
+
+}  // namespace
+
+void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albedo) {
+  const Spectrum ground = reflectance_spectrum(ground_albedo);
+  if (hosek_wilkie_) {
+    const NearInfrared infrared(elevation, sky_.turbidity);
+    constexpr int kWavelengths = 11;
+    constexpr double kFirst = 320.0, kStep = 40.0;
+    // Hosek-Wilkie's ground albedo at its wavelengths: the bin's that holds each.
+    std::array<double, kWavelengths> albedo{};
+    for (int w = 0; w < kWavelengths; ++w) {
+      const int k = std::clamp(static_cast<int>((kFirst + kStep * w - kFirstWavelength) / kBinWidth),
+                               0, kSpectrumBins - 1);
+      albedo[static_cast<std::size_t>(w)] = ground[k];
+    }
+    spectral_sky_ = std::make_unique<HosekWilkieSky>(
+        HosekWilkieSky::spectral(elevation, sky_.turbidity, albedo));
+    // Each bin: the tables' linear interpolation averaged over its 1 nm steps; past 720 nm,
+    // the last wavelength times the near-infrared model's ratio.
+    const int steps = static_cast<int>(kBinWidth);
+    for (int k = 0; k < kSpectrumBins; ++k) {
+      auto& row = sky_bins_[static_cast<std::size_t>(k)];
+      for (int i = 0; i < steps; ++i) {
+        const double nm = bin_start(k) + i + 0.5;
+        if (nm > NearInfrared::kJoin) {
+          row[kWavelengths - 1] += static_cast<float>(infrared.sky_ratio(nm) / steps);
+          continue;
+        }
+        const double position = (nm - kFirst) / kStep;
+        const int w = std::min(static_cast<int>(position), kWavelengths - 2);
+        const double f = position - w;
+        row[static_cast<std::size_t>(w)] += static_cast<float>((1.0 - f) / steps);
+        row[static_cast<std::size_t>(w + 1)] += static_cast<float>(f / steps);
+      }
+    }
+    const HosekWilkieSun model(elevation, sky_.turbidity);
+    sun_spectrum_ = bin_average([&](double nm) {
+      const double e = disc_irradiance(model, std::min(nm, NearInfrared::kJoin), sun.angular_radius);
+      return nm > NearInfrared::kJoin ? e * infrared.sun_ratio(nm) : e;
+    });
+    // The scene's sun irradiance (which a scenario may set) decides its colour: the model's
+    // spectrum times the upsampled ratio of the two colours (a flat 1 when they agree).
+    const Vec3f rgb = spectrum_to_rgb(sun_spectrum_);
+    const auto ratio = [](float want, float have) { return have > 0.0f ? want / have : 0.0f; };
+    sun_spectrum_ *= reflectance_spectrum({ratio(sun.irradiance.x, rgb.x),
+                                           ratio(sun.irradiance.y, rgb.y),
+                                           ratio(sun.irradiance.z, rgb.z)});
+  } else {
+    sun_spectrum_ = emission_spectrum(sun.irradiance);
+  }
+  // The sunlit plain below the horizon, as for RGB: its albedo x (sun + sky) / pi.
+  constexpr int kSteps = 32;
+  Spectrum sky_irradiance{};
+  for (int i = 0; i < kSteps; ++i) {
+    const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / kSteps;
+    for (int j = 0; j < 2 * kSteps; ++j) {
+      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / (2 * kSteps);
+      sky_irradiance += above_horizon_spectral(direction_of(theta, phi)) *
+                        (std::cos(theta) * std::sin(theta));
+    }
+  }
+  sky_irradiance *= (0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps));
+  const float sun_cos = static_cast<float>(std::max(sun.direction.z, 0.0));
+  below_horizon_spectrum_ = ground * (sun_spectrum_ * sun_cos + sky_irradiance) * (1.0f / kPi);
+}
+
+Spectrum SkyModel::above_horizon_spectral(const Vec3f& d) const {
+  if (!spectral_sky_) return emission_spectrum(above_horizon(d));
+  double channels[11];
+  spectral_sky_->channels_cos(d.z, dot(d, sun_direction_), channels);
+  Spectrum out;
+  for (int k = 0; k < kSpectrumBins; ++k) {
+    const auto& row = sky_bins_[static_cast<std::size_t>(k)];
+    float sum = 0.0f;
+    for (std::size_t w = 0; w < row.size(); ++w) sum += row[w] * static_cast<float>(channels[w]);
+    out[k] = sum;
+  }
+  return out;
+}
+
+Spectrum SkyModel::spectral_radiance(const Vec3f& direction) const {
+  return direction.z >= 0.0f ? above_horizon_spectral(direction) : below_horizon_spectrum_;
+}
+
+Spectrum SkyModel::sun_spectral_radiance(const Vec3f& direction) const {
+  // The disc's luminance profile for every wavelength: the spectrum of its whole irradiance
+  // times the share of it this point of the disc carries.
+  const float y = luminance(sun_radiance(direction));
+  if (y <= 0.0f) return {};
+  const float total = luminance(spectrum_to_rgb(sun_spectrum_));
+  return total > 0.0f ? sun_spectrum_ * (y / total) : Spectrum{};
+}
+
+Spectrum SkyModel::horizon_band_spectral(const Vec3f& d) const {
+  constexpr int kSamples = 8;
+  constexpr float kBand = 2.0f * kPi / 180.0f;
+  const float h = std::sqrt(d.x * d.x + d.y * d.y);
+  const Vec3f level = h > 0.0f ? Vec3f{d.x / h, d.y / h, 0.0f} : Vec3f{1.0f, 0.0f, 0.0f};
+  Spectrum sum{};
+  for (int i = 0; i < kSamples; ++i) {
+    const float e = kBand * (static_cast<float>(i) + 0.5f) / kSamples;
+    sum += above_horizon_spectral(level * std::cos(e) + Vec3f{0.0f, 0.0f, std::sin(e)});
+  }
+  return sum * (1.0f / kSamples);
 }
 
 Vec3f SkyModel::horizon_band_radiance(const Vec3f& d) const {

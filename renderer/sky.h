@@ -8,6 +8,7 @@
 
 #include "core/vec3.h"
 #include "renderer/scene.h"
+#include "renderer/spectrum.h"
 
 namespace landsim::renderer {
 
@@ -42,13 +43,25 @@ class SkyModel {
   // scatters toward the viewer from skylight, taken as isotropic.
   Vec3f mean_radiance() const { return mean_radiance_; }
 
+  // Spectral counterparts (W m^-2 sr^-1 nm^-1 per bin; docs/SPECTRAL.md): Hosek-Wilkie's
+  // spectral tables (the sun's and the sky's, continued past 720 nm by renderer/near_infrared),
+  // scaled so that the sun's spectrum has the scene's sun irradiance as its colour; the other
+  // models' RGB made spectra (emission_spectrum).
+  Spectrum spectral_radiance(const Vec3f& direction) const;
+  Spectrum sun_spectral_radiance(const Vec3f& direction) const;
+  // On a surface facing the sun, W m^-2 nm^-1.
+  const Spectrum& sun_spectral_irradiance() const { return sun_spectrum_; }
+  Spectrum horizon_band_spectral(const Vec3f& direction) const;
+
   // A direction drawn in proportion to luminance x solid angle; `pdf` per steradian.
   Vec3f sample(float u1, float u2, float& pdf) const;
   float pdf(const Vec3f& direction) const;
 
  private:
   Vec3f above_horizon(const Vec3f& direction) const;
+  Spectrum above_horizon_spectral(const Vec3f& direction) const;
   void build_table();
+  void build_spectra(const Sun& sun, double elevation, Vec3f ground_albedo);
 
   void build_sun_disc(const Sun& sun, double elevation);  // elevation in radians
 
@@ -61,6 +74,11 @@ class SkyModel {
   Vec3f sky_irradiance_;
   Vec3f below_horizon_;
   Vec3f mean_radiance_;
+  // Spectral: the Hosek-Wilkie sky at its 11 wavelengths, and per bin the weight of each of
+  // them (linear interpolation averaged over the bin; past 720 nm the near-infrared model).
+  std::unique_ptr<HosekWilkieSky> spectral_sky_;
+  std::array<std::array<float, 11>, kSpectrumBins> sky_bins_{};
+  Spectrum sun_spectrum_, below_horizon_spectrum_;
   // Sampling table: rows of theta (0 = zenith), columns of phi.
   std::vector<float> weights_;   // per cell
   std::vector<float> row_cdf_;   // kRows + 1

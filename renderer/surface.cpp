@@ -9,6 +9,7 @@
 #include "renderer/glossy.h"
 #include "renderer/integrator.h"
 #include "renderer/object_texture.h"
+#include "renderer/spectral_colour.h"
 
 namespace landsim::renderer {
 namespace {
@@ -41,12 +42,24 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
     const GrassType& g = scene.grass.types[static_cast<std::size_t>(hit.grass_type - 1)];
     // Blades vary as the ground beneath them does.
     const float f = ground_variation(scene.ground.shading, 4 + hit.grass_type, p.x, p.y);
-    return {g.reflectance * f, g.transmittance * f};
+    SurfaceMaterial m{g.reflectance * f, g.transmittance * f};
+    m.optics = scene.grass.optics[static_cast<std::size_t>(hit.grass_type - 1)].get();
+    m.optics_factor = {f, f, f};
+    return m;
   }
   if (hit.prototype < 0) {
     const ShadedGround g = shade_ground(scene.ground, scene.ground.material_id(hit.primitive), p,
                                         normalize(Vec3(hit.shading_normal)), scene.sun.direction);
-    return {g.albedo, {}, g.water};
+    SurfaceMaterial m{g.albedo, {}, g.water};
+    m.optics = scene.ground.optics[static_cast<std::size_t>(g.material)].get();
+    if (m.optics) {
+      // What the shading did to the material's own albedo, applied to its spectrum.
+      const Vec3f base = scene.ground.material(static_cast<std::uint8_t>(g.material)).albedo;
+      const auto ratio = [](float a, float b) { return b > 0.0f ? a / b : 1.0f; };
+      m.optics_factor = {ratio(g.albedo.x, base.x), ratio(g.albedo.y, base.y),
+                         ratio(g.albedo.z, base.z)};
+    }
+    return m;
   }
   const TreePrototype& proto = scene.prototypes[static_cast<std::size_t>(hit.prototype)];
   if (hit.object == ObjectClass::leaf) {
@@ -55,12 +68,29 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
     const Vec3f tint =
         proto.leaf_tint(hit.far_primitive ? leaves.vigour_of_item(hit.primitive)
                                           : leaves.vigour_of_triangle(hit.primitive));
-    return {proto.leaf_reflectance * tint, proto.leaf_transmittance * tint};
+    SurfaceMaterial m{proto.leaf_reflectance * tint, proto.leaf_transmittance * tint};
+    m.optics = proto.leaf_optics.get();
+    m.optics_factor = tint;
+    return m;
   }
   // Far stem lines carry no texture coordinates: the texture's mean (1) stands for it.
   if (proto.bark_texture && !hit.far_primitive)
     return {proto.bark_albedo * proto.bark_texture->factor(hit.u, hit.v), {}};
   return {proto.bark_albedo, {}};
+}
+
+SpectralMaterial spectral_material(const SurfaceMaterial& m) {
+  SpectralMaterial s;
+  if (m.optics) {
+    const Spectrum factor = reflectance_spectrum(m.optics_factor);
+    s.reflectance = m.optics->reflectance * factor;
+    s.transmittance = m.optics->transmittance * factor;
+  } else {
+    s.reflectance = reflectance_spectrum(m.reflectance);
+    if (m.two_sided()) s.transmittance = reflectance_spectrum(m.transmittance);
+  }
+  if (m.glossy()) s.specular = reflectance_spectrum(m.specular);
+  return s;
 }
 
 ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask) {
@@ -80,13 +110,43 @@ FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
           hit.instance, species, hit.level, static_cast<std::uint32_t>(hit.object_index + 1)};
 }
 
-Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
-              bool& front) {
+// cos / pi toward `l`, or 0 when the light cannot arrive from there (behind an opaque
+// surface, or between the shading and geometric normals); `front` tells the side.
+static float lambert_weight(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng,
+                            const Vec3f& l, bool& front) {
   const float cos_n = dot(n, l);
   front = cos_n > 0.0f && dot(ng, l) > 0.0f;
   const bool back = m.two_sided() && cos_n < 0.0f && dot(ng, l) < 0.0f;
-  if (!front && !back) return {};
-  return (front ? m.reflectance : m.transmittance) * (std::abs(cos_n) / kPi);
+  return front || back ? std::abs(cos_n) / kPi : 0.0f;
+}
+
+Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
+              bool& front) {
+  const float w = lambert_weight(m, n, ng, l, front);
+  if (w == 0.0f) return {};
+  return (front ? m.reflectance : m.transmittance) * w;
+}
+
+Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m,
+                         const ShadingPoint& v, const Vec3f& l, bool& front) {
+  if (!m.glossy()) {
+    const float w = lambert_weight(m, v.n, v.ng, l, front);
+    if (w == 0.0f) return {};
+    return (front ? s.reflectance : s.transmittance) * w;
+  }
+  front = dot(v.n, l) > 0.0f && dot(v.ng, l) > 0.0f;
+  if (!front) return {};
+  // As the RGB reflected_light: the base under what the coat lets through, plus the coat.
+  const Vec3f h = normalize(v.wo + l);
+  const float weight = schlick_weight(dot(v.wo, h));
+  const float lobe = ggx_lobe(m.alpha, v.n, v.wo, l);
+  const float diffuse = dot(v.n, l) / kPi;
+  Spectrum out;
+  for (int k = 0; k < kSpectrumBins; ++k) {
+    const float fresnel = s.specular[k] + (1.0f - s.specular[k]) * weight;
+    out[k] = s.reflectance[k] * (1.0f - fresnel) * diffuse + fresnel * lobe;
+  }
+  return out;
 }
 
 Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l,

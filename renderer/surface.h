@@ -21,9 +21,20 @@ struct SurfaceMaterial {
   bool water = false;   // adds a Fresnel mirror (Schlick, F0 = 0.02) over the diffuse part
   Vec3f specular{};     // the coat's normal reflectance F0; zero: no coat (renderer/glossy.h)
   float alpha = 0.0f;   // the coat's GGX roughness
+  // The material's own spectra (leaves, grass, soils), which the colours above summarise:
+  // the spectral material is these times the upsampled `optics_factor` (the variation, tint
+  // or vigour that multiplied the colours). Null: the colours upsampled.
+  const SpectralOptics* optics = nullptr;
+  Vec3f optics_factor{1.0f, 1.0f, 1.0f};
   bool two_sided() const { return max_component(transmittance) > 0.0f; }
   bool glossy() const { return max_component(specular) > 0.0f; }
 };
+
+// The path tracer's view of a SurfaceMaterial: per wavelength bin.
+struct SpectralMaterial {
+  Spectrum reflectance, transmittance, specular;
+};
+SpectralMaterial spectral_material(const SurfaceMaterial& m);
 
 struct ShadingPoint {
   Vec3f p;             // on the surface
@@ -55,6 +66,10 @@ Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const V
 // but glossy ones, which add the coat's GGX lobe and dim the diffuse part by what the coat
 // reflects.
 Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l, bool& front);
+
+// The same per wavelength bin, for the path tracer: `s` is spectral_material(m).
+Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m,
+                         const ShadingPoint& v, const Vec3f& l, bool& front);
 
 // The Fresnel reflectance of water seen along `direction` (0 for other materials).
 float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng);

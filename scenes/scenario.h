@@ -12,6 +12,7 @@
 #include "featuremaps/cover.h"
 #include "featuremaps/vegetation_map.h"
 #include "renderer/scene.h"
+#include "renderer/sensor_band.h"
 #include "terrain/dem_loader.h"
 #include "trees/species.h"
 
@@ -102,6 +103,9 @@ struct GroundMaterials {
   Vec3f rock{0.35f, 0.33f, 0.30f};
   Vec3f water{0.02f, 0.03f, 0.04f};
   Vec3f road{0.12f, 0.12f, 0.12f};
+  // Soil moisture 0-1: the soil colours are dry soil's; moisture darkens their spectra as
+  // the measured wet soil is darker (docs/SPECTRAL.md "Soil").
+  double soil_moisture = 0.0;
   // Variation, rules and texture size (renderer/ground_shading.h); its textures are loaded
   // from `texture_files` (resolved paths, by material id; empty: none) when the scene is built.
   renderer::GroundShading shading = scenario_ground_shading();
@@ -160,6 +164,15 @@ struct ObjectSettings {
   std::vector<ObjectMaterialOverride> materials;
 };
 
+// [[bands]]: a sensor band the image set also measures (docs/SPECTRAL.md).
+struct BandSettings {
+  std::string name;
+  std::string description;  // "box 630-690 nm", or the response file's path
+  std::vector<renderer::ResponsePoint> response;
+};
+// Bands per image set (renderer/integrator.h kMaxBands).
+inline constexpr int kMaxSensorBands = 8;
+
 struct Scenario;
 // Whether any [[species]] or [[grass]] has a cover (and so needs no feature map).
 bool has_cover(const Scenario& s);
@@ -179,6 +192,7 @@ struct Scenario {
   RenderSection render;
   WindSettings wind;
   std::vector<ObjectSettings> objects;
+  std::vector<BandSettings> bands;
 };
 
 // Limit on frames per scenario (an image set is views x frames images).

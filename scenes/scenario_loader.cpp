@@ -11,6 +11,7 @@
 #include "featuremaps/placement.h"
 #include "params/table_reader.h"
 #include "scenes/scenario.h"
+#include "scenes/sensor_bands.h"
 #include "scenes/solar_position.h"
 #include "terrain/raster_files.h"
 
@@ -427,6 +428,10 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     const std::optional<std::string> text = terrain::read_text_file(species_file);
     if (!text) r.fail("file", "species file not found: " + species_file);
     s.species = trees::parse_species(*text, species_file);
+    if (r.has("leaf_optics")) {
+      TableReader optics = r.table("leaf_optics");
+      s.species.colours.leaf_optics = trees::read_leaf_contents(optics);
+    }
     s.variants = static_cast<int>(r.integer("variants", 1, 256, 4));
     s.density_per_ha = r.number("density_per_ha", Range{0.0, 100000.0, true}, 200.0);
     s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, 0.1);
@@ -575,6 +580,7 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file,
   g.rock = to_vec3f(r.vec3("rock", kUnit, Vec3(g.rock)));
   g.water = to_vec3f(r.vec3("water", kUnit, Vec3(g.water)));
   g.road = to_vec3f(r.vec3("road", kUnit, Vec3(g.road)));
+  g.soil_moisture = r.number("soil_moisture", kUnit, 0.0);
   read_per_material(r, "variation", "a fraction 0-1, or a table of material = fraction",
                     "0.15 (road 0.05, rock 0.2, water 0)", kUnit, g.shading.variation);
   if (const auto sc = r.optional_numbers("variation_scales", 2, kPositive))
@@ -668,10 +674,59 @@ std::vector<ObjectSettings> read_objects(const toml::table& root, const std::str
   return out;
 }
 
+// [[bands]]: sensor bands, each a name and a response (a file, or a box).
+std::vector<BandSettings> read_bands(const toml::table& root, const std::string& file,
+                                     const std::string& base_dir) {
+  std::vector<BandSettings> out;
+  const toml::array* a = tables(root, "bands", file);
+  if (a == nullptr) return out;
+  std::set<std::string> names;
+  static const std::regex kName("[A-Za-z0-9_-]{1,32}");
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    TableReader r(*a->get(i)->as_table(), "bands[" + std::to_string(i) + "]", file);
+    if (i >= static_cast<std::size_t>(kMaxSensorBands))
+      r.fail("name", "at most " + std::to_string(kMaxSensorBands) + " bands per image set");
+    BandSettings b;
+    b.name = r.string("name");
+    if (!std::regex_match(b.name, kName))
+      r.fail("name", "expected 1-32 letters, digits, '_' or '-' (it names the EXR layer band." +
+                         b.name + ")");
+    if (!names.insert(b.name).second)
+      r.fail("name", "the name '" + b.name + "' is used by another band");
+    const bool has_file = r.has("response");
+    const bool has_box = r.has("centre") || r.has("width");
+    if (has_file == has_box)
+      r.fail(has_file ? "centre" : "response",
+             "give either response (a CSV file of wavelength, response) or centre and width "
+             "(a box, nm)");
+    if (has_file) {
+      const std::string path = resolve(base_dir, r.string("response"));
+      const std::optional<std::string> text = terrain::read_text_file(path);
+      if (!text) r.fail("response", "cannot read " + path + " (expected a CSV of wavelength, response)");
+      b.response = parse_band_response(*text, path);
+      b.description = "response " + path;
+    } else {
+      const double centre = r.number("centre", Range{renderer::kFirstWavelength,
+                                                     renderer::kLastWavelength});
+      const double width = r.number("width", Range{0.0, 640.0, true});
+      if (centre - 0.5 * width < renderer::kFirstWavelength - 1e-9 ||
+          centre + 0.5 * width > renderer::kLastWavelength + 1e-9)
+        r.fail("width", fmt::format("the box {}-{} nm leaves 380-1020 nm, where landsim's "
+                                    "spectra are",
+                                    centre - 0.5 * width, centre + 0.5 * width));
+      b.response = renderer::box_response(centre, width);
+      b.description = fmt::format("box {}-{} nm", centre - 0.5 * width, centre + 0.5 * width);
+    }
+    r.finish();
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
-      "terrain", "sun",    "views", "render", "featuremaps", "species",
-      "grass",   "ground", "wind",  "sky",    "haze",        "objects"};
+      "terrain", "sun",    "views", "render", "featuremaps", "species", "grass",
+      "ground",  "wind",   "sky",   "haze",   "objects",     "bands"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
@@ -680,7 +735,7 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
         ": unknown table or key '" + std::string(key.str()) + "'" +
         params::did_you_mean(key.str(), std::vector<std::string>(kKnown.begin(), kKnown.end())) +
         " (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
-        "haze, views, render, objects)");
+        "haze, views, render, objects, bands)");
   }
 }
 
@@ -752,6 +807,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.sky = read_sky(sub_table(root, "sky", source, false), source);
   s.haze = read_haze(root, source);
   s.objects = read_objects(root, source, base_dir);
+  s.bands = read_bands(root, source, base_dir);
   return s;
 }
 

@@ -1,5 +1,7 @@
 #include "scenes/scene_builder.h"
 
+#include "renderer/vegetation_optics.h"
+
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
@@ -175,6 +177,26 @@ void set_ground_materials(const Scenario& s, renderer::Scene& scene) {
   scene.ground.materials.push_back({scene.ground.albedo, false});
 }
 
+// The spectra of the materials that have their own (docs/SPECTRAL.md "Materials"): bare
+// ground (the terrain's own and soil) from the measured soils, the ground under grass and
+// the blades as vegetation; rock, road, water and the surroundings upsample their colours.
+void set_spectral_optics(const Scenario& s, renderer::Scene& scene) {
+  auto& optics = scene.ground.optics;
+  const double moisture = s.ground.soil_moisture;
+  optics[0] = std::make_shared<renderer::SpectralOptics>(
+      renderer::soil_optics(scene.ground.albedo, moisture));
+  optics[4] = std::make_shared<renderer::SpectralOptics>(
+      renderer::soil_optics(scene.ground.materials[3].albedo, moisture));
+  for (std::size_t t = 0; t < 3; ++t) {
+    const renderer::GrassType& g = scene.grass.types[t];
+    scene.grass.optics[t] = std::make_shared<renderer::SpectralOptics>(
+        renderer::coloured_leaf_optics(g.reflectance, g.transmittance));
+    const Vec3f under = scene.ground.materials[4 + t].albedo;
+    optics[5 + t] = std::make_shared<renderer::SpectralOptics>(
+        renderer::coloured_leaf_optics(under, {}));
+  }
+}
+
 // The ground mesh: the grid's own, or with context grids the grid and its surroundings; in
 // the latter case context triangles take kSurroundings (feature maps may override it).
 void add_ground_mesh(const Scenario& s, const terrain::ElevationGrid& grid,
@@ -290,6 +312,8 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;
+  for (const BandSettings& b : scenario.bands)
+    scene.bands.push_back(renderer::sensor_band(b.name, b.response));
   if (map && !scenario.species.empty())
     add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
   // Objects after the trees: each clears the trunks within its radius.
@@ -310,6 +334,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   set_ground_materials(scenario, scene);
   scene.ground.edge_albedo = detail::edge_albedo(scene.ground, grid, scene.origin);
   scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();
+  set_spectral_optics(scenario, scene);
   return scene;
 }
 

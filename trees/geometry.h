@@ -9,11 +9,13 @@
 // every mass, then rank 1 of every mass, and so on. "Draw the first n items of every mass" then is
 // a prefix of each array, so one buffer serves every level of detail.
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "core/vec3.h"
+#include "trees/leaf_contents.h"
 
 namespace landsim::trees {
 
@@ -92,6 +94,9 @@ struct TreeColours {
   Vec3f bark{0.30f, 0.24f, 0.18f};  // linear RGB reflectance
   Vec3f leaf{0.12f, 0.25f, 0.06f};
   Vec3f leaf_weak{0.30f, 0.30f, 0.09f};  // leaves of the weakest shoots (self-organising core)
+  // The leaves' PROSPECT contents ([leaf_optics]): when given, the leaves' spectra and colour
+  // come from them (docs/SPECTRAL.md), and `leaf` is their colour; else `leaf` is the colour.
+  std::optional<LeafContents> leaf_optics;
 };
 
 struct TreeGeometry {

@@ -48,6 +48,24 @@ void read_colours(params::TableReader t, TreeColours& colours) {
   t.finish();
 }
 
+}  // namespace
+
+LeafContents read_leaf_contents(params::TableReader& t) {
+  const LeafContents d;
+  LeafContents c;
+  c.structure = t.number("structure", {1.0, 3.5}, d.structure);
+  c.chlorophyll = t.number("chlorophyll", {0.0, 120.0}, d.chlorophyll);
+  c.carotenoids = t.number("carotenoids", {0.0, 40.0}, d.carotenoids);
+  c.anthocyanins = t.number("anthocyanins", {0.0, 40.0}, d.anthocyanins);
+  c.brown = t.number("brown", {0.0, 2.0}, d.brown);
+  c.water = t.number("water", {0.0, 0.1}, d.water);
+  c.dry_matter = t.number("dry_matter", {0.0, 0.05}, d.dry_matter);
+  t.finish();
+  return c;
+}
+
+namespace {
+
 std::size_t line_of(std::string_view text, std::ptrdiff_t offset) {
   const auto end = text.begin() +
                    std::clamp<std::ptrdiff_t>(offset, 0, static_cast<std::ptrdiff_t>(text.size()));
@@ -95,6 +113,10 @@ Species parse_species_toml(std::string_view text, const std::string& source,
   const std::string core = r.choice("core", kCoreNames);
   s.name = r.string("name", std::filesystem::path(source).stem().string());
   read_colours(r.table("colours"), s.colours);
+  if (r.has("leaf_optics")) {
+    params::TableReader optics = r.table("leaf_optics");
+    s.colours.leaf_optics = read_leaf_contents(optics);
+  }
   if (core == "graph_paths")
     s.parameters = graph_paths::read_parameters(r, source);
   else if (core == "self_organizing")

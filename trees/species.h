@@ -18,6 +18,7 @@
 #include "trees/weber_penn/parameters.h"
 
 namespace landsim::params {
+class TableReader;
 struct KeyDeclaration;
 using Declarations = std::vector<KeyDeclaration>;
 }  // namespace landsim::params
@@ -47,6 +48,10 @@ bool uses_core(const Species& species) {
 // By extension: .toml (any core) or .xml (Arbaro's Weber & Penn format). Throws InputError
 // naming the file, the line and the parameter.
 Species load_species(const std::filesystem::path& file);
+
+// A [leaf_optics] table (species files, and a scenario's [species.leaf_optics]): PROSPECT's
+// structure and contents, each defaulting to the typical green leaf (trees/leaf_contents.h).
+LeafContents read_leaf_contents(params::TableReader& t);
 // Parses `text` as the format `source`'s extension names.
 Species parse_species(std::string_view text, const std::string& source);
 // `declared`, when given, collects every key the file's core declares (docs tests).

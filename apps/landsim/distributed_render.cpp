@@ -21,8 +21,8 @@ double since(Clock::time_point t) {
 }
 
 // Asks rank 0 for chunks until told the image is done; sends each chunk's pixels back.
-void work(const renderer::ViewRenderer& tiles, const renderer::View& view) {
-  renderer::Film film(view.width, view.height);
+void work(const renderer::ViewRenderer& tiles) {
+  renderer::Film film = tiles.new_film();
   for (;;) {
     MPI_Send(nullptr, 0, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
     std::array<int, 2> chunk{};
@@ -42,12 +42,12 @@ void work(const renderer::ViewRenderer& tiles, const renderer::View& view) {
 
 class Coordinator {
  public:
-  Coordinator(const renderer::ViewRenderer& tiles, const renderer::View& view,
+  Coordinator(const renderer::ViewRenderer& tiles,
               const renderer::RenderOptions& options, const MpiSession& session)
       : tiles_(tiles),
         options_(options),
         session_(session),
-        film_(view.width, view.height),
+        film_(tiles.new_film()),
         count_(tiles.tile_count()),
         done_(static_cast<std::size_t>(count_), false) {
     next_ = options.resume ? renderer::resume_checkpoint(options, film_, count_) : 0;
@@ -155,10 +155,10 @@ renderer::Film render_distributed(const renderer::Renderer& renderer, const rend
   DistributedStats local;
   DistributedStats& s = stats != nullptr ? *stats : local;
   if (session.rank() != 0) {
-    work(tiles, view);
+    work(tiles);
     return renderer::Film(0, 0);
   }
-  return Coordinator(tiles, view, options, session).run(s);
+  return Coordinator(tiles, options, session).run(s);
 }
 
 }  // namespace landsim::app

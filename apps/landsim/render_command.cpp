@@ -70,7 +70,7 @@ void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
 renderer::ImageMetadata metadata(const scenes::Scenario& s, const scenes::ViewSettings& v,
                                  const renderer::Scene& scene) {
   const Vec3& sun = scene.sun.direction;
-  return {{"version", LANDSIM_VERSION},
+  renderer::ImageMetadata out = {{"version", LANDSIM_VERSION},
           {"scenario", s.source},
           {"scenario_hash", s.text_hash},
           {"view", v.name},
@@ -87,6 +87,9 @@ renderer::ImageMetadata metadata(const scenes::Scenario& s, const scenes::ViewSe
                                   : std::string("none")},
           {"spp", std::to_string(s.render.spp)},
           {"seed", std::to_string(s.render.seed)}};
+  // What each band layer measures: its box or response file.
+  for (const scenes::BandSettings& b : s.bands) out.emplace_back("band." + b.name, b.description);
+  return out;
 }
 
 }  // namespace

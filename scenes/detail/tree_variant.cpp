@@ -1,8 +1,11 @@
 #include "scenes/detail/tree_variant.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "core/counter_rng.h"
+#include "renderer/spectral_colour.h"
+#include "renderer/vegetation_optics.h"
 #include "trees/species.h"
 
 namespace landsim::scenes::detail {
@@ -10,6 +13,37 @@ namespace {
 
 std::uint64_t variant_seed(std::uint64_t seed, int bit, std::uint32_t variant) {
   return hash_combine(hash_combine(seed, static_cast<std::uint64_t>(bit)), variant);
+}
+
+// A variant's leaf contents (docs/SPECTRAL.md "Seasons"): each pigment varied by up to
+// +-`variation` and the structure by half that (brighter or darker leaves); young spring
+// leaves with half the chlorophyll; autumn leaves, each variant its own way, yellow
+// (carotenoids unmasked), orange or red (anthocyanins), with brown pigments.
+trees::LeafContents seasonal_leaf(trees::LeafContents c, trees::Season season, float variation,
+                                  const CounterRng& r) {
+  if (season == trees::Season::spring) {
+    c.chlorophyll *= 0.5;
+    c.carotenoids *= 0.6;
+  } else if (season == trees::Season::autumn) {
+    struct Turn {
+      double chlorophyll, carotenoids, anthocyanins, brown;
+    };
+    static constexpr Turn kAutumn[3] = {{4.0, 10.0, 0.0, 0.2}, {3.0, 8.0, 5.0, 0.4},
+                                        {3.0, 4.0, 15.0, 0.3}};
+    const Turn& t = kAutumn[std::min(2, static_cast<int>(r.uniform(4) * 3.0f))];
+    c.chlorophyll = t.chlorophyll;
+    c.carotenoids = t.carotenoids;
+    c.anthocyanins = t.anthocyanins;
+    c.brown = t.brown;
+  }
+  const auto vary = [&](std::uint32_t dim, double amount) {
+    return 1.0 + amount * (2.0 * r.uniform(dim) - 1.0);
+  };
+  c.chlorophyll *= vary(0, variation);
+  c.carotenoids *= vary(1, variation);
+  c.anthocyanins *= vary(2, variation);
+  c.structure = std::clamp(c.structure * vary(3, 0.5 * variation), 1.0, 3.5);
+  return c;
 }
 
 }  // namespace
@@ -59,6 +93,21 @@ renderer::TreePrototype make_tree_variant(const Scenario& s, std::uint32_t speci
     }
   }
   p.leaf_transmittance = p.leaf_reflectance * renderer::kLeafTransmittanceRatio;
+  const trees::GroupGeometry& leaves = p.geometry.group(trees::Group::leaves);
+  if (leaves.triangles.triangle_count() == 0 && leaves.points.point_count() == 0) return p;
+  if (const auto& contents = sp.species.colours.leaf_optics) {
+    // The leaves' spectra from their contents, varied per variant and by season; their
+    // colour (the film's albedo, the POV-Ray export, the comparable tracer) follows.
+    const trees::LeafContents leaf =
+        seasonal_leaf(*contents, sp.evergreen ? trees::Season::summer : season, v, r);
+    auto optics = std::make_shared<renderer::SpectralOptics>(renderer::leaf_spectral_optics(leaf));
+    p.leaf_reflectance = renderer::reflectance_rgb(optics->reflectance);
+    p.leaf_transmittance = renderer::reflectance_rgb(optics->transmittance);
+    p.leaf_optics = std::move(optics);
+  } else {
+    p.leaf_optics = std::make_shared<renderer::SpectralOptics>(
+        renderer::coloured_leaf_optics(p.leaf_reflectance, p.leaf_transmittance));
+  }
   return p;
 }
 

@@ -1,0 +1,24 @@
+#pragma once
+// Sensor bands (docs/SPECTRAL.md "Bands"): a response curve over wavelength, piecewise linear
+// through its points and zero outside them, integrated exactly over each spectral bin, so
+// that a band's radiance is the sum over bins of spectral radiance times the bin's weight.
+#include <string>
+#include <vector>
+
+#include "renderer/scene.h"
+
+namespace landsim::renderer {
+
+struct ResponsePoint {
+  double wavelength_nm = 0.0;
+  double response = 0.0;  // relative, >= 0
+};
+
+// The band of `points` (wavelengths non-decreasing; two points at one wavelength make a
+// step). Its weight per bin is the integral of the response over the bin, in nm.
+SpectralBand sensor_band(std::string name, const std::vector<ResponsePoint>& points);
+
+// A box: response 1 from centre - width / 2 to centre + width / 2, 0 elsewhere.
+std::vector<ResponsePoint> box_response(double centre_nm, double width_nm);
+
+}  // namespace landsim::renderer

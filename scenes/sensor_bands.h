@@ -1,0 +1,19 @@
+#pragma once
+// A sensor band's response file (docs/SCENARIO.md [[bands]]): CSV rows of wavelength (nm)
+// and relative response, read with one clear message per mistake (file:line).
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "renderer/sensor_band.h"
+
+namespace landsim::scenes {
+
+// Parses `text` (the file `file`): rows "wavelength, response" separated by commas, tabs or
+// spaces; '#' comments, blank lines and one header line are skipped. Wavelengths must not
+// decrease, responses are >= 0 and not all zero, and the response must be zero outside
+// 380-1020 nm (landsim's spectra). Throws InputError.
+std::vector<renderer::ResponsePoint> parse_band_response(std::string_view text,
+                                                         const std::string& file);
+
+}  // namespace landsim::scenes
