@@ -174,12 +174,15 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
       return nm > NearInfrared::kJoin ? e * infrared.sun_ratio(nm) : e;
     });
     // The scene's sun irradiance (which a scenario may set) decides its colour: the model's
-    // spectrum times the upsampled ratio of the two colours (a flat 1 when they agree).
-    const Vec3f rgb = spectrum_to_rgb(sun_spectrum_);
+    // spectrum times the upsampled ratio of the two colours (a flat 1 when they agree),
+    // repeated until the colour is met (a product of spectra is not the product of colours).
     const auto ratio = [](float want, float have) { return have > 0.0f ? want / have : 0.0f; };
-    sun_spectrum_ *= reflectance_spectrum({ratio(sun.irradiance.x, rgb.x),
-                                           ratio(sun.irradiance.y, rgb.y),
-                                           ratio(sun.irradiance.z, rgb.z)});
+    for (int pass = 0; pass < 4; ++pass) {
+      const Vec3f rgb = spectrum_to_rgb(sun_spectrum_);
+      sun_spectrum_ *= reflectance_spectrum({ratio(sun.irradiance.x, rgb.x),
+                                             ratio(sun.irradiance.y, rgb.y),
+                                             ratio(sun.irradiance.z, rgb.z)});
+    }
   } else {
     sun_spectrum_ = emission_spectrum(sun.irradiance);
   }

@@ -17,7 +17,7 @@ extern const std::string_view kSoilReflectanceTxt;
 namespace {
 
 constexpr double kRedEdgeStart = 700.0, kRedEdgeEnd = 750.0;  // nm
-constexpr int kLastRedBin = 15;                               // 680-700 nm
+constexpr int kFirstRedBin = 12, kLastRedBin = 15;            // 620-700 nm
 
 // The share of the near-infrared spectrum in bin k: 0 below the red edge, 1 above it.
 float infrared_share(int k) {
@@ -65,18 +65,27 @@ SpectralOptics leaf_spectral_optics(const trees::LeafContents& leaf) {
 
 SpectralOptics coloured_leaf_optics(const Vec3f& reflectance, const Vec3f& transmittance) {
   static const LeafOptics typical = leaf_optics(trees::LeafContents{});
-  return {joined(reflectance_spectrum(reflectance), typical.reflectance),
-          joined(reflectance_spectrum(transmittance), typical.transmittance)};
+  SpectralOptics out{joined(reflectance_spectrum(reflectance), typical.reflectance),
+                     joined(reflectance_spectrum(transmittance), typical.transmittance)};
+  // A leaf gives back at most what it receives: a pale colour's transmittance yields.
+  for (int k = 0; k < kSpectrumBins; ++k)
+    out.transmittance[k] = std::min(out.transmittance[k], 1.0f - out.reflectance[k]);
+  return out;
 }
 
 SpectralOptics soil_optics(const Vec3f& dry_colour, double moisture) {
   const Soils& s = soils();
   const Spectrum visible = reflectance_spectrum(dry_colour);
-  // Past the red, the measured dry soil's shape from the colour's red.
+  // Past the red, the measured dry soil's shape, scaled by the colour's red over the measured
+  // soil's (620-700 nm means): the soil keeps its measured ratio of near infrared to red.
   Spectrum continued = visible;
-  const float red = visible[kLastRedBin], measured_red = s.dry[kLastRedBin];
+  float red = 0.0f, measured_red = 0.0f;
+  for (int k = kFirstRedBin; k <= kLastRedBin; ++k) {
+    red += visible[k];
+    measured_red += s.dry[k];
+  }
   for (int k = kLastRedBin + 1; k < kSpectrumBins; ++k)
-    continued[k] = measured_red > 0.0f ? red * s.dry[k] / measured_red : red;
+    continued[k] = measured_red > 0.0f ? red * s.dry[k] / measured_red : visible[kLastRedBin];
   Spectrum dry = joined(visible, continued);
   const auto m = static_cast<float>(std::clamp(moisture, 0.0, 1.0));
   SpectralOptics out;
