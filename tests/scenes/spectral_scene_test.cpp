@@ -1,0 +1,168 @@
+// Spectral scenes (docs/SPECTRAL.md): leaf contents from species files and scenarios, seasons
+// as contents, soil spectra, and the NDVI example's canopy and bare soil.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/input_error.h"
+#include "renderer/camera.h"
+#include "renderer/render.h"
+#include "renderer/sky.h"
+#include "scenes/scenario.h"
+#include "scenes/scene_builder.h"
+#include "tests/support/temp_dir.h"
+#include "trees/species.h"
+
+namespace landsim::scenes {
+namespace {
+
+// Band-weighted mean of a spectrum (reflectance) or its integral (radiance).
+double band_sum(const renderer::Spectrum& s, const renderer::SpectralBand& b) {
+  double sum = 0.0;
+  for (int k = 0; k < renderer::kSpectrumBins; ++k) sum += b.weight[k] * s[k];
+  return sum;
+}
+
+Scenario ndvi_example(int width, int height, int spp) {
+  Scenario s = load_scenario(landsim::testing::source_file("scenes/examples/ndvi.toml"));
+  s.views[0].width = width;
+  s.views[0].height = height;
+  s.render.spp = spp;
+  return s;
+}
+
+TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
+  // Band reflectance factors: pi x band radiance / band irradiance on a level surface (a white
+  // panel's radiance, renderer/spectral_render_test). Measured NDVI: dense forest 0.7-0.9,
+  // bare soil 0.0-0.2.
+  const renderer::Scene scene = build_scene(ndvi_example(120, 80, 4));
+  ASSERT_EQ(scene.bands.size(), 4u);
+  ASSERT_EQ(scene.bands[2].name, "red");
+  ASSERT_EQ(scene.bands[3].name, "nir");
+  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
+  renderer::Spectrum e =
+      sky.sun_spectral_irradiance() * static_cast<float>(normalize(scene.sun.direction).z);
+  constexpr double kStep = std::numbers::pi / 180.0;
+  for (int i = 0; i < 90; ++i)
+    for (int j = 0; j < 360; ++j) {
+      const double t = (i + 0.5) * kStep, p = (j + 0.5) * kStep;
+      e += sky.spectral_radiance(Vec3f(Vec3{std::sin(t) * std::cos(p), std::sin(t) * std::sin(p),
+                                            std::cos(t)})) *
+           static_cast<float>(std::cos(t) * std::sin(t) * kStep * kStep);
+    }
+  const double e_red = band_sum(e, scene.bands[2]), e_nir = band_sum(e, scene.bands[3]);
+  // Mean reflectance factors of the stand (everything seen west of x = 290 m: leaves, bark
+  // and the ground in the gaps, as a sensor's pixel mixes them) and of the bare ground east
+  // of x = 310 m. Where a pixel looks: its camera ray at the film's depth.
+  const renderer::Camera camera(scene.views[0]);
+  double red[2] = {}, nir[2] = {};
+  int count[2] = {};
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const auto object = static_cast<renderer::ObjectClass>(film.object(x, y));
+      if (object == renderer::ObjectClass::sky || !std::isfinite(film.depth(x, y))) continue;
+      const renderer::Ray ray = camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      const double east = ray.origin.x + ray.direction.x * film.depth(x, y) + scene.origin.x;
+      const int which = east < 290.0 ? 0 : (east > 310.0 && object == renderer::ObjectClass::ground ? 1 : -1);
+      if (which < 0) continue;
+      red[which] += std::numbers::pi * film.band(x, y, 2) / e_red;
+      nir[which] += std::numbers::pi * film.band(x, y, 3) / e_nir;
+      ++count[which];
+    }
+  ASSERT_GT(count[0], 1000);
+  ASSERT_GT(count[1], 1000);
+  const double canopy = (nir[0] - red[0]) / (nir[0] + red[0]);
+  const double soil = (nir[1] - red[1]) / (nir[1] + red[1]);
+  EXPECT_GT(canopy, 0.7);
+  EXPECT_LT(canopy, 0.9);
+  EXPECT_GT(soil, 0.0);
+  EXPECT_LT(soil, 0.2);
+  // The luminance band times 683 is the luminance the RGB layers give, within the colour
+  // functions' fit (1%) and the 10 nm table.
+  double band_y = 0.0, rgb_y = 0.0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      band_y += 683.0 * film.band(x, y, 0);
+      rgb_y += film.luminance(x, y);
+    }
+  EXPECT_NEAR(band_y / rgb_y, 1.0, 0.02);
+}
+
+TEST(SpectralScene, LeafContentsComeFromSpeciesFilesAndScenarios) {
+  const trees::Species plain = trees::load_species(
+      landsim::testing::source_file("data/species/quaking_aspen.toml"));
+  EXPECT_FALSE(plain.colours.leaf_optics.has_value());
+  const trees::Species with = trees::parse_species(
+      "core = \"weber_penn\"\nLevels = 2\n[leaf_optics]\nchlorophyll = 25\nbrown = 0.4\n",
+      "leafy.toml");
+  ASSERT_TRUE(with.colours.leaf_optics.has_value());
+  EXPECT_EQ(with.colours.leaf_optics->chlorophyll, 25.0);
+  EXPECT_EQ(with.colours.leaf_optics->brown, 0.4);
+  EXPECT_EQ(with.colours.leaf_optics->structure, 1.5);  // the typical leaf's
+  const Scenario s = ndvi_example(32, 24, 1);
+  ASSERT_TRUE(s.species[0].species.colours.leaf_optics.has_value());
+  EXPECT_EQ(s.species[0].species.colours.leaf_optics->dry_matter, 0.009);
+  // Out of range: named with its key.
+  try {
+    trees::parse_species("core = \"weber_penn\"\n[leaf_optics]\nchlorophyll = 500\n", "bad.toml");
+    FAIL() << "accepted chlorophyll 500";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("chlorophyll"), std::string::npos) << e.what();
+  }
+}
+
+// The mean leaf reflectance of a scene's prototypes in bin k.
+double leaf_reflectance(const renderer::Scene& scene, int k) {
+  double sum = 0.0;
+  int n = 0;
+  for (const auto& p : scene.prototypes)
+    if (p.leaf_optics) {
+      sum += p.leaf_optics->reflectance[k];
+      ++n;
+    }
+  EXPECT_GT(n, 0);
+  return n > 0 ? sum / n : 0.0;
+}
+
+TEST(SpectralScene, SeasonsChangeTheLeavesContents) {
+  Scenario s = ndvi_example(32, 24, 1);
+  s.species[0].colour_variation = 0.0;
+  s.species[0].density_per_ha = 20;
+  const auto scene_in = [&](trees::Season season, bool evergreen) {
+    s.render.season = season;
+    s.species[0].evergreen = evergreen;
+    return build_scene(s);
+  };
+  const renderer::Scene summer = scene_in(trees::Season::summer, false);
+  const renderer::Scene autumn = scene_in(trees::Season::autumn, false);
+  const renderer::Scene spring = scene_in(trees::Season::spring, false);
+  const renderer::Scene evergreen = scene_in(trees::Season::autumn, true);
+  constexpr int kRed = 14, kGreen = 8, kInfrared = 24;  // 660-680, 540-560, 860-880 nm
+  // Autumn: chlorophyll gone, the red reflected; the near infrared stays a leaf's.
+  EXPECT_GT(leaf_reflectance(autumn, kRed), 2.0 * leaf_reflectance(summer, kRed));
+  EXPECT_GT(leaf_reflectance(autumn, kInfrared), 0.3);
+  // Spring: half the chlorophyll, a brighter green.
+  EXPECT_GT(leaf_reflectance(spring, kGreen), 1.2 * leaf_reflectance(summer, kGreen));
+  // Evergreens keep summer's leaves.
+  EXPECT_NEAR(leaf_reflectance(evergreen, kRed), leaf_reflectance(summer, kRed), 1e-6);
+  // The colour the RGB passes see follows the spectra: autumn is redder than green.
+  EXPECT_GT(autumn.prototypes[0].leaf_reflectance.x, autumn.prototypes[0].leaf_reflectance.y * 0.9f);
+  EXPECT_LT(summer.prototypes[0].leaf_reflectance.x, summer.prototypes[0].leaf_reflectance.y);
+}
+
+TEST(SpectralScene, BareGroundTakesTheMeasuredSoilAndItsMoisture) {
+  Scenario s = ndvi_example(32, 24, 1);
+  s.species.clear();
+  const renderer::Scene dry = build_scene(s);
+  s.ground.soil_moisture = 1.0;
+  const renderer::Scene wet = build_scene(s);
+  ASSERT_TRUE(dry.ground.optics[0]);
+  ASSERT_TRUE(dry.ground.optics[4]);
+  EXPECT_FALSE(dry.ground.optics[3]);  // rock: its colour upsampled
+  EXPECT_LT(wet.ground.optics[0]->reflectance[14], 0.5f * dry.ground.optics[0]->reflectance[14]);
+}
+
+}  // namespace
+}  // namespace landsim::scenes
