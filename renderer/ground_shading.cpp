@@ -74,8 +74,8 @@ ShadedGround shade_ground(const Ground& ground, int id, const Vec3& p, const Vec
   const auto& image = s.textures[static_cast<std::size_t>(id)];
   if (texture && image) albedo = albedo * triplanar(*image, p, n, s.texture_size);
   const float top = 1.0f;  // variation never makes the ground create light
-  return {Vec3f{std::min(albedo.x, top), std::min(albedo.y, top), std::min(albedo.z, top)},
-          m.water, id};
+  return {Vec3f{std::min(albedo.x, top), std::min(albedo.y, top), std::min(albedo.z, top)}, m.water,
+          id};
 }
 
 }  // namespace landsim::renderer

@@ -44,8 +44,8 @@ double elevation_parameter(double elevation) {
 }  // namespace
 
 HosekWilkieSky::HosekWilkieSky(double elevation, double turbidity, const Vec3& albedo)
-    : HosekWilkieSky(elevation, turbidity, std::array<double, 3>{albedo.x, albedo.y, albedo.z}.data(),
-                     3, false) {}
+    : HosekWilkieSky(elevation, turbidity,
+                     std::array<double, 3>{albedo.x, albedo.y, albedo.z}.data(), 3, false) {}
 
 HosekWilkieSky HosekWilkieSky::spectral(double elevation, double turbidity,
                                         const std::array<double, 11>& albedo) {
@@ -103,10 +103,10 @@ void HosekWilkieSky::channels_cos(double cos_theta_in, double cos_gamma_in, doub
     const double mie =
         (1.0 + cos_gamma * cos_gamma) / std::pow(1.0 + h * h - 2.0 * h * cos_gamma, 1.5);
     const double zenith_term = 1.0 + a * std::exp(b / (cos_theta + 0.01));
-    out[c] = zenith_term *
-             (cc + d * std::exp(e * gamma) + f * cos_gamma * cos_gamma + g * mie +
-              i * sqrt_cos_theta) *
-             overall_[c];
+    out[c] =
+        zenith_term *
+        (cc + d * std::exp(e * gamma) + f * cos_gamma * cos_gamma + g * mie + i * sqrt_cos_theta) *
+        overall_[c];
   }
 }
 

@@ -42,7 +42,7 @@ class HosekWilkieSky {
                  int channels, bool spectral);
 
   std::vector<std::array<double, 9>> parameters_;  // per channel, A..I, H in file order
-  std::vector<double> overall_;                     // L_M per channel (RGB: times 683)
+  std::vector<double> overall_;                    // L_M per channel (RGB: times 683)
 };
 
 class HosekWilkieSun {

@@ -32,13 +32,15 @@ struct HosekWilkieTables {
   // `spectral`: channel is a wavelength of the spectral tables, else R, G, B.
   const double* control_points(int channel, int albedo, int turbidity_index,
                                bool spectral = false) const {
-    return (spectral ? spectral_coefficients.data() : coefficients.data()) + static_cast<std::size_t>(
-        ((channel * 2 + albedo) * kTurbidities + turbidity_index) * kControlPoints * kParameters);
+    return (spectral ? spectral_coefficients.data() : coefficients.data()) +
+           static_cast<std::size_t>(((channel * 2 + albedo) * kTurbidities + turbidity_index) *
+                                    kControlPoints * kParameters);
   }
   const double* radiance_points(int channel, int albedo, int turbidity_index,
                                 bool spectral = false) const {
-    return (spectral ? spectral_radiance.data() : radiance.data()) + static_cast<std::size_t>(
-        ((channel * 2 + albedo) * kTurbidities + turbidity_index) * kControlPoints);
+    return (spectral ? spectral_radiance.data() : radiance.data()) +
+           static_cast<std::size_t>(((channel * 2 + albedo) * kTurbidities + turbidity_index) *
+                                    kControlPoints);
   }
   const double* solar_segment(int wavelength, int turbidity_index, int segment) const {
     return &solar[static_cast<std::size_t>(

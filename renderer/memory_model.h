@@ -23,6 +23,8 @@ inline constexpr double kTopLevelRecord = 12.0 + 24.0;
 // bytes), and the copies the EXR writer and the preview hold while writing (measured 13
 // bytes more at the peak of a 3840 x 2160 render).
 inline constexpr double kFilmPixel = 70.0;
+// Each sensor band adds a four-byte plane (written to the EXR from the film itself).
+inline constexpr double kFilmBandPixel = 4.0;
 // The image module's libraries (OpenImageIO, OpenColorIO and theirs), resident once loaded:
 // a render loads it before its estimate; `landsim info` counts it without loading it.
 inline constexpr double kImageModule = 123e6;

@@ -9,14 +9,14 @@
 namespace landsim::renderer {
 namespace {
 
-constexpr double kSunKelvin = 5778.0;     // the sun's effective temperature
-constexpr double kAngstromAlpha = 1.3;    // the aerosols' wavelength exponent
+constexpr double kSunKelvin = 5778.0;   // the sun's effective temperature
+constexpr double kAngstromAlpha = 1.3;  // the aerosols' wavelength exponent
 
 }  // namespace
 
 NearInfrared::NearInfrared(double elevation, double turbidity) {
-  const double zenith_deg = 90.0 - std::clamp(elevation, 0.0, 0.5 * std::numbers::pi) * 180.0 /
-                                       std::numbers::pi;
+  const double zenith_deg =
+      90.0 - std::clamp(elevation, 0.0, 0.5 * std::numbers::pi) * 180.0 / std::numbers::pi;
   air_mass_ = 1.0 / (std::cos(zenith_deg * std::numbers::pi / 180.0) +
                      0.50572 * std::pow(96.07995 - zenith_deg, -1.6364));
   beta_ = std::max(0.0, 0.04608 * turbidity - 0.04586);

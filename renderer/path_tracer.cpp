@@ -59,7 +59,8 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
                                const Spectrum& throughput, float u_roulette,
                                std::uint32_t& rays) const {
   // As sample_sun (renderer/surface.h) with the spectral material: one direction in the disc.
-  const Vec3f l = sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
+  const Vec3f l =
+      sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
   bool front = false;
   const Spectrum f = reflected_light(s, m, v, l, front);
   if (max_component(f) <= 0.0f) return {};
@@ -128,10 +129,8 @@ Spectrum PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, flo
   const auto phase = static_cast<float>(haze_.phase(dot(ray.direction, sun_direction_)));
   const Spectrum& a = haze_albedo_;
   // Unshadowed, the sun scattered here adds a x sun x (1 - T): the roulette's contribution.
-  Spectrum sun =
-      sun_spectrum_ *
-      (phase *
-       static_cast<float>(haze_.transmittance(Vec3(p), Vec3(sun_direction_), kInfiniteDistance)));
+  Spectrum sun = sun_spectrum_ * (phase * static_cast<float>(haze_.transmittance(
+                                              Vec3(p), Vec3(sun_direction_), kInfiniteDistance)));
   const float weight = shadow_roulette_weight(
       max_component(throughput * a * sun) * static_cast<float>(scattered), roulette);
   if (weight > 0.0f) {
@@ -147,8 +146,8 @@ Spectrum PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, flo
   const float sun_at_base = phase * sun_transmittance_at_base_;
   Spectrum ambient;
   for (int k = 0; k < kSpectrumBins; ++k)
-    ambient[k] = a[k] > 0.0f ? std::max(0.0f, horizon[k] / a[k] - sun_spectrum_[k] * sun_at_base)
-                             : 0.0f;
+    ambient[k] =
+        a[k] > 0.0f ? std::max(0.0f, horizon[k] / a[k] - sun_spectrum_[k] * sun_at_base) : 0.0f;
   return a * (ambient + sun) * static_cast<float>(scattered);
 }
 
@@ -197,8 +196,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       // rays rouletted.
       const ShadowRoulette r =
           bounce == 0 ? ShadowRoulette{} : roulette(rng.uniform(dim + kHazeRoulette));
-      radiance += throughput * haze_in_scatter(ray, t, depth, rng.uniform(dim + kHaze),
-                                                   throughput, r, mask, out.rays);
+      radiance += throughput * haze_in_scatter(ray, t, depth, rng.uniform(dim + kHaze), throughput,
+                                               r, mask, out.rays);
       throughput = throughput * transmitted;
     }
     if (!hit) {
@@ -216,8 +215,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     const float fresnel = water_fresnel(m, ray.direction, v.ng);
     // The roulette sees what reaches the pixel: the throughput and the water's share.
     const Spectrum seen = throughput * (1.0f - fresnel);
-    Spectrum direct = sun_light(v, m, sm, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1),
-                                seen, rng.uniform(dim + kSunRoulette), out.rays);
+    Spectrum direct = sun_light(v, m, sm, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), seen,
+                                rng.uniform(dim + kSunRoulette), out.rays);
     direct += sky_light(v, m, sm, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
                         rng.uniform(dim + kSkyRoulette), out.rays);
     radiance += seen * direct;
@@ -266,8 +265,8 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
         sample_cosine(reflect ? v.n : -v.n, std::min(u, 0.99999994f), rng.uniform(dim + kDir));
     if (dot(next, reflect ? v.ng : -v.ng) <= 0.0f)
       break;  // shading normal pointed it into the surface
-    throughput = throughput * (reflect ? sm.reflectance / p_reflect
-                                       : sm.transmittance / (1.0f - p_reflect));
+    throughput =
+        throughput * (reflect ? sm.reflectance / p_reflect : sm.transmittance / (1.0f - p_reflect));
     last_pdf = bsdf_pdf(v, m, next);
     last_specular = false;
     if (bounce >= kRouletteAfter) {

@@ -57,7 +57,7 @@ class PathTracer : public Integrator {
   float roulette_threshold_;  // shadow rays adding less than this to a pixel are rouletted
   HorizonRadiance horizon_;   // the haze's ambient term, by azimuth
   float sun_transmittance_at_base_;
-  Spectrum sun_spectrum_;   // irradiance on a surface facing the sun
+  Spectrum sun_spectrum_;  // irradiance on a surface facing the sun
   Spectrum haze_albedo_;
 };
 

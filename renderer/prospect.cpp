@@ -53,17 +53,17 @@ double average_transmissivity(double alpha_deg, double n) {
   const double b2 = sa * sa - np / 2.0;
   const double b1 = alpha_deg == 90.0 ? 0.0 : std::sqrt(b2 * b2 + k);
   const double b = b1 - b2;
-  const double ts = (k * k / (6.0 * b * b * b) + k / b - b / 2.0) -
-                    (k * k / (6.0 * a * a * a) + k / a - a / 2.0);
+  const double ts =
+      (k * k / (6.0 * b * b * b) + k / b - b / 2.0) - (k * k / (6.0 * a * a * a) + k / a - a / 2.0);
   const double tp1 = -2.0 * n2 * (b - a) / (np * np);
   const double tp2 = -2.0 * n2 * np * std::log(b / a) / (nm * nm);
   const double tp3 = n2 * (1.0 / b - 1.0 / a) / 2.0;
   const double tp4 = 16.0 * n2 * n2 * (n2 * n2 + 1.0) *
                      std::log((2.0 * np * b - nm * nm) / (2.0 * np * a - nm * nm)) /
                      (np * np * np * nm * nm);
-  const double tp5 =
-      16.0 * n2 * n2 * n2 * (1.0 / (2.0 * np * b - nm * nm) - 1.0 / (2.0 * np * a - nm * nm)) /
-      (np * np * np);
+  const double tp5 = 16.0 * n2 * n2 * n2 *
+                     (1.0 / (2.0 * np * b - nm * nm) - 1.0 / (2.0 * np * a - nm * nm)) /
+                     (np * np * np);
   return (ts + tp1 + tp2 + tp3 + tp4 + tp5) / (2.0 * sa * sa);
 }
 
@@ -118,10 +118,10 @@ LeafSpectra prospect_d(const LeafContents& leaf, double last_nm) {
   const double n = leaf.structure;
   for (std::size_t i = 0; i < d.wavelength.size() && d.wavelength[i] <= last_nm; ++i) {
     out.wavelength.push_back(d.wavelength[i]);
-    const double k = (leaf.chlorophyll * d.cab[i] + leaf.carotenoids * d.car[i] +
-                      leaf.anthocyanins * d.ant[i] + leaf.brown * d.brown[i] +
-                      leaf.water * d.water[i] + leaf.dry_matter * d.dry[i]) /
-                     n;
+    const double k =
+        (leaf.chlorophyll * d.cab[i] + leaf.carotenoids * d.car[i] + leaf.anthocyanins * d.ant[i] +
+         leaf.brown * d.brown[i] + leaf.water * d.water[i] + leaf.dry_matter * d.dry[i]) /
+        n;
     const Plate p = leaf_at(d.index[i], k, n);
     out.reflectance.push_back(p.reflectance);
     out.transmittance.push_back(p.transmittance);

@@ -144,8 +144,9 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
     // Hosek-Wilkie's ground albedo at its wavelengths: the bin's that holds each.
     std::array<double, kWavelengths> albedo{};
     for (int w = 0; w < kWavelengths; ++w) {
-      const int k = std::clamp(static_cast<int>((kFirst + kStep * w - kFirstWavelength) / kBinWidth),
-                               0, kSpectrumBins - 1);
+      const int k =
+          std::clamp(static_cast<int>((kFirst + kStep * w - kFirstWavelength) / kBinWidth), 0,
+                     kSpectrumBins - 1);
       albedo[static_cast<std::size_t>(w)] = ground[k];
     }
     spectral_sky_ = std::make_unique<HosekWilkieSky>(
@@ -170,7 +171,8 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
     }
     const HosekWilkieSun model(elevation, sky_.turbidity);
     sun_spectrum_ = bin_average([&](double nm) {
-      const double e = disc_irradiance(model, std::min(nm, NearInfrared::kJoin), sun.angular_radius);
+      const double e =
+          disc_irradiance(model, std::min(nm, NearInfrared::kJoin), sun.angular_radius);
       return nm > NearInfrared::kJoin ? e * infrared.sun_ratio(nm) : e;
     });
     // The scene's sun irradiance (which a scenario may set) decides its colour: the model's
@@ -179,9 +181,9 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
     const auto ratio = [](float want, float have) { return have > 0.0f ? want / have : 0.0f; };
     for (int pass = 0; pass < 4; ++pass) {
       const Vec3f rgb = spectrum_to_rgb(sun_spectrum_);
-      sun_spectrum_ *= reflectance_spectrum({ratio(sun.irradiance.x, rgb.x),
-                                             ratio(sun.irradiance.y, rgb.y),
-                                             ratio(sun.irradiance.z, rgb.z)});
+      sun_spectrum_ *=
+          reflectance_spectrum({ratio(sun.irradiance.x, rgb.x), ratio(sun.irradiance.y, rgb.y),
+                                ratio(sun.irradiance.z, rgb.z)});
     }
   } else {
     sun_spectrum_ = emission_spectrum(sun.irradiance);
@@ -193,8 +195,8 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
     const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / kSteps;
     for (int j = 0; j < 2 * kSteps; ++j) {
       const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / (2 * kSteps);
-      sky_irradiance += above_horizon_spectral(direction_of(theta, phi)) *
-                        (std::cos(theta) * std::sin(theta));
+      sky_irradiance +=
+          above_horizon_spectral(direction_of(theta, phi)) * (std::cos(theta) * std::sin(theta));
     }
   }
   sky_irradiance *= (0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps));

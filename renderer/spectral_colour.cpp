@@ -78,14 +78,14 @@ Vec3f reflectance_rgb(const Spectrum& reflectance) {
 
 Spectrum emission_spectrum(const Vec3f& rgb) {
   const Basis& b = basis();
-  return b.light * reflectance_spectrum(
-                       {rgb.x / b.white.x, rgb.y / b.white.y, rgb.z / b.white.z});
+  return b.light * reflectance_spectrum({rgb.x / b.white.x, rgb.y / b.white.y, rgb.z / b.white.z});
 }
 
 double planck_radiance(double wavelength_nm, double kelvin) {
   constexpr double h = 6.62607015e-34, c = 2.99792458e8, k = 1.380649e-23;
   const double l = wavelength_nm * 1e-9;
-  const double per_metre = 2.0 * h * c * c / (l * l * l * l * l) / std::expm1(h * c / (l * k * kelvin));
+  const double per_metre =
+      2.0 * h * c * c / (l * l * l * l * l) / std::expm1(h * c / (l * k * kelvin));
   return per_metre * 1e-9;  // per nm
 }
 

@@ -10,9 +10,9 @@
 namespace landsim::renderer {
 
 inline constexpr int kSpectrumBins = 32;
-inline constexpr int kVisibleBins = 20;  // bins ending at or before 780 nm
+inline constexpr int kVisibleBins = 20;            // bins ending at or before 780 nm
 inline constexpr double kFirstWavelength = 380.0;  // nm, where bin 0 starts
-inline constexpr double kBinWidth = 20.0;           // nm
+inline constexpr double kBinWidth = 20.0;          // nm
 inline constexpr double kLastWavelength = kFirstWavelength + kBinWidth * kSpectrumBins;
 
 constexpr double bin_start(int k) { return kFirstWavelength + kBinWidth * k; }

@@ -127,8 +127,8 @@ Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const V
   return (front ? m.reflectance : m.transmittance) * w;
 }
 
-Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m,
-                         const ShadingPoint& v, const Vec3f& l, bool& front) {
+Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m, const ShadingPoint& v,
+                         const Vec3f& l, bool& front) {
   if (!m.glossy()) {
     const float w = lambert_weight(m, v.n, v.ng, l, front);
     if (w == 0.0f) return {};

@@ -68,8 +68,8 @@ Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const V
 Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l, bool& front);
 
 // The same per wavelength bin, for the path tracer: `s` is spectral_material(m).
-Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m,
-                         const ShadingPoint& v, const Vec3f& l, bool& front);
+Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m, const ShadingPoint& v,
+                         const Vec3f& l, bool& front);
 
 // The Fresnel reflectance of water seen along `direction` (0 for other materials).
 float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng);

@@ -287,7 +287,8 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
     // Each drawn patch: its Embree instance, top-level record and frame (the blade filter's).
     const double grass =
         static_cast<double>(patches) * (mm::kEmbreeInstance + mm::kTopLevelRecord + 48.0);
-    const double film = static_cast<double>(views[v].width) * views[v].height * mm::kFilmPixel;
+    const double film = static_cast<double>(views[v].width) * views[v].height *
+                        (mm::kFilmPixel + mm::kFilmBandPixel * static_cast<double>(s.bands.size()));
     if (view_prototypes[v] + grass + film > largest_view) {
       largest_view = view_prototypes[v] + grass + film;
       p.view_prototypes = view_prototypes[v];

@@ -702,12 +702,13 @@ std::vector<BandSettings> read_bands(const toml::table& root, const std::string&
     if (has_file) {
       const std::string path = resolve(base_dir, r.string("response"));
       const std::optional<std::string> text = terrain::read_text_file(path);
-      if (!text) r.fail("response", "cannot read " + path + " (expected a CSV of wavelength, response)");
+      if (!text)
+        r.fail("response", "cannot read " + path + " (expected a CSV of wavelength, response)");
       b.response = parse_band_response(*text, path);
       b.description = "response " + path;
     } else {
-      const double centre = r.number("centre", Range{renderer::kFirstWavelength,
-                                                     renderer::kLastWavelength});
+      const double centre =
+          r.number("centre", Range{renderer::kFirstWavelength, renderer::kLastWavelength});
       const double width = r.number("width", Range{0.0, 640.0, true});
       if (centre - 0.5 * width < renderer::kFirstWavelength - 1e-9 ||
           centre + 0.5 * width > renderer::kLastWavelength + 1e-9)
@@ -725,8 +726,8 @@ std::vector<BandSettings> read_bands(const toml::table& root, const std::string&
 
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
-      "terrain", "sun",    "views", "render", "featuremaps", "species", "grass",
-      "ground",  "wind",   "sky",   "haze",   "objects",     "bands"};
+      "terrain", "sun",  "views", "render", "featuremaps", "species", "grass",
+      "ground",  "wind", "sky",   "haze",   "objects",     "bands"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;

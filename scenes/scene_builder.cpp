@@ -192,8 +192,8 @@ void set_spectral_optics(const Scenario& s, renderer::Scene& scene) {
     scene.grass.optics[t] = std::make_shared<renderer::SpectralOptics>(
         renderer::coloured_leaf_optics(g.reflectance, g.transmittance));
     const Vec3f under = scene.ground.materials[4 + t].albedo;
-    optics[5 + t] = std::make_shared<renderer::SpectralOptics>(
-        renderer::coloured_leaf_optics(under, {}));
+    optics[5 + t] =
+        std::make_shared<renderer::SpectralOptics>(renderer::coloured_leaf_optics(under, {}));
   }
 }
 

@@ -48,7 +48,8 @@ std::vector<renderer::ResponsePoint> parse_band_response(std::string_view text,
     if (fields.empty() || fields.front().front() == '#') continue;
     const std::string where = file + ":" + std::to_string(line_number) + ": ";
     double nm = 0.0, response = 0.0;
-    const bool numeric = fields.size() == 2 && number_of(fields[0], nm) && number_of(fields[1], response);
+    const bool numeric =
+        fields.size() == 2 && number_of(fields[0], nm) && number_of(fields[1], response);
     if (!numeric && header_allowed && points.empty()) {
       header_allowed = false;  // a header line
       continue;

@@ -14,7 +14,7 @@ set -eu
 cd "$(dirname "$0")/.."
 SECONDS_EACH="${1:-30}"
 [ $# -gt 0 ] && shift
-ALL="species_fuzz arbaro_fuzz class_mapping_fuzz scenario_fuzz elevation_fuzz vegetation_fuzz tree_fuzz"
+ALL="species_fuzz arbaro_fuzz class_mapping_fuzz scenario_fuzz elevation_fuzz vegetation_fuzz tree_fuzz band_response_fuzz"
 TARGETS="${*:-$ALL}"
 B=build-fuzz
 
@@ -39,6 +39,7 @@ for f in scenes/examples/*.toml; do
   case "$f" in *_classes.toml) ;; *) cp "$f" "$C/scenario_fuzz/" ;; esac
 done
 cp data/terrain/volcano.asc data/terrain/bei_elev.asc "$C/elevation_fuzz/"
+cp data/bands/*.csv "$C/band_response_fuzz/"
 gdal_translate -q -of GTiff data/terrain/volcano.asc "$C/elevation_fuzz/volcano.tif"
 gdal_translate -q -of PNG -ot UInt16 -scale data/terrain/volcano.asc "$C/elevation_fuzz/volcano.png"
 "$B/bin/landsim" featuremap build data/featuremaps/volcano_landcover.asc \
@@ -62,7 +63,7 @@ for t in $TARGETS; do
   case "$t" in
     arbaro_fuzz) dict="$D/xml.dict" ;;
     scenario_fuzz) dict="$D/toml_scenario.dict" ;;
-    elevation_fuzz|vegetation_fuzz) dict="" ;;
+    elevation_fuzz|vegetation_fuzz|band_response_fuzz) dict="" ;;
     *) dict="$D/toml_species.dict" ;;
   esac
   log="$B/findings/$t.log"

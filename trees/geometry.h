@@ -9,8 +9,8 @@
 // every mass, then rank 1 of every mass, and so on. "Draw the first n items of every mass" then is
 // a prefix of each array, so one buffer serves every level of detail.
 #include <array>
-#include <optional>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 

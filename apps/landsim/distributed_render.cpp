@@ -42,8 +42,8 @@ void work(const renderer::ViewRenderer& tiles) {
 
 class Coordinator {
  public:
-  Coordinator(const renderer::ViewRenderer& tiles,
-              const renderer::RenderOptions& options, const MpiSession& session)
+  Coordinator(const renderer::ViewRenderer& tiles, const renderer::RenderOptions& options,
+              const MpiSession& session)
       : tiles_(tiles),
         options_(options),
         session_(session),

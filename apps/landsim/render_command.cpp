@@ -70,23 +70,24 @@ void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
 renderer::ImageMetadata metadata(const scenes::Scenario& s, const scenes::ViewSettings& v,
                                  const renderer::Scene& scene) {
   const Vec3& sun = scene.sun.direction;
-  renderer::ImageMetadata out = {{"version", LANDSIM_VERSION},
-          {"scenario", s.source},
-          {"scenario_hash", s.text_hash},
-          {"view", v.name},
-          {"camera_position", vec_text(v.position)},
-          {"camera_target", vec_text(v.target)},
-          {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
-          {"scene_origin", vec_text(scene.origin)},
-          {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
-          {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
-          {"sun_direction", vec_text(sun)},
-          {"sky", sky_text(s.sky)},
-          {"haze", s.haze.enabled ? fmt::format("visibility {} m, scale height {} m",
-                                                s.haze.visibility, s.haze.scale_height)
-                                  : std::string("none")},
-          {"spp", std::to_string(s.render.spp)},
-          {"seed", std::to_string(s.render.seed)}};
+  renderer::ImageMetadata out = {
+      {"version", LANDSIM_VERSION},
+      {"scenario", s.source},
+      {"scenario_hash", s.text_hash},
+      {"view", v.name},
+      {"camera_position", vec_text(v.position)},
+      {"camera_target", vec_text(v.target)},
+      {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
+      {"scene_origin", vec_text(scene.origin)},
+      {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
+      {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
+      {"sun_direction", vec_text(sun)},
+      {"sky", sky_text(s.sky)},
+      {"haze", s.haze.enabled ? fmt::format("visibility {} m, scale height {} m", s.haze.visibility,
+                                            s.haze.scale_height)
+                              : std::string("none")},
+      {"spp", std::to_string(s.render.spp)},
+      {"seed", std::to_string(s.render.seed)}};
   // What each band layer measures: its box or response file.
   for (const scenes::BandSettings& b : s.bands) out.emplace_back("band." + b.name, b.description);
   return out;

@@ -47,8 +47,8 @@ std::vector<std::vector<double>> number_rows(std::string_view text, const char* 
     }
     first = false;
     if (!numeric)
-      throw std::logic_error(std::string("embedded ") + name + ": not numeric: " +
-                             std::string(line));
+      throw std::logic_error(std::string("embedded ") + name +
+                             ": not numeric: " + std::string(line));
     if (!row.empty()) rows.push_back(row);
   }
   return rows;

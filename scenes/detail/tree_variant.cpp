@@ -28,8 +28,8 @@ trees::LeafContents seasonal_leaf(trees::LeafContents c, trees::Season season, f
     struct Turn {
       double chlorophyll, carotenoids, anthocyanins, brown;
     };
-    static constexpr Turn kAutumn[3] = {{4.0, 10.0, 0.0, 0.2}, {3.0, 8.0, 5.0, 0.4},
-                                        {3.0, 4.0, 15.0, 0.3}};
+    static constexpr Turn kAutumn[3] = {
+        {4.0, 10.0, 0.0, 0.2}, {3.0, 8.0, 5.0, 0.4}, {3.0, 4.0, 15.0, 0.3}};
     const Turn& t = kAutumn[std::min(2, static_cast<int>(r.uniform(4) * 3.0f))];
     c.chlorophyll = t.chlorophyll;
     c.carotenoids = t.carotenoids;

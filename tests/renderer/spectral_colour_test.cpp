@@ -52,14 +52,16 @@ TEST(SpectralColour, GreyIsFlatAndFlatIsGrey) {
   }
   // A grey surface under any light has the light's colour: under a 3000 K lamp too.
   const Spectrum lamp = bin_average([](double nm) { return planck_radiance(nm, 3000.0); });
-  const Vec3f lit = spectrum_to_rgb(lamp), grey = spectrum_to_rgb(lamp * reflectance_spectrum({0.3f, 0.3f, 0.3f}));
+  const Vec3f lit = spectrum_to_rgb(lamp),
+              grey = spectrum_to_rgb(lamp * reflectance_spectrum({0.3f, 0.3f, 0.3f}));
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(grey[k] / lit[k], 0.3f, 1e-3f);
 }
 
 TEST(SpectralColour, PlanckAtTheD65TemperatureIsNearlyWhite) {
   // A black body at 6504 K lies 0.005 from D65 (x 0.3127, y 0.3290) in xy: its Rec. 709 is
   // nearly equal in the three channels.
-  const Vec3f c = spectrum_to_rgb(bin_average([](double nm) { return planck_radiance(nm, 6504.0); }));
+  const Vec3f c =
+      spectrum_to_rgb(bin_average([](double nm) { return planck_radiance(nm, 6504.0); }));
   const Chromaticity xy = chromaticity_of(rec709_to_xyz(Vec3(c)));
   EXPECT_NEAR(xy.x, 0.3135, 0.003);
   EXPECT_NEAR(xy.y, 0.3237, 0.003);

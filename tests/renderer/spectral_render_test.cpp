@@ -54,8 +54,8 @@ TEST(SpectralRender, WhitePlaneBandRadianceIsBandIrradianceOverPi) {
     const double theta = (i + 0.5) * kDeg;
     for (int j = 0; j < 360; ++j) {
       const double phi = (j + 0.5) * kDeg;
-      const Vec3f d(Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                         std::cos(theta)});
+      const Vec3f d(
+          Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
       e += sky.spectral_radiance(d) *
            static_cast<float>(std::cos(theta) * std::sin(theta) * kDeg * kDeg);
     }

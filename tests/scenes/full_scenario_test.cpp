@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/input_error.h"
+#include "renderer/vegetation_optics.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/scenario.h"
 #include "scenes/scene_builder.h"
@@ -65,7 +66,9 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "\"\n\n"
          "[[species]]\nbit = 3\nfile = \"" +
          data +
-         "/species/london_plane.toml\"\nvariants = 2\ndensity_per_ha = 5\nage = [15.0, 40.0]\n\n"
+         "/species/london_plane.toml\"\nvariants = 2\ndensity_per_ha = 5\nage = [15.0, 40.0]\n"
+         "[species.leaf_optics]\nstructure = 1.8\nchlorophyll = 30.0\ncarotenoids = 7.0\n"
+         "anthocyanins = 1.0\nbrown = 0.1\nwater = 0.012\ndry_matter = 0.008\n\n"
          "[[grass]]\ntype = 1\ndensity_per_m2 = 50\nblade_length = 0.2\nblade_width = "
          "0.003\ncurvature = 0.5\n"
          "colour = [0.1, 0.3, 0.05]\n\n"
@@ -76,7 +79,7 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "textures = { rock = \"" +
          (dir / "bark.png").string() +
          "\" }\ntexture_size = 3.0\ndetail = true\ndetail_amplitude = { rock = 2.0 }\n"
-         "detail_roughness = 0.6\n"
+         "detail_roughness = 0.6\nsoil_moisture = 0.4\n"
          "[[ground.rules]]\nmeasure = \"slope\"\nabove = 30.0\nbelow = 80.0\nsoftness = 3.0\n"
          "on = [\"terrain\", \"grass\"]\nbecomes = \"rock\"\ntint = [1.1, 1.0, 0.9]\n\n"
          "[wind]\nspeed = 4.0\ngust = 2.0\ndirection = 200.0\ngust_scale = 40.0\nphase_groups = "
@@ -97,7 +100,10 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "/objects/car.gltf\"\nposition = [300.0, 400.0]\nheading = 45.0\nscale = 1.5\n"
          "unit_scale = 0.5\nup_axis = \"y\"\nalign_to_ground = true\nclear_radius = 3.0\n"
          "[[objects.material]]\nname = \"paint_red\"\nalbedo = [0.1, 0.2, 0.3]\nroughness = "
-         "0.4\nmetallic = 0.7\n";
+         "0.4\nmetallic = 0.7\n"
+         "[[bands]]\nname = \"nir\"\ncentre = 835.0\nwidth = 130.0\n"
+         "[[bands]]\nname = \"luminance\"\nresponse = \"" +
+         data + "/bands/cie_photopic.csv\"\n";
 }
 
 struct Fixture {
@@ -187,6 +193,14 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(sh.rules[0].becomes, 3);
   EXPECT_FLOAT_EQ(sh.rules[0].tint.x, 1.1f);
   EXPECT_TRUE(s.ground.detail);
+  EXPECT_DOUBLE_EQ(s.ground.soil_moisture, 0.4);
+  ASSERT_EQ(s.bands.size(), 2u);
+  EXPECT_EQ(s.bands[0].name, "nir");
+  EXPECT_EQ(s.bands[0].description, "box 770-900 nm");
+  EXPECT_EQ(s.bands[1].response.size(), 41u);  // 380-780 nm at 10 nm
+  ASSERT_TRUE(s.species[1].species.colours.leaf_optics.has_value());
+  const trees::LeafContents& leaf = *s.species[1].species.colours.leaf_optics;
+  EXPECT_EQ(leaf, (trees::LeafContents{1.8, 30.0, 7.0, 1.0, 0.1, 0.012, 0.008}));
   EXPECT_FLOAT_EQ(s.ground.detail_amplitude[3], 2.0f);
   EXPECT_FLOAT_EQ(s.ground.detail_amplitude[4], 0.3f);  // soil keeps its default
   EXPECT_FLOAT_EQ(s.ground.detail_roughness[0], 0.6f);
@@ -273,6 +287,12 @@ TEST(FullScenario, SceneCarriesVegetationGrassAndGroundMaterials) {
   const Scenario s = load_scenario(f.dir.write("full.toml", f.text()));
   const renderer::Scene scene = build_scene(s);
   ASSERT_GT(scene.instances.size(), 10u);
+  ASSERT_EQ(scene.bands.size(), 2u);
+  EXPECT_FLOAT_EQ(scene.bands[0].weight[19], 10.0f);  // 760-780 nm: 770-900's first 10 nm
+  EXPECT_FLOAT_EQ(scene.bands[0].weight[20], 20.0f);
+  // The soil, moistened by 0.4: darker than the dry soil of its colour.
+  EXPECT_LT(scene.ground.optics[4]->reflectance[14],
+            0.9f * renderer::soil_optics(s.ground.soil, 0.0).reflectance[14]);
   for (const renderer::TreeInstance& t : scene.instances)
     ASSERT_LT(t.position.x + scene.origin.x, 200.0);  // columns 0-19
   // Grass exactly on the tiles whose cells have grass type 1 (columns 0-39, x < 400 m).

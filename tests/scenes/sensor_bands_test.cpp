@@ -57,8 +57,9 @@ TEST(SensorBands, MistakesAreNamedWithTheirPlace) {
   EXPECT_NE(error_of(dir, "[[bands]]\nname = \"a b\"\ncentre = 600\nwidth = 10\n")
                 .find("letters, digits"),
             std::string::npos);
-  EXPECT_NE(error_of(dir, "[[bands]]\nname = \"x\"\ncentre = 600\nwidth = 10\n"
-                          "[[bands]]\nname = \"x\"\ncentre = 700\nwidth = 10\n")
+  EXPECT_NE(error_of(dir,
+                     "[[bands]]\nname = \"x\"\ncentre = 600\nwidth = 10\n"
+                     "[[bands]]\nname = \"x\"\ncentre = 700\nwidth = 10\n")
                 .find("used by another band"),
             std::string::npos);
   EXPECT_NE(error_of(dir, "[[bands]]\nname = \"x\"\ncentre = 1000\nwidth = 100\n")
@@ -93,14 +94,17 @@ TEST(SensorBands, ResponseFileMistakesNameTheLine) {
 }
 
 TEST(SensorBands, ExampleBandFilesAreValid) {
-  for (const char* name : {"cie_photopic", "landsat7_etm_pan", "landsat7_etm_red", "landsat7_etm_nir"}) {
-    const std::string path = landsim::testing::source_file(std::string("data/bands/") + name + ".csv").string();
+  for (const char* name :
+       {"cie_photopic", "landsat7_etm_pan", "landsat7_etm_red", "landsat7_etm_nir"}) {
+    const std::string path =
+        landsim::testing::source_file(std::string("data/bands/") + name + ".csv").string();
     const auto points = parse_band_response(landsim::testing::read_file(path), path);
     EXPECT_GE(points.size(), 4u) << name;
   }
   // V(lambda) integrates to 106.86 nm (the CIE table at 1 nm); at 10 nm, linearly, within 0.5%.
   const std::string path = landsim::testing::source_file("data/bands/cie_photopic.csv").string();
-  const auto v = renderer::sensor_band("v", parse_band_response(landsim::testing::read_file(path), path));
+  const auto v =
+      renderer::sensor_band("v", parse_band_response(landsim::testing::read_file(path), path));
   float total = 0.0f;
   for (float w : v.weight.v) total += w;
   EXPECT_NEAR(total, 106.86f, 0.5f);

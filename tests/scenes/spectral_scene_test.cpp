@@ -48,8 +48,8 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
   for (int i = 0; i < 90; ++i)
     for (int j = 0; j < 360; ++j) {
       const double t = (i + 0.5) * kStep, p = (j + 0.5) * kStep;
-      e += sky.spectral_radiance(Vec3f(Vec3{std::sin(t) * std::cos(p), std::sin(t) * std::sin(p),
-                                            std::cos(t)})) *
+      e += sky.spectral_radiance(
+               Vec3f(Vec3{std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)})) *
            static_cast<float>(std::cos(t) * std::sin(t) * kStep * kStep);
     }
   const double e_red = band_sum(e, scene.bands[2]), e_nir = band_sum(e, scene.bands[3]);
@@ -63,9 +63,11 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
     for (int x = 0; x < film.width(); ++x) {
       const auto object = static_cast<renderer::ObjectClass>(film.object(x, y));
       if (object == renderer::ObjectClass::sky || !std::isfinite(film.depth(x, y))) continue;
-      const renderer::Ray ray = camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      const renderer::Ray ray =
+          camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
       const double east = ray.origin.x + ray.direction.x * film.depth(x, y) + scene.origin.x;
-      const int which = east < 290.0 ? 0 : (east > 310.0 && object == renderer::ObjectClass::ground ? 1 : -1);
+      const int which =
+          east < 290.0 ? 0 : (east > 310.0 && object == renderer::ObjectClass::ground ? 1 : -1);
       if (which < 0) continue;
       red[which] += std::numbers::pi * film.band(x, y, 2) / e_red;
       nir[which] += std::numbers::pi * film.band(x, y, 3) / e_nir;
@@ -91,8 +93,8 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
 }
 
 TEST(SpectralScene, LeafContentsComeFromSpeciesFilesAndScenarios) {
-  const trees::Species plain = trees::load_species(
-      landsim::testing::source_file("data/species/quaking_aspen.toml"));
+  const trees::Species plain =
+      trees::load_species(landsim::testing::source_file("data/species/quaking_aspen.toml"));
   EXPECT_FALSE(plain.colours.leaf_optics.has_value());
   const trees::Species with = trees::parse_species(
       "core = \"weber_penn\"\nLevels = 2\n[leaf_optics]\nchlorophyll = 25\nbrown = 0.4\n",
@@ -148,7 +150,8 @@ TEST(SpectralScene, SeasonsChangeTheLeavesContents) {
   // Evergreens keep summer's leaves.
   EXPECT_NEAR(leaf_reflectance(evergreen, kRed), leaf_reflectance(summer, kRed), 1e-6);
   // The colour the RGB passes see follows the spectra: autumn is redder than green.
-  EXPECT_GT(autumn.prototypes[0].leaf_reflectance.x, autumn.prototypes[0].leaf_reflectance.y * 0.9f);
+  EXPECT_GT(autumn.prototypes[0].leaf_reflectance.x,
+            autumn.prototypes[0].leaf_reflectance.y * 0.9f);
   EXPECT_LT(summer.prototypes[0].leaf_reflectance.x, summer.prototypes[0].leaf_reflectance.y);
 }
 
