@@ -100,8 +100,9 @@ void HosekWilkieSky::channels_cos(double cos_theta_in, double cos_gamma_in, doub
     const auto& k = parameters_[c];
     const double a = k[0], b = k[1], cc = k[2], d = k[3], e = k[4], f = k[5], g = k[6], i = k[7],
                  h = k[8];
-    const double mie =
-        (1.0 + cos_gamma * cos_gamma) / std::pow(1.0 + h * h - 2.0 * h * cos_gamma, 1.5);
+    // x^1.5 as x sqrt(x): pow cost 4% of a render once the sky had 11 channels.
+    const double base = 1.0 + h * h - 2.0 * h * cos_gamma;
+    const double mie = (1.0 + cos_gamma * cos_gamma) / (base * std::sqrt(base));
     const double zenith_term = 1.0 + a * std::exp(b / (cos_theta + 0.01));
     out[c] =
         zenith_term *

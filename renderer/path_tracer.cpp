@@ -37,6 +37,23 @@ Vec3f sample_cosine(const Vec3f& n, float u1, float u2) {
 
 float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
 
+// 1 in the bins some output sees (the colour-matching functions, or a band), 0 elsewhere.
+Spectrum seen_bins(const Scene& scene) {
+  Spectrum seen;
+  const auto& rgb = rgb_weights();
+  float largest = 0.0f;
+  for (const Vec3f& w : rgb)
+    largest = std::max(largest, max_component(Vec3f{std::abs(w.x), std::abs(w.y), std::abs(w.z)}));
+  for (int k = 0; k < kSpectrumBins; ++k) {
+    const Vec3f& w = rgb[static_cast<std::size_t>(k)];
+    const float colour = std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z)});
+    bool band = false;
+    for (const SpectralBand& b : scene.bands) band = band || b.weight[k] > 0.0f;
+    seen[k] = colour > 1e-4f * largest || band ? 1.0f : 0.0f;
+  }
+  return seen;
+}
+
 }  // namespace
 
 PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
@@ -52,7 +69,9 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       sun_transmittance_at_base_(static_cast<float>(haze_.transmittance(
           Vec3{0.0, 0.0, scene.haze.base_height}, Vec3(sun_direction_), kInfiniteDistance))),
       sun_spectrum_(sky_.sun_spectral_irradiance()),
-      haze_albedo_(reflectance_spectrum(haze_.albedo())) {}
+      haze_albedo_(reflectance_spectrum(haze_.albedo())),
+      inverse_haze_albedo_(safe_divide(Spectrum::constant(1.0f), haze_albedo_)),
+      seen_bins_(seen_bins(scene)) {}
 
 Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
                                const SpectralMaterial& s, float u1, float u2,
@@ -65,8 +84,7 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
   const Spectrum f = reflected_light(s, m, v, l, front);
   if (max_component(f) <= 0.0f) return {};
   const Spectrum light = f * sun_spectrum_;
-  const float weight =
-      shadow_roulette_weight(max_component(throughput * light), roulette(u_roulette));
+  const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
   ++rays;
   const Ray ray{offset_point(v.p, front ? v.ng : -v.ng), l};
@@ -106,8 +124,7 @@ Spectrum PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m,
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
   const Spectrum light =
       f * sky_.spectral_radiance(l) * (power_heuristic(pdf, bsdf_pdf(v, m, l)) / pdf);
-  const float weight =
-      shadow_roulette_weight(max_component(throughput * light), roulette(u_roulette));
+  const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
   ++rays;
   const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
@@ -132,7 +149,7 @@ Spectrum PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, flo
   Spectrum sun = sun_spectrum_ * (phase * static_cast<float>(haze_.transmittance(
                                               Vec3(p), Vec3(sun_direction_), kInfiniteDistance)));
   const float weight = shadow_roulette_weight(
-      max_component(throughput * a * sun) * static_cast<float>(scattered), roulette);
+      importance(throughput * a * sun) * static_cast<float>(scattered), roulette);
   if (weight > 0.0f) {
     ++rays;
     sun = embree_.occluded({p, sun_direction_}, 0.0f, kInfinity, mask) ? Spectrum{} : sun * weight;
@@ -245,7 +262,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       last_pdf = pdf;
       last_specular = false;
       if (bounce >= kRouletteAfter) {
-        const float survive = std::clamp(max_component(throughput), 0.05f, 1.0f);
+        const float survive = std::clamp(importance(throughput), 0.05f, 1.0f);
         if (rng.uniform(dim + kRoulette) >= survive) break;
         throughput = throughput / survive;
       }
@@ -270,7 +287,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     last_pdf = bsdf_pdf(v, m, next);
     last_specular = false;
     if (bounce >= kRouletteAfter) {
-      const float survive = std::clamp(max_component(throughput), 0.05f, 1.0f);
+      const float survive = std::clamp(importance(throughput), 0.05f, 1.0f);
       if (rng.uniform(dim + kRoulette) >= survive) break;
       throughput = throughput / survive;
     }

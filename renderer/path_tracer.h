@@ -45,6 +45,9 @@ class PathTracer : public Integrator {
                            const Spectrum& throughput, const ShadowRoulette& roulette,
                            std::uint32_t mask, std::uint32_t& rays) const;
   ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
+  // What the roulettes weigh a spectrum by: its largest bin among those an output sees (the
+  // near infrared keeps a canopy's paths alive; without a band there it is not worth it).
+  float importance(const Spectrum& s) const { return max_component(s * seen_bins_); }
   float bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m, const Vec3f& dir) const;
   // The sun, sky and ground colours of `settings`' bands, and the RGB, from a path's spectrum.
   void finish(PathSample& out, const Spectrum& radiance) const;
@@ -59,6 +62,8 @@ class PathTracer : public Integrator {
   float sun_transmittance_at_base_;
   Spectrum sun_spectrum_;  // irradiance on a surface facing the sun
   Spectrum haze_albedo_;
+  Spectrum inverse_haze_albedo_;  // 0 where the albedo is
+  Spectrum seen_bins_;            // 1 in bins an output (RGB, a band) sees, 0 elsewhere
 };
 
 }  // namespace landsim::renderer

@@ -152,22 +152,32 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
     spectral_sky_ = std::make_unique<HosekWilkieSky>(
         HosekWilkieSky::spectral(elevation, sky_.turbidity, albedo));
     // Each bin: the tables' linear interpolation averaged over its 1 nm steps; past 720 nm,
-    // the last wavelength times the near-infrared model's ratio.
+    // the last wavelength times the near-infrared model's ratio. A 20 nm bin lies within one
+    // 40 nm interval of the tables, so two wavelengths serve each.
     const int steps = static_cast<int>(kBinWidth);
     for (int k = 0; k < kSpectrumBins; ++k) {
-      auto& row = sky_bins_[static_cast<std::size_t>(k)];
+      std::array<double, kWavelengths> row{};
       for (int i = 0; i < steps; ++i) {
         const double nm = bin_start(k) + i + 0.5;
         if (nm > NearInfrared::kJoin) {
-          row[kWavelengths - 1] += static_cast<float>(infrared.sky_ratio(nm) / steps);
+          row[kWavelengths - 1] += infrared.sky_ratio(nm) / steps;
           continue;
         }
         const double position = (nm - kFirst) / kStep;
         const int w = std::min(static_cast<int>(position), kWavelengths - 2);
         const double f = position - w;
-        row[static_cast<std::size_t>(w)] += static_cast<float>((1.0 - f) / steps);
-        row[static_cast<std::size_t>(w + 1)] += static_cast<float>(f / steps);
+        row[static_cast<std::size_t>(w)] += (1.0 - f) / steps;
+        row[static_cast<std::size_t>(w + 1)] += f / steps;
       }
+      int first = kWavelengths - 2;
+      for (int w = 0; w < kWavelengths - 1; ++w)
+        if (row[static_cast<std::size_t>(w)] > 0.0) {
+          first = w;
+          break;
+        }
+      sky_bins_[static_cast<std::size_t>(k)] = {
+          first, static_cast<float>(row[static_cast<std::size_t>(first)]),
+          static_cast<float>(row[static_cast<std::size_t>(first + 1)])};
     }
     const HosekWilkieSun model(elevation, sky_.turbidity);
     sun_spectrum_ = bin_average([&](double nm) {
@@ -210,10 +220,9 @@ Spectrum SkyModel::above_horizon_spectral(const Vec3f& d) const {
   spectral_sky_->channels_cos(d.z, dot(d, sun_direction_), channels);
   Spectrum out;
   for (int k = 0; k < kSpectrumBins; ++k) {
-    const auto& row = sky_bins_[static_cast<std::size_t>(k)];
-    float sum = 0.0f;
-    for (std::size_t w = 0; w < row.size(); ++w) sum += row[w] * static_cast<float>(channels[w]);
-    out[k] = sum;
+    const BinSource& b = sky_bins_[static_cast<std::size_t>(k)];
+    out[k] = b.w0 * static_cast<float>(channels[b.first]) +
+             b.w1 * static_cast<float>(channels[b.first + 1]);
   }
   return out;
 }

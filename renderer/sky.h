@@ -74,10 +74,15 @@ class SkyModel {
   Vec3f sky_irradiance_;
   Vec3f below_horizon_;
   Vec3f mean_radiance_;
-  // Spectral: the Hosek-Wilkie sky at its 11 wavelengths, and per bin the weight of each of
-  // them (linear interpolation averaged over the bin; past 720 nm the near-infrared model).
+  // Spectral: the Hosek-Wilkie sky at its 11 wavelengths, and per bin the two of them it
+  // interpolates and their weights (linear interpolation averaged over the bin; past 720 nm
+  // the last wavelength times the near-infrared model: a weight on it alone).
+  struct BinSource {
+    int first = 0;  // the bin = w0 x channel[first] + w1 x channel[first + 1]
+    float w0 = 0.0f, w1 = 0.0f;
+  };
   std::unique_ptr<HosekWilkieSky> spectral_sky_;
-  std::array<std::array<float, 11>, kSpectrumBins> sky_bins_{};
+  std::array<BinSource, kSpectrumBins> sky_bins_{};
   Spectrum sun_spectrum_, below_horizon_spectrum_;
   // Sampling table: rows of theta (0 = zenith), columns of phi.
   std::vector<float> weights_;   // per cell
