@@ -133,6 +133,17 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
+// The sensor bands every image holds as layers band.<name> (docs/SPECTRAL.md).
+nlohmann::json bands_json(const scenes::Scenario& s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const scenes::BandSettings& b : s.bands)
+    out.push_back({{"name", b.name},
+                   {"layer", "band." + b.name},
+                   {"definition", b.description},
+                   {"unit", renderer::kBandUnit}});
+  return out;
+}
+
 void write_manifest(const std::filesystem::path& path, const scenes::Scenario& s,
                     const nlohmann::json& images) {
   const nlohmann::json manifest = {
@@ -142,6 +153,7 @@ void write_manifest(const std::filesystem::path& path, const scenes::Scenario& s
       {"seed", s.render.seed},
       {"sun", {{"elevation_deg", s.sun.elevation_deg}, {"azimuth_deg", s.sun.azimuth_deg}}},
       {"wind", {{"speed", s.wind.speed}, {"gust", s.wind.gust}}},
+      {"bands", bands_json(s)},
       {"images", images}};
   write_file_atomically(path, manifest.dump(2) + "\n");
 }

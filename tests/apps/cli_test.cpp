@@ -1,7 +1,9 @@
 // End-to-end tests of the landsim program: exit codes, messages, files written or not.
+#include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -696,6 +698,49 @@ TEST(Cli, ImageSetsNameEveryFrameAndListThemInTheManifest) {
   EXPECT_EQ(manifest["images"][1]["time_s"], 3.0);
   EXPECT_EQ(manifest["wind"]["speed"], 12.0);
   EXPECT_NE(testing::read_file(out / "v_f0000.exr"), testing::read_file(out / "v_f0001.exr"));
+}
+
+TEST(Cli, RenderWritesBandLayersAndListsTheBands) {
+  TempDir dir;
+  dir.write("nir.csv", "nm,response\n770,0\n770,1\n900,1\n900,0\n");
+  std::string text = scenario("", "", "spp = 2");  // 32 x 18
+  text +=
+      "[[bands]]\nname = \"red\"\ncentre = 660\nwidth = 60\n"
+      "[[bands]]\nname = \"nir\"\nresponse = \"nir.csv\"\n";
+  const auto file = dir.write("bands.toml", text);
+  const auto out = dir / "out";
+  const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
+  ASSERT_EQ(manifest["bands"].size(), 2u);
+  EXPECT_EQ(manifest["bands"][0]["layer"], "band.red");
+  EXPECT_EQ(manifest["bands"][0]["definition"], "box 630-690 nm");
+  EXPECT_EQ(manifest["bands"][1]["unit"], "W m-2 sr-1");
+  const std::string exr = (out / (manifest["images"][0]["path"].get<std::string>())).string();
+  Imf::InputFile in(exr.c_str());
+  ASSERT_NE(in.header().channels().findChannel("band.red"), nullptr);
+  ASSERT_NE(in.header().channels().findChannel("band.nir"), nullptr);
+  const auto* definition = in.header().findTypedAttribute<Imf::StringAttribute>("landsim/band.red");
+  ASSERT_NE(definition, nullptr);
+  EXPECT_EQ(definition->value(), "box 630-690 nm");
+  const auto* unit = in.header().findTypedAttribute<Imf::StringAttribute>("landsim/band_unit");
+  ASSERT_NE(unit, nullptr);
+  EXPECT_EQ(unit->value(), "W m-2 sr-1");
+  std::vector<float> red(32 * 18), nir(32 * 18);
+  Imf::FrameBuffer fb;
+  fb.insert("band.red", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(red.data()), sizeof(float),
+                                   sizeof(float) * 32));
+  fb.insert("band.nir", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(nir.data()), sizeof(float),
+                                   sizeof(float) * 32));
+  in.setFrameBuffer(fb);
+  in.readPixels(0, 17);
+  double red_sum = 0.0, nir_sum = 0.0;
+  for (std::size_t i = 0; i < red.size(); ++i) {
+    red_sum += red[i];
+    nir_sum += nir[i];
+  }
+  EXPECT_GT(red_sum, 0.0);
+  EXPECT_GT(nir_sum, red_sum);  // 130 nm of near infrared against 60 nm of red, bare ground
 }
 
 // A 480 x 270 render of 48 spp (seconds long) writing checkpoints every `checkpoint`
