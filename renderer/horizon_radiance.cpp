@@ -41,22 +41,29 @@ HorizonRadiance::HorizonRadiance(const SkyModel& sky)
         direction_of(4.0f * static_cast<float>(i % kSpectralSteps) / kSpectralSteps)));
 }
 
-Spectrum HorizonRadiance::spectral(const Vec3f& d) const {
-  if (d.x * d.x + d.y * d.y <= 1e-6f) return mean_spectrum_;
-  const float x = pseudo_angle(d.x, d.y) * (kSpectralSteps / 4.0f);
-  const int i = std::clamp(static_cast<int>(x), 0, kSpectralSteps - 1);
+namespace {
+
+// `table`'s value at the azimuth of `d` (steps + 1 entries, uniform in the pseudo-angle),
+// linearly interpolated; straight up or down, `vertical`.
+template <typename Value>
+Value at_azimuth(const std::vector<Value>& table, int steps, const Vec3f& d,
+                 const Value& vertical) {
+  if (d.x * d.x + d.y * d.y <= 1e-6f) return vertical;
+  const float x = pseudo_angle(d.x, d.y) * (static_cast<float>(steps) / 4.0f);
+  const int i = std::clamp(static_cast<int>(x), 0, steps - 1);
   const float f = x - static_cast<float>(i);
-  return spectral_table_[static_cast<std::size_t>(i)] * (1.0f - f) +
-         spectral_table_[static_cast<std::size_t>(i + 1)] * f;
+  return table[static_cast<std::size_t>(i)] * (1.0f - f) +
+         table[static_cast<std::size_t>(i + 1)] * f;
+}
+
+}  // namespace
+
+Spectrum HorizonRadiance::spectral(const Vec3f& d) const {
+  return at_azimuth(spectral_table_, kSpectralSteps, d, mean_spectrum_);
 }
 
 Vec3f HorizonRadiance::radiance(const Vec3f& d) const {
-  if (d.x * d.x + d.y * d.y <= 1e-6f) return mean_;
-  const float x = pseudo_angle(d.x, d.y) * (kSteps / 4.0f);
-  const int i = std::clamp(static_cast<int>(x), 0, kSteps - 1);
-  const float f = x - static_cast<float>(i);
-  return table_[static_cast<std::size_t>(i)] * (1.0f - f) +
-         table_[static_cast<std::size_t>(i + 1)] * f;
+  return at_azimuth(table_, kSteps, d, mean_);
 }
 
 }  // namespace landsim::renderer

@@ -240,30 +240,32 @@ Spectrum SkyModel::sun_spectral_radiance(const Vec3f& direction) const {
   return total > 0.0f ? sun_spectrum_ * (y / total) : Spectrum{};
 }
 
-Spectrum SkyModel::horizon_band_spectral(const Vec3f& d) const {
+namespace {
+
+// The mean of `above` (a direction's radiance, any type) over the horizon band at the azimuth
+// of `d`: elevations 0 to 2 degrees, 8 samples.
+template <typename Above>
+auto horizon_band_mean(const Vec3f& d, Above&& above) {
   constexpr int kSamples = 8;
   constexpr float kBand = 2.0f * kPi / 180.0f;
   const float h = std::sqrt(d.x * d.x + d.y * d.y);
   const Vec3f level = h > 0.0f ? Vec3f{d.x / h, d.y / h, 0.0f} : Vec3f{1.0f, 0.0f, 0.0f};
-  Spectrum sum{};
+  decltype(above(d)) sum{};
   for (int i = 0; i < kSamples; ++i) {
     const float e = kBand * (static_cast<float>(i) + 0.5f) / kSamples;
-    sum += above_horizon_spectral(level * std::cos(e) + Vec3f{0.0f, 0.0f, std::sin(e)});
+    sum += above(level * std::cos(e) + Vec3f{0.0f, 0.0f, std::sin(e)});
   }
   return sum * (1.0f / kSamples);
 }
 
+}  // namespace
+
+Spectrum SkyModel::horizon_band_spectral(const Vec3f& d) const {
+  return horizon_band_mean(d, [&](const Vec3f& v) { return above_horizon_spectral(v); });
+}
+
 Vec3f SkyModel::horizon_band_radiance(const Vec3f& d) const {
-  constexpr int kSamples = 8;
-  constexpr float kBand = 2.0f * kPi / 180.0f;
-  const float h = std::sqrt(d.x * d.x + d.y * d.y);
-  const Vec3f level = h > 0.0f ? Vec3f{d.x / h, d.y / h, 0.0f} : Vec3f{1.0f, 0.0f, 0.0f};
-  Vec3f sum{};
-  for (int i = 0; i < kSamples; ++i) {
-    const float e = kBand * (static_cast<float>(i) + 0.5f) / kSamples;
-    sum += above_horizon(level * std::cos(e) + Vec3f{0.0f, 0.0f, std::sin(e)});
-  }
-  return sum * (1.0f / kSamples);
+  return horizon_band_mean(d, [&](const Vec3f& v) { return above_horizon(v); });
 }
 
 Vec3f SkyModel::radiance(const Vec3f& direction) const {

@@ -16,22 +16,15 @@
 #include "renderer/sky.h"
 #include "renderer/spectral_colour.h"
 #include "terrain/ground_mesh.h"
+#include "tests/renderer/test_scenes.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::renderer {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using testing::flat_ground;
 
-// A flat square of ground, `half` metres each way, at height `z`.
-terrain::GroundMesh flat_ground(double half, float z) {
-  const int n = 3;
-  std::vector<float> h(n * n, z);
-  const double cell = 2.0 * half / (n - 1);
-  const terrain::ElevationGrid g(
-      n, n, terrain::GeoTransform{-half - cell / 2, half + cell / 2, cell, cell}, h);
-  return terrain::build_ground_mesh(g, Vec3{});
-}
+constexpr double kDeg = std::numbers::pi / 180.0;
 
 Vec3 toward(double elevation_deg, double azimuth_deg) {
   const double el = elevation_deg * kDeg, az = azimuth_deg * kDeg;

@@ -13,21 +13,14 @@
 #include "renderer/render.h"
 #include "terrain/ground_mesh.h"
 #include "tests/renderer/film_stats.h"
+#include "tests/renderer/test_scenes.h"
 #include "tests/support/single_item.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::renderer {
 namespace {
 
-// A flat square of ground, `half` metres each way, at z = 0.
-terrain::GroundMesh flat_ground(double half) {
-  const int n = 3;
-  std::vector<float> h(n * n, 0.0f);
-  const double cell = 2.0 * half / (n - 1);
-  const terrain::ElevationGrid g(
-      n, n, terrain::GeoTransform{-half - cell / 2, half + cell / 2, cell, cell}, h);
-  return terrain::build_ground_mesh(g, Vec3{});
-}
+using testing::flat_ground;
 
 Sky uniform_sky(float l) {
   Sky s;

@@ -10,21 +10,15 @@
 #include "renderer/sensor_band.h"
 #include "renderer/sky.h"
 #include "terrain/ground_mesh.h"
+#include "tests/renderer/test_scenes.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::renderer {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using testing::flat_ground;
 
-terrain::GroundMesh flat_ground(double half) {
-  const int n = 3;
-  std::vector<float> h(n * n, 0.0f);
-  const double cell = 2.0 * half / (n - 1);
-  const terrain::ElevationGrid g(
-      n, n, terrain::GeoTransform{-half - cell / 2, half + cell / 2, cell, cell}, h);
-  return terrain::build_ground_mesh(g, Vec3{});
-}
+constexpr double kDeg = std::numbers::pi / 180.0;
 
 Scene white_plane_with_bands() {
   Scene s;

@@ -6,6 +6,16 @@
 
 namespace landsim::renderer::testing {
 
+// A flat square of ground, `half` metres each way from the origin, at height `z`.
+inline terrain::GroundMesh flat_ground(double half, float z = 0.0f) {
+  const int n = 3;
+  std::vector<float> h(n * n, z);
+  const double cell = 2.0 * half / (n - 1);
+  const terrain::ElevationGrid g(
+      n, n, terrain::GeoTransform{-half - cell / 2, half + cell / 2, cell, cell}, h);
+  return terrain::build_ground_mesh(g, Vec3{});
+}
+
 // A north-south ridge 200 m square: an east-facing slope (x > 100) and a west-facing one,
 // both 26.6 degrees, lit by a sun in the east at 30 degrees, seen from the south.
 inline Scene ridge_scene() {
