@@ -49,7 +49,7 @@ TEST(Prospect, AgreesWithAnIndependentEvaluation) {
 TEST(Prospect, TypicalLeafHasThePublishedShape) {
   // The typical green leaf (N 1.5, Cab 40, Car 8, Cw 0.01, Cm 0.009): reflectance near 0.05 at
   // 670 nm (chlorophyll's red absorption), a green peak near 550 nm, the red edge rising to
-  // 0.4-0.5 past 750 nm (Jacquemoud and Baret 1990; Feret et al. 2017, figure 6).
+  // 0.4-0.5 past 750 nm (Jacquemoud and Baret 1990; Feret et al. 2017).
   const LeafContents typical;
   const auto [r550, t550] = at(typical, 550);
   const auto [r670, t670] = at(typical, 670);
