@@ -169,6 +169,37 @@ TEST(Physics, BrightnessIsLinearInSunIrradiance) {
   EXPECT_NEAR(sb / sa, 2.0, 1e-5);
 }
 
+TEST(Physics, WaterMirrorsTheSkyWithSchlicksFresnel) {
+  // Water with a black body under a uniform sky of 5000 cd/m2 and no sun: what a pixel sees
+  // is the mirrored sky times Schlick's F = 0.02 + 0.98 (1 - cos)^5 (docs/SCENARIO.md
+  // [ground] water). Two grazing angles of a 0.5 degree view: 60 and 85 degrees from the normal.
+  Scene s;
+  s.ground.mesh = flat_ground(5e4);
+  s.ground.materials = {{{0.0f, 0.0f, 0.0f}, true}};
+  s.ground.triangle_material.assign(s.ground.mesh.triangle_count(), 1);
+  s.sky.model = SkyKind::gradient;
+  s.sky.zenith_radiance = s.sky.horizon_radiance = {5000.0f, 5000.0f, 5000.0f};
+  s.sun.irradiance = {0.0f, 0.0f, 0.0f};
+  s.settings.spp = 64;
+  for (const double incidence : {60.0, 85.0}) {
+    const double down = (90.0 - incidence) * std::numbers::pi / 180.0;
+    const View v{
+        "v", {0.0, 0.0, 10.0}, {std::cos(down) * 100.0, 0.0, 10.0 - std::sin(down) * 100.0}, 0.5, 8,
+        8};
+    const Film film = Renderer(s).render(v, {});
+    double mean = 0.0;
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) {
+        ASSERT_EQ(film.object(x, y), static_cast<std::uint8_t>(ObjectClass::ground));
+        mean += film.luminance(x, y);
+      }
+    mean /= static_cast<double>(film.pixel_count());
+    const double c = std::cos(incidence * std::numbers::pi / 180.0);
+    const double fresnel = 0.02 + 0.98 * std::pow(1.0 - c, 5.0);
+    EXPECT_NEAR(mean / (5000.0 * fresnel), 1.0, 0.03) << incidence << " degrees";
+  }
+}
+
 TEST(Physics, AovsAgreeWithTheScene) {
   Scene s = lit_ridge();
   TreePrototype box;
