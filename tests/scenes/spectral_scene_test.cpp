@@ -169,3 +169,43 @@ TEST(SpectralScene, BareGroundTakesTheMeasuredSoilAndItsMoisture) {
 
 }  // namespace
 }  // namespace landsim::scenes
+
+namespace landsim::scenes {
+namespace {
+
+TEST(SpectralScene, SunIrradianceOverrideSetsTheSunsStrengthAndColour) {
+  // [sun] irradiance replaces the model's sun: its value reaches the scene, and the sunlight
+  // a render shows scales with it (the sky's part, rendered with the sun off, held apart).
+  const std::string text =
+      landsim::testing::read_file(landsim::testing::source_file("scenes/examples/ndvi.toml"));
+  const auto scene_with = [&](const std::string& irradiance) {
+    std::string t = text;
+    t.replace(t.find("azimuth = 30.0"), 14, "azimuth = 30.0\nirradiance = " + irradiance);
+    Scenario s =
+        parse_scenario(t, "sun.toml", landsim::testing::source_file("scenes/examples").string());
+    s.species.clear();
+    s.views[0].width = 32;
+    s.views[0].height = 24;
+    s.render.spp = 8;
+    return build_scene(s);
+  };
+  const renderer::Scene off = scene_with("[0.0, 0.0, 0.0]");
+  const renderer::Scene white = scene_with("[40000.0, 40000.0, 40000.0]");
+  const renderer::Scene warm = scene_with("[80000.0, 60000.0, 40000.0]");
+  EXPECT_EQ(warm.sun.irradiance, (Vec3f{80000.0f, 60000.0f, 40000.0f}));
+  const auto mean = [](const renderer::Scene& scene) {
+    const renderer::Film f = renderer::Renderer(scene).render(scene.views[0], {});
+    Vec3 sum{};
+    for (int y = 0; y < f.height(); ++y)
+      for (int x = 0; x < f.width(); ++x) sum += Vec3(f.rgb(x, y));
+    return sum / static_cast<double>(f.pixel_count());
+  };
+  const Vec3 sky = mean(off), a = mean(white), b = mean(warm);
+  // The sunlight of `warm` over that of `white`, channel by channel: 2, 1.5, 1.
+  EXPECT_NEAR((b.x - sky.x) / (a.x - sky.x), 2.0, 0.06);
+  EXPECT_NEAR((b.y - sky.y) / (a.y - sky.y), 1.5, 0.05);
+  EXPECT_NEAR((b.z - sky.z) / (a.z - sky.z), 1.0, 0.04);
+}
+
+}  // namespace
+}  // namespace landsim::scenes
