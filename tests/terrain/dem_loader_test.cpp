@@ -159,6 +159,25 @@ TEST(DemLoader, GarbageIsAClearError) {
   expect_input_error(path.string(), "not a raster format");
 }
 
+TEST(DemLoader, GridsOverAHundredMillionCellsAreRefusedFromTheirHeader) {
+  // docs/SCENARIO.md: "Grids larger than 100 million cells are refused". The headers alone
+  // (no heights follow): refused before any cell is read, at 100,020,000 cells; at exactly
+  // 100 million the header passes and the missing heights are the error.
+  TempDir dir;
+  const auto header = [](int cols, int rows) {
+    return "ncols " + std::to_string(cols) + "\nnrows " + std::to_string(rows) +
+           "\nxllcorner 0\nyllcorner 0\ncellsize 1\nNODATA_value -9999\n1 2 3\n";
+  };
+  const auto over = dir.write("over.asc", header(20'000, 5'001));
+  expect_input_error(over.string(), "exceeds the limit of 100000000 cells");
+  const auto at = dir.write("at.asc", header(10'000, 10'000));
+  try {
+    open_elevation_raster(at.string());
+  } catch (const InputError& e) {
+    FAIL() << "100 million cells refused: " << e.what();
+  }
+}
+
 TEST(DemLoader, MissingFileIsAClearError) {
   expect_input_error("/nonexistent/dem.asc", "not found");
 }
