@@ -3,6 +3,7 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -698,6 +699,64 @@ TEST(Cli, ImageSetsNameEveryFrameAndListThemInTheManifest) {
   EXPECT_EQ(manifest["images"][1]["time_s"], 3.0);
   EXPECT_EQ(manifest["wind"]["speed"], 12.0);
   EXPECT_NE(testing::read_file(out / "v_f0000.exr"), testing::read_file(out / "v_f0001.exr"));
+}
+
+TEST(Cli, RenderedExrHoldsEveryLayerAndTheDocumentedMetadata) {
+  // docs/SCENARIO.md "Image sets" and docs/ATMOSPHERE.md: the layers, the string metadata,
+  // and OpenEXR's camera matrices, which put the camera at the camera frame's origin and
+  // its target straight ahead, at the image's centre.
+  TempDir dir;
+  std::string text = scenario("", "", "spp = 1\nseed = 7");
+  text += "\n[sky]\nturbidity = 4.0\n[haze]\nvisibility = 9000.0\n";
+  const auto file = dir.write("meta.toml", text);
+  const auto out = dir / "out";
+  const Result r = run("render " + file.string() + " --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Imf::InputFile in((out / "v.exr").c_str());
+  const Imf::Header& h = in.header();
+  for (const char* name : {"R", "G", "B", "Y", "Z", "N.X", "N.Y", "N.Z", "albedo.R", "albedo.G",
+                           "albedo.B", "object", "species", "instance", "lod", "target"})
+    EXPECT_NE(h.channels().findChannel(name), nullptr) << name;
+  const auto meta = [&](const std::string& key) {
+    const auto* a = h.findTypedAttribute<Imf::StringAttribute>("landsim/" + key);
+    return a != nullptr ? a->value() : std::string("(missing)");
+  };
+  EXPECT_EQ(meta("sun_elevation_deg"), "30");
+  EXPECT_EQ(meta("sun_azimuth_deg"), "300");
+  EXPECT_EQ(meta("sky"), "hosek-wilkie turbidity 4");
+  EXPECT_EQ(meta("haze"), "visibility 9000 m, scale height 1200 m");
+  EXPECT_EQ(meta("spp"), "1");
+  EXPECT_EQ(meta("seed"), "7");
+  EXPECT_EQ(meta("view"), "v");
+  // The scenario's hash: FNV-1a 64 of the file's text, in hex.
+  std::uint64_t fnv = 0xcbf29ce484222325ULL;
+  for (const char c : text) fnv = (fnv ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv));
+  EXPECT_EQ(meta("scenario_hash"), hex);
+  // Positions in the EXR's matrices are relative to the scene origin (the grid's centre).
+  double ox = 0, oy = 0, oz = 0;
+  std::istringstream(meta("scene_origin")) >> ox >> oy >> oz;
+  EXPECT_DOUBLE_EQ(ox, 305.0);  // 61 cells of 10 m
+  EXPECT_DOUBLE_EQ(oy, 435.0);  // 87 cells
+  ASSERT_TRUE(Imf::hasWorldToCamera(h));
+  ASSERT_TRUE(Imf::hasWorldToNDC(h));
+  const Imath::V3f eye(float(500.0 - ox), float(900.0 - oy), float(330.0 - oz));
+  const Imath::V3f target(float(280.0 - ox), float(280.0 - oy), float(130.0 - oz));
+  Imath::V3f in_camera;
+  Imf::worldToCamera(h).multVecMatrix(eye, in_camera);
+  EXPECT_NEAR(in_camera.length(), 0.0f, 0.01f);
+  Imf::worldToCamera(h).multVecMatrix(target, in_camera);
+  EXPECT_NEAR(in_camera.x, 0.0f, 0.01f);
+  EXPECT_NEAR(in_camera.y, 0.0f, 0.01f);
+  EXPECT_NEAR(-in_camera.z, (target - eye).length(), 0.01f);
+  Imath::V3f ndc;
+  Imf::worldToNDC(h).multVecMatrix(target, ndc);
+  EXPECT_NEAR(ndc.x, 0.0f, 1e-4f);
+  EXPECT_NEAR(ndc.y, 0.0f, 1e-4f);
+  // A point 50 m above the target is higher in the image (NDC y up).
+  Imf::worldToNDC(h).multVecMatrix(target + Imath::V3f(0, 0, 50), ndc);
+  EXPECT_GT(ndc.y, 0.1f);
 }
 
 TEST(Cli, RenderWritesBandLayersAndListsTheBands) {
