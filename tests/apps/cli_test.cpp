@@ -759,6 +759,36 @@ TEST(Cli, RenderedExrHoldsEveryLayerAndTheDocumentedMetadata) {
   EXPECT_GT(ndc.y, 0.1f);
 }
 
+TEST(Cli, TaskIndexRendersOneImageAndCheckFindsTheMissingOnes) {
+  // docs/CLUSTER.md, without MPI: image N of the set, frame-major (N = frame x views + view);
+  // --check renders nothing, lists what is missing (exit 1), then writes the manifest (exit 0).
+  TempDir dir;
+  std::string text = scenario("", "", "spp = 1\nframes = [0.0, 2.0]");
+  text +=
+      "\n[[views]]\nname = \"w\"\nposition = [100.0, 100.0, 400.0]\n"
+      "target = [300.0, 400.0, 150.0]\nwidth = 16\nheight = 12\n";
+  const auto file = dir.write("set.toml", text);
+  const auto out = dir / "out";
+  const auto render = [&](const std::string& extra) {
+    return run("render " + file.string() + " --out " + out.string() + " " + extra, dir);
+  };
+  ASSERT_EQ(render("--task-index 3").exit_code, 0);  // frame 1, view w
+  EXPECT_TRUE(std::filesystem::exists(out / "w_f0001.exr"));
+  EXPECT_FALSE(std::filesystem::exists(out / "v_f0000.exr"));
+  EXPECT_FALSE(std::filesystem::exists(out / "v_f0001.exr"));
+  const Result missing = render("--check");
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("v_f0000.exr"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("w_f0000.exr"), std::string::npos) << missing.err;
+  EXPECT_EQ(missing.err.find("w_f0001.exr"), std::string::npos) << missing.err;
+  EXPECT_NE(render("--task-index 4").exit_code, 0);  // the set has 4 images: 0-3
+  for (int i : {0, 1, 2}) ASSERT_EQ(render("--task-index " + std::to_string(i)).exit_code, 0);
+  const Result done = render("--check");
+  EXPECT_EQ(done.exit_code, 0) << done.err;
+  const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
+  EXPECT_EQ(manifest["images"].size(), 4u);
+}
+
 TEST(Cli, RenderWritesBandLayersAndListsTheBands) {
   TempDir dir;
   dir.write("nir.csv", "nm,response\n770,0\n770,1\n900,1\n900,0\n");
