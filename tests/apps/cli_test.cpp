@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <regex>
 #include <set>
@@ -787,6 +788,37 @@ TEST(Cli, TaskIndexRendersOneImageAndCheckFindsTheMissingOnes) {
   EXPECT_EQ(done.exit_code, 0) << done.err;
   const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
   EXPECT_EQ(manifest["images"].size(), 4u);
+}
+
+TEST(Cli, KagweneExampleRendersOneViewFromAnotherFolder) {
+  // README: render scenes/examples/kagwene.toml --view highlands: the real sanctuary, its
+  // paths resolved against the scenario wherever landsim runs; only the named view is drawn.
+  TempDir dir;
+  const auto out = dir / "kagwene";
+  const Result r = run("render " + testing::source_file("scenes/examples/kagwene.toml").string() +
+                           " --view highlands --width 48 --spp 1 --json --out " + out.string(),
+                       dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  ASSERT_EQ(json["images"].size(), 1u);
+  EXPECT_EQ(json["images"][0]["view"], "highlands");
+  EXPECT_TRUE(std::filesystem::exists(out / "highlands.exr"));
+  EXPECT_FALSE(std::filesystem::exists(out / "north_rim.exr"));
+  const auto manifest = nlohmann::json::parse(testing::read_file(out / "manifest.json"));
+  ASSERT_EQ(manifest["images"].size(), 1u);
+  EXPECT_EQ(manifest["images"][0]["camera"]["width"], 48);
+  // The sanctuary's trees are drawn: some pixels are leaves (object 3).
+  Imf::InputFile in((out / "highlands.exr").c_str());
+  const Imath::Box2i w = in.header().dataWindow();
+  const int width = w.max.x - w.min.x + 1, height = w.max.y - w.min.y + 1;
+  std::vector<std::uint32_t> object(static_cast<std::size_t>(width * height));
+  Imf::FrameBuffer fb;
+  fb.insert("object", Imf::Slice(Imf::UINT, reinterpret_cast<char*>(object.data()),
+                                 sizeof(std::uint32_t), sizeof(std::uint32_t) * width));
+  in.setFrameBuffer(fb);
+  in.readPixels(w.min.y, w.max.y);
+  EXPECT_GT(std::count(object.begin(), object.end(), 3u), 0);
+  EXPECT_GT(std::count(object.begin(), object.end(), 1u), 0);  // and the ground
 }
 
 TEST(Cli, RenderWritesBandLayersAndListsTheBands) {
