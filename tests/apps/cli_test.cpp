@@ -20,6 +20,7 @@
 
 #include "tests/support/run_program.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/tools.h"
 
 namespace landsim {
 namespace {
@@ -962,6 +963,7 @@ TEST(Cli, TerminatedRenderWritesItsCheckpointAndResumes) {
 }
 
 TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   std::string classes =
       "ncols 61\nnrows 87\nxllcorner 0.0\nyllcorner 0.0\ncellsize 10.0\nNODATA_value -9999\n";

@@ -10,6 +10,7 @@
 
 #include "tests/support/run_program.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/tools.h"
 
 namespace landsim {
 namespace {
@@ -122,6 +123,7 @@ TEST(JsonContract, Discover) {
 }
 
 TEST(JsonContract, Crosscheck) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   const auto file =
       dir.write("s.toml", "[terrain]\nelevation = \"" +

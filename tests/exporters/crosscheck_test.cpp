@@ -22,6 +22,7 @@
 #include "scenes/scene_builder.h"
 #include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/tools.h"
 
 namespace landsim::exporters {
 namespace {
@@ -76,6 +77,7 @@ int tree_pixels_in_view(const renderer::Scene& scene) {
 }
 
 TEST(Crosscheck, SmallSceneAgreesWithPovRay) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   const Scenario s = small_scene(dir);
   const renderer::Scene scene = build_scene(s);
@@ -98,6 +100,7 @@ TEST(Crosscheck, SmallSceneAgreesWithPovRay) {
 }
 
 TEST(Crosscheck, SceneObjectsAgreeWithPovRayAndJoinTheObjectIou) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   const auto vehicle = [](const std::string& name, const std::string& file, double x, double y,
                           double heading) {
@@ -147,6 +150,7 @@ void expect_agreement(const CrosscheckReport& r) {
 // A reference of the user's: POV-Ray's own images from an earlier run, landsim's render, the
 // render shifted by two pixels, an 8-bit preview of it, an image of the wrong size.
 TEST(Crosscheck, AReferenceImageComparesLikePovRayRunOnTheSpot) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   const Scenario s = small_scene(dir);
   const renderer::Scene scene = build_scene(s);
@@ -223,6 +227,7 @@ TEST(Crosscheck, AReferenceImageComparesLikePovRayRunOnTheSpot) {
 }
 
 TEST(Crosscheck, SwayingAndLeaningTreesAgreeWithPovRay) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   // A strong wind: every tree swayed in its phase group and leaning by several degrees.
   const Scenario s =
@@ -238,11 +243,13 @@ TEST(Crosscheck, SwayingAndLeaningTreesAgreeWithPovRay) {
 }
 
 TEST(Crosscheck, GraphPathsTreesAgreeWithPovRay) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   expect_agreement(crosscheck_species(dir, "graph_column.toml"));
 }
 
 TEST(Crosscheck, SelfOrganizingTreesAgreeWithPovRay) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   expect_agreement(crosscheck_species(dir, "so_envelope.toml"));
   // Leaves coloured by vigour are exported one mesh per vigour level, each in its colour.
@@ -254,16 +261,19 @@ TEST(Crosscheck, SelfOrganizingTreesAgreeWithPovRay) {
 }
 
 TEST(Crosscheck, HarmonicTreesAgreeWithPovRay) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   expect_agreement(crosscheck_species(dir, "harmonic_american_elm.toml"));
 }
 
 TEST(Crosscheck, MeasuredGrowthTreesAgreeWithPovRay) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   expect_agreement(crosscheck_species(dir, "london_plane.toml"));
 }
 
 TEST(Crosscheck, AMovedCameraFails) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   const Scenario s = small_scene(dir);
   const renderer::Scene scene = build_scene(s);
@@ -280,6 +290,7 @@ TEST(Crosscheck, AMovedCameraFails) {
 // camera was moved), its camera block rewritten as a user writes one. landsim at the
 // scenario's view does not match POV-Ray's framing; landsim at the file's camera does.
 TEST(Crosscheck, AUsersPovSceneIsComparedAtItsCamera) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   const Scenario s = small_scene(dir);
   const renderer::Scene scene = build_scene(s);
@@ -324,6 +335,7 @@ TEST(Crosscheck, AUsersPovSceneIsComparedAtItsCamera) {
 // A scene of the user's own making, without LS_Mask, in a directory whose name a shell would
 // misread: POV-Ray renders it there, coverage is not compared.
 TEST(Crosscheck, AUsersSceneWithoutAMaskComparesLuminanceOnly) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
   TempDir dir;
   const Scenario s = small_scene(dir);
   const renderer::Scene scene = build_scene(s);
