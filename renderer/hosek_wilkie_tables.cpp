@@ -1,6 +1,7 @@
 #include "renderer/hosek_wilkie_tables.h"
 
-#include <charconv>
+#include "renderer/detail/number_table.h"
+
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -18,41 +19,14 @@ extern const std::string_view kHosekWilkieSpectralRadianceCsv;
 
 namespace {
 
-// The numeric fields of every data row after the header, in order; the first
-// `skip_columns` fields of each row (keys such as the channel letter) are dropped. The
-// files are ours and fixed, so a malformed one is a build error, reported loudly.
-std::vector<double> numbers_of(std::string_view csv, int skip_columns, const char* name) {
-  std::vector<double> out;
-  std::size_t line_start = csv.find('\n') + 1;  // past the header
-  while (line_start < csv.size()) {
-    std::size_t line_end = csv.find('\n', line_start);
-    if (line_end == std::string_view::npos) line_end = csv.size();
-    std::string_view line = csv.substr(line_start, line_end - line_start);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    int column = 0;
-    while (!line.empty()) {
-      const std::size_t comma = line.find(',');
-      const std::string_view field = line.substr(0, comma);
-      if (column++ >= skip_columns) {
-        double v = 0.0;
-        const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
-        if (ec != std::errc{} || end != field.data() + field.size())
-          throw std::logic_error(std::string("embedded ") + name +
-                                 ": not a number: " + std::string(field));
-        out.push_back(v);
-      }
-      if (comma == std::string_view::npos) break;
-      line.remove_prefix(comma + 1);
-    }
-    line_start = line_end + 1;
-  }
-  return out;
-}
-
 template <std::size_t N>
 void fill(std::array<double, N>& to, std::string_view csv, int keys, int values_per_row,
           const char* name) {
-  const std::vector<double> all = numbers_of(csv, 0, name);
+  // The numeric fields of every data row after the header, in order (the files are ours and
+  // fixed: a malformed one is a build error, reported loudly).
+  std::vector<double> all;
+  for (const auto& row : detail::number_rows(csv, name))
+    all.insert(all.end(), row.begin(), row.end());
   const std::size_t per_row = static_cast<std::size_t>(keys + values_per_row);
   if (all.size() != N / static_cast<std::size_t>(values_per_row) * per_row)
     throw std::logic_error(std::string("embedded ") + name + ": unexpected number of values");

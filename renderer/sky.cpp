@@ -25,6 +25,22 @@ Vec3f direction_of(float theta, float phi) {
 
 float luminance(const Vec3f& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
+// The integral of f(direction) over the upper hemisphere's solid angle: the midpoint rule on
+// `steps` rings of theta and twice as many sectors of phi. For irradiance f is L cos.
+template <typename F>
+auto upper_hemisphere_integral(int steps, F&& f) {
+  decltype(f(Vec3f{})) sum{};
+  for (int i = 0; i < steps; ++i) {
+    const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / static_cast<float>(steps);
+    for (int j = 0; j < 2 * steps; ++j) {
+      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / static_cast<float>(2 * steps);
+      sum += f(direction_of(theta, phi)) * std::sin(theta);
+    }
+  }
+  const float cell = (0.5f * kPi / static_cast<float>(steps)) * (kPi / static_cast<float>(steps));
+  return sum * cell;
+}
+
 }  // namespace
 
 SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
@@ -35,30 +51,17 @@ SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
   if (sky.model == SkyKind::hosek_wilkie)
     hosek_wilkie_ = std::make_unique<HosekWilkieSky>(elevation, sky.turbidity, Vec3(ground_albedo));
   build_sun_disc(sun, elevation);
-  // E = integral over the upper hemisphere of L cos: midpoint rule on a fine grid.
+  // E = integral over the upper hemisphere of L cos, on a fine grid.
   constexpr int kSteps = 96;
-  Vec3f sum{};
-  for (int i = 0; i < kSteps; ++i) {
-    const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / kSteps;
-    for (int j = 0; j < 2 * kSteps; ++j) {
-      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / (2 * kSteps);
-      sum += above_horizon(direction_of(theta, phi)) * (std::cos(theta) * std::sin(theta));
-    }
-  }
-  sky_irradiance_ = sum * ((0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps)));
+  sky_irradiance_ =
+      upper_hemisphere_integral(kSteps, [&](const Vec3f& d) { return above_horizon(d) * d.z; });
   const float sun_cos = static_cast<float>(std::max(sun.direction.z, 0.0));
   const Vec3f plain_irradiance = sun.irradiance * sun_cos + sky_irradiance_;
   below_horizon_ = ground_albedo * plain_irradiance * (1.0f / kPi);
   // Upper hemisphere: its mean radiance is the integral of L over 2 pi; lower: the plain.
-  Vec3f upper{};
-  for (int i = 0; i < kSteps; ++i) {
-    const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / kSteps;
-    for (int j = 0; j < 2 * kSteps; ++j) {
-      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / (2 * kSteps);
-      upper += above_horizon(direction_of(theta, phi)) * std::sin(theta);
-    }
-  }
-  upper = upper * ((0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps)) / (2.0f * kPi));
+  const Vec3f upper =
+      upper_hemisphere_integral(kSteps, [&](const Vec3f& d) { return above_horizon(d); }) *
+      (1.0f / (2.0f * kPi));
   mean_radiance_ = (upper + below_horizon_) * 0.5f;
   build_table();
   build_spectra(sun, elevation, ground_albedo);
@@ -198,18 +201,10 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
   } else {
     sun_spectrum_ = emission_spectrum(sun.irradiance);
   }
+  sun_luminance_ = luminance(spectrum_to_rgb(sun_spectrum_));
   // The sunlit plain below the horizon, as for RGB: its albedo x (sun + sky) / pi.
-  constexpr int kSteps = 32;
-  Spectrum sky_irradiance{};
-  for (int i = 0; i < kSteps; ++i) {
-    const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / kSteps;
-    for (int j = 0; j < 2 * kSteps; ++j) {
-      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / (2 * kSteps);
-      sky_irradiance +=
-          above_horizon_spectral(direction_of(theta, phi)) * (std::cos(theta) * std::sin(theta));
-    }
-  }
-  sky_irradiance *= (0.5f * kPi / kSteps) * (2.0f * kPi / (2 * kSteps));
+  const Spectrum sky_irradiance = upper_hemisphere_integral(
+      32, [&](const Vec3f& d) { return above_horizon_spectral(d) * d.z; });
   const float sun_cos = static_cast<float>(std::max(sun.direction.z, 0.0));
   below_horizon_spectrum_ = ground * (sun_spectrum_ * sun_cos + sky_irradiance) * (1.0f / kPi);
 }
@@ -235,9 +230,8 @@ Spectrum SkyModel::sun_spectral_radiance(const Vec3f& direction) const {
   // The disc's luminance profile for every wavelength: the spectrum of its whole irradiance
   // times the share of it this point of the disc carries.
   const float y = luminance(sun_radiance(direction));
-  if (y <= 0.0f) return {};
-  const float total = luminance(spectrum_to_rgb(sun_spectrum_));
-  return total > 0.0f ? sun_spectrum_ * (y / total) : Spectrum{};
+  if (y <= 0.0f || sun_luminance_ <= 0.0f) return {};
+  return sun_spectrum_ * (y / sun_luminance_);
 }
 
 namespace {

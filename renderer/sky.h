@@ -84,6 +84,7 @@ class SkyModel {
   std::unique_ptr<HosekWilkieSky> spectral_sky_;
   std::array<BinSource, kSpectrumBins> sky_bins_{};
   Spectrum sun_spectrum_, below_horizon_spectrum_;
+  float sun_luminance_ = 0.0f;  // of sun_spectrum_
   // Sampling table: rows of theta (0 = zenith), columns of phi.
   std::vector<float> weights_;   // per cell
   std::vector<float> row_cdf_;   // kRows + 1
