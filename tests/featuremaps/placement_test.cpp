@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -44,15 +45,29 @@ TEST(Placement, DensityMatchesWithinAFewPercent) {
 
 TEST(Placement, TreesStandInTheirCellsOnTheSurface) {
   const World w;
-  for (const PlacedTree& p :
-       place_trees(w.map, w.terrain, {{0, 200.0, 1.0, 3, 0.2}, {3, 200.0, 1.0, 3, 0.2}}, 9)) {
+  const std::vector<PlacedTree> placed =
+      place_trees(w.map, w.terrain, {{0, 200.0, 1.0, 3, 0.2}, {3, 200.0, 1.0, 3, 0.2}}, 9);
+  std::map<std::uint32_t, int> per_species, per_variant;
+  double smallest = 2.0, largest = 0.0;
+  for (const PlacedTree& p : placed) {
     const int bit = p.species == 0 ? 0 : 3;
     ASSERT_EQ(w.map.cell_at(p.x, p.y)->species_bit(), bit);
     ASSERT_DOUBLE_EQ(p.z, 50.0);
     ASSERT_LT(p.variant, 3u);
     ASSERT_GE(p.scale, 0.8);
     ASSERT_LE(p.scale, 1.2);
+    ++per_species[p.species];
+    ++per_variant[p.variant];
+    smallest = std::min(smallest, p.scale);
+    largest = std::max(largest, p.scale);
   }
+  // Both species stand on their halves (about 50 ha each at 200 per hectare), in all three
+  // variants, and the scales fill 1 +- 0.2.
+  EXPECT_GT(per_species[0], 9000);
+  EXPECT_GT(per_species[1], 9000);
+  for (std::uint32_t v = 0; v < 3; ++v) EXPECT_GT(per_variant[v], 5000) << v;
+  EXPECT_LT(smallest, 0.81);
+  EXPECT_GT(largest, 1.19);
 }
 
 TEST(Placement, MinimumSpacingHolds) {
@@ -114,8 +129,10 @@ TEST(Placement, NoTreesWhereTheTerrainHasNoHeight) {
     for (int c = 0; c < 20; ++c) h[static_cast<std::size_t>(r) * 101 + c] = NAN;
   const terrain::ElevationGrid holey(101, 101, terrain::GeoTransform{-5.0, 1005.0, 10.0, 10.0}, h);
   const World w;
-  for (const PlacedTree& p : place_trees(w.map, holey, {{0, 100.0, 0.0, 1, 0.0}}, 1))
-    ASSERT_GT(p.x, 185.0);
+  const std::vector<PlacedTree> placed = place_trees(w.map, holey, {{0, 100.0, 0.0, 1, 0.0}}, 1);
+  for (const PlacedTree& p : placed) ASSERT_GT(p.x, 185.0);
+  // The rest of the species' half (x from about 190 m to 510 m, 32 ha) keeps its density.
+  EXPECT_NEAR(static_cast<double>(placed.size()), 100.0 * 32.0, 0.1 * 100.0 * 32.0);
 }
 
 }  // namespace

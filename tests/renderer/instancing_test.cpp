@@ -100,17 +100,24 @@ TEST(Instancing, InstancesAppearWhereTheirTransformPutsThem) {
 }
 
 TEST(Instancing, RotationAboutTheVerticalTurnsThePrototype) {
-  Scene s = base_scene();
-  s.prototypes.push_back(panel(trees::Group::trunk));
-  s.instances.push_back(
-      {0, {20.0, 0.0, 0.0}, std::numbers::pi / 2.0, 1.0});  // now edge-on to the camera
-  const View view{"v", {0.0, 0.0, 2.0}, {1.0, 0.0, 2.0}, 30.0, 32, 32};
-  const Film film = Renderer(s).render(view, {});
-  int bark = 0;
-  for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 32; ++x)
-      bark += film.object(x, y) == static_cast<std::uint8_t>(ObjectClass::bark);
-  EXPECT_LT(bark, 8);  // a sliver at most
+  // The same panel face-on, turned a quarter (edge-on to the camera) and a half turn (face-on
+  // again, from behind): the edge-on one is a sliver at most, the others cover the same area.
+  const auto bark_pixels = [](double heading) {
+    Scene s = base_scene();
+    s.prototypes.push_back(panel(trees::Group::trunk));
+    s.instances.push_back({0, {20.0, 0.0, 0.0}, heading, 1.0});
+    const View view{"v", {0.0, 0.0, 2.0}, {1.0, 0.0, 2.0}, 30.0, 32, 32};
+    const Film film = Renderer(s).render(view, {});
+    int bark = 0;
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 32; ++x)
+        bark += film.object(x, y) == static_cast<std::uint8_t>(ObjectClass::bark);
+    return bark;
+  };
+  const int face_on = bark_pixels(0.0);
+  EXPECT_GT(face_on, 50);  // 2 m x 4 m at 20 m: about 6 x 12 pixels
+  EXPECT_LT(bark_pixels(std::numbers::pi / 2.0), 8);
+  EXPECT_NEAR(bark_pixels(std::numbers::pi), face_on, 0.05 * face_on);
 }
 
 double mean_luminance_of(const Film& film, ObjectClass object) {
