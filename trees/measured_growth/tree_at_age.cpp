@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "core/counter_rng.h"
 #include "trees/leaf_shape.h"
@@ -16,18 +17,42 @@ constexpr double kMinLength = 0.01;     // metres: shorter branches are left out
 }  // namespace
 
 // The crown's shape at time t: a cylinder of radius f_CD / 2 under a dome that sinks from
-// f_H on the axis by 30 % of the crown height at the rim. Convex, and growing with age
-// (f_H grows faster than 0.3 f_CH), so a branch's room never shrinks.
+// f_H on the axis to the rim, over a floor at the crown base f_H - f_CH. Convex. The rim is
+// the highest f_H - 0.3 f_CH has been up to t: a tree whose height levels off while its crown
+// height still grows would otherwise sink its rim and shorten branches. Radius, top and rim
+// only grow, so above the floor a branch's room never shrinks; the floor rises as the crown
+// is raised, cutting back what hangs below it as crown raising takes low scaffolds.
 struct Envelope {
-  double radius, top, dome;
+  double radius, top, rim, floor;
   bool contains(const Vec3& p) const {
     const double r = std::hypot(p.x, p.y) / radius;
-    return r <= 1.0 && p.z <= top - dome * (1.0 - std::sqrt(std::max(0.0, 1.0 - r * r)));
+    const double c = std::sqrt(std::max(0.0, 1.0 - r * r));
+    return r <= 1.0 && p.z >= floor && p.z <= rim + (top - rim) * c;
   }
 };
-Envelope envelope_at(const Allometry& a, double t) {
-  return {0.5 * a.f_crown_diameter(t), a.f_height(t), 0.3 * a.f_crown_height(t)};
-}
+
+// Envelopes over time, the rim's running maximum sampled every quarter year.
+class CrownShape {
+ public:
+  CrownShape(const Allometry& a, double until) : a_(a) {
+    double highest = -1e30;
+    for (int k = 0; k * kStep <= until + kStep; ++k) {
+      const double t = k * kStep;
+      highest = std::max(highest, a.f_height(t) - 0.3 * a.f_crown_height(t));
+      rim_.push_back(highest);
+    }
+  }
+  Envelope at(double t) const {
+    const auto k = std::min(rim_.size() - 1, static_cast<std::size_t>(std::max(0.0, t) / kStep));
+    return {0.5 * a_.f_crown_diameter(t), a_.f_height(t), rim_[k],
+            a_.f_height(t) - a_.f_crown_height(t)};
+  }
+
+ private:
+  static constexpr double kStep = 0.25;  // years
+  const Allometry& a_;
+  std::vector<double> rim_;
+};
 
 // How far from `base` along `dir` a branch stays inside (bisection: the shape is convex).
 double room(const Vec3& base, const Vec3& dir, const Envelope& e, double limit) {
@@ -50,10 +75,11 @@ TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, doub
   tree.dbh_radius = p.c_dbh * a.f_dbh(age) / 200.0;
   const double h_max = a.f_height(a.max_age);
   const double l_max = p.l_max > 0.0 ? p.l_max : h_max;
-  // The branch's length at time t: grown by the age function, ended by the crown's cylinder.
+  // The branch's length at time t: grown by the age function, ended by the crown's shape.
+  const CrownShape shape(a, age);
   const auto length_at = [&](const Module& m, const Vec3& base, double t) {
     const double grown = m.c_l * l_max / h_max * a.f_height(t - m.t0);
-    return room(base, m.direction, envelope_at(a, t), grown);
+    return room(base, m.direction, shape.at(t), grown);
   };
   tree.branches.resize(modules.size());
   std::vector<bool> removed(modules.size(), false);
