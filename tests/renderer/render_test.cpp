@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <numbers>
 
 #include "tests/renderer/test_scenes.h"
 
@@ -14,18 +16,30 @@ struct SlopeMeans {
   int east_n = 0, west_n = 0;
 };
 
-SlopeMeans slope_means(const Film& film) {
+// Mean luminance of the pixels on each slope whose neighbours within kMargin pixels are on the
+// same slope too (the pixel filter mixes a pixel's neighbours into it), or with `per_albedo`
+// the mean luminance over the albedo's (the ground's colour varies over the terrain).
+constexpr int kMargin = 2;
+SlopeMeans slope_means(const Film& film, bool per_albedo = false) {
+  const auto side = [&](int x, int y) {
+    const float nx = film.normal(x, y).x;
+    return nx > 0.44f ? 1 : nx < -0.44f ? -1 : 0;
+  };
   SlopeMeans m;
   for (int y = 0; y < film.height(); ++y) {
     for (int x = 0; x < film.width(); ++x) {
-      const Vec3f n = film.normal(x, y);
-      if (n.x > 0.3f) {
-        m.east += film.luminance(x, y);
-        ++m.east_n;
-      } else if (n.x < -0.3f) {
-        m.west += film.luminance(x, y);
-        ++m.west_n;
-      }
+      const int here = side(x, y);
+      bool inside = here != 0;
+      for (int dy = -kMargin; dy <= kMargin; ++dy)
+        for (int dx = -kMargin; dx <= kMargin; ++dx)
+          inside = inside && side(std::clamp(x + dx, 0, film.width() - 1),
+                                  std::clamp(y + dy, 0, film.height() - 1)) == here;
+      if (!inside) continue;
+      const Vec3f a = film.albedo(x, y);
+      const double albedo = 0.2126 * a.x + 0.7152 * a.y + 0.0722 * a.z;
+      const double value = film.luminance(x, y) / (per_albedo ? albedo : 1.0);
+      (here > 0 ? m.east : m.west) += value;
+      ++(here > 0 ? m.east_n : m.west_n);
     }
   }
   m.east /= std::max(m.east_n, 1);
@@ -34,14 +48,34 @@ SlopeMeans slope_means(const Film& film) {
 }
 
 TEST(Renderer, SlopeFacingTheSunIsBrighter) {
-  const Scene scene = testing::ridge_scene();
-  const Renderer renderer(scene);
-  const Film film = renderer.render(scene.views[0], {});
-  const SlopeMeans m = slope_means(film);
-  ASSERT_GT(m.east_n, 100);
-  ASSERT_GT(m.west_n, 100);
-  // Sun at 30 degrees from the east: cosines 0.84 and 0.06 on the two 26.6-degree slopes.
-  EXPECT_GT(m.east, 3.0 * m.west);
+  // Sun 30 degrees up in the east over two 26.6-degree slopes (1 in 2): Lambert's cosines.
+  const double slope = std::atan(0.5), sun = 30.0 * std::numbers::pi / 180.0;
+  const double facing = std::cos(sun) * std::sin(slope) + std::sin(sun) * std::cos(slope);
+  const double away = -std::cos(sun) * std::sin(slope) + std::sin(sun) * std::cos(slope);
+  ASSERT_NEAR(facing / away, 13.9, 0.1);
+  // Sunlight alone: a black sky, a black plain beyond the grid (the west slope looks down on
+  // it: sunlit, it adds 5% there), direct light only (the ridge is convex: no slope lights
+  // the other). Each slope's luminance over its albedo is E cos / pi, E the sun's
+  // illuminance.
+  Scene scene = testing::ridge_scene();
+  scene.sky.model = SkyKind::gradient;
+  scene.sky.zenith_radiance = scene.sky.horizon_radiance = {0.0f, 0.0f, 0.0f};
+  scene.ground.edge_albedo = Vec3f{0.0f, 0.0f, 0.0f};
+  scene.settings.max_bounces = 0;
+  const SlopeMeans sunlit = slope_means(Renderer(scene).render(scene.views[0], {}), true);
+  ASSERT_GT(sunlit.east_n, 50);
+  ASSERT_GT(sunlit.west_n, 50);
+  const Vec3f e = scene.sun.irradiance;
+  const double lux = 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z;
+  EXPECT_NEAR(sunlit.east, lux * facing / std::numbers::pi, 0.01 * lux * facing / std::numbers::pi);
+  EXPECT_NEAR(sunlit.west, lux * away / std::numbers::pi, 0.01 * lux * away / std::numbers::pi);
+  EXPECT_NEAR(sunlit.east / sunlit.west, facing / away, 0.02 * facing / away);
+  // The sky lights both slopes, the west one relatively more: a smaller ratio, still large.
+  const Scene daylight = testing::ridge_scene();
+  const SlopeMeans m = slope_means(Renderer(daylight).render(daylight.views[0], {}), true);
+  EXPECT_GT(m.west, 1.2 * sunlit.west);
+  EXPECT_LT(m.east / m.west, 0.9 * facing / away);
+  EXPECT_GT(m.east / m.west, 3.0);
 }
 
 TEST(Renderer, BitIdenticalForAnyThreadCount) {
