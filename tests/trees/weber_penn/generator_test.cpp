@@ -142,15 +142,25 @@ TEST(Generator, SplitSpreadFollowsThePaperFormula) {
   Parameters p = bare_trunk(3);
   p.level[0].seg_splits = 1.0;
   p.level[0].split_angle = 40.0;
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+  // 20 + 0.75 (30 + |0 - 90|) r^2 = 20 + 90 r^2 for r uniform in [0, 1): from 20 to 110
+  // degrees, mean 20 + 90 / 3 = 50, and half the spreads below 20 + 90 / 4 = 42.5 (r < 0.5).
+  // Over 400 seeds the mean's standard error is 90 sqrt(1/5 - 1/9) / 20 = 1.34 degrees and
+  // the fraction's 0.025: the margins are three of them.
+  constexpr int kSeeds = 400;
+  double sum = 0.0;
+  int below = 0;
+  for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
     const TreeSkeleton t = generate_skeleton(p, seeded(seed));
     // stems[0] is the trunk, stems[1] its first clone (split at declination 0).
     const Vec3 a = segment_direction(t.stems[0], 1), b = segment_direction(t.stems[1], 0);
     const double spread = angle_deg({a.x, a.y, 0.0}, {b.x, b.y, 0.0});
-    // 20 + 0.75 (30 + |0 - 90|) r^2 for r in [0, 1): from 20 to 110 degrees.
-    EXPECT_GE(spread, 20.0 - 1e-6);
-    EXPECT_LE(spread, 110.0 + 1e-6);
+    ASSERT_GE(spread, 20.0 - 1e-6);
+    ASSERT_LE(spread, 110.0 + 1e-6);
+    sum += spread;
+    below += spread < 42.5;
   }
+  EXPECT_NEAR(sum / kSeeds, 50.0, 4.0);
+  EXPECT_NEAR(static_cast<double>(below) / kSeeds, 0.5, 0.075);
 }
 
 TEST(Generator, SplitAngleCorrectionTurnsBackOverTheRemainingSegments) {
