@@ -10,7 +10,9 @@
 #include <string>
 
 #include "renderer/colour_matching.h"
+#include "renderer/preetham.h"
 #include "renderer/sky.h"
+#include "renderer/spectral_colour.h"
 #include "tests/support/run_program.h"
 
 namespace landsim::renderer {
@@ -70,6 +72,48 @@ Sun sun_at(double elevation_deg, double azimuth_deg = 180.0) {
   const double el = elevation_deg * kDeg, az = azimuth_deg * kDeg;
   s.direction = {std::sin(az) * std::cos(el), std::cos(az) * std::cos(el), std::sin(el)};
   return s;
+}
+
+// Absolute light at two stated conditions, from the published formulas evaluated apart from
+// the renderer and pasted here. Derivation: tests/renderer/hosek_wilkie_reference.py's
+// functions (sky_parameters, perez_extended, sun_irradiance; written from the papers, sharing
+// no code with renderer/) at ground albedo 0.2, the zenith (theta 0, gamma 90 degrees less
+// the elevation) and a disc of 0.00465 rad:
+//   elevation 60, turbidity 2.5: zenith 2161.8 3503.2 7036.4 cd/m2 (Y 3473.1),
+//                                sun 103781 85367 65086 lux (Y 87817);
+//   elevation 30, turbidity 4:   zenith 1452.5 2468.8 4498.0 cd/m2 (Y 2399.2),
+//                                sun 90467 69616 46185 lux (Y 72357).
+// Preetham, Shirley & Smits 1999, appendix: Y_z = (4.0453 T - 4.9710) tan chi - 0.2155 T +
+// 2.4192 kcd/m2, chi = (4/9 - T/120)(pi - 2 theta_s): 8.192966 (60, 2.5) and 6.705416 (30, 4).
+// The renderer's spectral sky (the spectral tables) keeps the RGB tables' luminance within
+// 2.5% (docs/SPECTRAL.md).
+TEST(AbsoluteLight, ZenithAndSunAtStatedConditionsMatchThePublishedFormulas) {
+  struct Condition {
+    double elevation, turbidity;
+    Vec3 zenith, sun;
+    double preetham_zenith_kcd;
+  };
+  for (const Condition& c :
+       {Condition{60.0, 2.5, {2161.8, 3503.2, 7036.4}, {103781, 85367, 65086}, 8.192966},
+        Condition{30.0, 4.0, {1452.5, 2468.8, 4498.0}, {90467, 69616, 46185}, 6.705416}}) {
+    const std::string at = "elevation " + std::to_string(c.elevation);
+    const double e = c.elevation * kDeg;
+    const HosekWilkieSky sky(e, c.turbidity, {0.2, 0.2, 0.2});
+    expect_within(sky.radiance(0.0, std::numbers::pi / 2 - e), c.zenith, 0.001, "zenith, " + at);
+    expect_within(HosekWilkieSun(e, c.turbidity).irradiance(0.00465), c.sun, 0.001, "sun, " + at);
+    const PreethamSky preetham(sun_at(c.elevation).direction, c.turbidity);
+    EXPECT_NEAR(preetham.zenith_luminance_kcd(), c.preetham_zenith_kcd, 1e-5) << at;
+    // What the renderer's sky gives at the zenith, through its spectral tables.
+    Sky model;
+    model.turbidity = c.turbidity;
+    Sun sun = sun_at(c.elevation);
+    sun.irradiance = sun_irradiance(model, c.elevation, sun.angular_radius);
+    const SkyModel rendered(model, sun, Vec3f{0.2f, 0.2f, 0.2f});
+    const double zenith_y =
+        rec709_luminance(Vec3(spectrum_to_rgb(rendered.spectral_radiance({0.0f, 0.0f, 1.0f}))));
+    EXPECT_NEAR(zenith_y / rec709_luminance(c.zenith), 1.0, 0.025) << at;
+    EXPECT_NEAR(rec709_luminance(Vec3(sun.irradiance)) / rec709_luminance(c.sun), 1.0, 0.001) << at;
+  }
 }
 
 TEST(HosekWilkie, ClearSkyGlobalIlluminanceMatchesMeasuredDaylight) {
