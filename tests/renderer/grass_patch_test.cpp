@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "renderer/embree_scene.h"
@@ -38,6 +39,57 @@ Scene grass_field(int tiles, Road road) {
   for (int r = 0; r < m.rows; ++r)
     for (int c = 0; c < m.cols; ++c) m.type.push_back(road(c + 0.5, r + 0.5) ? 0 : 1);
   return s;
+}
+
+// docs/DEGRADATION.md "Grass": level 0 has every blade (density x tile area), level k keeps
+// 1 / 4^k of them, each 2^k times as wide.
+TEST(GrassPatch, LevelsKeepAQuarterOfTheBladesEachTwiceAsWide) {
+  const GrassType type;  // 150 blades per square metre, 4 mm wide
+  const auto blades_and_width = [&](int level) {
+    const GrassBlades b = make_grass_patch(type, 4.0, level, 7);
+    double radius = 0.0;
+    const std::size_t points = b.points.size() / 4;
+    for (std::size_t i = 0; i < points; ++i) radius += b.points[4 * i + 3];
+    return std::pair{static_cast<double>(b.first.size()) / kSegmentsPerBlade,
+                     2.0 * radius / static_cast<double>(points)};
+  };
+  const auto [blades0, width0] = blades_and_width(0);
+  EXPECT_NEAR(blades0, 150.0 * 16.0, 0.02 * 150.0 * 16.0);
+  for (int level = 1; level < kGrassLevels; ++level) {
+    const auto [blades, width] = blades_and_width(level);
+    EXPECT_NEAR(blades, blades0 / std::pow(4.0, level), 0.05 * blades0 / std::pow(4.0, level))
+        << level;
+    EXPECT_NEAR(width, width0 * std::pow(2.0, level), 0.05 * width0 * std::pow(2.0, level))
+        << level;
+  }
+}
+
+// Without blending each tile is drawn at the level its calibrated range r2 asks for (at 1000
+// pixels and 60 degrees, r2 is the distance): level 0 to 40, 1 to 160, 2 to 640, no blades
+// beyond. A strip of 4 m tiles running 1 km from the camera: the tiles per level are the
+// bounds' spans over 4 m.
+TEST(GrassPatch, EachLevelHoldsTheTilesBetweenItsRangeBounds) {
+  GrassCover cover;
+  cover.tile = 4.0;
+  cover.cols = 250;
+  cover.rows = 1;
+  cover.type.assign(250, 1);
+  cover.height.assign(250, 0.0f);
+  cover.normal.assign(250, Vec3f{0, 0, 1});
+  const View view{"v", {0.0, 2.0, 0.0}, {100.0, 2.0, 0.0}, 60.0, 100, 1000};
+  std::map<int, int> per_level;
+  for_each_grass_patch(cover, view, false, [&](const GrassPatchPlacement& p) {
+    const double distance = std::hypot(p.frame[9] - 0.0, p.frame[10] - 2.0);
+    const double bounds[] = {0.0, 40.0, 160.0, 640.0};
+    ASSERT_GE(p.level, 0);
+    EXPECT_GE(distance, bounds[p.level]) << p.level;
+    EXPECT_LT(distance, bounds[p.level + 1]) << p.level;
+    ++per_level[p.level];
+  });
+  EXPECT_EQ(per_level[0], 10);   // centres 2, 6, ... 38 m
+  EXPECT_EQ(per_level[1], 30);   // 42 ... 158 m
+  EXPECT_EQ(per_level[2], 120);  // 162 ... 638 m
+  EXPECT_EQ(per_level.size(), 3u);
 }
 
 TEST(GrassPatch, TilesTakeEveryVariantTurnAndMirrorImage) {
