@@ -118,5 +118,30 @@ TEST(Mpi, ARankThatFailsFailsTheJobClearly) {
   EXPECT_NE(r.err.find("nowhere.asc"), std::string::npos) << r.err;
 }
 
+// Only rank 0 writes: when writing fails there (the second image's EXR name is taken by a
+// directory) rank 1 is waiting for work, and must be aborted rather than left waiting. The
+// job ends (a timeout of 5 minutes tells a hang apart), non-zero, naming rank 0 and the
+// file; the first image stays, and no temporary file is left behind.
+TEST(Mpi, OneFailingRankAbortsTheOthersWithoutAHang) {
+  TempDir dir;
+  const auto scenario = image_set(dir);
+  const auto out = dir / "out";
+  std::filesystem::create_directories(out / "b_f0000.exr");
+  const std::string root = ::geteuid() == 0 ? " --allow-run-as-root" : "";
+  const auto r = testing::run_command("timeout 300 " + std::string(LANDSIM_MPIRUN) +
+                                          " --oversubscribe" + root + " -np 2 " + LANDSIM_BINARY +
+                                          " render " + scenario.string() + " --out " + out.string(),
+                                      dir);
+  EXPECT_NE(r.exit_code, 124) << "the job hung";
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("rank 0 of 2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("b_f0000.exr"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("rank 1 of 2"), std::string::npos) << "rank 1 never started: " << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out / "a_f0000.exr"));
+  EXPECT_FALSE(std::filesystem::exists(out / "manifest.json"));
+  for (const auto& e : std::filesystem::directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
 }  // namespace
 }  // namespace landsim
