@@ -1,11 +1,12 @@
 // landsim: ray-traced offline landscape renderer. This file holds the table of commands,
 // parses the command line and maps outcomes to exit codes: 0 success, 2 bad input (one
-// message), 1 internal error.
+// message), 1 internal error or a file the machine would not write.
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <vector>
@@ -114,6 +115,15 @@ int main(int argc, char** argv) {
     std::cerr << "landsim: " << session.label()
               << "error: out of memory: the scene needs more than this process may use (its "
                  "estimate: landsim info; docs/PERFORMANCE.md \"Memory budget\")\n";
+    if (session.distributed()) session.abort(1);
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // The machine refused a file operation (an output name taken by a directory, a full or
+    // read-only disk): the user's to fix, not landsim's bug. Outputs are atomic, so nothing
+    // half-written is left.
+    const std::filesystem::path& file = e.path2().empty() ? e.path1() : e.path2();
+    std::cerr << "landsim: " << session.label() << "error: cannot write " << file.string() << ": "
+              << e.code().message() << "\n";
     if (session.distributed()) session.abort(1);
     return 1;
   } catch (const std::exception& e) {

@@ -1259,6 +1259,21 @@ TEST(Cli, FeaturemapBuildWritesA16BitMap) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.tif"));
 }
 
+// An output name taken by a directory: the machine's refusal, said as such (not an internal
+// error), exit 1, and no temporary file left behind.
+TEST(Cli, AnOutputNameTakenByADirectoryIsSaidPlainly) {
+  TempDir dir;
+  const auto s = dir.write("s.toml", scenario("", "", "spp = 1"));
+  std::filesystem::create_directories(dir / "out" / "v.exr");
+  const Result r = run("render " + s.string() + " --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("error: cannot write"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("v.exr: Is a directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "out"))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
 TEST(CliTree, PrintsTheJsonContract) {
   TempDir dir;
   // The California black oak splits (clones): every count must be the library's own tree's.
