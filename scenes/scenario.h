@@ -167,7 +167,7 @@ struct ObjectSettings {
 // [[bands]]: a sensor band the image set also measures (docs/SPECTRAL.md).
 struct BandSettings {
   std::string name;
-  std::string description;  // "box 630-690 nm", or the response file's path
+  std::string description;  // "box 630-690 nm", or "response " and the response file's path
   std::vector<renderer::ResponsePoint> response;
 };
 // Bands per image set (renderer/integrator.h kMaxBands).

@@ -46,8 +46,8 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "elevation = \"" +
          data +
          "/terrain/volcano.asc\"\n"
-         "cell_size = 10.0\norigin = [0.0, 0.0]\nheight_scale = 1.0\nheight_offset = 0.0\n"
-         "nodata = \"hole\"\nalbedo = [0.2, 0.2, 0.1]\ncontext = [\"" +
+         "cell_size = 10.0\norigin = [0.0, 0.0]\nheight_scale = 1.1\nheight_offset = 2.0\n"
+         "nodata = \"fill\"\nalbedo = [0.2, 0.2, 0.1]\ncontext = [\"" +
          (dir / "context.tif").string() +
          "\"]\n\n"
          "[featuremaps]\n" +
@@ -219,6 +219,67 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_TRUE(s.haze.enabled);
   EXPECT_DOUBLE_EQ(s.haze.visibility, 9000.0);
   EXPECT_DOUBLE_EQ(s.haze.asymmetry, 0.6);
+  EXPECT_DOUBLE_EQ(s.haze.scale_height, 900.0);
+  EXPECT_EQ(s.haze.albedo, (Vec3f{0.9f, 0.9f, 0.9f}));
+  EXPECT_EQ(s.sky.model, renderer::SkyKind::preetham);
+  ASSERT_TRUE(s.sun.irradiance.has_value());
+  EXPECT_EQ(*s.sun.irradiance, (Vec3f{3.0f, 3.0f, 3.0f}));
+  // [terrain]
+  EXPECT_EQ(s.terrain.elevation, source_file("data/terrain/volcano.asc").string());
+  EXPECT_EQ(s.terrain.dem.cell_size, 10.0);
+  EXPECT_EQ(s.terrain.dem.origin, (std::array<double, 2>{0.0, 0.0}));
+  EXPECT_DOUBLE_EQ(s.terrain.dem.height_scale, 1.1);
+  EXPECT_DOUBLE_EQ(s.terrain.dem.height_offset, 2.0);
+  EXPECT_EQ(s.terrain.dem.nodata, terrain::NodataPolicy::fill);
+  EXPECT_EQ(s.terrain.albedo, (Vec3f{0.2f, 0.2f, 0.1f}));
+  EXPECT_EQ(s.terrain.context, (std::vector<std::string>{(f.dir / "context.tif").string()}));
+  // [featuremaps] ground rasters
+  EXPECT_EQ(s.featuremaps->soil, (f.dir / "soil.tif").string());
+  EXPECT_EQ(s.featuremaps->rock, (f.dir / "rock.tif").string());
+  EXPECT_EQ(s.featuremaps->road, (f.dir / "road.tif").string());
+  // [[species]]
+  EXPECT_DOUBLE_EQ(s.species[0].density_per_ha, 80.0);
+  EXPECT_DOUBLE_EQ(s.species[0].scale_variation, 0.2);
+  EXPECT_DOUBLE_EQ(s.species[0].colour_variation, 0.1);
+  EXPECT_EQ(s.species[1].bit, 3);
+  EXPECT_EQ(s.species[1].variants, 2);
+  EXPECT_DOUBLE_EQ(s.species[1].density_per_ha, 5.0);
+  EXPECT_EQ(s.species[1].species.name, "london_plane");
+  // [[grass]]
+  EXPECT_EQ(s.grass[0].type, 1);
+  EXPECT_DOUBLE_EQ(s.grass[0].density_per_m2, 50.0);
+  EXPECT_DOUBLE_EQ(s.grass[0].blade_length, 0.2);
+  EXPECT_DOUBLE_EQ(s.grass[0].blade_width, 0.003);
+  EXPECT_EQ(s.grass[0].colour, (Vec3f{0.1f, 0.3f, 0.05f}));
+  EXPECT_EQ(s.grass[1].type, 3);
+  // [ground]
+  EXPECT_EQ(s.ground.soil, (Vec3f{0.3f, 0.2f, 0.1f}));
+  EXPECT_EQ(s.ground.water, (Vec3f{0.01f, 0.02f, 0.03f}));
+  EXPECT_EQ(s.ground.road, (Vec3f{0.1f, 0.1f, 0.1f}));
+  EXPECT_EQ(sh.scales[0], 80.0);
+  // [wind]
+  EXPECT_DOUBLE_EQ(s.wind.speed, 4.0);
+  // [[views]]
+  ASSERT_EQ(s.views.size(), 1u);
+  EXPECT_EQ(s.views[0].name, "all");
+  EXPECT_EQ(s.views[0].position, (Vec3{300.0, -100.0, 250.0}));
+  EXPECT_EQ(s.views[0].target, (Vec3{300.0, 400.0, 120.0}));
+  EXPECT_DOUBLE_EQ(s.views[0].fov_y_deg, 35.0);
+  EXPECT_EQ(s.views[0].width, 64);
+  EXPECT_EQ(s.views[0].height, 32);
+  // [render]
+  EXPECT_EQ(s.render.spp, 2);
+  EXPECT_EQ(s.render.seed, 5u);
+  EXPECT_EQ(s.render.threads, 1);
+  EXPECT_EQ(s.render.max_bounces, 2);
+  EXPECT_EQ(s.render.exposure_ev100, 0.5);
+  // [[objects]]
+  EXPECT_DOUBLE_EQ(s.objects[0].y, 400.0);
+  // [[bands]]
+  EXPECT_DOUBLE_EQ(s.bands[0].response.front().wavelength_nm, 770.0);
+  EXPECT_EQ(s.bands[1].name, "luminance");
+  EXPECT_EQ(s.bands[1].description,
+            "response " + source_file("data/bands/cie_photopic.csv").string());
   // Auckland at 13:00 NZST on the June solstice: the sun in the north, 29-30 degrees up
   // (90 - 36.88 - 23.44 = 29.7 at solar noon, which falls about 12:40 there).
   EXPECT_NEAR(s.sun.elevation_deg, 29.5, 1.0);
