@@ -5,6 +5,8 @@
 #include "trees/tree_age.h"
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ringbuffer_sink.h>
+#include <spdlog/spdlog.h>
 
 #include <filesystem>
 
@@ -47,6 +49,22 @@ TEST(TreeAge, TheCurveHasItsDocumentedValues) {
   EXPECT_EQ(steps_at(c, 100.0, 20), 20);
   EXPECT_EQ(clamp_age(c, 0.2, "x"), 1.0);
   EXPECT_EQ(clamp_age(c, 50.0, "x"), 30.0);
+}
+
+// An age outside the curve is clamped with one warning naming the species, the age asked
+// and the range; an age inside it is used silently.
+TEST(TreeAge, AClampedAgeIsWarnedAbout) {
+  const AgeCurve c{.mature = 30.0};
+  const auto sink = std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(8);
+  const auto logger = spdlog::default_logger();
+  logger->sinks().push_back(sink);
+  EXPECT_EQ(clamp_age(c, 50.0, "aspen"), 30.0);
+  EXPECT_EQ(clamp_age(c, 12.0, "aspen"), 12.0);
+  logger->sinks().pop_back();
+  const std::vector<std::string> lines = sink->last_formatted();
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("aspen: age 50 is outside 1 to 30 years"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("using 30"), std::string::npos) << lines[0];
 }
 
 // Every core at two ages: the younger is lower and has fewer stems; at the mature age (or
