@@ -76,6 +76,21 @@ terrain::GroundMesh roof(float x0, float x1, float y0, float y1, float z) {
   return m;
 }
 
+// Haze of 3 km visibility and 1 km scale height from z = 0 under a uniform sky of `sky`
+// cd/m2, over black ground and a black plain: the light is the test's own.
+Scene hazy_scene(float sky) {
+  Scene s;
+  s.ground.albedo = {0.0f, 0.0f, 0.0f};
+  s.ground.edge_albedo = Vec3f{0.0f, 0.0f, 0.0f};
+  s.sky.model = SkyKind::gradient;
+  s.sky.zenith_radiance = s.sky.horizon_radiance = {sky, sky, sky};
+  s.haze.enabled = true;
+  s.haze.visibility = 3000.0;
+  s.haze.scale_height = 1000.0;
+  s.haze.base_height = 0.0;
+  return s;
+}
+
 // Single scattering of sunlight, the only light: a black sky and plain, black ground. A
 // level ray at the haze's base height z0 runs through constant extinction sigma0, and every
 // point on it sees the sun through the same slant optical depth sigma0 H / sin(elevation):
@@ -84,19 +99,11 @@ terrain::GroundMesh roof(float x0, float x1, float y0, float y1, float z) {
 // exp(-sigma0 s2). Here sigma0 = 3.912 / 3000 m, H = 1000 m, the sun 60 degrees up, the
 // Henyey-Greenstein phase of g = 0.7, a = 0.95.
 TEST(Atmosphere, SunlitHazeIsSingleScatteringAndAShadowedColumnIsDarkerByItsShare) {
-  Scene s;
+  Scene s = hazy_scene(0.0f);
   s.ground.mesh = flat_ground(10.0, -5000.0f);
-  s.ground.albedo = {0.0f, 0.0f, 0.0f};
-  s.ground.edge_albedo = Vec3f{0.0f, 0.0f, 0.0f};
-  s.sky.model = SkyKind::gradient;
-  s.sky.zenith_radiance = s.sky.horizon_radiance = {0.0f, 0.0f, 0.0f};
   const double elevation = 60.0 * kDeg;
   s.sun.direction = {0.0, std::cos(elevation), std::sin(elevation)};
   s.sun.irradiance = {80000.0f, 80000.0f, 80000.0f};
-  s.haze.enabled = true;
-  s.haze.visibility = 3000.0;
-  s.haze.scale_height = 1000.0;
-  s.haze.base_height = 0.0;
   s.settings.spp = 256;
   const double sigma = 3.912 / 3000.0, g = 0.7;
   const double t_sun = std::exp(-sigma * 1000.0 / std::sin(elevation));
@@ -132,17 +139,9 @@ TEST(Atmosphere, SunlitHazeIsSingleScatteringAndAShadowedColumnIsDarkerByItsShar
 // through the haze under a uniform sky of L cd/m2 (no sun), takes L (1 - exp(-sigma0 d)) —
 // Koschmieder's veil: the haze in-scatters the horizon's radiance.
 TEST(Atmosphere, ADistantBlackWallTakesTheHorizonsRadianceByKoschmieder) {
-  Scene s;
-  s.ground.albedo = {0.0f, 0.0f, 0.0f};
-  s.ground.edge_albedo = Vec3f{0.0f, 0.0f, 0.0f};
-  s.sky.model = SkyKind::gradient;
-  s.sky.zenith_radiance = s.sky.horizon_radiance = {5000.0f, 5000.0f, 5000.0f};
+  Scene s = hazy_scene(5000.0f);
   s.sun.direction = {0.0, 0.0, 1.0};
   s.sun.irradiance = {0.0f, 0.0f, 0.0f};
-  s.haze.enabled = true;
-  s.haze.visibility = 3000.0;
-  s.haze.scale_height = 1000.0;
-  s.haze.base_height = 0.0;
   s.settings.spp = 64;
   const double sigma = 3.912 / 3000.0;
   for (const float d : {500.0f, 1500.0f, 4000.0f}) {

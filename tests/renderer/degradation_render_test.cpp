@@ -13,6 +13,7 @@
 #include "renderer/render.h"
 #include "renderer/stochastic_lod.h"
 #include "tests/renderer/film_stats.h"
+#include "tests/renderer/test_scenes.h"
 #include "trees/species.h"
 
 namespace landsim::renderer {
@@ -253,13 +254,7 @@ TEST(GrassBlend, LevelsBlendAroundEachLevelsEndAndFadeAfterTheLast) {
 }
 
 TEST(GrassBlend, BlendedTilesGetTwoPatchesWithComplementaryMasks) {
-  GrassCover cover;
-  cover.tile = 4.0;
-  cover.cols = 40;
-  cover.rows = 1;
-  cover.type.assign(40, 1);
-  cover.height.assign(40, 0.0f);
-  cover.normal.assign(40, Vec3f{0, 0, 1});
+  const GrassCover cover = testing::grass_strip(40);
   const View view{"v", {-2.0, 2.0, 1.5}, {100.0, 2.0, 0.0}, 60.0, 100, 1000};
   std::map<std::pair<float, float>, std::uint32_t> masks;  // per tile centre: OR of masks
   int tiles_twice = 0;

@@ -9,6 +9,7 @@
 #include "renderer/embree_scene.h"
 #include "renderer/render.h"
 #include "terrain/ground_mesh.h"
+#include "tests/renderer/test_scenes.h"
 
 namespace landsim::renderer {
 namespace {
@@ -69,13 +70,7 @@ TEST(GrassPatch, LevelsKeepAQuarterOfTheBladesEachTwiceAsWide) {
 // beyond. A strip of 4 m tiles running 1 km from the camera: the tiles per level are the
 // bounds' spans over 4 m.
 TEST(GrassPatch, EachLevelHoldsTheTilesBetweenItsRangeBounds) {
-  GrassCover cover;
-  cover.tile = 4.0;
-  cover.cols = 250;
-  cover.rows = 1;
-  cover.type.assign(250, 1);
-  cover.height.assign(250, 0.0f);
-  cover.normal.assign(250, Vec3f{0, 0, 1});
+  const GrassCover cover = testing::grass_strip(250);
   const View view{"v", {0.0, 2.0, 0.0}, {100.0, 2.0, 0.0}, 60.0, 100, 1000};
   std::map<int, int> per_level;
   for_each_grass_patch(cover, view, false, [&](const GrassPatchPlacement& p) {

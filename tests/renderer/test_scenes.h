@@ -16,6 +16,19 @@ inline terrain::GroundMesh flat_ground(double half, float z = 0.0f) {
   return terrain::build_ground_mesh(g, Vec3{});
 }
 
+// A flat strip of grass type 1 along +x: `tiles` tiles of 4 m in one row from the origin.
+inline GrassCover grass_strip(int tiles) {
+  GrassCover cover;
+  cover.tile = 4.0;
+  cover.cols = tiles;
+  cover.rows = 1;
+  const auto n = static_cast<std::size_t>(tiles);
+  cover.type.assign(n, 1);
+  cover.height.assign(n, 0.0f);
+  cover.normal.assign(n, Vec3f{0, 0, 1});
+  return cover;
+}
+
 // A north-south ridge 200 m square: an east-facing slope (x > 100) and a west-facing one,
 // both 26.6 degrees, lit by a sun in the east at 30 degrees, seen from the south.
 inline Scene ridge_scene() {
