@@ -14,6 +14,10 @@ double crown_angle(const Allometry& a, double t) {
   return 0.5 * std::atan2(a.f_crown_diameter(t), a.f_crown_height(t));
 }
 
+// Scaffolds the planted tree carries along its crown (between its crown base and the first
+// grown scaffold).
+constexpr int kPlantingScaffolds = 4;
+
 }  // namespace
 
 bool bifurcates(const Parameters& p, const Module& m) {
@@ -23,24 +27,35 @@ bool bifurcates(const Parameters& p, const Module& m) {
 std::vector<Module> derive(const Parameters& p, std::uint64_t seed, double age) {
   const Allometry& a = p.allometry;
   std::vector<Module> modules;
-  // Scaffolds: one every interval at the leader's top, 130 degrees round from the last,
-  // leaving at the crown's full angle from the vertical.
+  // Scaffolds 130 degrees round from the last, leaving at the crown's full angle from the
+  // vertical: the planted tree's, along its crown when it is planted (the nursery stock of
+  // f_H(0) already has a crown of f_CH(0)), and then one every interval at the leader's top.
   int k = 0;
-  for (double t = p.scaffold_interval; t < age; t += p.scaffold_interval, ++k) {
-    const std::uint64_t id = hash_combine(1, static_cast<std::uint64_t>(k));
+  const auto scaffold = [&](std::uint64_t id, double t0, double attach_height) {
     const CounterRng r(seed, id, 0);
     const double around = k * p.divergence + p.angle_noise * (2.0 * r.uniform(0) - 1.0);
-    const double tilt = 2.0 * crown_angle(a, t) + p.angle_noise * (2.0 * r.uniform(1) - 1.0);
+    const double tilt = 2.0 * crown_angle(a, t0) + p.angle_noise * (2.0 * r.uniform(1) - 1.0);
     Module m;
     m.id = id;
-    m.t0 = t;
-    m.attach_height = a.f_height(t);
+    m.t0 = t0;
+    m.attach_height = attach_height;
     m.c_l = 0.6 + 0.4 * r.uniform(2);
     m.c_d = 0.5;
     m.direction = {std::sin(tilt) * std::cos(around), std::sin(tilt) * std::sin(around),
                    std::cos(tilt)};
     modules.push_back(m);
+    ++k;
+  };
+  if (age > 0.0) {
+    const double low = a.f_height(0.0) - a.f_crown_height(0.0);
+    const double high = a.f_height(p.scaffold_interval);
+    for (int j = 0; j < kPlantingScaffolds; ++j)
+      scaffold(hash_combine(5, static_cast<std::uint64_t>(j)), 0.0,
+               low + (high - low) * j / kPlantingScaffolds);
   }
+  int grown = 0;
+  for (double t = p.scaffold_interval; t < age; t += p.scaffold_interval, ++grown)
+    scaffold(hash_combine(1, static_cast<std::uint64_t>(grown)), t, a.f_height(t));
   // Productions: a branch that has grown its period bifurcates into two, each at the crown's
   // half-angle (plus noise) on either side of it, the plane turned by the divergence.
   for (std::size_t i = 0; i < modules.size(); ++i) {

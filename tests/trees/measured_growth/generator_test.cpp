@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 
@@ -22,8 +23,8 @@ Species london_plane() {
 // Each tree follows its own sizes (the equations times its draw from their scatter), as
 // docs/MEASURED_GROWTH.md "Dimensions measured on the geometry" states over 12 seeds at ages
 // 10-60 (72 trees): height within 3% and DBH and leaf area within 0.1% for every tree; crown
-// diameter within 4% for 66 trees (worst 36%), crown height within 4% for 48 and within 10%
-// for 62 (worst 22%).
+// diameter within 4% for 66 trees (worst 36%), crown height within 4% for 58 and within 9%
+// for every tree.
 TEST(MeasuredGrowth, TreesFollowTheEquationsFromTenToSixtyYears) {
   const Species s = london_plane();
   const Parameters& p = std::get<Parameters>(s.parameters);
@@ -46,11 +47,15 @@ TEST(MeasuredGrowth, TreesFollowTheEquationsFromTenToSixtyYears) {
       worst_crown_height = std::max(worst_crown_height, ch);
     }
   }
+  std::printf(
+      "72 trees: crown diameter within 4%% for %d (worst %.3f); crown height within 4%% "
+      "for %d, within 10%% for %d (worst %.3f)\n",
+      crown_diameter_4, worst_crown_diameter, crown_height_4, crown_height_10, worst_crown_height);
   EXPECT_GE(crown_diameter_4, 66);
   EXPECT_LT(worst_crown_diameter, 0.36);
-  EXPECT_GE(crown_height_4, 48);
-  EXPECT_GE(crown_height_10, 62);
-  EXPECT_LT(worst_crown_height, 0.22);
+  EXPECT_GE(crown_height_4, 58);
+  EXPECT_EQ(crown_height_10, 72);
+  EXPECT_LT(worst_crown_height, 0.09);
 }
 
 TEST(MeasuredGrowth, NoBranchShrinksAndTheScaffoldsStayTheSame) {
