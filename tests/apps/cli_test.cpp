@@ -14,7 +14,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -761,6 +763,27 @@ TEST(Cli, RenderedExrHoldsEveryLayerAndTheDocumentedMetadata) {
   // A point 50 m above the target is higher in the image (NDC y up).
   Imf::worldToNDC(h).multVecMatrix(target + Imath::V3f(0, 0, 50), ndc);
   EXPECT_GT(ndc.y, 0.1f);
+  // Points 12 degrees right of the line of sight and 8 degrees above it land where a 40-degree
+  // vertical field of view over 32 x 18 pixels puts them: NDC x = tan 12 / (tan 20 x 32/18),
+  // y = tan 8 / tan 20; pixel column (x + 1) / 2 x 32 = 21.3, row (1 - y) / 2 x 18 = 5.5.
+  const Imath::V3f forward = (target - eye).normalized();
+  const Imath::V3f right = forward.cross(Imath::V3f(0, 0, 1)).normalized();
+  const Imath::V3f up = right.cross(forward);
+  const float range = (target - eye).length();
+  const double tan_half = std::tan(20.0 * std::numbers::pi / 180.0);
+  Imf::worldToNDC(h).multVecMatrix(
+      eye + range * forward + range * std::tan(12.0f * std::numbers::pi_v<float> / 180.0f) * right,
+      ndc);
+  const double want_x = std::tan(12.0 * std::numbers::pi / 180.0) / (tan_half * 32.0 / 18.0);
+  EXPECT_NEAR(ndc.x, want_x, 1e-4);
+  EXPECT_NEAR(ndc.y, 0.0, 1e-4);
+  EXPECT_EQ(static_cast<int>((ndc.x + 1.0) / 2.0 * 32.0), 21);
+  Imf::worldToNDC(h).multVecMatrix(
+      eye + range * forward + range * std::tan(8.0f * std::numbers::pi_v<float> / 180.0f) * up,
+      ndc);
+  EXPECT_NEAR(ndc.x, 0.0, 1e-4);
+  EXPECT_NEAR(ndc.y, std::tan(8.0 * std::numbers::pi / 180.0) / tan_half, 1e-4);
+  EXPECT_EQ(static_cast<int>((1.0 - ndc.y) / 2.0 * 18.0), 5);
 }
 
 TEST(Cli, TaskIndexRendersOneImageAndCheckFindsTheMissingOnes) {
