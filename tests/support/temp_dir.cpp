@@ -40,4 +40,11 @@ std::string read_file(const std::filesystem::path& path) {
   return s.str();
 }
 
+std::set<std::string> file_names(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    names.insert(e.path().filename().string());
+  return names;
+}
+
 }  // namespace landsim::testing

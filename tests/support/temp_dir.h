@@ -1,6 +1,7 @@
 #pragma once
 // Test helpers: a fresh temporary directory per test, removed afterwards, and file I/O.
 #include <filesystem>
+#include <set>
 #include <string>
 
 namespace landsim::testing {
@@ -22,6 +23,10 @@ class TempDir {
 };
 
 std::string read_file(const std::filesystem::path& path);
+
+// The names of the files (and folders) directly in `dir`: what a command left there,
+// temporary files included.
+std::set<std::string> file_names(const std::filesystem::path& dir);
 
 // A file in the repository (tests never read outside it).
 inline std::filesystem::path source_file(const std::string& relative) {

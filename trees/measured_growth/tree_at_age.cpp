@@ -44,8 +44,8 @@ class CrownShape {
   }
   Envelope at(double t) const {
     const auto k = std::min(rim_.size() - 1, static_cast<std::size_t>(std::max(0.0, t) / kStep));
-    return {0.5 * a_.f_crown_diameter(t), a_.f_height(t), rim_[k],
-            a_.f_height(t) - a_.f_crown_height(t)};
+    const double height = a_.f_height(t);
+    return {0.5 * a_.f_crown_diameter(t), height, rim_[k], height - a_.f_crown_height(t)};
   }
 
  private:
