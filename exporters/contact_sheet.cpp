@@ -58,6 +58,7 @@ renderer::Scene tile_scene(const trees::TreeGeometry& tree, const ContactSheetOp
 renderer::Scene studio_scene(float half, bool cutaway) {
   renderer::Scene s;
   s.ground.mesh = ground_square(half, cutaway);
+  s.ground.plain = !cutaway;  // the cut opens onto the space under the ground
   s.sun.direction = normalize(Vec3{-0.5, -0.6, 0.8});
   return s;
 }

@@ -313,6 +313,23 @@ std::array<double, 2> best_shift(const renderer::Film& film, const renderer::Flo
 
 // The user's reference image (and its mask, or its alpha) in landsim's units, the same size
 // as the render, translated by --align's search when asked.
+// The reference (and its mask) checked from their headers before anything renders: a
+// garbage, huge or wrongly sized reference is refused before landsim.exr is written.
+void check_reference(const CrosscheckOptions& o, const renderer::View& view) {
+  for (const auto& [file, what] : {std::pair{o.reference, "reference"}, {o.mask, "mask"}}) {
+    if (file.empty()) continue;
+    int width = 0, height = 0, channels = 0;
+    std::string error;
+    if (!renderer::image_io().probe(file.string(), width, height, channels, error))
+      throw InputError(fmt::format("{}: cannot read the {} image: {}", file.string(), what, error));
+    if (width != view.width || height != view.height)
+      throw InputError(fmt::format(
+          "{}: the {} is {} x {} pixels, the view renders {} x {} (give the view that size, or "
+          "--width/--height)",
+          file.string(), what, width, height, view.width, view.height));
+  }
+}
+
 void load_reference(const CrosscheckOptions& o, const renderer::Film& film, double exposure_gain,
                     renderer::FloatImage& ref, renderer::FloatImage& mask, CrosscheckReport& r) {
   renderer::FloatImage image;
@@ -429,6 +446,7 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
     view = pov_camera_view(read_pov_camera(o.pov_scene, view.width, view.height), view);
     r.camera = view;
   }
+  check_reference(o, view);
   const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
   PovExportOptions pov_options;
   pov_options.ambient_irradiance = sky.horizontal_irradiance();

@@ -99,8 +99,10 @@ void compare_layers(const renderer::Film& a, const renderer::Film& b, ImageDiffe
       }
       const Vec3f na = a.normal(x, y), nb = b.normal(x, y);
       if (length(na) > 0.0f && length(nb) > 0.0f) {
-        const double c = std::clamp(double(dot(normalize(na), normalize(nb))), -1.0, 1.0);
-        angle += std::acos(c) * 180.0 / std::numbers::pi;
+        // atan2 of |a x b| and a . b: exact for equal normals (acos of a rounded dot product
+        // read 5.8e-5 degrees between identical files) and accurate at small angles.
+        const Vec3 va(na), vb(nb);
+        angle += std::atan2(length(cross(va, vb)), dot(va, vb)) * 180.0 / std::numbers::pi;
         ++angle_n;
       }
       object += a.object(x, y) != b.object(x, y);

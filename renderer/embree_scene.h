@@ -40,6 +40,9 @@ struct Hit {
   // point, which for leaves is also the stored leaf) rather than a triangle.
   std::uint8_t level = 0;
   bool far_primitive = false;
+  // The plain beyond the drawn ground (renderer/plain.h), not in Embree: ground of the
+  // plain's albedo.
+  bool plain = false;
 };
 
 namespace detail {

@@ -31,7 +31,12 @@ struct ImageLabel {
 struct ImageIo {
   // Any format OpenImageIO reads, as float. With `to_linear`, integer images (8 or 16 bits,
   // sRGB-encoded) are converted to linear; float images are taken as linear already.
+  // Refuses (false, `error` saying why) an image whose header declares more than 2^28 values
+  // before allocating anything.
   bool (*read)(const std::string& path, bool to_linear, FloatImage& image, std::string& error);
+  // The header alone: size and channels, with read's refusals; no pixels decoded.
+  bool (*probe)(const std::string& path, int& width, int& height, int& channels,
+                std::string& error);
   // The display transform (display "sRGB", view "Standard") of the OpenColorIO config
   // `config_yaml`, applied in place to `width` x `height` RGB pixels.
   bool (*display_transform)(const char* config_yaml, float* rgb, int width, int height,

@@ -60,6 +60,7 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
     : scene_(scene),
       embree_(embree),
       sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
+      plain_(plain_surface(scene.ground)),
       haze_(scene.haze),
       sun_direction_(Vec3f(normalize(scene.sun.direction))),
       // The roulette compares spectral contributions: the sky's mean as a spectrum.
@@ -72,6 +73,22 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       haze_albedo_(reflectance_spectrum(haze_.albedo())),
       inverse_haze_albedo_(safe_divide(Spectrum::constant(1.0f), haze_albedo_)),
       seen_bins_(seen_bins(scene)) {}
+
+std::optional<Hit> PathTracer::intersect(const Ray& ray, std::uint32_t mask) const {
+  if (auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask)) return hit;
+  const auto plain = plain_hit(plain_, ray);
+  if (!plain) return std::nullopt;
+  Hit hit;
+  hit.t = plain->t;
+  hit.geometric_normal = hit.shading_normal = plain->normal;
+  hit.object = ObjectClass::ground;
+  hit.plain = true;
+  return hit;
+}
+
+bool PathTracer::occluded(const Ray& ray, std::uint32_t mask) const {
+  return embree_.occluded(ray, 0.0f, kInfinity, mask) || plain_hit(plain_, ray).has_value();
+}
 
 Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
                                const SpectralMaterial& s, float u1, float u2,
@@ -87,8 +104,8 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
   const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
   ++rays;
-  const Ray ray{offset_point(v.p, front ? v.ng : -v.ng), l};
-  if (embree_.occluded(ray, 0.0f, kInfinity, v.mask)) return {};
+  const Ray ray{offset_point(v, front ? v.ng : -v.ng), l};
+  if (occluded(ray, v.mask)) return {};
   return light * (weight * static_cast<float>(haze_.transmittance(
                                Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance)));
 }
@@ -127,8 +144,8 @@ Spectrum PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m,
   const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
   ++rays;
-  const Vec3f origin = offset_point(v.p, front ? v.ng : -v.ng);
-  if (embree_.occluded({origin, l}, 0.0f, kInfinity, v.mask)) return {};
+  const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
+  if (occluded({origin, l}, v.mask)) return {};
   const auto t_haze =
       static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
   return light * (weight * t_haze);
@@ -152,7 +169,7 @@ Spectrum PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, flo
       importance(throughput * a * sun) * static_cast<float>(scattered), roulette);
   if (weight > 0.0f) {
     ++rays;
-    sun = embree_.occluded({p, sun_direction_}, 0.0f, kInfinity, mask) ? Spectrum{} : sun * weight;
+    sun = occluded({p, sun_direction_}, mask) ? Spectrum{} : sun * weight;
   } else {
     sun = {};
   }
@@ -192,7 +209,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
   for (int bounce = 0; bounce <= scene_.settings.max_bounces; ++bounce) {
     const std::uint32_t dim = kFirstBounceDim + kDimsPerBounce * static_cast<std::uint32_t>(bounce);
     ++out.rays;
-    const auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask);
+    const auto hit = intersect(ray, mask);
     // Haze lies over every segment. Camera and mirror rays that leave upward see the haze
     // veil over the sky too (dense fog whitens the whole sky; any haze the sky's last degrees,
     // so the hazed ground and the sky meet at the horizon without a seam). Diffuse bounces
@@ -241,7 +258,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     if (m.water && rng.uniform(dim + kFresnel) < fresnel) {
       // Mirror reflection off the water's (geometric) surface, chosen with probability F.
       const Vec3f mirrored = ray.direction - v.ng * (2.0f * dot(ray.direction, v.ng));
-      ray = {offset_point(v.p, v.ng), normalize(mirrored)};
+      ray = {offset_point(v, v.ng), normalize(mirrored)};
       last_specular = true;
       continue;
     }
@@ -266,7 +283,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
         if (rng.uniform(dim + kRoulette) >= survive) break;
         throughput = throughput / survive;
       }
-      ray = {offset_point(v.p, v.ng), next};
+      ray = {offset_point(v, v.ng), next};
       continue;
     }
     // Lambertian reflection or (two-sided surfaces) transmission, chosen in proportion to
@@ -291,7 +308,7 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       if (rng.uniform(dim + kRoulette) >= survive) break;
       throughput = throughput / survive;
     }
-    ray = {offset_point(v.p, reflect ? v.ng : -v.ng), next};
+    ray = {offset_point(v, reflect ? v.ng : -v.ng), next};
   }
   finish(out, radiance);
   return out;

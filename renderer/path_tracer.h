@@ -15,6 +15,7 @@
 #include "renderer/haze.h"
 #include "renderer/horizon_radiance.h"
 #include "renderer/integrator.h"
+#include "renderer/plain.h"
 #include "renderer/sky.h"
 #include "renderer/surface.h"
 
@@ -44,6 +45,9 @@ class PathTracer : public Integrator {
   Spectrum haze_in_scatter(const Ray& ray, double t, double depth, float u,
                            const Spectrum& throughput, const ShadowRoulette& roulette,
                            std::uint32_t mask, std::uint32_t& rays) const;
+  // The scene's geometry and, past it, the plain beyond the grid (renderer/plain.h).
+  std::optional<Hit> intersect(const Ray& ray, std::uint32_t mask) const;
+  bool occluded(const Ray& ray, std::uint32_t mask) const;
   ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
   // What the roulettes weigh a spectrum by: its largest bin among those an output sees (the
   // near infrared keeps a canopy's paths alive; without a band there it is not worth it).
@@ -55,6 +59,7 @@ class PathTracer : public Integrator {
   const Scene& scene_;
   const EmbreeScene& embree_;
   SkyModel sky_;
+  PlainSurface plain_;
   HazeModel haze_;
   Vec3f sun_direction_;
   float roulette_threshold_;  // shadow rays adding less than this to a pixel are rouletted

@@ -49,11 +49,17 @@ struct Ground {
 
   terrain::GroundMesh mesh;
   Vec3f albedo = kDefaultGroundAlbedo;  // material 0: the terrain's own
-  // The endless plain beyond the grid, and the ground the sky model sees (Hosek-Wilkie's
-  // ground albedo): the mean albedo along the grid's edge (scenes/detail/plain_albedo);
-  // empty: `albedo`.
+  // The plain beyond the grid (renderer/plain.h), and the ground the sky model sees
+  // (Hosek-Wilkie's ground albedo): the mean albedo along the grid's edge
+  // (scenes/detail/plain_albedo); empty: `albedo`.
   std::optional<Vec3f> edge_albedo;
   Vec3f plain_albedo() const { return edge_albedo.value_or(albedo); }
+  // The plain's height, scene frame z (renderer/plain.h): the mean along the grid's edge
+  // (scenes/detail/plain_albedo); empty: the mean of the mesh's rim.
+  std::optional<float> plain_height;
+  // False: no plain, rays below the horizon see the sky model's (studio scenes: a cutaway
+  // looks into the space under its ground).
+  bool plain = true;
   std::vector<GroundMaterial> materials;        // further materials, 1-based in the ids below
   std::vector<std::uint8_t> triangle_material;  // per triangle, 0 = `albedo`; may be empty
   // Noise, rules and textures that vary the materials over the ground (ground_shading.h).

@@ -270,7 +270,8 @@ void SkyModel::build_table() {
   weights_.resize(kRows * kCols);
   row_cdf_.assign(kRows + 1, 0.0f);
   cell_cdf_.assign(kRows * (kCols + 1), 0.0f);
-  // A floor keeps every direction sampleable, so MIS weights never divide by zero. It is
+  // A floor keeps every direction above the horizon sampleable, so MIS weights never divide
+  // by zero. It is
   // relative to the sky's mean, so scaling the sky scales the table exactly and leaves the
   // sampling decisions (and the image's linearity in light) untouched.
   float mean = 0.0f;
@@ -285,7 +286,11 @@ void SkyModel::build_table() {
     float row = 0.0f;
     for (int j = 0; j < kCols; ++j) {
       const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols;
-      const float w = (luminance(radiance(direction_of(theta, phi))) + floor) * std::sin(theta);
+      // Below the horizon the plain beyond the grid is a surface (renderer/plain.h), met by
+      // the paths themselves, not a light to sample.
+      const float w = theta > 0.5f * kPi ? 0.0f
+                                         : (luminance(radiance(direction_of(theta, phi))) + floor) *
+                                               std::sin(theta);
       weights_[static_cast<std::size_t>(i * kCols + j)] = w;
       row += w;
       cell_cdf_[static_cast<std::size_t>(i * (kCols + 1) + j + 1)] = row;

@@ -29,7 +29,9 @@ class SkyModel {
 
   // Sky radiance above the horizon. Below it, where a ray leaves a finite terrain, the
   // radiance of an endless sunlit plain of `ground_albedo` (the scene's: the mean along the
-  // grid's edge), so the edge of a DEM does not open onto a black void.
+  // grid's edge), unshadowed and infinitely far: what the comparable tracer and a scene
+  // without ground see there. The path tracer meets the plain as a surface instead
+  // (renderer/plain.h).
   Vec3f radiance(const Vec3f& direction) const;
   // The horizon band's radiance at the azimuth of `direction`: the mean over elevations 0 to
   // 2 degrees. What haze converges to at long range (docs/ATMOSPHERE.md): a band, because
@@ -53,7 +55,8 @@ class SkyModel {
   const Spectrum& sun_spectral_irradiance() const { return sun_spectrum_; }
   Spectrum horizon_band_spectral(const Vec3f& direction) const;
 
-  // A direction drawn in proportion to luminance x solid angle; `pdf` per steradian.
+  // A direction above the horizon drawn in proportion to luminance x solid angle; `pdf` per
+  // steradian (zero below the horizon).
   Vec3f sample(float u1, float u2, float& pdf) const;
   float pdf(const Vec3f& direction) const;
 

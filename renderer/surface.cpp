@@ -47,6 +47,9 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
     m.optics_factor = {f, f, f};
     return m;
   }
+  // The plain beyond the grid: the surroundings' colour (the mean along the grid's edge),
+  // upsampled as the context terrain's is.
+  if (hit.plain) return {scene.ground.plain_albedo(), {}};
   if (hit.prototype < 0) {
     const ShadedGround g = shade_ground(scene.ground, scene.ground.material_id(hit.primitive), p,
                                         normalize(Vec3(hit.shading_normal)), scene.sun.direction);
@@ -94,8 +97,9 @@ SpectralMaterial spectral_material(const SurfaceMaterial& m) {
 }
 
 ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask) {
-  ShadingPoint v{ray.origin + ray.direction * hit.t, hit.shading_normal, hit.geometric_normal, mask,
-                 -ray.direction};
+  const Vec3f p = ray.origin + ray.direction * hit.t;
+  ShadingPoint v{p,    hit.shading_normal, hit.geometric_normal,
+                 mask, -ray.direction,     hit_error(ray.origin, hit.t, p)};
   if (dot(v.ng, ray.direction) > 0.0f) v.ng = -v.ng;
   if (dot(v.n, v.ng) < 0.0f) v.n = -v.n;
   return v;
@@ -167,11 +171,20 @@ float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3
   return 0.02f + 0.98f * std::pow(1.0f - c, 5.0f);
 }
 
-Vec3f offset_point(const Vec3f& p, const Vec3f& ng) {
-  const float scale =
-      1e-4f * std::max(1.0f, max_component(Vec3f{std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
-  return p + ng * scale;
+float hit_error(const Vec3f& origin, float t, const Vec3f& p) {
+  // Units in the last place of each term: the origin and the point as stored, and the
+  // distance along the direction. Measured on a ridge 20 km out under an 8 degree sun
+  // (Surface.FarGroundUnderALowSunHasNoSelfShadowing): none leaves a fifth of its pixels
+  // self-shadowed, a quarter leaves none; 2 keeps eight times that margin.
+  constexpr float kUlps = 2.0f;
+  const auto largest = [](const Vec3f& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  };
+  const float magnitude = largest(origin) + std::abs(t) + largest(p);
+  return kUlps * std::numeric_limits<float>::epsilon() * std::max(magnitude, 1.0f);
 }
+
+Vec3f offset_point(const ShadingPoint& v, const Vec3f& side) { return v.p + side * v.error; }
 
 Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2) {
   const float cos_max = std::cos(radius);
@@ -195,7 +208,7 @@ SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const Vec3f&
   const float weight = shadow_roulette_weight(max_component(throughput * light), roulette);
   if (weight == 0.0f) return {};
   ++rays;
-  const Ray ray{offset_point(v.p, front ? v.ng : -v.ng), l};
+  const Ray ray{offset_point(v, front ? v.ng : -v.ng), l};
   if (embree.occluded(ray, 0.0f, kInfinity, v.mask)) return {};
   return {light * weight, ray};
 }

@@ -42,7 +42,14 @@ struct ShadingPoint {
   Vec3f ng;            // geometric normal, same side
   std::uint32_t mask;  // the pixel's ray mask (stochastic level of detail)
   Vec3f wo{};          // toward where the ray came from
+  float error = 0.0f;  // bound on p's floating-point error, metres (hit_error)
 };
+
+// A bound on the floating-point error of a hit point origin + t x direction as Embree finds
+// it: a few units in the last place of the magnitudes involved (the ray's origin, the
+// distance, the point), as pbrt-v4 bounds its intersections' errors. Near the scene origin a
+// fraction of a millimetre; it grows with the coordinates only as float spacing does.
+float hit_error(const Vec3f& origin, float t, const Vec3f& p);
 
 // The material of a hit at `v`: ground (by triangle, varied by renderer/ground_shading),
 // grass (varied like the ground beneath), bark (textured), leaf (vigour tint) or a scene
@@ -74,9 +81,10 @@ Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m, co
 // The Fresnel reflectance of water seen along `direction` (0 for other materials).
 float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng);
 
-// Pushes a point off its surface so that rays leaving it do not hit it again; the offset
-// grows with distance from the origin because float spacing does.
-Vec3f offset_point(const Vec3f& p, const Vec3f& ng);
+// Pushes the shading point off its surface toward `side` (a geometric normal) by its error
+// bound, so that rays leaving it do not hit the same surface again, and no further: a larger
+// offset skips leaves and twigs within it (shadows that depend on where a tree stands).
+Vec3f offset_point(const ShadingPoint& v, const Vec3f& side);
 
 // Uniform direction in the cone of half-angle `radius` about axis (the sun's disc).
 Vec3f sample_cone(const Vec3f& axis, float radius, float u1, float u2);

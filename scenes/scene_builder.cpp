@@ -333,6 +333,9 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
     add_ground_materials(scenario, map ? &*map : nullptr, rasters, scene);
   set_ground_materials(scenario, scene);
   scene.ground.edge_albedo = detail::edge_albedo(scene.ground, grid, scene.origin);
+  // With context grids the drawn ground ends at their rim, whose mean the renderer takes.
+  if (scenario.terrain.context.empty())
+    scene.ground.plain_height = detail::edge_height(grid, scene.origin);
   scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();
   set_spectral_optics(scenario, scene);
   return scene;

@@ -144,9 +144,12 @@ nlohmann::json bands_json(const scenes::Scenario& s) {
   return out;
 }
 
+// `complete`: false when a later image failed; the manifest then lists the images finished
+// before it, so that a set is never left without one (--resume continues it).
 void write_manifest(const std::filesystem::path& path, const scenes::Scenario& s,
-                    const nlohmann::json& images) {
+                    const nlohmann::json& images, bool complete = true) {
   const nlohmann::json manifest = {
+      {"complete", complete},
       {"scenario", s.source},
       {"version", LANDSIM_VERSION},
       {"spp", s.render.spp},
@@ -476,42 +479,51 @@ int run_render(const RenderArgs& args) {
   nlohmann::json manifest = nlohmann::json::array();
   std::size_t skipped = 0;
   double scene_seconds = 0.0;
-  for (const Image& image : images) {
-    // Under MPI every rank would have to agree: finished images are skipped in one process.
-    if (args.resume && !run.distributed() && already_finished(run, image)) {
-      manifest.push_back(manifest_entry(scenario.views[image.view], image.stem, image.frame,
-                                        scenario.render.frames[image.frame]));
-      if (!scenario.objects.empty())
-        manifest.back()["objects"] = saved_objects(out_dir / (image.stem + ".exr"));
-      ++skipped;
-      continue;
+  // A later image that fails (its scene, its file) leaves the images already written with a
+  // manifest that says the set is unfinished.
+  const auto unfinished = [&] {
+    if (run.writer() && !args.task_index && !manifest.empty())
+      write_manifest(out_dir / "manifest.json", scenario, manifest, false);
+  };
+  for (const Image& image : images) try {
+      // Under MPI every rank would have to agree: finished images are skipped in one process.
+      if (args.resume && !run.distributed() && already_finished(run, image)) {
+        manifest.push_back(manifest_entry(scenario.views[image.view], image.stem, image.frame,
+                                          scenario.render.frames[image.frame]));
+        if (!scenario.objects.empty())
+          manifest.back()["objects"] = saved_objects(out_dir / (image.stem + ".exr"));
+        ++skipped;
+        continue;
+      }
+      if (!scene || (sway && image.frame != scene_frame)) {
+        renderer.reset();
+        scene.reset();  // one scene at a time: the memory estimate counts one
+        const auto build_start = std::chrono::steady_clock::now();
+        scene = scenes::build_scene(scenario, scenario.render.frames[image.frame], &variants);
+        scene_seconds += seconds_since(build_start);
+        variants.clear();
+        scene_frame = image.frame;
+        if (reports.empty())
+          spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(run.start),
+                       scene->instances.size(), scene->prototypes.size());
+        renderer.emplace(*scene);
+      }
+      std::optional<RenderedImage> done;
+      try {
+        const StopOnSignal stop_on_signal;
+        done = render_image(run, *scene, *renderer, image, reports.empty());
+      } catch (const renderer::RenderInterrupted&) {
+        spdlog::error("stopped by signal {} at {}: its checkpoint is in {}; continue with --resume",
+                      static_cast<int>(g_stop_signal), image.stem, out_dir.string());
+        return 128 + static_cast<int>(g_stop_signal);
+      }
+      if (!done) continue;
+      reports.push_back(done->report);
+      manifest.push_back(done->manifest);
+    } catch (...) {
+      unfinished();
+      throw;
     }
-    if (!scene || (sway && image.frame != scene_frame)) {
-      renderer.reset();
-      scene.reset();  // one scene at a time: the memory estimate counts one
-      const auto build_start = std::chrono::steady_clock::now();
-      scene = scenes::build_scene(scenario, scenario.render.frames[image.frame], &variants);
-      scene_seconds += seconds_since(build_start);
-      variants.clear();
-      scene_frame = image.frame;
-      if (reports.empty())
-        spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(run.start),
-                     scene->instances.size(), scene->prototypes.size());
-      renderer.emplace(*scene);
-    }
-    std::optional<RenderedImage> done;
-    try {
-      const StopOnSignal stop_on_signal;
-      done = render_image(run, *scene, *renderer, image, reports.empty());
-    } catch (const renderer::RenderInterrupted&) {
-      spdlog::error("stopped by signal {} at {}: its checkpoint is in {}; continue with --resume",
-                    static_cast<int>(g_stop_signal), image.stem, out_dir.string());
-      return 128 + static_cast<int>(g_stop_signal);
-    }
-    if (!done) continue;
-    reports.push_back(done->report);
-    manifest.push_back(done->manifest);
-  }
   if (skipped > 0) spdlog::info("skipped {} finished images (--resume)", skipped);
   // The estimate's honesty, visible on every render (docs/PERFORMANCE.md "Memory budget").
   spdlog::info("peak memory {:.0f} MB (estimated {:.0f} MB)",

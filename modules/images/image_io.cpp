@@ -6,9 +6,11 @@
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
 
 #include <exception>
 #include <sstream>
+#include <string>
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -17,7 +19,39 @@ namespace {
 
 constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
+// The most values (pixels x channels) an image may hold: 2^28 floats, 1 GiB. The header is
+// read first, so a file claiming 100000 x 100000 pixels is refused before anything is
+// allocated for it.
+constexpr long long kMaxValues = 1LL << 28;
+
+bool probe(const std::string& path, int& width, int& height, int& channels, std::string& error) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) {
+    error = OIIO::geterror();
+    if (error.empty()) error = "not an image file OpenImageIO reads";
+    return false;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  width = spec.width;
+  height = spec.height;
+  channels = spec.nchannels;
+  in->close();
+  if (width <= 0 || height <= 0 || channels <= 0) {
+    error = "the header gives no pixels";
+    return false;
+  }
+  if (static_cast<long long>(width) * height * channels > kMaxValues) {
+    error = "the header declares " + std::to_string(width) + " x " + std::to_string(height) +
+            " pixels of " + std::to_string(channels) + " channels, more than the " +
+            std::to_string(kMaxValues) + " values landsim reads";
+    return false;
+  }
+  return true;
+}
+
 bool read(const std::string& path, bool to_linear, FloatImage& image, std::string& error) {
+  int width = 0, height = 0, channels = 0;
+  if (!probe(path, width, height, channels, error)) return false;
   OIIO::ImageBuf buf(path);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
     error = buf.geterror();
@@ -82,7 +116,7 @@ bool write_png(const std::string& path, const FloatImage& image, bool encode_srg
   return true;
 }
 
-const ImageIo kTable{read, display_transform, write_png};
+const ImageIo kTable{read, probe, display_transform, write_png};
 
 }  // namespace
 }  // namespace landsim::renderer

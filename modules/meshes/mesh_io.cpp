@@ -11,9 +11,20 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <functional>
+#include <tuple>
+#include <unordered_map>
 
 namespace landsim::scenes {
 namespace {
+
+struct PositionHash {
+  std::size_t operator()(const std::tuple<float, float, float>& p) const {
+    const auto bits = [](float f) { return std::hash<float>{}(f); };
+    return bits(std::get<0>(p)) ^ (bits(std::get<1>(p)) * 0x9e3779b97f4a7c15ULL) ^
+           (bits(std::get<2>(p)) * 0xc2b2ae3d27d4eb4fULL);
+  }
+};
 
 // Normals the file lacks are generated smooth across edges sharper than this only, so that
 // a box stays a box and a wheel stays round.
@@ -57,6 +68,35 @@ MeshMaterial read_material(const aiMaterial& m, const std::filesystem::path& dir
   return out;
 }
 
+// Corners sharing one position beyond which Assimp's smooth normals are not generated: it
+// compares every pair of them (a 30,000-triangle fan took 4.7 s, 10^6 zero-area faces on
+// three vertices never ended). Such meshes take flat normals, in linear time.
+constexpr std::size_t kMaxSharedCorners = 256;
+
+// The most corners of any mesh without normals that share one position.
+std::size_t most_shared_corners(const aiScene& scene) {
+  std::size_t most = 0;
+  for (unsigned k = 0; k < scene.mNumMeshes; ++k) {
+    const aiMesh& mesh = *scene.mMeshes[k];
+    if (mesh.mNormals != nullptr) continue;
+    std::unordered_map<std::tuple<float, float, float>, std::size_t, PositionHash> count;
+    count.reserve(mesh.mNumVertices);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D& p = mesh.mVertices[v];
+      most = std::max(most, ++count[{p.x, p.y, p.z}]);
+    }
+  }
+  return most;
+}
+
+// A triangle of zero area reflects nothing and has no normal: it is left out.
+bool degenerate(const aiMesh& mesh, const aiFace& face) {
+  const aiVector3D& a = mesh.mVertices[face.mIndices[0]];
+  const aiVector3D e1 = mesh.mVertices[face.mIndices[1]] - a;
+  const aiVector3D e2 = mesh.mVertices[face.mIndices[2]] - a;
+  return (e1 ^ e2).SquareLength() == 0.0f;
+}
+
 void append_mesh(const aiMesh& mesh, MeshData& out) {
   const auto first = static_cast<std::uint32_t>(out.positions.size() / 3);
   for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
@@ -69,7 +109,7 @@ void append_mesh(const aiMesh& mesh, MeshData& out) {
   }
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
     const aiFace& face = mesh.mFaces[f];
-    if (face.mNumIndices != 3) continue;  // points and lines: not surfaces
+    if (face.mNumIndices != 3 || degenerate(mesh, face)) continue;  // points, lines: no surface
     out.indices.insert(out.indices.end(), {first + face.mIndices[0], first + face.mIndices[1],
                                            first + face.mIndices[2]});
     out.triangle_material.push_back(mesh.mMaterialIndex);
@@ -84,10 +124,15 @@ bool read(const std::string& path, MeshData& mesh, std::string& error) {
     // nodes); validation refuses broken structures.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                           aiProcess_PreTransformVertices | aiProcess_SortByPType |
-                           aiProcess_ValidateDataStructure;
+    const unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                           aiProcess_SortByPType | aiProcess_ValidateDataStructure;
     const aiScene* scene = importer.ReadFile(path, flags);
+    if (scene != nullptr) {
+      // Normals the file lacks: smooth ones unless too many corners share a position.
+      const bool smooth = most_shared_corners(*scene) <= kMaxSharedCorners;
+      scene =
+          importer.ApplyPostProcessing(smooth ? aiProcess_GenSmoothNormals : aiProcess_GenNormals);
+    }
     if (scene == nullptr) {
       error = importer.GetErrorString();
       return false;

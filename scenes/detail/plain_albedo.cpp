@@ -36,4 +36,17 @@ Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& 
   return n == 0 ? ground.albedo : Vec3f(sum / static_cast<double>(n));
 }
 
+std::optional<float> edge_height(const terrain::ElevationGrid& grid, const Vec3& origin) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (int r = 0; r < grid.rows(); ++r)
+    for (int c = 0; c < grid.cols(); ++c)
+      if (edge_cell(grid, c, r)) {
+        sum += grid.at(c, r);
+        ++n;
+      }
+  if (n == 0) return std::nullopt;
+  return static_cast<float>(sum / static_cast<double>(n) - origin.z);
+}
+
 }  // namespace landsim::scenes::detail

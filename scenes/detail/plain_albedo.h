@@ -3,6 +3,8 @@
 // horizon, where a ray leaves the grid): the mean albedo of the ground along the grid's edge,
 // so the plain continues what the terrain shows there (grass, soil) instead of one fixed
 // colour. A grid whose edge has no ground (all nodata) keeps the terrain's albedo.
+#include <optional>
+
 #include "renderer/scene.h"
 #include "terrain/elevation_grid.h"
 
@@ -10,5 +12,9 @@ namespace landsim::scenes::detail {
 
 Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
                   const Vec3& origin);
+
+// The plain's height (renderer/plain.h), scene frame: the mean height of the grid's edge
+// cells (valid cells beside the grid's border or a nodata cell); empty when it has none.
+std::optional<float> edge_height(const terrain::ElevationGrid& grid, const Vec3& origin);
 
 }  // namespace landsim::scenes::detail

@@ -14,6 +14,7 @@
 #include "core/input_warnings.h"
 #include "renderer/ground_probe.h"
 #include "renderer/object_texture.h"
+#include "scenes/detail/mesh_file_check.h"
 #include "scenes/mesh_io.h"
 
 namespace landsim::scenes::detail {
@@ -236,6 +237,7 @@ void clear_trees(renderer::Scene& scene, double x, double y, double radius) {
 const MeshData& read_object_mesh(const ObjectSettings& o, std::map<std::string, MeshData>& files) {
   const auto found = files.find(o.file);
   if (found != files.end()) return found->second;
+  check_mesh_file(o.file, where(o, o.file_location, "file"));
   MeshData mesh;
   std::string error;
   if (!mesh_io().read(o.file, mesh, error))

@@ -1293,6 +1293,26 @@ TEST(Cli, AnOutputNameTakenByADirectoryIsSaidPlainly) {
   EXPECT_EQ(testing::file_names(dir / "out"), std::set<std::string>{"v.exr"});
 }
 
+// A set whose second image fails: the first image keeps a manifest that lists it and says
+// the set is unfinished (before, the set had images and no manifest).
+TEST(Cli, ALaterImageThatFailsLeavesAManifestOfTheFinishedOnes) {
+  TempDir dir;
+  const auto s =
+      dir.write("s.toml", scenario("",
+                                   "[[views]]\nname = \"w\"\nposition = [500.0, 900.0, 330.0]\n"
+                                   "target = [280.0, 280.0, 130.0]\nwidth = 32\nheight = 18\n",
+                                   "spp = 1"));
+  std::filesystem::create_directories(dir / "out" / "w.exr");
+  const Result r = run("render " + s.string() + " --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(dir / "out" / "manifest.json")) << r.err;
+  const auto manifest = nlohmann::json::parse(std::ifstream(dir / "out" / "manifest.json"));
+  EXPECT_FALSE(manifest["complete"].get<bool>());
+  ASSERT_EQ(manifest["images"].size(), 1u);
+  EXPECT_EQ(manifest["images"][0]["view"], "v");
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "v.exr"));
+}
+
 TEST(CliTree, PrintsTheJsonContract) {
   TempDir dir;
   // The California black oak splits (clones): every count must be the library's own tree's.

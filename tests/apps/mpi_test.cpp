@@ -1,8 +1,10 @@
 // The MPI path end to end: landsim under `mpirun -np 2` against landsim alone.
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "tests/support/run_program.h"
@@ -130,9 +132,12 @@ TEST(Mpi, OneFailingRankAbortsTheOthersWithoutAHang) {
   EXPECT_NE(r.err.find("rank 0 of 2"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("b_f0000.exr"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("rank 1 of 2"), std::string::npos) << "rank 1 never started: " << r.err;
-  // The first image kept; no temporary file, no manifest.
+  // The first image kept with a manifest that says the set is unfinished; no temporary file.
   EXPECT_EQ(testing::file_names(out),
-            (std::set<std::string>{"a_f0000.exr", "a_f0000.png", "b_f0000.exr"}));
+            (std::set<std::string>{"a_f0000.exr", "a_f0000.png", "b_f0000.exr", "manifest.json"}));
+  const auto manifest = nlohmann::json::parse(std::ifstream(out / "manifest.json"));
+  EXPECT_FALSE(manifest["complete"].get<bool>());
+  EXPECT_EQ(manifest["images"].size(), 1u);
 }
 
 }  // namespace

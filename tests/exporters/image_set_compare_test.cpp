@@ -17,14 +17,14 @@ namespace {
 using landsim::testing::TempDir;
 
 // A small film: a gradient of radiance, ground below the middle row, sky above.
-renderer::Film film(int w, int h, float gain = 1.0f) {
+renderer::Film film(int w, int h, float gain = 1.0f, Vec3f normal = {0, 0, 1}) {
   renderer::Film f(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       renderer::PixelAovs a;
       const bool ground = y >= h / 2;
       a.depth = ground ? 10.0f + static_cast<float>(y) : std::numeric_limits<float>::infinity();
-      a.normal = ground ? Vec3f{0, 0, 1} : Vec3f{};
+      a.normal = ground ? normal : Vec3f{};
       a.object = ground ? 1u : 0u;
       f.set(x, y,
             Vec3f{100.0f + static_cast<float>(x), 200.0f + static_cast<float>(y), 50.0f} * gain, a);
@@ -42,6 +42,19 @@ void write_set(const std::filesystem::path& dir,
     list.push_back({{"path", view + ".exr"}, {"view", view}, {"frame_index", 0}});
   }
   std::ofstream(dir / "manifest.json") << nlohmann::json{{"images", list}}.dump();
+}
+
+// Tilted normals whose normalised dot product rounds below 1: equal normals are 0 degrees
+// apart (acos of the rounded dot product read 5.8e-5 degrees for byte-identical sets).
+TEST(ImageSetCompare, EqualTiltedNormalsAreNoAngleApart) {
+  TempDir dir;
+  for (const Vec3f n : {Vec3f{0.3f, 0.5f, 0.81f}, Vec3f{-0.62f, 0.11f, 0.77f}}) {
+    write_set(dir / "a", {{"v", film(32, 16, 1.0f, n)}});
+    write_set(dir / "b", {{"v", film(32, 16, 1.0f, n)}});
+    const SetComparison c = compare_image_sets(dir / "a", dir / "b", {});
+    ASSERT_EQ(c.images.size(), 1u);
+    EXPECT_EQ(c.images[0].normal_mean_angle_deg, 0.0) << n.x << " " << n.y << " " << n.z;
+  }
 }
 
 TEST(ImageSetCompare, IdenticalSetsPassWithNoDifference) {

@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "renderer/camera.h"
+#include "renderer/plain.h"
 #include "renderer/render.h"
 #include "renderer/sky.h"
 #include "scenes/scenario.h"
@@ -57,6 +58,8 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
   // and the ground in the gaps, as a sensor's pixel mixes them) and of the bare ground east
   // of x = 310 m. Where a pixel looks: its camera ray at the film's depth.
   const renderer::Camera camera(scene.views[0]);
+  // Only the grid: the plain beyond it is ground of the edge's colour, not the stand.
+  const renderer::PlainSurface grid = renderer::plain_surface(scene.ground);
   double red[2] = {}, nir[2] = {};
   int count[2] = {};
   for (int y = 0; y < film.height(); ++y)
@@ -65,7 +68,10 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
       if (object == renderer::ObjectClass::sky || !std::isfinite(film.depth(x, y))) continue;
       const renderer::Ray ray =
           camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-      const double east = ray.origin.x + ray.direction.x * film.depth(x, y) + scene.origin.x;
+      const Vec3f at = ray.origin + ray.direction * film.depth(x, y);
+      if (at.x < grid.min_x || at.x > grid.max_x || at.y < grid.min_y || at.y > grid.max_y)
+        continue;
+      const double east = at.x + scene.origin.x;
       const int which =
           east < 290.0 ? 0 : (east > 310.0 && object == renderer::ObjectClass::ground ? 1 : -1);
       if (which < 0) continue;
