@@ -31,6 +31,28 @@ constexpr int kRegions = 4;  // per side, for the per-region luminance compariso
 
 enum class Cover { sky, ground, tree, object };
 
+// POV-Ray's own refusal of a scene: "File 'F' line N: Parse Error: message" in its log.
+struct PovParseError : std::runtime_error {
+  PovParseError(std::string file, int line, std::string message)
+      : std::runtime_error(message), file(std::move(file)), line(line) {}
+  std::string file;
+  int line;
+};
+
+// The first parse error among POV-Ray's lines (its message continues on lines that start
+// with a space), thrown; nothing when there is none.
+void throw_parse_error(const std::vector<std::string>& lines) {
+  static const std::regex kError(R"(File '([^']*)' line (\d+): Parse Error: (.*))");
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::smatch m;
+    if (!std::regex_search(lines[i], m, kError)) continue;
+    std::string message = m[3].str();
+    for (std::size_t k = i + 1; k < lines.size() && !lines[k].empty() && lines[k][0] == ' '; ++k)
+      message += lines[k];
+    throw PovParseError(m[1].str(), std::stoi(m[2].str()), message);
+  }
+}
+
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
@@ -58,9 +80,13 @@ double run_povray(const std::filesystem::path& cwd, const std::filesystem::path&
   static const std::regex kPercent(R"(Rendered \d+ of \d+ pixels \((\d+)%\))");
   int reported = -1;
   std::string line;
+  std::vector<std::string> lines;
   // POV-Ray rewrites its progress line with carriage returns: each is a line of its own.
   const auto finish_line = [&] {
     log_file << line << '\n';
+    if (line.find("Parse Error") != std::string::npos ||
+        (!lines.empty() && !line.empty() && line[0] == ' '))
+      lines.push_back(line);
     std::smatch m;
     if (progress && std::regex_search(line, m, kPercent)) {
       const int percent = std::stoi(m[1].str());
@@ -77,7 +103,10 @@ double run_povray(const std::filesystem::path& cwd, const std::filesystem::path&
     }
   }
   if (!line.empty()) finish_line();
-  if (::pclose(pipe) != 0) throw std::runtime_error("POV-Ray failed: see " + log.string());
+  if (::pclose(pipe) != 0) {
+    throw_parse_error(lines);
+    throw std::runtime_error("POV-Ray failed: see " + log.string());
+  }
   return seconds_since(start);
 }
 
@@ -420,6 +449,11 @@ void render_user_scene(const CrosscheckOptions& o, const renderer::View& view,
       if (std::filesystem::exists(out / name))
         std::filesystem::copy_file(out / name, pov_dir / name,
                                    std::filesystem::copy_options::overwrite_existing);
+  } catch (const PovParseError& e) {
+    std::filesystem::remove_all(out);
+    // The user's scene (or a file it includes) is bad input: POV-Ray's words, its place.
+    const std::filesystem::path where = (file.parent_path() / e.file).lexically_normal();
+    throw InputError(fmt::format("{}:{}: POV-Ray: {}", where.string(), e.line, e.what()));
   } catch (...) {
     std::filesystem::remove_all(out);
     throw;
@@ -437,8 +471,8 @@ void render_user_scene(const CrosscheckOptions& o, const renderer::View& view,
 
 }  // namespace
 
-CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Scene& scene,
-                            const CrosscheckOptions& o) {
+static CrosscheckReport run_crosscheck(const scenes::Scenario& scenario,
+                                       const renderer::Scene& scene, const CrosscheckOptions& o) {
   (void)scenario;
   CrosscheckReport r;
   renderer::View view = scene.views.at(o.view);
@@ -555,6 +589,25 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
                      o.out_dir / "side_by_side.png");
   write_reports(r, o, o.out_dir);
   return r;
+}
+
+CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Scene& scene,
+                            const CrosscheckOptions& o) {
+  // Bad input found late (the user's POV-Ray scene, refused by POV-Ray) leaves nothing: the
+  // folder if this run made it, else what this run writes in it.
+  const bool fresh = !std::filesystem::exists(o.out_dir);
+  try {
+    return run_crosscheck(scenario, scene, o);
+  } catch (const InputError&) {
+    std::error_code ignored;
+    if (fresh) {
+      std::filesystem::remove_all(o.out_dir, ignored);
+    } else {
+      std::filesystem::remove(o.out_dir / "landsim.exr", ignored);
+      std::filesystem::remove_all(o.out_dir / "pov", ignored);
+    }
+    throw;
+  }
 }
 
 }  // namespace landsim::exporters

@@ -1067,6 +1067,76 @@ TEST(Cli, CrosscheckReportsTheContractAndFailsPastThresholds) {
   EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
 }
 
+// The reference of `crosscheck --reference` is checked from its header before anything
+// renders: garbage, an image of the wrong size, and a PNG whose header claims 100000 x 100000
+// pixels (before: 120 GB asked for, after landsim.exr was written) are refused with exit 2,
+// nothing written.
+TEST(Cli, ACrosscheckReferenceIsCheckedBeforeAnythingRenders) {
+  TempDir dir;
+  const auto s = dir.write("s.toml", scenario("", "", "spp = 1"));
+  // A PNG signature, an IHDR chunk of 100000 x 100000 RGB, an IDAT of two bytes, IEND
+  // (every CRC right): a header that opens, and no pixels.
+  const std::string huge(
+      "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x01"
+      "\x86\xa0\x00\x01\x86\xa0\x08\x02\x00\x00\x00\x27\x30\x9c\x9f"
+      "\x00\x00\x00\x02\x49\x44\x41\x54\x78\x9c\x62\xa4\x91\x2b"
+      "\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82",
+      59);
+  std::vector<float> one{0.5f, 0.5f, 0.5f};
+  struct Case {
+    std::string file, content, message;
+  };
+  for (const Case& c : {Case{"garbage.png", "not an image at all\n", "cannot read the reference"},
+                        Case{"huge.png", huge, "100000 x 100000"},
+                        Case{"small.exr", "",
+                             "the reference is 1 x 1 pixels, the view renders "
+                             "32 x 18"}}) {
+    std::filesystem::path ref;
+    if (c.content.empty()) {
+      ref = dir / c.file;
+      auto exr = OIIO::ImageOutput::create(ref.string());
+      ASSERT_TRUE(exr && exr->open(ref.string(), OIIO::ImageSpec(1, 1, 3, OIIO::TypeDesc::FLOAT)));
+      ASSERT_TRUE(exr->write_image(OIIO::TypeDesc::FLOAT, one.data()));
+      exr->close();
+    } else {
+      ref = dir.write(c.file, c.content);
+    }
+    const auto out = dir / ("check_" + c.file);
+    const Result r =
+        run("crosscheck " + s.string() + " --out " + out.string() + " --reference " + ref.string(),
+            dir);
+    EXPECT_EQ(r.exit_code, 2) << c.file << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.file << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.file;
+  }
+}
+
+// A user's POV-Ray scene that POV-Ray refuses (it includes itself; it includes a file that is
+// not POV-Ray's): POV-Ray's own words at its file and line, exit 2, nothing left (before: exit
+// 1, "internal error: POV-Ray failed: see .../povray.log", and the files written so far).
+TEST(Cli, APovSceneThatPovRayRefusesIsSaidWithItsFileAndLine) {
+  LANDSIM_REQUIRE_TOOL("povray", "povray");
+  TempDir dir;
+  const auto s = dir.write("s.toml", scenario("", "", "spp = 1"));
+  const std::string camera =
+      "camera { location <0, 1, -3> right x*image_width/image_height look_at <0, 0, 0> }\n";
+  dir.write("self.pov", camera + "#include \"self.pov\"\n");
+  dir.write("notes.txt", "root:x:0:0\n");
+  dir.write("other.pov", camera + "\n#include \"notes.txt\"\n");
+  for (const auto& [scene, said] :
+       {std::pair{"self.pov", "self.pov:2: POV-Ray: Too many nested include files"},
+        std::pair{"other.pov", "notes.txt:1: POV-Ray: Expected 'object or directive'"}}) {
+    const auto out = dir / (std::string("check_") + scene);
+    const Result r = run(
+        "crosscheck " + s.string() + " --out " + out.string() + " --pov " + (dir / scene).string(),
+        dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(said), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << scene;
+  }
+}
+
 TEST(Cli, InfoDescribesTheDefaultScene) {
   TempDir dir;
   const Result r = run("info --json", dir);
