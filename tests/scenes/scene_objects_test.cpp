@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "renderer/ground_probe.h"
 #include "renderer/object_texture.h"
 #include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
@@ -108,6 +109,41 @@ TEST(SceneObjects, AnAlignedObjectFollowsTheGroundsNormalAndTouchesIt) {
   // clockwise from north.
   const Vec3 front = column(scene.objects[0], 1);
   EXPECT_NEAR(std::atan2(front.x, front.y) * 180.0 / std::numbers::pi, 75.0, 0.5);
+}
+
+// A flat 20 m panel on a knoll (a Gaussian hill 20 m high, sigma 30 m): its corners lie on
+// the flanks 2 m below the top, so lowered until a vertex touched, the knoll rose through
+// its middle (3 of 18 pixels were visible). Now no point of it is below the drawn ground,
+// and it touches it.
+TEST(SceneObjects, APanelOnAKnollClearsTheGroundAndTouchesIt) {
+  TempDir dir;
+  std::string knoll =
+      "ncols 40\nnrows 40\nxllcorner 1000\nyllcorner 2000\ncellsize 5\nNODATA_value -9999\n";
+  for (int r = 0; r < 40; ++r) {
+    for (int c = 0; c < 40; ++c) {
+      const double x = 1002.5 + 5.0 * c - 1100.0, y = 2002.5 + 5.0 * (39 - r) - 2100.0;
+      knoll += std::to_string(100.0 + 20.0 * std::exp(-(x * x + y * y) / (2 * 30.0 * 30.0))) + " ";
+    }
+    knoll += "\n";
+  }
+  const std::string terrain = dir.write("knoll.asc", knoll).string();
+  // In the file's x-z plane (its y is up), 0.1 m thick in nothing: one quad.
+  const std::string panel =
+      dir.write("panel.obj", "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nf 1 2 3\nf 1 3 4\n")
+          .string();
+  const renderer::Scene scene = build(dir, scenario(terrain, object("p", panel, 1100, 2100)));
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const renderer::GroundProbe probe(scene.ground.mesh);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const Vec3 w = scene.objects[0].apply(Vec3f{-10.0f + 0.5f * i, -10.0f + 0.5f * j, 0.0f});
+      const std::optional<double> h = probe.height(w.x, w.y);
+      ASSERT_TRUE(h.has_value());
+      lowest = std::min(lowest, w.z - *h);
+    }
+  EXPECT_GT(lowest, -0.05) << "the knoll rises through the panel";
+  EXPECT_LT(lowest, 0.1) << "the panel floats";
 }
 
 TEST(SceneObjects, HeadingTurnsTheFrontClockwiseFromNorthAndScaleSizesIt) {
