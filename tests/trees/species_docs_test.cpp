@@ -4,10 +4,13 @@
 // reader (params::TableReader) while the files are parsed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <regex>
 #include <set>
+#include <vector>
+#include <sstream>
 
 #include "params/table_reader.h"
 #include "tests/support/temp_dir.h"
@@ -88,6 +91,71 @@ void expect_documented(const std::string& doc_file, const std::string& heading,
   for (const std::string& k : documented)
     EXPECT_TRUE(declared.count(k) || aliases.count(k))
         << k << " is documented in " << doc_file << " but no example declares it";
+}
+
+// The numbers of a text: unsigned decimals and exponents ("0.25-20" gives 0.25 and 20).
+std::vector<double> numbers_in(const std::string& text) {
+  static const std::regex number(R"((\d+(\.\d+)?(e-?\d+)?))");
+  std::vector<double> out;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
+       it != std::sregex_iterator(); ++it)
+    out.push_back(std::stod((*it)[1]));
+  return out;
+}
+
+// Every range a reader enforces ("a number from 0.001 to 1", "an integer from 0 to 64") is
+// given in the key's row of `doc_file` (its second column, as "0.001-1"): a user sees the
+// limits before the reader refuses a value.
+void expect_ranges_documented(const std::string& doc_file, const std::string& heading,
+                              const std::string& file_prefix) {
+  const std::string doc = read_file(source_file(doc_file));
+  const std::size_t start = doc.find(heading);
+  ASSERT_NE(start, std::string::npos) << heading;
+  const std::string section = doc.substr(start, doc.find("\n## ", start + 1) - start);
+  static const std::regex range(R"(from (-?[\d.e-]+)(?: \(exclusive\))? to (-?[\d.e-]+))");
+  for (const auto& entry : std::filesystem::directory_iterator(source_file("data/species"))) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(file_prefix, 0) != 0 || entry.path().extension() != ".toml") continue;
+    params::Declarations declared;
+    parse_species_toml(read_file(entry.path()), entry.path().string(), &declared);
+    for (params::KeyDeclaration d : declared) {
+      std::smatch m;
+      if (!std::regex_search(d.expected, m, range)) continue;
+      d.table = std::regex_replace(d.table, std::regex(R"(\[\d*\]\.)"), ".");
+      const bool array = d.table.size() > 2 && d.table.substr(d.table.size() - 2) == "[]";
+      const std::string table =
+          array ? "[[" + d.table.substr(0, d.table.size() - 2) + "]]" : "[" + d.table + "]";
+      // The row that names the key: "| `[t] key`" or "| `[t] a`, `key`".
+      std::istringstream lines(section);
+      std::string row;
+      for (std::string line; std::getline(lines, line) && row.empty();) {
+        if (line.rfind("| `", 0) != 0) continue;
+        const std::string first = line.substr(2, line.find(" | ", 2) - 2);
+        if (first.find("`" + table + " " + d.key + "`") != std::string::npos ||
+            (first.rfind("`" + table + " ", 0) == 0 &&
+             first.find("`" + d.key + "`") != std::string::npos))
+          row = line;
+      }
+      if (row.empty()) continue;  // the key's documentation is held by the test above
+      const std::size_t second = row.find(" | ") + 3;
+      const std::string unit = row.substr(second, row.find(" | ", second) - second);
+      if (unit.rfind("as ", 0) == 0) continue;  // "as `[vigour]`": that table's ranges
+      const std::vector<double> given = numbers_in(unit);
+      for (const double bound : {std::abs(std::stod(m[1])), std::abs(std::stod(m[2]))}) {
+        const bool found = std::any_of(given.begin(), given.end(), [&](double g) {
+          return std::abs(g - bound) <= 1e-9 * std::max(1.0, bound);
+        });
+        EXPECT_TRUE(found) << doc_file << ": " << table << " " << d.key << " enforces "
+                           << d.expected << " but its row gives \"" << unit << "\"";
+      }
+    }
+  }
+}
+
+TEST(SpeciesDocs, EveryEnforcedRangeIsDocumented) {
+  expect_ranges_documented("docs/SPECIES.md", "## Graph-paths species", "graph_");
+  expect_ranges_documented("docs/SPECIES.md", "## Self-organising species", "so_");
+  expect_ranges_documented("docs/SPECIES.md", "## Measured-growth species", "london_plane");
 }
 
 TEST(SpeciesDocs, GraphPathsKeysAreTheDocumentedOnes) {
