@@ -3,6 +3,7 @@
 // Assimp reads) through a module of their own (liblandsim_meshes.so, source in
 // modules/meshes/), loaded the first time an object is read (core/module_loader.h). This is
 // the module's function table: plain arrays out, in the file's own units and axes.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ struct MeshData {
   std::vector<std::uint32_t> indices;            // three per triangle
   std::vector<std::uint32_t> triangle_material;  // per triangle, into `materials`
   std::vector<MeshMaterial> materials;
+  std::size_t zero_area_faces = 0;  // triangles of zero area, left out (they reflect nothing)
 };
 
 struct MeshIo {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/input_error.h"
+#include "core/input_warnings.h"
 #include "terrain/dem_loader.h"
 #include "terrain/raster_io.h"
 
@@ -54,6 +55,15 @@ ElevationGrid load_context(const std::string& path, const ElevationGrid& grid,
   const GeoTransform placement{gt[0] + shift[0], gt[3] + shift[1], gt[1], -gt[5]};
   if (std::all_of(warped.cells.begin(), warped.cells.end(), [](float h) { return std::isnan(h); }))
     fail(path, "every cell is nodata");
+  // Context grids are coarser surroundings: a cell under 1 mm (or a thousandth of the grid's)
+  // covers next to nothing, a georeferencing gone wrong rather than a context.
+  const double finest = std::max(1e-3, 1e-3 * grid.transform().cell_size_x);
+  if (placement.cell_size_x < finest || placement.cell_size_y < finest)
+    warn_input(fmt::format(
+        "{}: the context's cells are {:g} x {:g} m (the grid's are {:g} m): it "
+        "covers {:g} x {:g} m, next to nothing around the grid",
+        path, placement.cell_size_x, placement.cell_size_y, grid.transform().cell_size_x,
+        placement.cell_size_x * warped.cols, placement.cell_size_y * warped.rows));
 
   const Extent c = extent_of(placement, warped.cols, warped.rows);
   const Extent g = extent_of(grid.transform(), grid.cols(), grid.rows());

@@ -109,7 +109,11 @@ void append_mesh(const aiMesh& mesh, MeshData& out) {
   }
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
     const aiFace& face = mesh.mFaces[f];
-    if (face.mNumIndices != 3 || degenerate(mesh, face)) continue;  // points, lines: no surface
+    if (face.mNumIndices != 3) continue;  // points and lines: not surfaces
+    if (degenerate(mesh, face)) {
+      ++out.zero_area_faces;
+      continue;
+    }
     out.indices.insert(out.indices.end(), {first + face.mIndices[0], first + face.mIndices[1],
                                            first + face.mIndices[2]});
     out.triangle_material.push_back(mesh.mMaterialIndex);

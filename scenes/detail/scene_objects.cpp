@@ -281,6 +281,11 @@ const MeshData& read_object_mesh(const ObjectSettings& o, std::map<std::string, 
   if (!mesh_io().read(o.file, mesh, error))
     throw InputError(fmt::format("{}: cannot read mesh {}: {}", where(o, o.file_location, "file"),
                                  o.file, error));
+  if (mesh.indices.empty() && mesh.zero_area_faces > 0)
+    throw InputError(fmt::format(
+        "{}: {}: the mesh has no faces of any area (its {} triangles are all of zero area: never "
+        "visible)",
+        where(o, o.file_location, "file"), o.file, mesh.zero_area_faces));
   if (mesh.indices.empty())
     throw InputError(fmt::format("{}: {}: the mesh has no faces (expected triangles or polygons)",
                                  where(o, o.file_location, "file"), o.file));

@@ -5,6 +5,7 @@
 #include <ogr_srs_api.h>
 
 #include "core/input_error.h"
+#include "core/input_warnings.h"
 #include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
 
@@ -94,6 +95,31 @@ TEST(ContextGrid, AContextThatDoesNotOverlapIsRefusedWithBothExtents) {
     EXPECT_NE(m.find("x 100000.0 .. 100300.0"), std::string::npos) << m;
     EXPECT_NE(m.find("x 820000.0 .. 821500.0"), std::string::npos) << m;
   }
+  OSRDestroySpatialReference(zone32);
+}
+
+// A context of 1e-9 m cells (a georeferencing gone wrong) covers next to nothing: warned,
+// and refused under --strict (before, accepted silently either way).
+TEST(ContextGrid, AContextOfVanishingCellsIsWarnedAbout) {
+  testing::register_gdal();
+  TempDir dir;
+  OGRSpatialReferenceH zone32 = utm_north(32);
+  const std::string wkt = wkt_of(zone32);
+  const double gt[6] = {kWest + 100.0, 1e-9, 0.0, kNorth - 100.0, 0.0, -1e-9};
+  const std::string path = (dir / "tiny.tif").string();
+  write_raster(path, "GTiff", GDT_Float32, 10, 10, std::vector<double>(100, 5.0), gt, wkt.c_str());
+  std::vector<std::string> said;
+  InputWarnings& w = input_warnings();
+  w.sink = [&](const std::string& m) { said.push_back(m); };
+  load_context(path, utm32_grid(wkt));
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said[0].find(path + ": the context's cells are 1e-09 x 1e-09 m"), std::string::npos)
+      << said[0];
+  w.strict = true;
+  w.said.clear();
+  EXPECT_THROW(load_context(path, utm32_grid(wkt)), InputError);
+  w.strict = false;
+  w.sink = nullptr;
   OSRDestroySpatialReference(zone32);
 }
 
