@@ -139,6 +139,10 @@ bool read(const std::string& path, MeshData& mesh, std::string& error) {
     }
     if (scene == nullptr) {
       error = importer.GetErrorString();
+      // Assimp's validation speaks of its own structures; a user's file simply has no mesh.
+      if (error.find("mNumMeshes is 0") != std::string::npos ||
+          error.find("contains no faces") != std::string::npos)
+        error = "it holds no faces (expected triangles or polygons)";
       return false;
     }
     mesh = MeshData{};

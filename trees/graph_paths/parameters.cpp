@@ -226,7 +226,10 @@ double primitive_volume(const VolumePrimitive& s) {
 
 }  // namespace
 
-double estimated_nodes(const Parameters& p) {
+namespace {
+
+// The crown's (or a root system's) own graph nodes, without the roots.
+double graph_nodes(const Parameters& p) {
   double v = 0.0;
   for (const VolumePrimitive& s : p.volume.parts()) v += primitive_volume(s);
   // Refinement replaces the volume's fill by its spheres (and their thin cones).
@@ -250,9 +253,16 @@ double estimated_nodes(const Parameters& p) {
     earlier += subgraphs;
     subgraphs = growing * level.endpoints * (1.0 + p.iteration.light_strength);
   }
-  if (p.roots.radius > 0.0) nodes += estimated_nodes(root_parameters(p));
   return nodes;
 }
+
+double root_nodes(const Parameters& p) {
+  return p.roots.radius > 0.0 ? graph_nodes(root_parameters(p)) : 0.0;
+}
+
+}  // namespace
+
+double estimated_nodes(const Parameters& p) { return graph_nodes(p) + root_nodes(p); }
 
 Parameters read_parameters(params::TableReader& root, const std::string& source) {
   Parameters p;
@@ -273,13 +283,29 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
                        params::format_number(q.x) + ", " + params::format_number(q.y) + ", " +
                        params::format_number(q.z) + ") is outside every [[volume]]");
   }
-  if (const double n = estimated_nodes(p); n > static_cast<double>(p.max_nodes))
-    throw InputError(source + ": graph.spacing " + std::to_string(p.spacing) + " and " +
-                     std::to_string(p.iteration.levels) + " iteration.levels would make about " +
-                     std::to_string(static_cast<long long>(n)) + " graph nodes (limit " +
-                     std::to_string(p.max_nodes) +
-                     "); raise graph.spacing or iteration.spacing_ratio, or lower "
-                     "graph.endpoints, iteration.endpoints or iteration.levels");
+  const double crown = graph_nodes(p), roots = root_nodes(p);
+  const auto about = [&](double n) {
+    return "would make about " + std::to_string(static_cast<long long>(n)) +
+           " graph nodes in all (limit " + std::to_string(p.max_nodes) + ")";
+  };
+  // The part that makes most of them is named, at its keys.
+  if (crown + roots > static_cast<double>(p.max_nodes) && roots > crown)
+    root.table("roots").fail(
+        "spacing", "[roots] spacing " + params::format_number(root_parameters(p).spacing) +
+                       " with radius " + params::format_number(p.roots.radius) + ", depth " +
+                       params::format_number(p.roots.depth) + " and " +
+                       std::to_string(p.roots.levels) + " levels " + about(crown + roots) + ", " +
+                       std::to_string(static_cast<long long>(roots)) +
+                       " of them roots; raise [roots] spacing, or lower [roots] radius, depth, "
+                       "levels or level_endpoints");
+  if (crown + roots > static_cast<double>(p.max_nodes))
+    root.table("graph").fail(
+        "spacing", "[graph] spacing " + params::format_number(p.spacing) + " and " +
+                       std::to_string(p.iteration.levels) + " [iteration] levels " +
+                       about(crown + roots) +
+                       "; raise [graph] spacing or [iteration] spacing_ratio, or lower [graph] "
+                       "endpoints, [iteration] endpoints or levels");
+  (void)source;
   return p;
 }
 

@@ -244,7 +244,7 @@ std::vector<std::uint32_t> bend_path(const Plant& plant, const Bend& b) {
 void bend(Plant& plant, const Bend& b) {
   const std::vector<std::uint32_t> path = bend_path(plant, b);
   if (path.empty())
-    throw InputError("bend: the handles' internodes (the last " +
+    throw InputError((b.where.empty() ? "bend" : b.where) + ": the handles' internodes (the last " +
                      std::to_string(b.handles.empty() ? 0 : b.handles.back().internode) +
                      ") are not on one path up from base internode " + std::to_string(b.base) +
                      " (the tree has " + std::to_string(plant.size()) + " internodes)");

@@ -6,6 +6,7 @@
 // decides how it bends. Everything else on the tree keeps its position and orientation
 // relative to the internode that carries it.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/vec3.h"
@@ -24,6 +25,7 @@ struct Bend {
   std::uint32_t base = 0;           // B: its base stays put
   std::vector<BendHandle> handles;  // the last one's internode is E; all on the path B..E
   double stretch = 0.0;  // 0: internodes keep their lengths (rigid prisms); 1: free to stretch
+  std::string where;     // "file:line:column: [[bend]]", for errors found while growing
 };
 
 // The path from b.base to the last handle's internode, base first; empty if that internode

@@ -188,6 +188,7 @@ Bend read_bend(TableReader r) {
       b.handles.push_back({static_cast<std::uint32_t>(h[0]), {h[1], h[2], h[3]}});
   if (b.handles.empty()) r.fail("handles", "expected [[internode, x, y, z], ...]");
   b.stretch = r.number("stretch", {0, 1}, b.stretch);
+  b.where = r.location(nullptr) + ": [[bend]]";
   r.finish();
   return b;
 }
@@ -214,6 +215,7 @@ Pruning read_prune(TableReader r) {
   c.step = static_cast<int>(r.integer("step", 1, 500, c.step));
   c.internode = static_cast<std::uint32_t>(r.integer("internode", 1, 100000000, c.internode));
   c.stub = r.boolean("stub", c.stub);
+  c.where = r.location(nullptr) + ": [[prune]]";
   r.finish();
   return c;
 }

@@ -109,6 +109,7 @@ struct Pruning {
   int step = 1;                 // before this step's growth
   std::uint32_t internode = 1;  // the first internode removed (or the stub)
   bool stub = false;
+  std::string where;  // "file:line:column: [[prune]]", for errors found while growing
 };
 
 // Growth rules changed from a step on (TreeSketch section 3: the modeler changes parameters

@@ -62,7 +62,8 @@ class Simulation {
     for (const Pruning& cut : p_.prunings) {
       if (cut.step != s) continue;
       if (cut.internode == 0 || cut.internode >= plant_.size() || !plant_[cut.internode].alive)
-        throw InputError("prune: internode " + std::to_string(cut.internode) +
+        throw InputError((cut.where.empty() ? "prune" : cut.where) + ": internode " +
+                         std::to_string(cut.internode) +
                          " is not a living branch internode at step " + std::to_string(s) +
                          " (the tree has " + std::to_string(plant_.size()) + " internodes)");
       std::vector<std::uint32_t> gone;

@@ -104,13 +104,21 @@ TEST(GraphPathsSpecies, ExplosiveSpacingIsRefusedBeforeGenerating) {
   // A 10 m sphere at 5 cm spacing: about 19 million nodes.
   const std::string msg =
       error_of(kHeader + "[graph]\nspacing = 0.05\n[[volume]]\nkind = \"sphere\"\nradius = 10\n");
-  EXPECT_NE(msg.find("graph.spacing"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("g.toml:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("[graph] spacing 0.05"), std::string::npos) << msg;
   EXPECT_NE(msg.find("limit"), std::string::npos) << msg;
   // Iterated levels multiply: 200 endpoints x 64^5 subgraphs.
   const std::string deep =
       error_of(kHeader + "[iteration]\nlevels = 6\nendpoints = 64\n" + kVolume);
-  EXPECT_NE(deep.find("iteration.levels"), std::string::npos) << deep;
+  EXPECT_NE(deep.find("6 [iteration] levels"), std::string::npos) << deep;
   EXPECT_EQ(error_of(kHeader + "[iteration]\nlevels = 2\nendpoints = 4\n" + kVolume), "");
+  // Roots too fine: the [roots] keys are named, at the file's line (before, the message
+  // blamed graph.spacing and the iteration levels).
+  const std::string roots =
+      error_of(kHeader + "[roots]\nradius = 20\ndepth = 20\nspacing = 0.01\n" + kVolume);
+  EXPECT_NE(roots.find("g.toml:"), std::string::npos) << roots;
+  EXPECT_NE(roots.find("[roots] spacing 0.01 with radius 20"), std::string::npos) << roots;
+  EXPECT_EQ(roots.find("[graph] spacing"), std::string::npos) << roots;
 }
 
 TEST(GraphPathsSpecies, EstimatedNodesMatchesASampledVolume) {

@@ -9,6 +9,7 @@
 
 #include "core/input_error.h"
 #include "tests/trees/self_organizing/test_species.h"
+#include "trees/self_organizing/generator.h"
 #include "trees/self_organizing/simulation.h"
 
 namespace landsim::trees::self_organizing {
@@ -139,6 +140,37 @@ TEST(Bending, HandlesOffThePathAreRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("base internode " + std::to_string(b.base)),
               std::string::npos)
+        << e.what();
+  }
+}
+
+// An edit that does not fit a seed's tree is reported at its entry in the species file
+// (before: "bend: ..." and "prune: ..." with neither file nor line).
+TEST(Bending, AnEditThatDoesNotFitIsReportedAtItsEntry) {
+  Parameters bent = testing::ellipsoid_crown(14);
+  Bend b;
+  b.base = 1;
+  b.handles.push_back({100000, {0.0, 0.0, 1.0}});
+  b.where = "sp.toml:20:1: [[bend]]";
+  bent.bends.push_back(b);
+  try {
+    generate_skeleton(bent, 3);
+    FAIL() << "a bend to an internode the tree does not have was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("sp.toml:20:1: [[bend]]: the handles' internodes", 0), 0u)
+        << e.what();
+  }
+  Parameters p = testing::ellipsoid_crown(14);
+  Pruning cut;
+  cut.step = 3;
+  cut.internode = 100000;
+  cut.where = "sp.toml:12:1: [[prune]]";
+  p.prunings.push_back(cut);
+  try {
+    grow(p, 3);
+    FAIL() << "a prune of an internode the tree does not have was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("sp.toml:12:1: [[prune]]: internode 100000", 0), 0u)
         << e.what();
   }
 }
