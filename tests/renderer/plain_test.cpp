@@ -110,6 +110,8 @@ TEST(Plain, BeyondTheGridItIsHazedAsGroundAtItsDistance) {
   const View v{"v", {0.0, 0.0, 10.0}, {430.0, 0.0, 0.0}, 1.0, 8, 8};
   const double plain = mean_luminance(Renderer(hazy_ground(50.0)).render(v, {}));
   const double ground = mean_luminance(Renderer(hazy_ground(2000.0)).render(v, {}));
+  RecordProperty("plain_cd_m2", std::to_string(plain));
+  RecordProperty("ground_cd_m2", std::to_string(ground));
   EXPECT_NEAR(plain / ground, 1.0, 0.03) << plain << " against " << ground;
 }
 
@@ -127,6 +129,8 @@ TEST(Plain, ANodataHoleShowsThePlainNotTheSky) {
   const View v{"v", {130.0, 0.0, 1500.0}, {0.0, 0.0, 0.0}, 2.0, 8, 8};
   const double hole = mean_luminance(Renderer(holed).render(v, {}));
   const double ground = mean_luminance(Renderer(whole).render(v, {}));
+  RecordProperty("hole_cd_m2", std::to_string(hole));
+  RecordProperty("ground_cd_m2", std::to_string(ground));
   EXPECT_NEAR(hole / ground, 1.0, 0.03) << hole << " against " << ground;
 }
 
