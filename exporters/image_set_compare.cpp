@@ -41,10 +41,12 @@ std::map<std::pair<std::string, int>, Entry> manifest(
     throw InputError(file.string() + ": not a landsim manifest (expected an \"images\" array)");
   std::map<std::pair<std::string, int>, Entry> out;
   for (const nlohmann::json& image : j["images"]) {
-    if (!image.contains("path") || !image.contains("view") || !image.contains("frame_index"))
+    if (!image.is_object() || !image.contains("path") || !image["path"].is_string() ||
+        !image.contains("view") || !image["view"].is_string() || !image.contains("frame_index") ||
+        !image["frame_index"].is_number_integer())
       throw InputError(file.string() +
-                       ": an image without path, view or frame_index (expected landsim's "
-                       "manifest)");
+                       ": an image without a path, view (strings) or frame_index (an integer) "
+                       "(expected landsim's manifest)");
     Entry e{image["view"].get<std::string>(), image["frame_index"].get<int>(),
             image["path"].get<std::string>()};
     const auto key = std::pair{e.view, e.frame};

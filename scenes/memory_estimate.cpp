@@ -183,10 +183,20 @@ std::size_t MemoryEstimate::total_bytes() const {
   return total;
 }
 
+// A texture as the scene holds it (renderer/texture_image: linear RGB floats) and, while it
+// is read, the module's float pixels of every channel: from its header alone. Zero when the
+// header cannot be read (the build reports why).
+double texture_bytes(const std::string& path) {
+  int width = 0, height = 0, channels = 0;
+  std::string error;
+  if (!renderer::image_io().probe(path, width, height, channels, error)) return 0.0;
+  return static_cast<double>(width) * height * (3.0 + channels) * sizeof(float);
+}
+
 // The [[objects]] meshes as the render holds them: each file's prototype (positions,
-// normals, texture coordinates, indices, materials) and its Embree scene, twice (the render's
-// and the objects-only scene of the truth pass). Reads each file once, handing it on in
-// `keep` when given.
+// normals, texture coordinates, indices, materials), its base-colour textures and its Embree
+// scene, twice (the render's and the objects-only scene of the truth pass). Reads each file once,
+// handing it on in `keep` when given.
 double object_bytes(const Scenario& s, VariantCache* keep) {
   std::map<std::string, MeshData> local;
   std::map<std::string, MeshData>& meshes = keep != nullptr ? keep->meshes : local;
@@ -200,6 +210,8 @@ double object_bytes(const Scenario& s, VariantCache* keep) {
     const double per_vertex = mesh.uvs.empty() ? 24.0 : 32.0;
     bytes += vertices * per_vertex + triangles * 16.0 +
              2.0 * (vertices * per_vertex + triangles * mm::kEmbreeGridTriangle);
+    for (const MeshMaterial& m : mesh.materials)
+      if (!m.texture.empty() && counted.insert(m.texture).second) bytes += texture_bytes(m.texture);
   }
   return bytes + static_cast<double>(s.objects.size()) * 2.0 * mm::kEmbreeInstance;
 }
@@ -316,7 +328,19 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   part("grass", "grass", p.scene_grass + p.view_grass,
        "fewer [[grass]] types, or grass on less of the map");
   part("image", "image", p.view_film, "a smaller --width/--height");
-  part("objects", "scene objects", object_bytes(s, keep), "[[objects]] meshes of fewer triangles");
+  part("objects", "scene objects", object_bytes(s, keep),
+       "[[objects]] meshes of fewer triangles, or smaller textures");
+  // Objects are placed on the drawn ground through a BVH of its own (renderer/ground_probe).
+  if (!s.objects.empty())
+    part("ground_probe", "the ground probe placing objects",
+         ground.triangles * mm::kEmbreeGridTriangle + ground.vertices * 12.0,
+         "a coarser elevation grid");
+  double textures = 0.0;
+  for (const std::string& file : s.ground.texture_files)
+    if (!file.empty()) textures += texture_bytes(file);
+  for (const SpeciesSettings& entry : s.species)
+    if (!entry.bark_texture.empty()) textures += texture_bytes(entry.bark_texture);
+  part("textures", "ground and bark textures", textures, "smaller texture images");
   // Building the scene holds the terrain grid, the map and the placed trees besides; the
   // peak is whichever phase is larger.
   const double view_total =

@@ -14,13 +14,13 @@ set -eu
 cd "$(dirname "$0")/.."
 SECONDS_EACH="${1:-30}"
 [ $# -gt 0 ] && shift
-ALL="species_fuzz arbaro_fuzz class_mapping_fuzz scenario_fuzz elevation_fuzz vegetation_fuzz tree_fuzz band_response_fuzz"
+ALL="species_fuzz arbaro_fuzz class_mapping_fuzz scenario_fuzz elevation_fuzz vegetation_fuzz tree_fuzz band_response_fuzz mesh_fuzz image_fuzz pov_camera_fuzz manifest_fuzz"
 TARGETS="${*:-$ALL}"
 B=build-fuzz
 
 cmake -S . -B "$B" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_C_COMPILER=clang -DLANDSIM_FUZZ=ON -DLANDSIM_BUILD_BENCH=OFF >/dev/null
-cmake --build "$B" --parallel "$(nproc)" --target landsim $ALL
+cmake --build "$B" --parallel "$(nproc)" --target landsim landsim_meshes landsim_images $ALL
 
 export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -40,6 +40,19 @@ for f in scenes/examples/*.toml; do
 done
 cp data/terrain/volcano.asc data/terrain/bei_elev.asc "$C/elevation_fuzz/"
 cp data/bands/*.csv "$C/band_response_fuzz/"
+# Mesh and image seeds carry the format in their first byte (the targets' choice of name).
+seed() { { printf "$1"; cat "$2"; } > "$3"; }
+for f in data/objects/*.obj; do seed '\000' "$f" "$C/mesh_fuzz/$(basename "$f")"; done
+for f in data/objects/*.ply; do [ -f "$f" ] && seed '\001' "$f" "$C/mesh_fuzz/$(basename "$f")" || true; done
+for f in data/objects/*.gltf; do [ -f "$f" ] && seed '\002' "$f" "$C/mesh_fuzz/$(basename "$f")" || true; done
+for f in data/objects/*.glb; do [ -f "$f" ] && seed '\003' "$f" "$C/mesh_fuzz/$(basename "$f")" || true; done
+gdal_translate -q -of PNG -ot Byte -scale -outsize 8 8 data/terrain/volcano.asc "$B/seed.png"
+gdal_translate -q -of GTiff -outsize 8 8 data/terrain/volcano.asc "$B/seed.tif"
+seed '\000' "$B/seed.png" "$C/image_fuzz/seed.png"
+seed '\002' "$B/seed.tif" "$C/image_fuzz/seed.tif"
+"$B/bin/landsim" export-pov scenes/examples/default.toml --out "$B/pov-seed" >/dev/null 2>&1 || true
+cp "$B"/pov-seed/*.pov "$C/pov_camera_fuzz/" 2>/dev/null || true
+printf '{"images": [{"path": "v.exr", "view": "v", "frame_index": 0}]}\n' > "$C/manifest_fuzz/one.json"
 gdal_translate -q -of GTiff data/terrain/volcano.asc "$C/elevation_fuzz/volcano.tif"
 gdal_translate -q -of PNG -ot UInt16 -scale data/terrain/volcano.asc "$C/elevation_fuzz/volcano.png"
 "$B/bin/landsim" featuremap build data/featuremaps/volcano_landcover.asc \
@@ -63,7 +76,7 @@ for t in $TARGETS; do
   case "$t" in
     arbaro_fuzz) dict="$D/xml.dict" ;;
     scenario_fuzz) dict="$D/toml_scenario.dict" ;;
-    elevation_fuzz|vegetation_fuzz|band_response_fuzz) dict="" ;;
+    elevation_fuzz|vegetation_fuzz|band_response_fuzz|mesh_fuzz|image_fuzz|pov_camera_fuzz|manifest_fuzz) dict="" ;;
     *) dict="$D/toml_species.dict" ;;
   esac
   log="$B/findings/$t.log"
