@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -199,7 +200,48 @@ std::size_t Growth::particles() const {
   return n;
 }
 
+double expected_particles(const Parameters& p, int age) {
+  const int steps = std::max(age < 0 ? p.max_age() : age, 0);
+  const int levels = std::max(p.levels(), 1);
+  // e[t]: the expected particles of a bud of the level in hand born at step t (it grows from
+  // step t + 1); below[t]: the same for the next level, and its sums along a node stride.
+  std::vector<double> below(static_cast<std::size_t>(steps) + 2, 0.0), e(below.size(), 0.0);
+  for (int level = levels - 1; level >= 0; --level) {
+    const LevelParameters lp = p.level(level);
+    const int stride = std::max(lp.node_spacing, 1);
+    const bool branches = level + 1 < levels;
+    // tail[t] = below[t] + below[t + stride] + ...: a bud's children in one difference.
+    std::vector<double> tail(below.size() + static_cast<std::size_t>(stride), 0.0);
+    for (int t = steps; t >= 0; --t)
+      tail[static_cast<std::size_t>(t)] =
+          below[static_cast<std::size_t>(t)] + tail[static_cast<std::size_t>(t + stride)];
+    const double chance = lp.node_probability * lp.branch_probability;
+    for (int t = 0; t <= steps; ++t) {
+      const int lived = std::min(std::max(lp.terminal_age, 0), steps - t);
+      double children = 0.0;
+      if (branches && lived >= stride) {
+        const int last = t + (lived / stride) * stride;  // the last node's step
+        children = tail[static_cast<std::size_t>(t + stride)] -
+                   tail[static_cast<std::size_t>(last + stride)];
+      }
+      e[static_cast<std::size_t>(t)] = lived + chance * children;
+    }
+    below.swap(e);
+  }
+  return below[0];
+}
+
 Growth grow(const Parameters& p, std::uint64_t seed, int age, std::size_t max_particles) {
+  if (const double n = expected_particles(p, age); n > static_cast<double>(max_particles)) {
+    char about[32];
+    std::snprintf(about, sizeof about, "%.3g", n);
+    throw InputError(
+        "harmonic growth would make about " + std::string(about) + " particles, more than the " +
+        std::to_string(max_particles) + " landsim grows (general max_age " +
+        std::to_string(age < 0 ? p.max_age() : age) + ", " + std::to_string(p.levels()) +
+        " levels): lower general's max_age or levels, or the hierarchy's terminal "
+        "ages, node and branch probabilities");
+  }
   Growth g = Grower(p, seed, max_particles).run(age < 0 ? p.max_age() : age);
   elongate(p, g);
   return g;

@@ -52,11 +52,21 @@ struct Growth {
   std::size_t particles() const;
 };
 
+// The expected number of particles of `age` steps of growth (the species' max age when
+// negative): a bud of level L born at step t0 leaves one particle a step for
+// min(terminal age, age - t0) steps and forms a node every node_spacing steps with the node
+// probability, which starts a bud of level L + 1 with the branch probability. Summed over the
+// levels with running sums, O(levels x age): instant, so explosive species are refused
+// before anything grows.
+double expected_particles(const Parameters& p, int age = -1);
+
 // Grows for `age` steps (the species' max age when negative). Deterministic per seed; the
 // first steps do not depend on how many follow.
-// More than `max_particles` is refused (InputError), never an out-of-memory crash.
+// More than `max_particles` is refused (InputError), never an out-of-memory crash: expected
+// beyond it (expected_particles) before growing, else when reached.
+inline constexpr std::size_t kMaxParticles = 5000000;
 Growth grow(const Parameters& p, std::uint64_t seed, int age = -1,
-            std::size_t max_particles = 5000000);
+            std::size_t max_particles = kMaxParticles);
 
 // Internode growth: every particle's position again, each internode `elongation.factor` of its
 // full length at the growth's age, children and semantic particles moved with the particle
