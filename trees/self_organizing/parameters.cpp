@@ -269,7 +269,23 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
   for (TableReader& t : root.tables("width_constraint"))
     p.width.constraints.push_back(read_constraint(t));
   for (TableReader& t : root.tables("lasso")) p.lassos.push_back(read_lasso(t));
-  for (TableReader& t : root.tables("stroke")) p.strokes.push_back(read_stroke(t));
+  // The strokes' markers alive at once, at most: each drops markers_per_step a step while
+  // its brush moves, each living max_age steps. Beyond the growth's marker limit the species
+  // is refused here, at the stroke, before anything grows.
+  double stroke_markers = 0.0;
+  for (TableReader& t : root.tables("stroke")) {
+    p.strokes.push_back(read_stroke(t));
+    const BrushStroke& s = p.strokes.back();
+    const double moving =
+        std::min(std::floor(static_cast<double>(s.points.size() - 1) / s.points_per_step) + 1.0,
+                 static_cast<double>(std::max(p.steps - s.start_step + 1, 0)));
+    stroke_markers += s.markers_per_step * std::min(static_cast<double>(s.max_age), moving);
+    if (stroke_markers > static_cast<double>(p.max_markers))
+      t.fail("markers_per_step",
+             "the strokes would hold up to " + params::format_number(stroke_markers) +
+                 " markers at once, more than the " + std::to_string(p.max_markers) +
+                 " landsim grows with: lower markers_per_step or max_age");
+  }
   for (TableReader& t : root.tables("bend")) p.bends.push_back(read_bend(t));
   for (TableReader& t : root.tables("prune")) p.prunings.push_back(read_prune(t));
   GrowthPhase rules{0, p.vigour, p.gravimorphism, p.direction, false, {}, 0.0};

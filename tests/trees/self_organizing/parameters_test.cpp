@@ -172,5 +172,22 @@ TEST(SelfOrganizingSpecies, WeepingBranchesHangAndPlagiotropicOnesLevelOut) {
   EXPECT_LT(weeping, -0.1);
 }
 
+// Strokes that would hold more markers at once than growth allows are refused at the stroke
+// while the file is read (before: 2 GB and 22 s of growth until the 20 million marker guard).
+TEST(SelfOrganizingSpecies, StrokesOfTooManyMarkersAreRefusedBeforeGrowing) {
+  std::string points = "[";
+  for (int k = 0; k < 100; ++k) points += (k > 0 ? ", " : "") + std::string("[0, 0, 2, 1]");
+  points += "]";
+  const std::string stroke =
+      "[[stroke]]\npoints = " + points + "\nmarkers_per_step = 100000\nmax_age = 300\n";
+  // 100 steps of the brush, each marker living 300: 100 x 100000 = 1e7 at once per stroke.
+  const std::string e = error_of(kHeader + "[growth]\nage = 200\n" + stroke + stroke + stroke);
+  EXPECT_NE(e.find("so.toml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("[stroke[2]] markers_per_step"), std::string::npos) << e;
+  EXPECT_NE(e.find("up to 3e+07 markers at once"), std::string::npos) << e;
+  // Two such strokes fit.
+  EXPECT_EQ(error_of(kHeader + "[growth]\nage = 200\n" + stroke + stroke), "");
+}
+
 }  // namespace
 }  // namespace landsim::trees::self_organizing
