@@ -1,0 +1,105 @@
+#!/bin/sh
+# Hostile and careless inputs (issue 47, docs/RELIABILITY.md "What a hostile input can
+# cost"): makes each input, runs the landsim command a user would, and prints its exit code,
+# wall time and peak memory (GNU time's maximum resident set), with the first words of what
+# landsim said. Every case must end in seconds under 500 MB.
+# Run from the repository after a Release build:
+#   sh bench/hostile_inputs.sh [BIN]
+set -eu
+BIN=${1:-build/bin}
+ROOT=$(pwd)
+W=$(mktemp -d /tmp/landsim-hostile-XXXXXX)
+trap 'rm -rf "$W"' EXIT
+
+scenario() {  # scenario NAME EXTRA: the volcano, a small view, and EXTRA
+  cat > "$W/$1.toml" <<TOML
+[terrain]
+elevation = "$ROOT/data/terrain/volcano.asc"
+[sun]
+elevation = 30
+azimuth = 200
+[[views]]
+name = "v"
+position = [500.0, 900.0, 330.0]
+target = [280.0, 280.0, 130.0]
+width = 64
+height = 36
+[render]
+spp = 1
+$2
+TOML
+}
+object() { printf '[[objects]]\nname = "x"\nfile = "%s"\nposition = [280.0, 280.0]\n' "$1"; }
+
+# Meshes.
+python3 - "$W" <<'PY'
+import struct, sys, zlib, math
+w = sys.argv[1]
+with open(f"{w}/zero.obj", "w") as f:   # 10^6 zero-area faces on three vertices
+    f.write("v 0 0 0\nv 1 0 0\nv 2 0 0\n" + "f 1 2 3\n" * 1000000)
+with open(f"{w}/fan.obj", "w") as f:    # a 30,000-triangle fan round one vertex
+    n = 30000
+    f.write("v 0 0 0\n")
+    for i in range(n + 1):
+        a = 2 * math.pi * i / n
+        f.write(f"v {math.cos(a):.6f} 0 {math.sin(a):.6f}\n")
+    for i in range(n):
+        f.write(f"f 1 {i + 2} {i + 3}\n")
+with open(f"{w}/huge.glb", "wb") as f:  # a header claiming a 2 GB chunk
+    f.write(b"glTF" + struct.pack("<II", 2, 100) + struct.pack("<I", 0x80000000) + b"JSON" + b" " * 80)
+with open(f"{w}/faces.ply", "wb") as f:  # 2^31 faces claimed
+    f.write(b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+            b"property float y\nproperty float z\nelement face 2147483648\n"
+            b"property list uchar int vertex_indices\nend_header\n" + b"\0" * 36)
+with open(f"{w}/outside.gltf", "w") as f:  # a buffer outside the model's folder
+    f.write('{"asset": {"version": "2.0"}, "buffers": [{"uri": "../../../../etc/passwd", "byteLength": 36}]}')
+def chunk(t, d):
+    return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xffffffff)
+with open(f"{w}/huge.png", "wb") as f:  # a 100000 x 100000 reference, header only
+    f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 100000, 100000, 8, 2, 0, 0, 0))
+            + chunk(b"IDAT", b"\x78\x9c") + chunk(b"IEND", b""))
+PY
+for m in zero.obj fan.obj huge.glb faces.ply outside.gltf; do scenario "mesh_$m" "$(object "$W/$m")"; done
+scenario plain ""
+printf 'camera { location <0, 1, -3> right x*image_width/image_height look_at <0, 0, 0> }\n#include "self.pov"\n' > "$W/self.pov"
+
+# Species.
+cat > "$W/harmonic.toml" <<'TOML'
+core = "harmonic"
+name = "explosive"
+general = [400, 0.13, 4, 0.0013, 0.003, 0.3, 0.05, 0.0]
+hierarchy = [[2, 1.0, 1.0, 25, 137, 400, 1.0, 0, 1.0], [2, 1.0, 1.0, 30, 137, 400, 0.75, 0, 1.0],
+             [2, 1.0, 1.0, 40, 137, 400, 0.6, 0, 0.7], [2, 1.0, 1.0, 45, 137, 400, 0.6, 0, 0.5]]
+TOML
+{
+  printf 'core = "self_organizing"\n[growth]\nage = 200\n'
+  for k in 1 2 3; do
+    printf '[[stroke]]\npoints = [%s[0, 0, 2, 1]]\nmarkers_per_step = 100000\nmax_age = 300\n' \
+      "$(for i in $(seq 1 99); do printf '[0, 0, 2, 1], '; done)"
+  done
+} > "$W/strokes.toml"
+sed 's/^spacing = .*//' data/species/graph_rooted.toml > "$W/roots.toml"
+python3 - "$W/roots.toml" <<'PY'
+import re, sys
+p = sys.argv[1]; s = open(p).read()
+s = re.sub(r"(\[roots\]\n)", r"\1spacing = 0.005\n", s, count=1)
+open(p, "w").write(s)
+PY
+
+run() {  # run NAME COMMAND...
+  name=$1; shift
+  /usr/bin/time -f "%e %M" -o "$W/time" timeout "${LIMIT:-600}" "$@" > "$W/out" 2> "$W/err" && code=0 || code=$?
+  set -- $(cat "$W/time" | tail -1)
+  said=$(grep -v "^landsim: info" "$W/err" | head -1 | cut -c1-110)
+  printf '%-28s exit %s  %6.2f s  %5d MB  %s\n' "$name" "$code" "$1" $(( $2 / 1024 )) "$said"
+}
+echo "case                         exit   wall      peak  message"
+for m in zero.obj fan.obj huge.glb faces.ply outside.gltf; do
+  run "mesh $m" "$BIN/landsim" info "$W/mesh_$m.toml"
+done
+run "reference 100000^2 PNG" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c1" --reference "$W/huge.png"
+run "reference garbage" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c2" --reference "$W/strokes.toml"
+run "pov includes itself" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c3" --pov "$W/self.pov"
+run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"
+run "strokes of 3e7 markers" "$BIN/landsim" tree "$W/strokes.toml"
+run "graph [roots] too fine" "$BIN/landsim" tree "$W/roots.toml"
