@@ -5,7 +5,6 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto file = landsim::fuzz::input_file(data, size, "set/manifest.json");
-  return landsim::fuzz::refused_or_read([&] {
-    landsim::exporters::compare_image_sets(file.parent_path(), file.parent_path(), {});
-  });
+  return landsim::fuzz::refused_or_read(
+      [&] { landsim::exporters::compare_image_sets(file.parent_path(), file.parent_path(), {}); });
 }

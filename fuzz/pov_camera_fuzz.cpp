@@ -4,6 +4,5 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto file = landsim::fuzz::input_file(data, size, "scene.pov");
-  return landsim::fuzz::refused_or_read(
-      [&] { landsim::exporters::read_pov_camera(file, 64, 36); });
+  return landsim::fuzz::refused_or_read([&] { landsim::exporters::read_pov_camera(file, 64, 36); });
 }

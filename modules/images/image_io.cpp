@@ -6,6 +6,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagecache.h>
 #include <OpenImageIO/imageio.h>
 
 #include <exception>
@@ -52,6 +53,11 @@ bool probe(const std::string& path, int& width, int& height, int& channels, std:
 bool read(const std::string& path, bool to_linear, FloatImage& image, std::string& error) {
   int width = 0, height = 0, channels = 0;
   if (!probe(path, width, height, channels, error)) return false;
+  // OpenImageIO's shared image cache keeps each file's spec by name and re-reads it only when
+  // the file's time stamp changes: a file rewritten within the same second (another image of
+  // another size under the name) was read with the old spec, overrunning the buffer. Read
+  // always what is on disk.
+  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(path), true);
   OIIO::ImageBuf buf(path);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
     error = buf.geterror();
