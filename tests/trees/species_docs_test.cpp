@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <regex>
 #include <set>
-#include <vector>
 #include <sstream>
+#include <vector>
 
 #include "params/table_reader.h"
 #include "tests/support/temp_dir.h"
@@ -26,27 +26,37 @@ using landsim::testing::source_file;
 // "[graph] spacing", "[[volume]] kind", "[allometry.dbh]" (equation tables as a whole), and
 // top-level values ("general") bare. The shared keys (core, name, colours) are documented
 // once, under Formats.
-std::set<std::string> declared_keys(const std::string& file_prefix) {
-  std::set<std::string> keys;
+// What the reader declares while it parses every example file whose name starts with
+// `file_prefix`; a table inside an array of tables ("phase[0].direction") as
+// "phase.direction".
+params::Declarations declarations_of(const std::string& file_prefix) {
+  params::Declarations all;
   for (const auto& entry : std::filesystem::directory_iterator(source_file("data/species"))) {
     const std::string name = entry.path().filename().string();
     if (name.rfind(file_prefix, 0) != 0 || entry.path().extension() != ".toml") continue;
     params::Declarations declared;
     parse_species_toml(read_file(entry.path()), entry.path().string(), &declared);
-    for (params::KeyDeclaration d : declared) {
-      // A table inside an array of tables ("phase[0].direction") is written "[phase.direction]".
+    for (params::KeyDeclaration& d : declared) {
       d.table = std::regex_replace(d.table, std::regex(R"(\[\d*\]\.)"), ".");
-      if (d.table.empty() && (d.key == "core" || d.key == "name" || d.key == "colours")) continue;
-      if (d.table == "colours") continue;
-      if (d.table.rfind("allometry.", 0) == 0) {
-        keys.insert("[" + d.table + "]");
-      } else if (d.table.size() > 2 && d.table.substr(d.table.size() - 2) == "[]") {
-        keys.insert("[[" + d.table.substr(0, d.table.size() - 2) + "]] " + d.key);
-      } else if (d.table.empty()) {
-        if (d.key != "allometry") keys.insert(d.key);
-      } else {
-        keys.insert("[" + d.table + "] " + d.key);
-      }
+      all.push_back(d);
+    }
+  }
+  return all;
+}
+
+std::set<std::string> declared_keys(const std::string& file_prefix) {
+  std::set<std::string> keys;
+  for (const params::KeyDeclaration& d : declarations_of(file_prefix)) {
+    if (d.table.empty() && (d.key == "core" || d.key == "name" || d.key == "colours")) continue;
+    if (d.table == "colours") continue;
+    if (d.table.rfind("allometry.", 0) == 0) {
+      keys.insert("[" + d.table + "]");
+    } else if (d.table.size() > 2 && d.table.substr(d.table.size() - 2) == "[]") {
+      keys.insert("[[" + d.table.substr(0, d.table.size() - 2) + "]] " + d.key);
+    } else if (d.table.empty()) {
+      if (d.key != "allometry") keys.insert(d.key);
+    } else {
+      keys.insert("[" + d.table + "] " + d.key);
     }
   }
   return keys;
@@ -113,41 +123,34 @@ void expect_ranges_documented(const std::string& doc_file, const std::string& he
   ASSERT_NE(start, std::string::npos) << heading;
   const std::string section = doc.substr(start, doc.find("\n## ", start + 1) - start);
   static const std::regex range(R"(from (-?[\d.e-]+)(?: \(exclusive\))? to (-?[\d.e-]+))");
-  for (const auto& entry : std::filesystem::directory_iterator(source_file("data/species"))) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(file_prefix, 0) != 0 || entry.path().extension() != ".toml") continue;
-    params::Declarations declared;
-    parse_species_toml(read_file(entry.path()), entry.path().string(), &declared);
-    for (params::KeyDeclaration d : declared) {
-      std::smatch m;
-      if (!std::regex_search(d.expected, m, range)) continue;
-      d.table = std::regex_replace(d.table, std::regex(R"(\[\d*\]\.)"), ".");
-      const bool array = d.table.size() > 2 && d.table.substr(d.table.size() - 2) == "[]";
-      const std::string table =
-          array ? "[[" + d.table.substr(0, d.table.size() - 2) + "]]" : "[" + d.table + "]";
-      // The row that names the key: "| `[t] key`" or "| `[t] a`, `key`".
-      std::istringstream lines(section);
-      std::string row;
-      for (std::string line; std::getline(lines, line) && row.empty();) {
-        if (line.rfind("| `", 0) != 0) continue;
-        const std::string first = line.substr(2, line.find(" | ", 2) - 2);
-        if (first.find("`" + table + " " + d.key + "`") != std::string::npos ||
-            (first.rfind("`" + table + " ", 0) == 0 &&
-             first.find("`" + d.key + "`") != std::string::npos))
-          row = line;
-      }
-      if (row.empty()) continue;  // the key's documentation is held by the test above
-      const std::size_t second = row.find(" | ") + 3;
-      const std::string unit = row.substr(second, row.find(" | ", second) - second);
-      if (unit.rfind("as ", 0) == 0) continue;  // "as `[vigour]`": that table's ranges
-      const std::vector<double> given = numbers_in(unit);
-      for (const double bound : {std::abs(std::stod(m[1])), std::abs(std::stod(m[2]))}) {
-        const bool found = std::any_of(given.begin(), given.end(), [&](double g) {
-          return std::abs(g - bound) <= 1e-9 * std::max(1.0, bound);
-        });
-        EXPECT_TRUE(found) << doc_file << ": " << table << " " << d.key << " enforces "
-                           << d.expected << " but its row gives \"" << unit << "\"";
-      }
+  for (const params::KeyDeclaration& d : declarations_of(file_prefix)) {
+    std::smatch m;
+    if (!std::regex_search(d.expected, m, range)) continue;
+    const bool array = d.table.size() > 2 && d.table.substr(d.table.size() - 2) == "[]";
+    const std::string table =
+        array ? "[[" + d.table.substr(0, d.table.size() - 2) + "]]" : "[" + d.table + "]";
+    // The row that names the key: "| `[t] key`" or "| `[t] a`, `key`".
+    std::istringstream lines(section);
+    std::string row;
+    for (std::string line; std::getline(lines, line) && row.empty();) {
+      if (line.rfind("| `", 0) != 0) continue;
+      const std::string first = line.substr(2, line.find(" | ", 2) - 2);
+      if (first.find("`" + table + " " + d.key + "`") != std::string::npos ||
+          (first.rfind("`" + table + " ", 0) == 0 &&
+           first.find("`" + d.key + "`") != std::string::npos))
+        row = line;
+    }
+    if (row.empty()) continue;  // the key's documentation is held by the test above
+    const std::size_t second = row.find(" | ") + 3;
+    const std::string unit = row.substr(second, row.find(" | ", second) - second);
+    if (unit.rfind("as ", 0) == 0) continue;  // "as `[vigour]`": that table's ranges
+    const std::vector<double> given = numbers_in(unit);
+    for (const double bound : {std::abs(std::stod(m[1])), std::abs(std::stod(m[2]))}) {
+      const bool found = std::any_of(given.begin(), given.end(), [&](double g) {
+        return std::abs(g - bound) <= 1e-9 * std::max(1.0, bound);
+      });
+      EXPECT_TRUE(found) << doc_file << ": " << table << " " << d.key << " enforces " << d.expected
+                         << " but its row gives \"" << unit << "\"";
     }
   }
 }
