@@ -336,6 +336,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   // With context grids the drawn ground ends at their rim, whose mean the renderer takes.
   if (scenario.terrain.context.empty())
     scene.ground.plain_height = detail::edge_height(grid, scene.origin);
+  detail::warn_cameras_under_the_plain(scenario, scene);
   scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();
   set_spectral_optics(scenario, scene);
   return scene;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/input_warnings.h"
+#include "renderer/plain.h"
 
 namespace landsim::scenes::detail {
 
@@ -47,6 +48,23 @@ void warn_cameras_inside_trees(const Scenario& s, const renderer::Scene& scene) 
           species < s.species.size() ? s.species[species].species.name : "?", trunk.x, trunk.y));
       break;
     }
+  }
+}
+
+void warn_cameras_under_the_plain(const Scenario& s, const renderer::Scene& scene) {
+  const renderer::PlainSurface plain = renderer::plain_surface(scene.ground);
+  if (!plain.present) return;
+  for (std::size_t v = 0; v < scene.views.size() && v < s.views.size(); ++v) {
+    const Vec3& eye = scene.views[v].position;
+    const bool beyond =
+        eye.x < plain.min_x || eye.x > plain.max_x || eye.y < plain.min_y || eye.y > plain.max_y;
+    if (beyond && eye.z <= plain.height)
+      warn_input(fmt::format(
+          "{}: [views \"{}\"] position: the camera is beyond the terrain and {:.1f} m below the "
+          "plain that continues it (at {:.1f} m): it sees nothing but the plain; raise it, or "
+          "place it over the terrain",
+          s.views[v].location, s.views[v].name, plain.height - eye.z,
+          plain.height + scene.origin.z));
   }
 }
 

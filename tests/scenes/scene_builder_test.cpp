@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/input_warnings.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -88,6 +89,39 @@ TEST(SceneBuilder, WithDetailTreesStandOnTheReliefAndTheGroundIsFiner) {
   std::string stretched = text + "[ground]\ndetail = true\n";
   stretched.replace(stretched.find("[sun]"), 0, "cell_size = 12.0\n");
   EXPECT_NO_THROW(build_scene(load_scenario(dir.write("c.toml", stretched))));
+}
+
+// The plain beyond the grid (renderer/plain.h) lies at the mean height of the grid's edge
+// cells; a camera beyond the grid and below it is inside the land beyond and is warned about.
+TEST(SceneBuilder, ThePlainLiesAtTheEdgesMeanHeightAndACameraUnderItIsWarned) {
+  landsim::testing::TempDir dir;
+  // 4 x 4 cells of 10 m rising 10 m a column eastward; the four inner cells 100 m higher,
+  // which the edge's mean (15 m) leaves out.
+  std::string grid = "ncols 4\nnrows 4\nxllcorner 0\nyllcorner 0\ncellsize 10\n";
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c)
+      grid += std::to_string(10 * c + ((r == 1 || r == 2) && (c == 1 || c == 2) ? 100 : 0)) + " ";
+    grid += "\n";
+  }
+  dir.write("g.asc", grid);
+  const auto scenario = [&](double z) {
+    return "[terrain]\nelevation = \"g.asc\"\n[sun]\nelevation = 40\nazimuth = 90\n"
+           "[[views]]\nname = \"v\"\nposition = [-200.0, 20.0, " +
+           std::to_string(z) + "]\ntarget = [20.0, 20.0, 0.0]\n";
+  };
+  std::vector<std::string> said;
+  InputWarnings& w = input_warnings();
+  w.sink = [&](const std::string& m) { said.push_back(m); };
+  const renderer::Scene above = build_scene(load_scenario(dir.write("a.toml", scenario(40.0))));
+  ASSERT_TRUE(above.ground.plain_height);
+  EXPECT_NEAR(*above.ground.plain_height + above.origin.z, 15.0, 1e-4);
+  EXPECT_TRUE(said.empty());
+  build_scene(load_scenario(dir.write("b.toml", scenario(5.0))));
+  w.sink = nullptr;
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said[0].find("the camera is beyond the terrain and 10.0 m below the plain"),
+            std::string::npos)
+      << said[0];
 }
 
 }  // namespace
