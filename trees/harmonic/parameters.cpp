@@ -182,7 +182,7 @@ Parameters read_parameters(params::TableReader& root, const std::string& /*sourc
   read_elongation(root.table("elongation"), p.elongation);
   for (params::TableReader& t : root.tables("part")) p.parts.push_back(read_part(t));
   // An explosive species is refused here, at its file, before anything grows.
-  if (const double n = expected_particles(p); n > static_cast<double>(kMaxParticles)) {
+  if (const double n = expected_particles(p); !(n <= static_cast<double>(kMaxParticles))) {
     char about[32];
     std::snprintf(about, sizeof about, "%.3g", n);
     root.fail("hierarchy", "with general's max_age " + std::to_string(p.max_age()) + " and " +

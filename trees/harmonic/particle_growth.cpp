@@ -224,7 +224,9 @@ double expected_particles(const Parameters& p, int age) {
         children = tail[static_cast<std::size_t>(t + stride)] -
                    tail[static_cast<std::size_t>(last + stride)];
       }
-      e[static_cast<std::size_t>(t)] = lived + chance * children;
+      // Capped far above any limit, so that the running sums stay finite (an explosive
+      // species would otherwise reach inf - inf).
+      e[static_cast<std::size_t>(t)] = std::min(lived + chance * children, 1e30);
     }
     below.swap(e);
   }
@@ -232,7 +234,7 @@ double expected_particles(const Parameters& p, int age) {
 }
 
 Growth grow(const Parameters& p, std::uint64_t seed, int age, std::size_t max_particles) {
-  if (const double n = expected_particles(p, age); n > static_cast<double>(max_particles)) {
+  if (const double n = expected_particles(p, age); !(n <= static_cast<double>(max_particles))) {
     char about[32];
     std::snprintf(about, sizeof about, "%.3g", n);
     throw InputError(
