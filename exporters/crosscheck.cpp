@@ -33,8 +33,8 @@ enum class Cover { sky, ground, tree, object };
 
 // POV-Ray's own refusal of a scene: "File 'F' line N: Parse Error: message" in its log.
 struct PovParseError : std::runtime_error {
-  PovParseError(std::string file, int line, std::string message)
-      : std::runtime_error(message), file(std::move(file)), line(line) {}
+  PovParseError(std::string in_file, int at_line, const std::string& message)
+      : std::runtime_error(message), file(std::move(in_file)), line(at_line) {}
   std::string file;
   int line;
 };
@@ -340,8 +340,6 @@ std::array<double, 2> best_shift(const renderer::Film& film, const renderer::Flo
   return best;
 }
 
-// The user's reference image (and its mask, or its alpha) in landsim's units, the same size
-// as the render, translated by --align's search when asked.
 // The reference (and its mask) checked from their headers before anything renders: a
 // garbage, huge or wrongly sized reference is refused before landsim.exr is written.
 void check_reference(const CrosscheckOptions& o, const renderer::View& view) {
@@ -359,27 +357,20 @@ void check_reference(const CrosscheckOptions& o, const renderer::View& view) {
   }
 }
 
+// The user's reference image (and its mask, or its alpha) in landsim's units, the same size
+// as the render (check_reference saw to that), translated by --align's search when asked.
 void load_reference(const CrosscheckOptions& o, const renderer::Film& film, double exposure_gain,
                     renderer::FloatImage& ref, renderer::FloatImage& mask, CrosscheckReport& r) {
   renderer::FloatImage image;
   std::string error;
   if (!renderer::image_io().read(o.reference.string(), true, image, error))
     throw InputError(o.reference.string() + ": cannot read the reference image: " + error);
-  if (image.width != film.width() || image.height != film.height())
-    throw InputError(fmt::format(
-        "{}: the reference is {} x {} pixels, the view renders {} x {} (give the view that "
-        "size, or --width/--height)",
-        o.reference.string(), image.width, image.height, film.width(), film.height()));
   // An integer image is display-referred: taken as an image at the export's exposure.
   if (image.display_referred)
     for (float& v : image.pixels) v = static_cast<float>(v / exposure_gain);
   if (!o.mask.empty()) {
     if (!renderer::image_io().read(o.mask.string(), false, mask, error))
       throw InputError(o.mask.string() + ": cannot read the mask: " + error);
-    if (mask.width != film.width() || mask.height != film.height())
-      throw InputError(fmt::format("{}: the mask is {} x {} pixels, the view renders {} x {}",
-                                   o.mask.string(), mask.width, mask.height, film.width(),
-                                   film.height()));
   } else if (image.channels == 4) {
     // Alpha as coverage: objects (red, LS_Mask's ground colour) where it is over 0.5.
     mask = {image.width, image.height, 3, std::vector<float>(3 * image.pixels.size() / 4, 0.0f)};

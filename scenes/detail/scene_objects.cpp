@@ -193,24 +193,33 @@ constexpr int kMostClearanceSteps = 64;  // per triangle edge
 std::optional<double> lift_onto_ground(const renderer::ObjectPrototype& p,
                                        const std::vector<Vec3>& turned, const Vec3& at,
                                        const renderer::GroundProbe& probe) {
-  const std::size_t n = p.triangle_count();
-  std::vector<double> lift(n, -std::numeric_limits<double>::infinity());
+  constexpr double kNoGround = std::numeric_limits<double>::quiet_NaN();
+  // How far the ground stands above the point q; NaN where there is none.
+  const auto rise = [&](const Vec3& q) {
+    const std::optional<double> h = probe.height(at.x + q.x, at.y + q.y);
+    return h ? *h - q.z : kNoGround;
+  };
+  // Every vertex once, then the points inside the larger triangles (not their corners).
+  const std::size_t vertices = turned.size(), n = p.triangle_count();
+  std::vector<double> lift(vertices + n, -std::numeric_limits<double>::infinity());
+  tbb::parallel_for(std::size_t{0}, vertices, [&](std::size_t v) { lift[v] = rise(turned[v]); });
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t t) {
     const Vec3& a = turned[p.indices[3 * t]];
     const Vec3& b = turned[p.indices[3 * t + 1]];
     const Vec3& c = turned[p.indices[3 * t + 2]];
     const double longest = std::max({length(b - a), length(c - b), length(a - c)});
-    const int steps = std::clamp(static_cast<int>(std::ceil(longest / kClearanceSpacing)), 1,
-                                 kMostClearanceSteps);
+    const int steps =
+        std::min(static_cast<int>(std::ceil(longest / kClearanceSpacing)), kMostClearanceSteps);
+    double& most = lift[vertices + t];
     for (int i = 0; i <= steps; ++i)
       for (int j = 0; i + j <= steps; ++j) {
-        const Vec3 q = a + (b - a) * (double(i) / steps) + (c - a) * (double(j) / steps);
-        const std::optional<double> h = probe.height(at.x + q.x, at.y + q.y);
-        if (!h) {
-          lift[t] = std::numeric_limits<double>::quiet_NaN();
+        if ((i == 0 && j == 0) || i == steps || j == steps) continue;  // a corner
+        const double r = rise(a + (b - a) * (double(i) / steps) + (c - a) * (double(j) / steps));
+        if (std::isnan(r)) {
+          most = kNoGround;
           return;
         }
-        lift[t] = std::max(lift[t], *h - q.z);
+        most = std::max(most, r);
       }
   });
   double most = -std::numeric_limits<double>::infinity();

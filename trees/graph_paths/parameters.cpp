@@ -305,7 +305,6 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
                        about(crown + roots) +
                        "; raise [graph] spacing or [iteration] spacing_ratio, or lower [graph] "
                        "endpoints, [iteration] endpoints or levels");
-  (void)source;
   return p;
 }
 

@@ -182,16 +182,7 @@ Parameters read_parameters(params::TableReader& root, const std::string& /*sourc
   read_elongation(root.table("elongation"), p.elongation);
   for (params::TableReader& t : root.tables("part")) p.parts.push_back(read_part(t));
   // An explosive species is refused here, at its file, before anything grows.
-  if (const double n = expected_particles(p); !(n <= static_cast<double>(kMaxParticles))) {
-    char about[32];
-    std::snprintf(about, sizeof about, "%.3g", n);
-    root.fail("hierarchy", "with general's max_age " + std::to_string(p.max_age()) + " and " +
-                               std::to_string(p.levels()) + " levels the tree would grow about " +
-                               about + " particles, more than the " +
-                               std::to_string(kMaxParticles) +
-                               " landsim grows: lower max_age or levels, or the terminal ages, "
-                               "node and branch probabilities");
-  }
+  if (const auto why = too_many_particles(p, -1, kMaxParticles)) root.fail("hierarchy", *why);
   return p;
 }
 

@@ -233,17 +233,21 @@ double expected_particles(const Parameters& p, int age) {
   return below[0];
 }
 
+std::optional<std::string> too_many_particles(const Parameters& p, int age, std::size_t limit) {
+  const double n = expected_particles(p, age);
+  if (n <= static_cast<double>(limit)) return std::nullopt;  // NaN: refused too
+  char about[32];
+  std::snprintf(about, sizeof about, "%.3g", n);
+  return "with general's max_age " + std::to_string(age < 0 ? p.max_age() : age) + " and " +
+         std::to_string(p.levels()) + " levels the tree would grow about " + about +
+         " particles, more than the " + std::to_string(limit) +
+         " landsim grows: lower max_age or levels, or the hierarchy's terminal ages, node and "
+         "branch probabilities";
+}
+
 Growth grow(const Parameters& p, std::uint64_t seed, int age, std::size_t max_particles) {
-  if (const double n = expected_particles(p, age); !(n <= static_cast<double>(max_particles))) {
-    char about[32];
-    std::snprintf(about, sizeof about, "%.3g", n);
-    throw InputError(
-        "harmonic growth would make about " + std::string(about) + " particles, more than the " +
-        std::to_string(max_particles) + " landsim grows (general max_age " +
-        std::to_string(age < 0 ? p.max_age() : age) + ", " + std::to_string(p.levels()) +
-        " levels): lower general's max_age or levels, or the hierarchy's terminal "
-        "ages, node and branch probabilities");
-  }
+  if (const auto why = too_many_particles(p, age, max_particles))
+    throw InputError("harmonic growth: " + *why);
   Growth g = Grower(p, seed, max_particles).run(age < 0 ? p.max_age() : age);
   elongate(p, g);
   return g;

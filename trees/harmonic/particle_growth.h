@@ -11,6 +11,8 @@
 // the species' further parts (flowers, thorns, auxiliary buds) at theirs or at the nodes.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/vec3.h"
@@ -59,6 +61,10 @@ struct Growth {
 // levels with running sums, O(levels x age): instant, so explosive species are refused
 // before anything grows.
 double expected_particles(const Parameters& p, int age = -1);
+
+// Why `age` steps of growth would be refused (the expected particles beyond `limit`), or
+// nothing: the species reader and grow() say the same.
+std::optional<std::string> too_many_particles(const Parameters& p, int age, std::size_t limit);
 
 // Grows for `age` steps (the species' max age when negative). Deterministic per seed; the
 // first steps do not depend on how many follow.
