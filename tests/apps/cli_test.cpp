@@ -887,13 +887,28 @@ TEST(Cli, RenderWritesBandLayersAndListsTheBands) {
   EXPECT_GT(nir_sum, red_sum);  // 130 nm of near infrared against 60 nm of red, bare ground
 }
 
-// A 480 x 270 render of 48 spp (seconds long) writing checkpoints every `checkpoint`
+// A 320 x 180 render of 32 spp (seconds long) writing checkpoints every `checkpoint`
 // seconds, and a child process running it into `out` with two threads.
 std::filesystem::path long_render(const TempDir& dir, const std::string& checkpoint) {
   std::string text =
-      scenario("", "width = 480\nheight = 270", "spp = 48\ncheckpoint_seconds = " + checkpoint);
+      scenario("", "width = 320\nheight = 180", "spp = 32\ncheckpoint_seconds = " + checkpoint);
   text.replace(text.find("width = 32\nheight = 18\n"), 22, "");
   return dir.write("long.toml", text);
+}
+
+// Waits (up to five minutes: CI machines under a parallel suite are slow) until `path`
+// exists; false if it never came or the child `pid` ended first.
+bool wait_for(const std::filesystem::path& path, pid_t pid) {
+  for (int i = 0; i < 300000; ++i) {
+    if (std::filesystem::exists(path)) return true;
+    int status = 0;
+    if (::waitpid(pid, &status, WNOHANG) == pid) return false;
+    ::usleep(1000);
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return false;
 }
 
 pid_t start_render(const std::filesystem::path& file, const std::filesystem::path& out) {
@@ -918,7 +933,7 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
   std::filesystem::create_directories(out);
   const pid_t pid = start_render(file, out);
   const auto checkpoint = out / "v.checkpoint.exr";
-  for (int i = 0; i < 6000 && !std::filesystem::exists(checkpoint); ++i) ::usleep(1000);
+  ASSERT_TRUE(wait_for(checkpoint, pid)) << "no checkpoint appeared while rendering";
   ::kill(pid, SIGKILL);
   int status = 0;
   ::waitpid(pid, &status, 0);
@@ -964,7 +979,7 @@ TEST(Cli, TerminatedRenderWritesItsCheckpointAndResumes) {
   const auto out = dir / "out";
   const pid_t pid = start_render(file, out);
   // The output directory appears when tracing starts; then ask the render to stop.
-  for (int i = 0; i < 6000 && !std::filesystem::exists(out); ++i) ::usleep(1000);
+  ASSERT_TRUE(wait_for(out, pid)) << "the render ended before tracing began";
   ::usleep(100000);
   ::kill(pid, SIGTERM);
   int status = 0;
