@@ -179,12 +179,14 @@ class Grower {
     }
   }
 
-  // The paper's rule: end with probability 0.3, else lose a random part; the light orders it.
+  // Section 3.3.3: end with probability 0.3, else lose a uniform part of (0, L) where L is
+  // the current lifespan. The light scales the loss by 2 - f (f > 1 facing it), so only a
+  // branch facing away can lose all of it; without light, only the 30% ending stops one.
   double child_lifespan(double lifespan, double factor, Random& rng) const {
     const IterationParameters& it = p_.iteration;
     if (!it.use_lifespan) return lifespan;
     if (rng.unit() < it.terminate_probability) return 0.0;
-    return lifespan - (0.5 + rng.unit()) * (2.0 - factor);
+    return std::max(0.0, lifespan * (1.0 - rng.unit() * (2.0 - factor)));
   }
 
   // The random graph over `volume`'s Poisson-disc nodes (the same steps at every level).

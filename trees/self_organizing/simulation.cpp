@@ -102,8 +102,11 @@ class Simulation {
   void set_bud_light(const std::vector<BudRef>& buds, const std::vector<Vec3>& directions) {
     for (std::size_t b = 0; b < buds.size(); ++b) {
       Internode& n = plant_[buds[b].internode];
-      const double q = gravimorphism(p_.gravimorphism, directions[b]) *
-                       std::pow(shadows_.exposure(n.tip), p_.light.sensitivity);
+      // Gravimorphism is the lateral buds' (TreeSketch: "lateral buds depending on their
+      // orientation on horizontal or slanted parent axes"); a terminal bud continues its axis.
+      const double b_grav =
+          buds[b].lateral ? gravimorphism(p_.gravimorphism, n.direction, directions[b]) : 1.0;
+      const double q = b_grav * std::pow(shadows_.exposure(n.tip), p_.light.sensitivity);
       (buds[b].lateral ? n.lateral_light : n.terminal_light) = q;
     }
   }

@@ -4,16 +4,34 @@
 
 namespace landsim::trees::self_organizing {
 
-double gravimorphism(const Gravimorphism& g, const Vec3& direction) {
-  // Ray from the bud (origin) along (h, v) to the ellipse (x/s_p)^2 + ((z - e)/s_v)^2 = 1.
-  const double v = direction.z;
-  const double h = std::sqrt(std::max(0.0, 1.0 - v * v));
+namespace {
+
+// Distance from the centre of the (V, P) plane along the unit direction (v, h) to the
+// ellipse ((x_v - e_v)/s_v)^2 + (x_p/s_p)^2 = 1; 0 if the ray misses it.
+double distance_to_ellipse(const Gravimorphism& g, double v, double h) {
   const double a = h * h / (g.horizontal * g.horizontal) + v * v / (g.vertical * g.vertical);
   const double b = -2.0 * v * g.offset / (g.vertical * g.vertical);
   const double c = g.offset * g.offset / (g.vertical * g.vertical) - 1.0;
   const double disc = b * b - 4.0 * a * c;
-  if (disc < 0.0) return 0.0;  // the bud is outside an ellipse that the ray misses
+  if (disc < 0.0) return 0.0;  // the axis is outside an ellipse that the ray misses
   return std::max(0.0, (-b + std::sqrt(disc)) / (2.0 * a));
+}
+
+}  // namespace
+
+double gravimorphism(const Gravimorphism& g, const Vec3& axis, const Vec3& bud) {
+  const double cos_tau = axis.z;
+  const double sin2_tau = std::max(0.0, 1.0 - cos_tau * cos_tau);
+  if (sin2_tau < 1e-12) return 1.0;  // vertical axis: no HVP frame, and no effect
+  // HVP: V is the vertical's part across H, P = H x V lies in the ground's plane.
+  const Vec3 v_axis = normalize(Vec3{0, 0, 1} - axis * cos_tau);
+  const Vec3 p_axis = cross(axis, v_axis);
+  const Vec3 chi = bud - axis * dot(bud, axis);  // the bud's polar position on the axis
+  const double across = length(chi);
+  const double d =
+      across < 1e-12 ? 1.0
+                     : distance_to_ellipse(g, dot(chi, v_axis) / across, dot(chi, p_axis) / across);
+  return cos_tau * cos_tau + d * sin2_tau;
 }
 
 Split borchert_honda(double v, double light_main, double light_lateral, double lambda) {

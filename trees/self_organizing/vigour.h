@@ -13,10 +13,13 @@
 
 namespace landsim::trees::self_organizing {
 
-// Gravimorphism b of a bud pointing along `direction` (unit): the distance from the bud to
-// the control ellipse along that direction (the ellipse's centre `offset` above the bud;
-// semi-axes `vertical` and `horizontal`). 1 for the unit circle.
-double gravimorphism(const Gravimorphism& g, const Vec3& direction);
+// TreeSketch Eq. 1: the gravimorphism b = cos^2 tau + d sin^2 tau of a lateral bud
+// pointing along `bud` (unit) on a parent axis `axis` (unit), tau the axis's angle to the
+// vertical. d is the distance from the axis to the control ellipse in the plane
+// perpendicular to the axis, along the bud's polar direction chi there; the ellipse's
+// semi-axes lie along the HVP frame's V (most vertical, `vertical`) and P (parallel to the
+// ground, `horizontal`), its centre `offset` along V. A vertical axis gives b = 1.
+double gravimorphism(const Gravimorphism& g, const Vec3& axis, const Vec3& bud);
 
 struct Split {
   double main = 0.0;

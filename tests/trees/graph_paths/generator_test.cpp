@@ -127,6 +127,20 @@ TEST(GraphPathsGenerator, LifespanEndsSomeBranchesEarly) {
   EXPECT_GT(bush.nodes, 0u);
 }
 
+// Section 3.3.3's decrement is a uniform part of the current lifespan L, so without the
+// 30% ending (and without light) no lifespan runs out: a lifespan of 1 grows as far as
+// free growth. (A fixed-size loss of about 1 per level stopped most branches at level 2.)
+TEST(GraphPathsGenerator, ALifespanLosesAPartOfItselfAndNeverRunsOutAlone) {
+  GraphStatistics free_growth, unending;
+  Parameters p = iterated(3);
+  generate_skeleton(p, 5, &free_growth);
+  p.iteration.use_lifespan = true;
+  p.iteration.lifespan = 1.0;
+  p.iteration.terminate_probability = 0.0;
+  generate_skeleton(p, 5, &unending);
+  EXPECT_EQ(unending.nodes, free_growth.nodes);
+}
+
 TEST(GraphPathsGenerator, LightFavoursTheSubgraphsFacingIt) {
   Parameters p = iterated(2);
   p.iteration.light = {1, 0, 0};

@@ -4,6 +4,7 @@
 
 #include <numbers>
 
+#include "tests/support/temp_dir.h"
 #include "tests/trees/species_files.h"
 #include "trees/graph_paths/generator.h"
 #include "trees/graph_paths/parameters.h"
@@ -164,6 +165,70 @@ TEST(IterationLevels, SpeciesRowsAreReadAndLevelsDefaultToTheirCount) {
   EXPECT_EQ(*it.table[1].orientation, Orientation::down);
   EXPECT_NEAR(*it.table[1].rotation, 20 * std::numbers::pi / 180, 1e-12);
   EXPECT_TRUE(it.table[1].every_endpoint);
+}
+
+// One of Table 2's rows as the paper prints it: level 1's endpoint count and its volume kinds,
+// then per iterated level (the paper's 2, 3, ...) a in units of pi, b, the downward turn of
+// v_g in units of pi, whether it hangs, and whether it grows at every earlier endpoint.
+struct Table2Row {
+  const char* file;
+  int endpoints;
+  std::vector<PrimitiveKind> volume;
+  std::vector<double> a;
+  std::vector<int> b;
+  std::vector<double> turn;
+  int down_level = -1;   // the paper's level whose v_g points down; -1: none
+  int every_level = -1;  // the paper's level grown at all endpoints; -1: none
+};
+
+void expect_row(const Table2Row& row) {
+  SCOPED_TRACE(row.file);
+  const Species s =
+      load_species(landsim::testing::source_file(std::string("data/species/") + row.file));
+  const auto& p = std::get<Parameters>(s.parameters);
+  EXPECT_EQ(p.endpoints, row.endpoints);
+  ASSERT_EQ(p.volume.parts().size(), row.volume.size());
+  for (std::size_t i = 0; i < row.volume.size(); ++i)
+    EXPECT_EQ(p.volume.parts()[i].kind, row.volume[i]);
+  const std::vector<Level> levels = resolve_levels(p.iteration);
+  ASSERT_EQ(levels.size(), row.a.size());
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const int paper_level = static_cast<int>(k) + 2;
+    EXPECT_NEAR(levels[k].half_angle, row.a[k] * std::numbers::pi, 1e-9) << paper_level;
+    EXPECT_EQ(levels[k].endpoints, row.b[k]) << paper_level;
+    EXPECT_NEAR(levels[k].rotation, row.turn[k] * std::numbers::pi, 1e-9) << paper_level;
+    EXPECT_EQ(levels[k].orientation == Orientation::down, paper_level == row.down_level);
+    EXPECT_EQ(levels[k].every_endpoint, paper_level == row.every_level);
+  }
+}
+
+// The example files are whole rows of Xu & Mould's Table 2 (read out of the scrambled
+// extraction as docs/GRAPH_PATHS.md says): tree c's eight levels turned down 0.12 pi, tree
+// e's hanging level 2, tree f's 0.03 pi turns and last level at every endpoint.
+TEST(IterationLevels, TheTable2ExamplesAreThePapersWholeRows) {
+  using enum PrimitiveKind;
+  expect_row({"graph_table2_a.toml",
+              12,
+              {cylinder, sphere_portion},
+              {0.3, 0.3, 0.3},
+              {3, 3, 6},
+              {0, 0, 0}});
+  expect_row({"graph_table2_c.toml",
+              30,
+              {cylinder, sphere_portion},
+              std::vector<double>(7, 0.25),
+              {2, 1, 1, 1, 1, 1, 1},
+              std::vector<double>(7, 0.12)});
+  expect_row(
+      {"graph_table2_e.toml", 10, {sphere_portion}, {0.5, 0.5, 0.3}, {4, 4, 6}, {0, 0, 0}, 2});
+  expect_row({"graph_table2_f.toml",
+              32,
+              {cylinder, cone},
+              std::vector<double>(7, 0.25),
+              {1, 1, 1, 1, 1, 1, 8},
+              {0.03, 0.03, 0.03, 0.03, 0.03, 0.03, 0},
+              -1,
+              8});
 }
 
 TEST(IterationLevels, BadRowsNameTheirLineAndKey) {

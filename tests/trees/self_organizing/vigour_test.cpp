@@ -52,22 +52,50 @@ TEST(BorchertHonda, TheWholeTreeHandsOutAlphaTimesItsLight) {
   EXPECT_NEAR(handed_out, 2.0 * total_light, 1e-9 * total_light);
 }
 
-TEST(Gravimorphism, TheControlEllipseFavoursUpperSideOrLowerBuds) {
-  const Vec3 up{0, 0, 1}, down{0, 0, -1}, side{1, 0, 0};
+// TreeSketch Eq. 1, b = cos^2 tau + d sin^2 tau: on a vertical parent axis every bud gets
+// b = 1 whatever the ellipse (the old reading intersected the bud's own direction with an
+// ellipse in the world's vertical plane, and favoured upward buds on upright trunks too).
+TEST(Gravimorphism, AVerticalParentAxisHasNoEffect) {
+  const Vec3 up{0, 0, 1};
+  const Gravimorphism epitony{1.0, 1.0, 0.5}, amphitony{0.5, 1.0, 0.0};
+  for (const Vec3& bud : {Vec3{1, 0, 0}, normalize(Vec3{0, 1, 1}), normalize(Vec3{1, 1, -1})}) {
+    EXPECT_DOUBLE_EQ(gravimorphism(epitony, up, bud), 1.0);
+    EXPECT_DOUBLE_EQ(gravimorphism(amphitony, up, bud), 1.0);
+  }
+}
+
+// On a horizontal axis b = d: the distance from the axis to the ellipse along the bud's polar
+// direction in the HVP frame (V up, P level and across the axis).
+TEST(Gravimorphism, OnAHorizontalAxisTheEllipseFavoursUpperSideOrLowerBuds) {
+  const Vec3 axis{1, 0, 0}, up{0, 0, 1}, down{0, 0, -1}, side{0, 1, 0};
   const Gravimorphism circle{};
-  EXPECT_NEAR(gravimorphism(circle, up), 1.0, 1e-12);
-  EXPECT_NEAR(gravimorphism(circle, side), 1.0, 1e-12);
+  EXPECT_NEAR(gravimorphism(circle, axis, up), 1.0, 1e-12);
+  EXPECT_NEAR(gravimorphism(circle, axis, side), 1.0, 1e-12);
   const Gravimorphism epitony{1.0, 1.0, 0.5};
-  EXPECT_NEAR(gravimorphism(epitony, up), 1.5, 1e-12);
-  EXPECT_NEAR(gravimorphism(epitony, down), 0.5, 1e-12);
+  EXPECT_NEAR(gravimorphism(epitony, axis, up), 1.5, 1e-12);
+  EXPECT_NEAR(gravimorphism(epitony, axis, down), 0.5, 1e-12);
+  EXPECT_NEAR(gravimorphism(epitony, axis, side), std::sqrt(0.75), 1e-12);
   const Gravimorphism hypotony{1.0, 1.0, -0.5};
-  EXPECT_GT(gravimorphism(hypotony, down), gravimorphism(hypotony, up));
+  EXPECT_GT(gravimorphism(hypotony, axis, down), gravimorphism(hypotony, axis, up));
   const Gravimorphism amphitony{0.5, 1.0, 0.0};
-  EXPECT_NEAR(gravimorphism(amphitony, side), 1.0, 1e-12);
-  EXPECT_NEAR(gravimorphism(amphitony, up), 0.5, 1e-12);
-  // The ellipse's radius along a diagonal: 1 / sqrt(cos^2/sv^2 + sin^2/sp^2).
-  const Vec3 diagonal = normalize(Vec3{1, 0, 1});
-  EXPECT_NEAR(gravimorphism(amphitony, diagonal), 1.0 / std::sqrt(0.5 / 0.25 + 0.5 / 1.0), 1e-12);
+  EXPECT_NEAR(gravimorphism(amphitony, axis, side), 1.0, 1e-12);
+  EXPECT_NEAR(gravimorphism(amphitony, axis, up), 0.5, 1e-12);
+  // chi is the bud's polar position: a bud leaning forward along the axis counts as its
+  // direction across the axis.
+  EXPECT_NEAR(gravimorphism(epitony, axis, normalize(Vec3{2, 0, 1})), 1.5, 1e-12);
+  // The ellipse's radius along a diagonal of the (V, P) plane: 1 / sqrt(cos^2/sv^2 + sin^2/sp^2).
+  const Vec3 diagonal = normalize(Vec3{0, 1, 1});
+  EXPECT_NEAR(gravimorphism(amphitony, axis, diagonal), 1.0 / std::sqrt(0.5 / 0.25 + 0.5 / 1.0),
+              1e-12);
+}
+
+// A slanted axis blends the two by tau: at 45 degrees b = 1/2 + d / 2.
+TEST(Gravimorphism, ASlantedAxisBlendsByTheAngleToTheVertical) {
+  const Vec3 axis = normalize(Vec3{1, 0, 1});
+  const Vec3 upper_side = normalize(Vec3{-1, 0, 1});  // V of this axis
+  const Gravimorphism epitony{1.0, 1.0, 0.5};
+  EXPECT_NEAR(gravimorphism(epitony, axis, upper_side), 0.5 + 0.5 * 1.5, 1e-12);
+  EXPECT_NEAR(gravimorphism(epitony, axis, -upper_side), 0.5 + 0.5 * 0.5, 1e-12);
 }
 
 TEST(Shedding, ChoosesExactlyTheBranchesUnderTheThreshold) {
