@@ -173,7 +173,7 @@ TEST(SpeciesDocs, SelfOrganizingKeysAreTheDocumentedOnes) {
                      "[[stroke]] points", "[[stroke]] start_step", "[[stroke]] points_per_step",
                      "[[stroke]] markers_per_step", "[[stroke]] max_age", "[[prune]] step",
                      "[[prune]] internode", "[[prune]] stub", "[[phase]] from_step",
-                     "[[phase]] region_centre", "[[phase]] region_radius"});
+                     "[[phase]] select"});
 }
 
 TEST(SpeciesDocs, MeasuredGrowthKeysAreTheDocumentedOnes) {

@@ -228,12 +228,9 @@ GrowthPhase read_phase(TableReader r, const GrowthPhase& before) {
   read_vigour(r.table("vigour"), ph.vigour);
   read_gravimorphism(r.table("gravimorphism"), ph.gravimorphism);
   read_direction(r.table("direction"), ph.direction);
-  if (const auto radius = r.optional_number("region_radius", {0.0, 1000.0, true})) {
+  if (r.has("select")) {
     ph.selective = true;
-    ph.region_radius = *radius;
-    ph.region_centre = r.vec3("region_centre");
-  } else if (r.has("region_centre")) {
-    r.fail("region_radius", "expected a radius in metres with region_centre");
+    ph.select = r.vec3("select");
   }
   r.finish();
   return ph;
@@ -288,7 +285,7 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
   }
   for (TableReader& t : root.tables("bend")) p.bends.push_back(read_bend(t));
   for (TableReader& t : root.tables("prune")) p.prunings.push_back(read_prune(t));
-  GrowthPhase rules{0, p.vigour, p.gravimorphism, p.direction, false, {}, 0.0};
+  GrowthPhase rules{0, p.vigour, p.gravimorphism, p.direction, false, {}};
   for (TableReader& t : root.tables("phase")) {
     const int previous = rules.from_step;
     rules = read_phase(t, rules);

@@ -114,17 +114,18 @@ struct Pruning {
 
 // Growth rules changed from a step on (TreeSketch section 3: the modeler changes parameters
 // as the tree grows): the vigour, gravimorphism and direction parameters in effect from
-// `from_step`, each phase starting from the rules before it. With a region, selective growth:
-// only buds within it grow (the rest of the tree waits), as the paper's brush confines
-// growth to where it is applied.
+// `from_step`, each phase starting from the rules before it. With `select`, TreeSketch's
+// selective growth mode: the bud nearest that point when the phase begins is selected, and
+// only the branch originating at it competes for markers and grows; every bud still removes
+// the markers in its occupancy zone. A point, not a bud's index, so that the selection
+// holds for every seed of the species.
 struct GrowthPhase {
   int from_step = 1;
   VigourParameters vigour;
   Gravimorphism gravimorphism;
   DirectionParameters direction;
   bool selective = false;
-  Vec3 region_centre;
-  double region_radius = 0.0;
+  Vec3 select;
 };
 
 struct Parameters {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/input_error.h"
@@ -39,10 +40,9 @@ class Simulation {
       positions[b] = plant_[buds[b].internode].tip, directions[b] = plant_.bud_direction(buds[b]);
     add_markers(s, positions, directions);
     const double l = p_.internode_length;
-    markers_.consume(positions, p_.space.occupancy * l);
-    const std::vector<BudSpace> space =
-        allocate_markers(markers_.points(), positions, directions,
-                         (p_.space.occupancy + p_.space.perception) * l, p_.space.perception_angle);
+    markers_.consume(positions, p_.space.occupancy * l);  // every bud, selected or not
+    select_branch(buds);
+    const std::vector<BudSpace> space = compete(buds, positions, directions);
     set_bud_light(buds, directions);
     gather_light(plant_);
     distribute_vigour(plant_, p_.vigour.alpha, p_.vigour.apical_control);
@@ -75,6 +75,54 @@ class Simulation {
       }
       for (std::uint32_t k : gone) shadows_.cast(plant_[k].tip, -1.0);
     }
+  }
+
+  // The buds of the selected branch (all buds outside selective growth) share the markers
+  // left after every bud's occupancy zone; the others get none.
+  std::vector<BudSpace> compete(const std::vector<BudRef>& buds, const std::vector<Vec3>& positions,
+                                const std::vector<Vec3>& directions) const {
+    std::vector<std::size_t> rivals;
+    std::vector<Vec3> at, towards;
+    for (std::size_t b = 0; b < buds.size(); ++b) {
+      if (!selected(buds[b])) continue;
+      rivals.push_back(b);
+      at.push_back(positions[b]);
+      towards.push_back(directions[b]);
+    }
+    const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
+    const std::vector<BudSpace> won =
+        allocate_markers(markers_.points(), at, towards, radius, p_.space.perception_angle);
+    std::vector<BudSpace> space(buds.size());
+    for (std::size_t k = 0; k < rivals.size(); ++k) space[rivals[k]] = won[k];
+    return space;
+  }
+
+  // TreeSketch's selective mode: when a selective phase begins, the bud nearest its point
+  // is selected (ties to the earlier bud); then the branch is that bud's shoot and all that
+  // grows from it, marked per internode each step (a parent precedes its children).
+  void select_branch(const std::vector<BudRef>& buds) {
+    if (phase_ == nullptr || !phase_->selective) return;
+    if (selecting_ != phase_) {
+      selecting_ = phase_;
+      branch_root_ = kNone;
+      selected_bud_ = {kNone, false};
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const BudRef& b : buds) {
+        const double d = length(plant_[b.internode].tip - phase_->select);
+        if (d < nearest) nearest = d, selected_bud_ = b;
+      }
+    }
+    in_branch_.assign(plant_.size(), false);
+    for (std::uint32_t i = branch_root_; i < plant_.size(); ++i)
+      in_branch_[i] =
+          i == branch_root_ || (plant_[i].parent != kNone && in_branch_[plant_[i].parent]);
+  }
+
+  bool selected(const BudRef& b) const {
+    if (phase_ == nullptr || !phase_->selective) return true;
+    if (branch_root_ == kNone)
+      return b.internode == selected_bud_.internode && b.lateral == selected_bud_.lateral;
+    return b.internode < in_branch_.size() && in_branch_[b.internode];
   }
 
   // This step's markers; autonomous ones in the cones of the buds at `positions`.
@@ -128,21 +176,24 @@ class Simulation {
     // Only buds with space grow: n = floor(v / v_max * n_max) among them.
     double v_max = 0.0;
     for (std::size_t b = 0; b < buds.size(); ++b)
-      if (space[b].markers > 0 && may_grow(plant_[buds[b].internode]))
-        v_max = std::max(v_max, vigour_of(buds[b]));
+      if (space[b].markers > 0 && selected(buds[b])) v_max = std::max(v_max, vigour_of(buds[b]));
     if (!(v_max > 0.0)) return 0;
     int grown = 0;
     for (std::size_t b = 0; b < buds.size(); ++b) {
       const Internode& n = plant_[buds[b].internode];
       if (space[b].markers == 0 || !n.alive ||
-          (buds[b].lateral ? !n.lateral_bud : !n.terminal_bud) || !may_grow(n))
+          (buds[b].lateral ? !n.lateral_bud : !n.terminal_bud) || !selected(buds[b]))
         continue;
       const int metamers =
           static_cast<int>(std::floor(vigour_of(buds[b]) / v_max * p_.vigour.max_shoot));
       if (metamers <= 0) continue;
       const std::size_t first = plant_.size();
-      grown +=
+      const int added =
           grow_shoot(plant_, p_, buds[b], metamers, space[b].direction, s, growth_rng_, shadows_);
+      grown += added;
+      if (added > 0 && selecting_ == phase_ && phase_ != nullptr && phase_->selective &&
+          branch_root_ == kNone)
+        branch_root_ = static_cast<std::uint32_t>(first);  // the selected bud's shoot
       for (std::size_t k = first; k < plant_.size(); ++k)
         plant_[static_cast<std::uint32_t>(k)].shoot_vigour = vigour_of(buds[b]);
       if (plant_.size() > p_.max_internodes)
@@ -180,15 +231,13 @@ class Simulation {
     p_.direction = phase_ != nullptr ? phase_->direction : base_.direction;
   }
 
-  // Selective growth: outside the phase's region no bud grows.
-  bool may_grow(const Internode& n) const {
-    return phase_ == nullptr || !phase_->selective ||
-           length(n.tip - phase_->region_centre) <= phase_->region_radius;
-  }
-
   const Parameters& base_;
   Parameters p_;  // the species' parameters with the current phase's rules
   const GrowthPhase* phase_ = nullptr;
+  const GrowthPhase* selecting_ = nullptr;  // the selective phase whose bud is chosen
+  BudRef selected_bud_{kNone, false};
+  std::uint32_t branch_root_ = kNone;  // the selected bud's first internode, once grown
+  std::vector<bool> in_branch_;        // per internode: in the selected branch
   Plant plant_;
   ShadowGrid shadows_;
   MarkerSet markers_;

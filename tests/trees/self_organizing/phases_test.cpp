@@ -1,6 +1,7 @@
 // Growth rules changed part-way through growth, and selective growth (TreeSketch section 3):
-// the tree before a phase is untouched by it, the rules act after it begins, a region confines
-// growth while it holds, and a later phase lets the rest grow again; ungrow stays exact.
+// the tree before a phase is untouched by it, the rules act after it begins, the selected bud's
+// branch alone grows while it holds, and a later phase lets the rest grow again; ungrow stays
+// exact.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -31,7 +32,7 @@ double mean_rise(const Plant& plant, int from) {
 TEST(SelfOrganizingPhases, RulesChangedFromAStepActOnlyFromThere) {
   const Parameters base = upright();
   Parameters weeping = base;
-  GrowthPhase ph{8, base.vigour, base.gravimorphism, base.direction, false, {}, 0.0};
+  GrowthPhase ph{8, base.vigour, base.gravimorphism, base.direction, false, {}};
   ph.direction.set_point = 150.0 * std::numbers::pi / 180.0;  // branches bend down
   ph.direction.tropism = 0.8;
   weeping.phases = {ph};
@@ -60,44 +61,55 @@ TEST(SelfOrganizingPhases, TheExampleGrowsUprightThenLevel) {
   EXPECT_LT(std::abs(mean_rise(phased, 9)), 0.25);
 }
 
-TEST(SelfOrganizingPhases, ARegionConfinesGrowthUntilALaterPhase) {
+// TreeSketch's selective mode: "growth is limited to the branch originating at the bud
+// selected": everything born while the phase lasts descends from one shoot, grown from the
+// bud nearest the phase's point; after a later, non-selective phase the rest grows again.
+// (The old reading let every bud inside a sphere grow.)
+TEST(SelfOrganizingPhases, SelectiveGrowthIsTheSelectedBudsBranchUntilALaterPhase) {
   const Parameters base = upright();
   Parameters seven = base;
   seven.steps = 7;
   const Plant at_seven = grow(seven, 3);
-  // The region: around the tip of a branch that stands at step 7, 1 m across.
-  Vec3 centre;
-  for (const Internode& i : at_seven.internodes())
-    if (i.alive && i.order == 1 && i.lateral_bud) centre = i.tip;
+  // Select the lateral bud of a branch that stands at step 7.
+  std::uint32_t bud = kNone;
+  for (std::uint32_t i = 0; i < at_seven.size(); ++i)
+    if (at_seven[i].alive && at_seven[i].order == 1 && at_seven[i].lateral_bud) bud = i;
+  ASSERT_NE(bud, kNone);
   Parameters p = base;
-  GrowthPhase confined{8, base.vigour, base.gravimorphism, base.direction, true, centre, 1.0};
-  GrowthPhase free{12, base.vigour, base.gravimorphism, base.direction, false, {}, 0.0};
+  GrowthPhase confined{8, base.vigour, base.gravimorphism, base.direction, true, at_seven[bud].tip};
+  GrowthPhase free{12, base.vigour, base.gravimorphism, base.direction, false, {}};
   p.phases = {confined, free};
   const Plant plant = grow(p, 3);
-  const double reach = 1.0 + base.vigour.max_shoot * base.internode_length + 1e-9;
+  // The branch's first internode: the first born at step 8 or later.
+  std::uint32_t root = kNone;
+  for (std::uint32_t i = 0; i < plant.size() && root == kNone; ++i)
+    if (plant[i].birth >= 8) root = i;
+  ASSERT_NE(root, kNone);
+  EXPECT_EQ(length(plant[root].base - at_seven[bud].tip), 0.0);  // grown from the selected bud
   int inside = 0, outside_later = 0;
-  for (const Internode& i : plant.internodes()) {
-    if (i.birth >= 8 && i.birth < 12) {
-      EXPECT_LE(length(i.base - centre), reach) << "born " << i.birth;
+  for (std::uint32_t i = 0; i < plant.size(); ++i) {
+    std::uint32_t a = i;
+    while (a != kNone && a != root) a = plant[a].parent;
+    if (plant[i].birth >= 8 && plant[i].birth < 12) {
+      EXPECT_EQ(a, root) << i << " born " << plant[i].birth << " outside the selected branch";
       ++inside;
     }
-    outside_later += i.birth >= 12 && length(i.base - centre) > reach;
+    outside_later += plant[i].birth >= 12 && a != root;
   }
-  EXPECT_GT(inside, 5);          // the region grew
+  EXPECT_GT(inside, 5);          // the branch grew
   EXPECT_GT(outside_later, 20);  // and the rest resumed after it
 }
 
 TEST(SelfOrganizingPhases, UngrowIsExactThroughPhases) {
   const Parameters base = upright();
   Parameters p = base;
-  GrowthPhase ph{6, base.vigour, base.gravimorphism, base.direction, false, {}, 0.0};
+  GrowthPhase ph{6, base.vigour, base.gravimorphism, base.direction, false, {}};
   ph.direction.set_point = 1.2;
   ph.vigour.apical_control = 0.7;
   GrowthPhase confined = ph;
   confined.from_step = 10;
   confined.selective = true;
-  confined.region_centre = {0, 0, 2};
-  confined.region_radius = 1.5;
+  confined.select = {0, 0, 2};
   p.phases = {ph, confined};
   const Plant grown = grow(p, 5);
   for (int k : {5, 6, 9, 10, 13, p.steps}) {
@@ -121,8 +133,8 @@ TEST(SelfOrganizingPhases, PhasesReadFromTheSpeciesFileInOrder) {
   const Species s = parse_species_toml(
       head +
           "[direction]\ntropism = 0.2\n[[phase]]\nfrom_step = 5\n[phase.direction]\n"
-          "set_point = 120\n[[phase]]\nfrom_step = 9\nregion_centre = [0, 0, 2]\n"
-          "region_radius = 1.5\n[phase.vigour]\napical_control = 0.8\n",
+          "set_point = 120\n[[phase]]\nfrom_step = 9\nselect = [0, 0, 2]\n"
+          "[phase.vigour]\napical_control = 0.8\n",
       "p.toml");
   const Parameters& p = std::get<Parameters>(s.parameters);
   ASSERT_EQ(p.phases.size(), 2u);
@@ -137,9 +149,10 @@ TEST(SelfOrganizingPhases, PhasesReadFromTheSpeciesFileInOrder) {
       head + "[[phase]]\nfrom_step = 9\n[[phase]]\nfrom_step = 5\n", "p.toml");
   EXPECT_NE(disordered.find("from_step"), std::string::npos) << disordered;
   EXPECT_NE(disordered.find("in order"), std::string::npos) << disordered;
-  const std::string no_radius = trees::testing::species_error(
-      head + "[[phase]]\nfrom_step = 4\nregion_centre = [0, 0, 1]\n", "p.toml");
-  EXPECT_NE(no_radius.find("region_radius"), std::string::npos) << no_radius;
+  EXPECT_DOUBLE_EQ(p.phases[1].select.z, 2.0);
+  const std::string bad_point =
+      trees::testing::species_error(head + "[[phase]]\nfrom_step = 4\nselect = [0, 1]\n", "p.toml");
+  EXPECT_NE(bad_point.find("select"), std::string::npos) << bad_point;
 }
 
 }  // namespace
