@@ -428,12 +428,16 @@ TEST(Cli, TreeListsInternodesAPruningCanName) {
     std::vector<std::string> c;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) c.push_back(cell);
-    if (chosen.empty() && c[7] == "1" && c[5] == "1" && std::stoi(c[2]) <= 4) chosen = c[0];
+    // The cut names the branch by a point: the middle of its first internode.
+    if (chosen.empty() && c[7] == "1" && c[5] == "1" && std::stoi(c[2]) <= 4)
+      for (int k = 0; k < 3; ++k)
+        chosen +=
+            (k ? ", " : "") + std::to_string(0.5 * (std::stod(c[8 + k]) + std::stod(c[11 + k])));
   }
   EXPECT_GT(rows, stems);  // an internode per row, several per stem
   ASSERT_FALSE(chosen.empty());
   const auto pruned =
-      dir.write("pruned.toml", upright + "\n[[prune]]\nstep = 5\ninternode = " + chosen + "\n");
+      dir.write("pruned.toml", upright + "\n[[prune]]\nstep = 5\nat = [" + chosen + "]\n");
   const Result after = run("tree " + pruned.string() + " --json", dir);
   ASSERT_EQ(after.exit_code, 0) << after.err;
   EXPECT_LT(nlohmann::json::parse(after.out)["stems"]["total"].get<int>(), stems);

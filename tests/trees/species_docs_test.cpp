@@ -172,7 +172,7 @@ TEST(SpeciesDocs, SelfOrganizingKeysAreTheDocumentedOnes) {
                     {"[growth] age", "[[width_constraint]] internode", "[[width_constraint]] width",
                      "[[stroke]] points", "[[stroke]] start_step", "[[stroke]] points_per_step",
                      "[[stroke]] markers_per_step", "[[stroke]] max_age", "[[prune]] step",
-                     "[[prune]] internode", "[[prune]] stub", "[[phase]] from_step",
+                     "[[prune]] at", "[[prune]] stub", "[[phase]] from_step",
                      "[[phase]] select"});
 }
 

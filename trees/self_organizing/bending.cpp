@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/input_error.h"
+#include "params/table_reader.h"
 #include "trees/self_organizing/plant.h"
 
 namespace landsim::trees::self_organizing {
@@ -29,13 +31,14 @@ struct Prisms {
   std::vector<Vec3> start, span;  // rest: where it starts, and start to end
 };
 
-Prisms make_prisms(const Plant& plant, const std::vector<std::uint32_t>& path, const Bend& b) {
+Prisms make_prisms(const Plant& plant, const BendPath& resolved) {
+  const std::vector<std::uint32_t>& path = resolved.path;
   const std::size_t run = (path.size() + kMaxPrisms - 1) / kMaxPrisms;
   Prisms p;
   std::size_t first = 0;
   for (std::size_t k = 0; k < path.size(); ++k) {
-    const bool handle = std::any_of(b.handles.begin(), b.handles.end(),
-                                    [&](const BendHandle& h) { return h.internode == path[k]; });
+    const bool handle = std::find(resolved.handles.begin(), resolved.handles.end(), path[k]) !=
+                        resolved.handles.end();
     if (handle || k + 1 - first >= run || k + 1 == path.size()) {
       p.end.push_back(k + 1);
       p.start.push_back(plant[path[first]].base);
@@ -225,37 +228,83 @@ void carry(Plant& plant, std::uint32_t first, const Vec3& pivot, const Vec3& mov
 
 }  // namespace
 
-std::vector<std::uint32_t> bend_path(const Plant& plant, const Bend& b) {
-  if (b.handles.empty()) return {};
-  const std::uint32_t e = b.handles.back().internode;
-  if (e >= plant.size() || b.base >= plant.size()) return {};
-  std::vector<std::uint32_t> path;
-  for (std::uint32_t k = e; k != kNone; k = plant[k].parent) {
-    path.push_back(k);
-    if (k == b.base) break;
+namespace {
+
+std::string format_point(const Vec3& p) {
+  return "[" + params::format_number(p.x) + ", " + params::format_number(p.y) + ", " +
+         params::format_number(p.z) + "]";
+}
+
+double segment_distance(const Internode& n, const Vec3& p) {
+  const Vec3 d = n.tip - n.base;
+  const double len2 = dot(d, d);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - n.base, d) / len2, 0.0, 1.0) : 0.0;
+  return length(p - (n.base + d * t));
+}
+
+// Of `candidates`, the one whose tip is nearest p (ties to the first).
+std::uint32_t nearest_tip(const Plant& plant, const std::vector<std::uint32_t>& candidates,
+                          const Vec3& p) {
+  std::uint32_t best = kNone;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::uint32_t k : candidates) {
+    const double d = length(plant[k].tip - p);
+    if (plant[k].alive && d < nearest) nearest = d, best = k;
   }
-  if (path.back() != b.base) return {};
-  std::reverse(path.begin(), path.end());
-  for (const BendHandle& h : b.handles)
-    if (std::find(path.begin(), path.end(), h.internode) == path.end()) return {};
-  return path;
+  return best;
+}
+
+}  // namespace
+
+std::uint32_t nearest_internode(const Plant& plant, const Vec3& p) {
+  std::uint32_t best = kNone;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::uint32_t k = plant.size() > 1 ? 1 : 0; k < plant.size(); ++k) {
+    if (!plant[k].alive) continue;
+    const double d = segment_distance(plant[k], p);
+    if (d < nearest) nearest = d, best = k;
+  }
+  return best;
+}
+
+BendPath bend_path(const Plant& plant, const Bend& b) {
+  BendPath r;
+  if (b.handles.empty() || plant.size() == 0) return r;
+  std::vector<std::uint32_t> all(plant.size());
+  for (std::uint32_t k = 0; k < plant.size(); ++k) all[k] = k;
+  const std::uint32_t end = nearest_tip(plant, all, b.handles.back().at);
+  if (end == kNone) return r;
+  std::vector<std::uint32_t> from_root;  // the way up from the seedling to E
+  for (std::uint32_t k = end; k != kNone; k = plant[k].parent) from_root.push_back(k);
+  std::reverse(from_root.begin(), from_root.end());
+  std::size_t first = 0;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < from_root.size(); ++i) {
+    const double d = segment_distance(plant[from_root[i]], b.from);
+    if (d < nearest) nearest = d, first = i;
+  }
+  r.path.assign(from_root.begin() + static_cast<std::ptrdiff_t>(first), from_root.end());
+  for (std::size_t h = 0; h + 1 < b.handles.size(); ++h)
+    r.handles.push_back(nearest_tip(plant, r.path, b.handles[h].at));
+  r.handles.push_back(end);
+  return r;
 }
 
 void bend(Plant& plant, const Bend& b) {
-  const std::vector<std::uint32_t> path = bend_path(plant, b);
+  const BendPath resolved = bend_path(plant, b);
+  const std::vector<std::uint32_t>& path = resolved.path;
   if (path.empty())
-    throw InputError((b.where.empty() ? "bend" : b.where) + ": the handles' internodes (the last " +
-                     std::to_string(b.handles.empty() ? 0 : b.handles.back().internode) +
-                     ") are not on one path up from base internode " + std::to_string(b.base) +
-                     " (the tree has " + std::to_string(plant.size()) + " internodes)");
-  const Prisms prisms = make_prisms(plant, path, b);
+    throw InputError((b.where.empty() ? "bend" : b.where) + ": no internode near from = " +
+                     format_point(b.from) + " with a tip near the last handle (the tree has " +
+                     std::to_string(plant.size()) + " internodes)");
+  const Prisms prisms = make_prisms(plant, resolved);
   std::vector<std::pair<std::size_t, Vec3>> targets;
-  for (const BendHandle& h : b.handles) {
-    const auto at =
-        static_cast<std::size_t>(std::find(path.begin(), path.end(), h.internode) - path.begin());
+  for (std::size_t h = 0; h < b.handles.size(); ++h) {
+    const auto at = static_cast<std::size_t>(
+        std::find(path.begin(), path.end(), resolved.handles[h]) - path.begin());
     const auto prism = static_cast<std::size_t>(
         std::upper_bound(prisms.end.begin(), prisms.end.end(), at) - prisms.end.begin());
-    targets.emplace_back(prism, h.target);
+    targets.emplace_back(prism, b.handles[h].target);
   }
   const Pose pose = Solver(prisms, targets, b.stretch).solve();
   // Each prism's internodes turn with it; whatever else grows from them is carried along.

@@ -9,11 +9,11 @@
 namespace landsim::trees::self_organizing {
 namespace {
 
-// The modeler's bends, in order, on the grown plant; a younger plant (ungrown) takes those
-// whose internodes it already has.
+// The modeler's bends, in order, on the grown plant: they were drawn on the finished tree,
+// so a younger plant (ungrown) is drawn unbent.
 void apply_bends(Plant& plant, const std::vector<Bend>& bends, bool grown) {
-  for (const Bend& b : bends)
-    if (grown || !bend_path(plant, b).empty()) bend(plant, b);
+  if (!grown) return;
+  for (const Bend& b : bends) bend(plant, b);
 }
 
 }  // namespace

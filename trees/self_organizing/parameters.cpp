@@ -176,17 +176,14 @@ Lasso read_lasso(TableReader r) {
 // [[bend]]: base, and handles [[internode, x, y, z], ...] (the last one's internode is E).
 Bend read_bend(TableReader r) {
   Bend b;
-  b.base = static_cast<std::uint32_t>(r.integer("base", 0, 100000000));
   constexpr Range kCoordinate{-1e3, 1e3};
+  b.from = r.vec3("from", kCoordinate);
   for (const std::vector<double>& h :
-       read_rows(r, "handles", {{0, 1e8}, kCoordinate, kCoordinate, kCoordinate}, 1,
-                 "[[internode, x, y, z], ...]: at least one handle, the last the end internode"))
-    if (h[0] != std::floor(h[0]))
-      r.fail("handles", "expected a whole internode number first in each handle, got " +
-                            params::format_number(h[0]));
-    else
-      b.handles.push_back({static_cast<std::uint32_t>(h[0]), {h[1], h[2], h[3]}});
-  if (b.handles.empty()) r.fail("handles", "expected [[internode, x, y, z], ...]");
+       read_rows(r, "handles",
+                 {kCoordinate, kCoordinate, kCoordinate, kCoordinate, kCoordinate, kCoordinate}, 1,
+                 "[[x, y, z, to_x, to_y, to_z], ...] in metres: at least one handle, each a point "
+                 "near an internode's tip and where that tip goes, the last the end"))
+    b.handles.push_back({{h[0], h[1], h[2]}, {h[3], h[4], h[5]}});
   b.stretch = r.number("stretch", {0, 1}, b.stretch);
   b.where = r.location(nullptr) + ": [[bend]]";
   r.finish();
@@ -213,7 +210,7 @@ BrushStroke read_stroke(TableReader r) {
 Pruning read_prune(TableReader r) {
   Pruning c;
   c.step = static_cast<int>(r.integer("step", 1, 500, c.step));
-  c.internode = static_cast<std::uint32_t>(r.integer("internode", 1, 100000000, c.internode));
+  c.at = r.vec3("at", {-1e3, 1e3});
   c.stub = r.boolean("stub", c.stub);
   c.where = r.location(nullptr) + ": [[prune]]";
   r.finish();

@@ -102,12 +102,14 @@ struct LeafParameters {
   double width = 0.05;
 };
 
-// TreeSketch section 4 "Pruning": the branch from `internode` up is removed, and the widths
-// below it are as if it had never grown; with `stub`, the internode stays as a stub that
-// keeps its width (the paper's width constraint below the cut).
+// TreeSketch section 4 "Pruning": the branch from the living internode nearest `at` (at
+// that step; never the seedling's first) up is removed, and the widths below it are as if it
+// had never grown; with `stub`, the internode stays as a stub that keeps its width (the
+// paper's width constraint below the cut). A point, not an internode number, so that the
+// cut holds for every seed of the species.
 struct Pruning {
-  int step = 1;                 // before this step's growth
-  std::uint32_t internode = 1;  // the first internode removed (or the stub)
+  int step = 1;  // before this step's growth
+  Vec3 at;       // the cut: the internode nearest this point
   bool stub = false;
   std::string where;  // "file:line:column: [[prune]]", for errors found while growing
 };

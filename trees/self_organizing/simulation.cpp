@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "trees/random.h"
+#include "trees/self_organizing/bending.h"
 #include "trees/self_organizing/competition.h"
 #include "trees/self_organizing/growth.h"
 #include "trees/self_organizing/markers.h"
@@ -61,17 +62,16 @@ class Simulation {
   void prune(int s) {
     for (const Pruning& cut : p_.prunings) {
       if (cut.step != s) continue;
-      if (cut.internode == 0 || cut.internode >= plant_.size() || !plant_[cut.internode].alive)
-        throw InputError((cut.where.empty() ? "prune" : cut.where) + ": internode " +
-                         std::to_string(cut.internode) +
-                         " is not a living branch internode at step " + std::to_string(s) +
-                         " (the tree has " + std::to_string(plant_.size()) + " internodes)");
+      const std::uint32_t at = nearest_internode(plant_, cut.at);
+      if (at == kNone || at == 0)
+        throw InputError((cut.where.empty() ? "prune" : cut.where) + ": no branch to cut at step " +
+                         std::to_string(s) + " (the tree is its seedling internode)");
       std::vector<std::uint32_t> gone;
       if (cut.stub) {
         assign_widths(plant_, p_.width);  // the width the stub keeps
-        gone = plant_.cut_above(cut.internode, plant_[cut.internode].width, s);
+        gone = plant_.cut_above(at, plant_[at].width, s);
       } else {
-        gone = plant_.prune(cut.internode, s);
+        gone = plant_.prune(at, s);
       }
       for (std::uint32_t k : gone) shadows_.cast(plant_[k].tip, -1.0);
     }

@@ -44,15 +44,25 @@ Branch grown_branch(std::size_t min_length) {
 
 double length_of(const Internode& n) { return length(n.tip - n.base); }
 
+// The bend of `plant` from internode `base` with each handle's internode pulled to its
+// target, named as a species file names it: by a point on B and points at the handles' tips.
+Bend named(const Plant& plant, std::uint32_t base,
+           const std::vector<std::pair<std::uint32_t, Vec3>>& handles, double stretch = 0.0) {
+  Bend b{.from = (plant[base].base + plant[base].tip) * 0.5, .stretch = stretch};
+  for (const auto& [internode, target] : handles)
+    b.handles.push_back({plant[internode].tip, target});
+  return b;
+}
+
 TEST(Bending, KeepsEveryInternodesLengthAndCarriesTheRestRigidly) {
   Branch b = grown_branch(6);
   const Plant before = b.plant;
   const Vec3 target = before[b.end].tip + Vec3{0, 0, -0.6};
   const double was = length(before[b.end].tip - target);
-  bend(b.plant, {.base = b.base, .handles = {{b.end, target}}});
+  bend(b.plant, named(before, b.base, {{b.end, target}}));
   EXPECT_LT(length(b.plant[b.end].tip - target), 0.35 * was);
   const std::vector<std::uint32_t> path =
-      bend_path(before, {.base = b.base, .handles = {{b.end, target}}});
+      bend_path(before, named(before, b.base, {{b.end, target}})).path;
   const auto on_path = [&](std::uint32_t i) {
     return std::find(path.begin(), path.end(), i) != path.end();
   };
@@ -80,7 +90,7 @@ TEST(Bending, KeepsEveryInternodesLengthAndCarriesTheRestRigidly) {
 TEST(Bending, SpreadsTheTurnOverThePathsJoints) {
   Branch b = grown_branch(6);
   const Plant before = b.plant;
-  bend(b.plant, {.base = b.base, .handles = {{b.end, before[b.end].tip + Vec3{0, 0, -0.6}}}});
+  bend(b.plant, named(before, b.base, {{b.end, before[b.end].tip + Vec3{0, 0, -0.6}}}));
   // The change of each joint's angle along the path: no joint takes the whole turn.
   std::vector<double> turn;
   for (std::uint32_t k = b.base; k != b.end; k = before[k].main) {
@@ -111,9 +121,9 @@ TEST(Bending, StretchingReachesBeyondThePathsLength) {
   }
   const Vec3 far = from + normalize(to - from) * (1.4 * path);  // out of a rigid path's reach
   Plant rigid = before;
-  bend(rigid, {.base = b.base, .handles = {{b.end, far}}});
+  bend(rigid, named(before, b.base, {{b.end, far}}));
   EXPECT_GT(length(rigid[b.end].tip - far), 0.3 * path);
-  bend(b.plant, {.base = b.base, .handles = {{b.end, far}}, .stretch = 1.0});
+  bend(b.plant, named(before, b.base, {{b.end, far}}, 1.0));
   EXPECT_LT(length(b.plant[b.end].tip - far), 0.02);
   EXPECT_GT(length_of(b.plant[b.end]), 1.2 * length_of(before[b.end]));
 }
@@ -125,23 +135,28 @@ TEST(Bending, AMiddleHandleAndTheEndAreBothReached) {
   for (int k = 0; k < 3; ++k) middle = before[middle].main;
   const Vec3 mid_target = before[middle].tip + Vec3{0.2, 0.1, 0};
   const Vec3 end_target = before[b.end].tip + Vec3{0.2, 0.1, -0.2};
-  bend(b.plant, {.base = b.base, .handles = {{middle, mid_target}, {b.end, end_target}}});
+  bend(b.plant, named(before, b.base, {{middle, mid_target}, {b.end, end_target}}));
   EXPECT_LT(length(b.plant[middle].tip - mid_target), 0.05);
   EXPECT_LT(length(b.plant[b.end].tip - end_target), 0.08);
 }
 
-TEST(Bending, HandlesOffThePathAreRefused) {
+// Points name the path whatever the tree: E is the tip nearest the last handle, B the
+// internode of the way up to E nearest `from`, and an earlier handle far off the path (at
+// the ground) still takes an internode of the path, the one whose tip is nearest it.
+TEST(Bending, PointsNameAPathUpToTheEndWhateverTheTree) {
   Branch b = grown_branch(6);
-  // The trunk's first internode is below B: not on a path up from it.
-  EXPECT_TRUE(bend_path(b.plant, {.base = b.base, .handles = {{0, {0, 0, 0}}}}).empty());
-  try {
-    bend(b.plant, {.base = b.base, .handles = {{0, {0, 0, 0}}}});
-    ADD_FAILURE() << "no refusal";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("base internode " + std::to_string(b.base)),
-              std::string::npos)
-        << e.what();
-  }
+  const Bend named_bend{.from = (b.plant[b.base].base + b.plant[b.base].tip) * 0.5,
+                        .handles = {{{0, 0, 0}, {0, 0, 0}}, {b.plant[b.end].tip, {0, 0, 1}}}};
+  const BendPath resolved = bend_path(b.plant, named_bend);
+  ASSERT_FALSE(resolved.path.empty());
+  EXPECT_EQ(resolved.path.front(), b.base);
+  EXPECT_EQ(resolved.path.back(), b.end);
+  ASSERT_EQ(resolved.handles.size(), 2u);
+  EXPECT_EQ(resolved.handles[1], b.end);
+  EXPECT_EQ(resolved.handles[0], b.base);  // the path's tip nearest the ground
+  // `from` at the ground: the path starts at the seedling's internode.
+  const Bend whole{.from = {0, 0, 0}, .handles = {{b.plant[b.end].tip, {0, 0, 1}}}};
+  EXPECT_EQ(bend_path(b.plant, whole).path.front(), 0u);
 }
 
 // The InputError `grow_it` throws, or "" when it throws none.
@@ -155,25 +170,17 @@ std::string refusal(Grow&& grow_it) {
   return "";
 }
 
-// An edit that does not fit a seed's tree is reported at its entry in the species file
-// (before: "bend: ..." and "prune: ..." with neither file nor line).
-TEST(Bending, AnEditThatDoesNotFitIsReportedAtItsEntry) {
-  Parameters bent = testing::ellipsoid_crown(14);
-  Bend b;
-  b.base = 1;
-  b.handles.push_back({100000, {0.0, 0.0, 1.0}});
-  b.where = "sp.toml:20:1: [[bend]]";
-  bent.bends.push_back(b);
-  const std::string bend = refusal([&] { generate_skeleton(bent, 3); });
-  EXPECT_EQ(bend.rfind("sp.toml:20:1: [[bend]]: the handles' internodes", 0), 0u) << bend;
+// A cut with nothing to cut (before the first step's growth there is only the seedling's
+// internode) is reported at its entry in the species file.
+TEST(Bending, ACutWithNoBranchIsReportedAtItsEntry) {
   Parameters pruned = testing::ellipsoid_crown(14);
   Pruning cut;
-  cut.step = 3;
-  cut.internode = 100000;
+  cut.step = 1;
+  cut.at = {0, 0, 0.05};
   cut.where = "sp.toml:12:1: [[prune]]";
   pruned.prunings.push_back(cut);
   const std::string prune = refusal([&] { grow(pruned, 3); });
-  EXPECT_EQ(prune.rfind("sp.toml:12:1: [[prune]]: internode 100000", 0), 0u) << prune;
+  EXPECT_EQ(prune.rfind("sp.toml:12:1: [[prune]]: no branch to cut at step 1", 0), 0u) << prune;
 }
 
 }  // namespace

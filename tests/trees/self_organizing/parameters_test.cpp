@@ -9,7 +9,9 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "trees/self_organizing/bending.h"
 #include "trees/self_organizing/generator.h"
+#include "trees/self_organizing/simulation.h"
 #include "trees/species.h"
 
 namespace landsim::trees::self_organizing {
@@ -36,7 +38,7 @@ TEST(SelfOrganizingSpecies, ReadsEveryTable) {
           "[envelope]\nkind = \"ellipsoid\"\ncentre = [0, 0, 3]\nradii = [2, 2, 3]\n"
           "density = 10\nconfine = false\n"
           "[[stroke]]\npoints = [[0, 0, 1, 0.5], [1, 0, 2, 0.5]]\nstart_step = 3\n"
-          "[[prune]]\nstep = 5\ninternode = 7\n",
+          "[[prune]]\nstep = 5\nat = [0.5, 0, 2]\n",
       "t.toml");
   EXPECT_EQ(core_name(s), "self_organizing");
   const auto& p = std::get<Parameters>(s.parameters);
@@ -58,7 +60,7 @@ TEST(SelfOrganizingSpecies, ReadsEveryTable) {
   EXPECT_EQ(p.strokes[0].points.size(), 2u);
   EXPECT_EQ(p.strokes[0].start_step, 3);
   ASSERT_EQ(p.prunings.size(), 1u);
-  EXPECT_EQ(p.prunings[0].internode, 7u);
+  EXPECT_EQ(p.prunings[0].at, (Vec3{0.5, 0, 2}));
 }
 
 TEST(SelfOrganizingSpecies, BadInputNamesTheFileLineAndKey) {
@@ -75,8 +77,8 @@ TEST(SelfOrganizingSpecies, BadInputNamesTheFileLineAndKey) {
   EXPECT_NE(e.find("[envelope] silhouette"), std::string::npos) << e;
   e = error_of(kHeader + kSpace + "[[stroke]]\npoints = [[0, 0, 1]]\n");
   EXPECT_NE(e.find("[stroke[0]] points"), std::string::npos) << e;
-  e = error_of(kHeader + kSpace + "[[prune]]\ninternode = 0\n");
-  EXPECT_NE(e.find("[prune[0]] internode"), std::string::npos) << e;  // the trunk cannot be pruned
+  e = error_of(kHeader + kSpace + "[[prune]]\ninternode = 7\n");  // numbers no longer
+  EXPECT_NE(e.find("[prune[0]] at"), std::string::npos) << e;
   e = error_of(kHeader + "[growth]\nsteps = 10\n");
   EXPECT_NE(e.find("no markers of free space"), std::string::npos) << e;
   e = error_of(kHeader + kSpace + "[growth]\nsteps = 10.5\n");
@@ -96,7 +98,9 @@ TEST(SelfOrganizingSpecies, LassosAndBendsAreReadAndCheckedAtTheirLines) {
       kHeader +
           "[[lasso]]\noutline = [[-1, 0], [1, 0], [0, 3]]\norigin = [1, 2, 0]\nazimuth = 90\n"
           "thickness = 0.5\ndensity = 20\nstart_step = 3\nconfine = false\n"
-          "[[bend]]\nbase = 4\nhandles = [[9, 0.5, 0, 2], [12, 1, 0, 2.5]]\nstretch = 0.25\n",
+          "[[bend]]\nfrom = [0, 0, 1]\nhandles = [[0.5, 0, 2, 0.5, 0, 2.2], [1, 0, 2.5, 1, 0, "
+          "2.9]]\n"
+          "stretch = 0.25\n",
       "t.toml");
   const auto& p = std::get<Parameters>(s.parameters);
   ASSERT_EQ(p.lassos.size(), 1u);
@@ -108,32 +112,43 @@ TEST(SelfOrganizingSpecies, LassosAndBendsAreReadAndCheckedAtTheirLines) {
   EXPECT_EQ(o.start_step, 3);
   EXPECT_FALSE(o.confine);
   ASSERT_EQ(p.bends.size(), 1u);
-  EXPECT_EQ(p.bends[0].base, 4u);
+  EXPECT_EQ(p.bends[0].from, (Vec3{0, 0, 1}));
   ASSERT_EQ(p.bends[0].handles.size(), 2u);
-  EXPECT_EQ(p.bends[0].handles[1].internode, 12u);
-  EXPECT_EQ(p.bends[0].handles[1].target, (Vec3{1, 0, 2.5}));
+  EXPECT_EQ(p.bends[0].handles[1].at, (Vec3{1, 0, 2.5}));
+  EXPECT_EQ(p.bends[0].handles[1].target, (Vec3{1, 0, 2.9}));
   EXPECT_DOUBLE_EQ(p.bends[0].stretch, 0.25);
   const std::string two = error_of(kHeader + "[[lasso]]\noutline = [[0, 0], [1, 1]]\n");
   EXPECT_NE(two.find("so.toml:3"), std::string::npos) << two;
   EXPECT_NE(two.find("at least three points"), std::string::npos) << two;
-  const std::string whole =
-      error_of(kHeader + kSpace + "[[bend]]\nbase = 1\nhandles = [[2.5, 0, 0, 1]]\n");
-  EXPECT_NE(whole.find("whole internode"), std::string::npos) << whole;
+  // The internode numbers of old are refused with what is expected now.
+  const std::string numbered =
+      error_of(kHeader + kSpace + "[[bend]]\nfrom = [0, 0, 1]\nhandles = [[12, 0, 0, 1]]\n");
+  EXPECT_NE(numbered.find("handles"), std::string::npos) << numbered;
+  EXPECT_NE(numbered.find("[[x, y, z, to_x, to_y, to_z], ...]"), std::string::npos) << numbered;
   const std::string dense =
       error_of(kHeader + "[[lasso]]\noutline = [[-90, 0], [90, 0], [0, 190]]\ndensity = 100000\n");
   EXPECT_NE(dense.find("[lasso[0]] density"), std::string::npos) << dense;
 }
 
-// A bend whose handle is not on a path up from its base is refused when the tree is grown.
-TEST(SelfOrganizingSpecies, ABendOffItsPathIsRefusedWhenGrowing) {
-  const Species s = parse_species_toml(
-      kHeader + kSpace + "[growth]\nsteps = 6\n[[bend]]\nbase = 3\nhandles = [[0, 0, 0, 1]]\n",
-      "t.toml");
-  try {
-    generate_skeleton(std::get<Parameters>(s.parameters), 1);
-    ADD_FAILURE() << "no refusal";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("base internode 3"), std::string::npos) << e.what();
+// Edits name points, so a species with a bend and a cut grows for every seed, and they act
+// on each seed's own tree (issue 41: so_bent grew for seed 1 only).
+TEST(SelfOrganizingSpecies, EditsHoldForEverySeed) {
+  const Parameters p = std::get<Parameters>(
+      load_species(std::filesystem::path(LANDSIM_SOURCE_DIR) / "data/species/so_bent.toml")
+          .parameters);
+  ASSERT_EQ(p.bends.size(), 1u);
+  const Bend& b = p.bends[0];
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(seed);
+    EXPECT_NO_THROW(generate_skeleton(p, seed));
+    Plant plant = grow(p, seed);
+    const BendPath path = bend_path(plant, b);
+    ASSERT_GE(path.path.size(), 10u);  // a limb, not a twig
+    const std::uint32_t end = path.handles.back();
+    const double before = length(plant[end].tip - b.handles.back().target);
+    bend(plant, b);
+    // The limb's end comes most of the way to its target.
+    EXPECT_LT(length(plant[end].tip - b.handles.back().target), 0.3 * before);
   }
 }
 

@@ -37,7 +37,9 @@ Parameters shedding_crown() {
     if (at_nine[i].alive && at_nine.starts_branch(i) && at_nine[i].width > p.width.tip &&
         (chosen.empty() || !descends(i, chosen[0])))
       chosen.push_back(i);
-  if (chosen.size() == 2) p.prunings = {{10, chosen[0], true}, {10, chosen[1], false}};
+  const auto middle = [&](std::uint32_t i) { return (at_nine[i].base + at_nine[i].tip) * 0.5; };
+  if (chosen.size() == 2)
+    p.prunings = {{10, middle(chosen[0]), true}, {10, middle(chosen[1]), false}};
   return p;
 }
 
