@@ -40,7 +40,7 @@ std::vector<Module> derive(const Parameters& p, std::uint64_t seed, double age) 
     m.t0 = t0;
     m.attach_height = attach_height;
     m.c_l = 0.6 + 0.4 * r.uniform(2);
-    m.c_d = 0.5;
+    m.c_d = m.c_l * (1.0 - 0.7 * m.c_l);  // section 5's rule with the trunk's c_d = 1
     m.direction = {std::sin(tilt) * std::cos(around), std::sin(tilt) * std::sin(around),
                    std::cos(tilt)};
     modules.push_back(m);
@@ -60,7 +60,7 @@ std::vector<Module> derive(const Parameters& p, std::uint64_t seed, double age) 
   // half-angle (plus noise) on either side of it, the plane turned by the divergence.
   for (std::size_t i = 0; i < modules.size(); ++i) {
     const Module parent = modules[i];
-    const double t = parent.t0 + p.bifurcation_period;
+    const double t = parent.t0 + bifurcation_age(p);
     if (t >= age || !bifurcates(p, parent)) continue;
     const Vec3 side = rotate_about(any_perpendicular(parent.direction), parent.direction,
                                    (parent.generation + 1) * p.divergence);

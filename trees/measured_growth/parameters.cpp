@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/input_error.h"
@@ -50,7 +51,7 @@ void read_allometry(TableReader r, Allometry& a) {
 void read_growth(TableReader r, Parameters& p) {
   p.age = r.number("age", {0, 500}, p.age);
   p.scaffold_interval = r.number("scaffold_interval", {0.25, 20}, p.scaffold_interval);
-  p.bifurcation_period = r.number("bifurcation_period", {0.5, 50}, p.bifurcation_period);
+  p.branch_length = r.number("branch_length", {0.01, 100}, p.branch_length);
   p.max_generations = static_cast<int>(r.integer("max_generations", 0, 12, p.max_generations));
   p.min_scale = r.number("min_scale", {0, 1}, p.min_scale);
   p.l_max = r.number("l_max", {0, 100}, p.l_max);
@@ -67,7 +68,23 @@ void read_leaves(TableReader r, Parameters& p) {
   r.finish();
 }
 
+double h_max_of(const Parameters& p) { return p.allometry.f_height(p.allometry.max_age); }
+double l_max_of(const Parameters& p) { return p.l_max > 0.0 ? p.l_max : h_max_of(p); }
+
 }  // namespace
+
+double bifurcation_age(const Parameters& p) {
+  const Allometry& a = p.allometry;
+  const double wanted = h_max_of(p) * p.branch_length / l_max_of(p);
+  if (wanted <= a.f_height(0.0)) return 0.0;
+  if (wanted > a.f_height(a.max_age)) return std::numeric_limits<double>::infinity();
+  double lo = 0.0, hi = a.max_age;  // f_H increases with age
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (a.f_height(mid) < wanted ? lo : hi) = mid;
+  }
+  return hi;
+}
 
 Parameters read_parameters(params::TableReader& root, const std::string& source) {
   Parameters p;
@@ -80,6 +97,12 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
     throw InputError(source + ": leaves.area " + std::to_string(p.leaf_area) +
                      " would make about " + std::to_string(static_cast<long long>(leaves)) +
                      " leaves at full leaf area (limit 2,000,000): raise leaves.area");
+  // A branch born at its maximum length would fork at once, every fork again: refused.
+  if (!(bifurcation_age(p) > 0.0))
+    throw InputError(source + ": growth.branch_length " + params::format_number(p.branch_length) +
+                     " m is no longer than a branch is at its creation (" +
+                     params::format_number(p.allometry.f_height(0.0) / h_max_of(p) * l_max_of(p)) +
+                     " m for c_l = 1): every branch would fork at once; raise it");
   const double scaffolds = p.allometry.max_age / p.scaffold_interval;
   const double per_scaffold = std::pow(2.0, p.max_generations + 1);
   if (scaffolds * per_scaffold > 2e6)

@@ -14,21 +14,27 @@ namespace landsim::trees::measured_growth {
 
 struct Parameters {
   Allometry allometry = modesto_london_plane();
-  double age = 30.0;                // years since planting, when a scenario gives none
-  double scaffold_interval = 1.0;   // years between scaffold limbs leaving the leader
-  double bifurcation_period = 3.0;  // years a branch grows before it bifurcates
-  int max_generations = 6;          // bifurcations along a scaffold
-  double min_scale = 0.15;          // branches with a smaller c_l do not bifurcate
-  double l_max = 0.0;               // metres: a scaffold's c_l = 1 length; 0 = the max height
-  double c_dbh = 1.0;               // trunk diameter at 1.37 m = c_dbh * f_DBH
-  double divergence = 2.2689;       // radians (130 degrees) between successive scaffolds
-  double angle_noise = 0.087;       // radians: random part of the bifurcation angle
-  double leaf_area = 0.025;         // m2 per leaf
-  double leaf_threshold = 0.03;     // metres: leaves on branches thinner than this
+  double age = 30.0;               // years since planting, when a scenario gives none
+  double scaffold_interval = 1.0;  // years between scaffold limbs leaving the leader
+  double branch_length = 4.5;      // metres: a c_l = 1 branch's maximum length, then it forks
+  int max_generations = 6;         // bifurcations along a scaffold
+  double min_scale = 0.15;         // branches with a smaller c_l do not bifurcate
+  double l_max = 0.0;              // metres: a scaffold's c_l = 1 length; 0 = the max height
+  double c_dbh = 1.0;              // trunk diameter at 1.37 m = c_dbh * f_DBH
+  double divergence = 2.2689;      // radians (130 degrees) between successive scaffolds
+  double angle_noise = 0.087;      // radians: random part of the bifurcation angle
+  double leaf_area = 0.025;        // m2 per leaf
+  double leaf_threshold = 0.03;    // metres: leaves on branches thinner than this
   // Each tree's deviation from the equations, in units of the database's scatter (its
   // Sigma): 1 as measured, 0 every tree the equations' mean.
   double scatter = 1.0;
 };
+
+// Section 5: a branch grows l(t) = c_l l_max / H_max f_H(t - t0) and bifurcates when it
+// reaches its maximum length, c_l x `branch_length` (a child's maximum is its parent's times
+// the same factor s as its c_l): when f_H(t - t0) = H_max branch_length / l_max, the same
+// time after creation for every branch. Infinite if f_H never gets there.
+double bifurcation_age(const Parameters& p);
 
 // Reads the core's tables ([allometry.*], [growth], [leaves]); InputError names file, line,
 // key and what was expected.

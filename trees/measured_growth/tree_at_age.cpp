@@ -13,6 +13,7 @@ namespace {
 
 constexpr double kBreastHeight = 1.37;  // metres: where DBH is measured
 constexpr double kMinLength = 0.01;     // metres: shorter branches are left out
+constexpr double kTipRadius = 0.001;    // metres: the point of a branch that ends
 
 }  // namespace
 
@@ -97,12 +98,21 @@ TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, doub
     }
     // A branch that bifurcated stopped growing then: its tip, where the children start,
     // stays put, so no child is ever pushed out of the crown.
-    const double stop = m.t0 + p.bifurcation_period;
+    const double stop = m.t0 + bifurcation_age(p);
     b.length =
         bifurcates(p, m) && age >= stop ? length_at(m, b.base, stop) : length_at(m, b.base, age);
     b.tip = b.base + m.direction * b.length;
     b.base_radius = m.c_d * a.f_dbh(age - m.t0) / 200.0;
     b.present = !removed[i] && b.length >= kMinLength;
+  }
+  // A bifurcated branch's tip is as thick as its thicker child's base (the children come
+  // after their parent); one that ends keeps kTipRadius.
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    Branch& b = tree.branches[i];
+    b.tip_radius = std::min(b.base_radius, kTipRadius);
+    if (modules[i].parent == kLeader || modules[i].t0 >= age) continue;
+    Branch& parent = tree.branches[modules[i].parent];
+    parent.tip_radius = std::max(parent.tip_radius, std::min(parent.base_radius, b.base_radius));
   }
   return tree;
 }
@@ -140,7 +150,7 @@ TreeSkeleton tree_skeleton(const Parameters& p, const TreeAtAge& tree, std::uint
     const Vec3 x = any_perpendicular(axis);
     const int level = b.base_radius > 0.05 ? 1 : b.base_radius > 0.015 ? 2 : 3;
     stem.level = level;
-    stem.sections = {{b.base, axis, x, b.base_radius}, {b.tip, axis, x, 0.7 * b.base_radius}};
+    stem.sections = {{b.base, axis, x, b.base_radius}, {b.tip, axis, x, b.tip_radius}};
     s.stems.push_back(stem);
     if (2.0 * b.base_radius < p.leaf_threshold) thin += b.length;
   }

@@ -19,6 +19,9 @@ struct Branch {
   Vec3 base, tip;
   double length = 0.0;       // after pruning
   double base_radius = 0.0;  // c_d f_DBH(t - t0) / 2
+  // Where its children start, the thicker child's base radius; a branch that ends tapers
+  // to a point (a cone, the paper's "cone for a branch that ends").
+  double tip_radius = 0.0;
 };
 
 struct TreeAtAge {

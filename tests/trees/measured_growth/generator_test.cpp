@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <map>
 
@@ -105,6 +104,54 @@ TEST(MeasuredGrowth, NoBranchShrinksAndTheScaffoldsStayTheSame) {
   }
 }
 
+// Section 5: "the growth of the branch terminates when the maximum length is reached", then
+// it bifurcates. The branch's length l = c_l l_max / H_max f_H(t - t0) reaches c_l x
+// branch_length at the bifurcation age; faster growth (a larger l_max) reaches it sooner and
+// forks more often by a given age, which a fixed period in years would not.
+TEST(MeasuredGrowth, ABranchBifurcatesWhenItReachesItsMaximumLength) {
+  Parameters p = std::get<Parameters>(london_plane().parameters);
+  const Allometry& a = p.allometry;
+  const double h_max = a.f_height(a.max_age);
+  const double tau = bifurcation_age(p);
+  ASSERT_GT(tau, 0.5);
+  EXPECT_NEAR(p.l_max / h_max * a.f_height(tau), p.branch_length, 1e-9);
+  EXPECT_LT(p.l_max / h_max * a.f_height(0.9 * tau), p.branch_length);
+  const std::size_t modules = derive(p, 1, 20.0).size();
+  p.l_max *= 1.5;
+  EXPECT_LT(bifurcation_age(p), 0.8 * tau);
+  EXPECT_GT(derive(p, 1, 20.0).size(), modules);
+  // Never reached before the data's end: the branch never forks.
+  p.branch_length = 1e3;
+  EXPECT_TRUE(std::isinf(bifurcation_age(p)));
+  // Scaffolds take section 5's diameter rule from the trunk's c_d = 1 (was a fixed 0.5).
+  for (const Module& m : derive(p, 1, 5.0))
+    if (m.parent == kLeader) EXPECT_NEAR(m.c_d, m.c_l * (1.0 - 0.7 * m.c_l), 1e-12);
+}
+
+// A branch's tip is its thicker child's base, so the tree has no steps where it forks; one
+// that ends comes to a point.
+TEST(MeasuredGrowth, BranchTipsMeetTheirChildrenAndEndsArePoints) {
+  const Parameters p = std::get<Parameters>(london_plane().parameters);
+  const std::vector<Module> modules = derive(p, 1, 30.0);
+  const TreeAtAge tree = evaluate(p, modules, 30.0);
+  int forks = 0, ends = 0;
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    if (modules[i].parent == kLeader) continue;
+    const Branch& parent = tree.branches[modules[i].parent];
+    EXPECT_GE(parent.tip_radius, std::min(parent.base_radius, tree.branches[i].base_radius));
+    ++forks;
+  }
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    bool has_child = false;
+    for (const Module& m : modules) has_child |= m.parent == i;
+    if (has_child || !tree.branches[i].present) continue;
+    EXPECT_LE(tree.branches[i].tip_radius, 0.001);
+    ++ends;
+  }
+  EXPECT_GT(forks, 100);
+  EXPECT_GT(ends, 100);
+}
+
 TEST(MeasuredGrowth, LowScaffoldsGoAsTheCrownBaseRises) {
   const Parameters p = std::get<Parameters>(london_plane().parameters);
   TreeAtAge tree;
@@ -138,7 +185,7 @@ TEST(MeasuredGrowth, SpeciesFileErrorsNameTheKey) {
   };
   EXPECT_NE(error("[allometry.dbh]\nform = \"exp\"\n").find("[allometry.dbh] form"),
             std::string::npos);
-  EXPECT_NE(error("[growth]\nbifurcation_period = 0\n").find("[growth] bifurcation_period"),
+  EXPECT_NE(error("[growth]\nbranch_length = 0\n").find("[growth] branch_length"),
             std::string::npos);
   EXPECT_NE(error("[growth]\nscaffold_interval = 0.25\nmax_generations = 12\n").find("branches"),
             std::string::npos);
