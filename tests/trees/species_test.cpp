@@ -82,7 +82,12 @@ TEST(Species, QuakingAspenMatchesArbarosCountsLessItsTruncation) {
   EXPECT_LE(t.stats.height, 18.5);
 }
 
-TEST(Species, TomlAppendixSpeciesMatchTheirXmlOrigin) {
+// The TOML files are the paper's appendix, the XML files Arbaro's: they agree in counts where
+// only shapes differ, within 1% (aspen 0ScaleV, oak 2Taper and 2Curve/2CurveV; the tupelo not
+// at all),
+// and the willow, whose appendix has 300 level-3 branches and 15 leaves each against Arbaro's
+// 150 and 10, carries more leaves.
+TEST(Species, TomlAppendixSpeciesDifferFromArbaroOnlyWhereTheAppendixDoes) {
   for (const std::string name :
        {"quaking_aspen", "black_tupelo", "weeping_willow", "ca_black_oak"}) {
     const Species toml = load_species(source_file("data/species/" + name + ".toml"));
@@ -90,8 +95,19 @@ TEST(Species, TomlAppendixSpeciesMatchTheirXmlOrigin) {
     EXPECT_EQ(toml.name, name);
     EXPECT_EQ(core_name(toml), "weber_penn");
     const Tree a = generate(toml, {9}), b = generate(xml, {9});
-    EXPECT_EQ(a.stats.leaves, b.stats.leaves) << name;
-    EXPECT_EQ(a.geometry.triangle_count(), b.geometry.triangle_count()) << name;
+    if (name == "weeping_willow") {
+      EXPECT_GT(a.stats.leaves, 2 * b.stats.leaves) << name;
+    } else {
+      // (The aspen's 0ScaleV 0 draws no radius variation, so its random stream shifts.)
+      EXPECT_NEAR(static_cast<double>(a.stats.leaves), static_cast<double>(b.stats.leaves),
+                  0.01 * static_cast<double>(b.stats.leaves))
+          << name;
+      if (name == "ca_black_oak") continue;  // 2Taper 1 against 0.05 meshes its twigs apart
+      EXPECT_NEAR(static_cast<double>(a.geometry.triangle_count()),
+                  static_cast<double>(b.geometry.triangle_count()),
+                  0.01 * static_cast<double>(b.geometry.triangle_count()))
+          << name;
+    }
     EXPECT_NE(toml.colours.leaf, TreeColours{}.leaf) << name << " has its own colours";
   }
 }
