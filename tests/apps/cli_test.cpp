@@ -951,6 +951,26 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
   EXPECT_EQ(testing::read_file(out / "v.exr"), testing::read_file(whole / "v.exr"));
 }
 
+// A self-organising species with a bend and its edits named by points renders as a stand of
+// four variants (issue 41: so_bent's bend named internode numbers and grew for seed 1 only).
+TEST(Cli, ASpeciesWithEditsRendersAsSeveralVariants) {
+  TempDir dir;
+  const std::string maps = "[featuremaps]\nclasses = \"" +
+                           testing::source_file("data/featuremaps/volcano_landcover.asc").string() +
+                           "\"\nclass_map = \"" +
+                           testing::source_file("scenes/examples/volcano_classes.toml").string() +
+                           "\"\n";
+  std::string text = scenario("", "", "spp = 1") + "\n[[species]]\nbit = 0\nfile = \"" +
+                     testing::source_file("data/species/so_bent.toml").string() +
+                     "\"\nvariants = 4\ndensity_per_ha = 5\n";
+  text.insert(text.find("[sun]"), maps);
+  const auto file = dir.write("bent.toml", text);
+  const Result r = run("render " + file.string() + " --out " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("of 4 variants"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "v.exr"));
+}
+
 // --resume renders only what is missing: finished images of the same scenario, view, time,
 // samples, seed and size are kept as they are; another sample count renders them again.
 TEST(Cli, ResumeSkipsFinishedImages) {
