@@ -1,0 +1,407 @@
+#include "scenes/image_set.h"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+
+#include "core/atomic_file.h"
+#include "core/input_error.h"
+#include "core/process_memory.h"
+#include "renderer/camera.h"
+#include "renderer/exposure.h"
+#include "renderer/image_io.h"
+#include "renderer/image_output.h"
+#include "renderer/object_truth.h"
+#include "scenes/memory_estimate.h"
+#include "scenes/scene_builder.h"
+
+namespace landsim::scenes {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string vec_text(const Vec3& v) { return fmt::format("{} {} {}", v.x, v.y, v.z); }
+
+nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+std::string sky_text(const renderer::Sky& sky) {
+  switch (sky.model) {
+    case renderer::SkyKind::hosek_wilkie:
+      return fmt::format("hosek-wilkie turbidity {}", sky.turbidity);
+    case renderer::SkyKind::preetham:
+      return fmt::format("preetham turbidity {}", sky.turbidity);
+    case renderer::SkyKind::gradient:
+      break;
+  }
+  return "gradient";
+}
+
+// The EXR header's description of the image: what made it.
+renderer::ImageMetadata metadata(const Scenario& s, const ViewSettings& v,
+                                 const renderer::Scene& scene) {
+  const Vec3& sun = scene.sun.direction;
+  renderer::ImageMetadata out = {
+      {"version", LANDSIM_VERSION},
+      {"scenario", s.source},
+      {"scenario_hash", s.text_hash},
+      {"view", v.name},
+      {"camera_position", vec_text(v.position)},
+      {"camera_target", vec_text(v.target)},
+      {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
+      {"scene_origin", vec_text(scene.origin)},
+      {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
+      {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
+      {"sun_direction", vec_text(sun)},
+      {"sky", sky_text(s.sky)},
+      {"haze", s.haze.enabled ? fmt::format("visibility {} m, scale height {} m", s.haze.visibility,
+                                            s.haze.scale_height)
+                              : std::string("none")},
+      {"spp", std::to_string(s.render.spp)},
+      {"seed", std::to_string(s.render.seed)}};
+  // What each band layer measures: its box or response file.
+  for (const BandSettings& b : s.bands) out.emplace_back("band." + b.name, b.description);
+  return out;
+}
+
+// The sensor bands every image holds as layers band.<name> (docs/SPECTRAL.md).
+nlohmann::json bands_json(const Scenario& s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const BandSettings& b : s.bands)
+    out.push_back({{"name", b.name},
+                   {"layer", "band." + b.name},
+                   {"definition", b.description},
+                   {"unit", renderer::kBandUnit}});
+  return out;
+}
+
+// `complete`: false when a later image failed; the manifest then lists the images finished
+// before it, so that a set is never left without one (resume continues it).
+void write_manifest(const std::filesystem::path& path, const Scenario& s,
+                    const nlohmann::json& images, bool complete = true) {
+  const nlohmann::json manifest = {
+      {"complete", complete},
+      {"scenario", s.source},
+      {"version", LANDSIM_VERSION},
+      {"spp", s.render.spp},
+      {"seed", s.render.seed},
+      {"sun", {{"elevation_deg", s.sun.elevation_deg}, {"azimuth_deg", s.sun.azimuth_deg}}},
+      {"wind", {{"speed", s.wind.speed}, {"gust", s.wind.gust}}},
+      {"bands", bands_json(s)},
+      {"images", images}};
+  write_file_atomically(path, manifest.dump(2) + "\n");
+}
+
+nlohmann::json manifest_entry(const ViewSettings& vs, const std::string& stem, std::size_t f,
+                              double time) {
+  return {{"path", stem + ".exr"},
+          {"preview", stem + ".png"},
+          {"view", vs.name},
+          {"frame_index", f},
+          {"time_s", time},
+          {"camera",
+           {{"position", vec_json(vs.position)},
+            {"target", vec_json(vs.target)},
+            {"fov_y_deg", vs.fov_y_deg},
+            {"width", vs.width},
+            {"height", vs.height}}}};
+}
+
+nlohmann::json box_json(const std::optional<renderer::PixelBox>& b) {
+  if (!b) return nullptr;
+  return {{"x0", (*b)[0]}, {"y0", (*b)[1]}, {"x1", (*b)[2]}, {"y1", (*b)[3]}};
+}
+
+// The manifest's truth about each object in an image (docs/OBJECTS.md "Truth").
+nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const renderer::ObjectTruth& t = truth[i];
+    out.push_back({{"name", t.name},
+                   {"target", i + 1},
+                   {"visible_pixels", t.visible_pixels},
+                   {"footprint_pixels", t.footprint_pixels},
+                   {"visible_fraction", t.visible_fraction},
+                   {"bbox", box_json(t.bbox)},
+                   {"footprint_bbox", box_json(t.footprint_bbox)},
+                   {"range_m", t.range},
+                   {"luminance", t.luminance},
+                   {"background_luminance", t.background_luminance},
+                   {"background_pixels", t.background_pixels},
+                   {"ring_width", t.ring_width},
+                   {"contrast", t.contrast ? nlohmann::json(*t.contrast) : nlohmann::json()}});
+  }
+  return out;
+}
+
+// A finished image's object truth, as its EXR keeps it (resume).
+nlohmann::json saved_objects(const std::filesystem::path& exr) {
+  for (const auto& [key, value] : renderer::read_exr_metadata(exr))
+    if (key == "objects") return nlohmann::json::parse(value, nullptr, false);
+  return nullptr;
+}
+
+// One image of the set: a frame of a view.
+struct Image {
+  std::size_t frame = 0;
+  std::size_t view = 0;
+  std::string stem;  // file name without extension
+};
+
+// The images this process renders, frame-major: all of the set, or task_index's one.
+std::vector<Image> images_to_render(const Scenario& s, const ImageSetOptions& o) {
+  const std::size_t frames = s.render.frames.size(), views = s.views.size();
+  if (o.task_index && *o.task_index >= frames * views)
+    throw InputError(fmt::format("--task-index {}: the image set has {} images (0 to {})",
+                                 *o.task_index, frames * views, frames * views - 1));
+  std::vector<Image> images;
+  for (std::size_t f = 0; f < frames; ++f)
+    for (std::size_t v = 0; v < views; ++v)
+      if (!o.task_index || f * views + v == *o.task_index)
+        images.push_back({f, v, image_stem(s.views[v].name, f, frames)});
+  return images;
+}
+
+// What every image of one set shares.
+struct SetRun {
+  const Scenario& scenario;
+  const ImageSetOptions& options;
+  Clock::time_point start;
+  bool shared() const { return options.shared != nullptr; }
+  bool writer() const { return options.shared == nullptr || options.shared->writer; }
+};
+
+struct WrittenImage {
+  ImageReport report;
+  nlohmann::json manifest;
+};
+
+// What makes an image what it is (scenario text, view, time, samples, seed, size): a
+// checkpoint or a finished EXR with the same key holds this very image.
+std::string render_key(const Scenario& s, const Image& image) {
+  const ViewSettings& v = s.views[image.view];
+  return fmt::format("{} {} {} {} {} {}x{}", s.text_hash, v.name, s.render.frames[image.frame],
+                     s.render.spp, s.render.seed, v.width, v.height);
+}
+
+// Resume: the image's EXR is already in out_dir, finished from this very scenario.
+bool already_finished(const SetRun& run, const Image& image) {
+  const std::filesystem::path& dir = run.options.out_dir;
+  const std::filesystem::path exr = dir / (image.stem + ".exr");
+  if (!std::filesystem::exists(exr) || !std::filesystem::exists(dir / (image.stem + ".png")))
+    return false;
+  renderer::ImageMetadata meta;
+  try {
+    meta = renderer::read_exr_metadata(exr);
+  } catch (const std::exception&) {
+    return false;  // unreadable: render it again
+  }
+  for (const auto& [key, value] : meta)
+    if (key == "render_key") return value == render_key(run.scenario, image);
+  return false;
+}
+
+renderer::RenderOptions render_options(const SetRun& run, const renderer::View& view,
+                                       const Image& image, bool first) {
+  const Scenario& s = run.scenario;
+  const double time = s.render.frames[image.frame];
+  renderer::RenderOptions options;
+  options.threads = s.render.threads;
+  // The output directory appears once the scene is built and tracing starts: a render
+  // refused or failed before that leaves nothing behind.
+  options.started = [&run, first] {
+    if (run.writer()) std::filesystem::create_directories(run.options.out_dir);
+    if (first) spdlog::info("first pixel after {:.2f} s", seconds_since(run.start));
+  };
+  options.progress = [name = view.name, time, view_start = Clock::now()](double p) {
+    const double elapsed = seconds_since(view_start);
+    spdlog::info("{} t={}s: {:3.0f}%, {:.0f} s left", name, time, 100.0 * p,
+                 elapsed / p * (1.0 - p));
+  };
+  if (s.render.checkpoint_seconds > 0.0 && run.writer()) {
+    options.checkpoint = run.options.out_dir / (image.stem + ".checkpoint.exr");
+    options.checkpoint_seconds = s.render.checkpoint_seconds;
+  }
+  options.resume = run.options.resume;
+  if (run.options.stop) options.stop = [stop = run.options.stop](int) { return stop(); };
+  options.render_key = render_key(s, image);
+  return options;
+}
+
+// Renders one image (with the other processes when shared) and, on the writing process,
+// writes its EXR and preview; empty on the others.
+std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scene& scene,
+                                         const renderer::Renderer& renderer, const Image& image,
+                                         bool first) {
+  const renderer::View& view = scene.views[image.view];
+  const renderer::RenderOptions options = render_options(run, view, image, first);
+  ImageReport report;
+  const renderer::Film film = run.shared()
+                                  ? run.options.shared->render(renderer, view, options, report)
+                                  : renderer.render(view, options, &report.stats);
+  if (!run.writer()) return std::nullopt;
+  const Scenario& s = run.scenario;
+  const double time = s.render.frames[image.frame];
+  const auto exr = run.options.out_dir / (image.stem + ".exr");
+  renderer::ImageMetadata meta = metadata(s, s.views[image.view], scene);
+  meta.emplace_back("time_s", fmt::format("{}", time));
+  meta.emplace_back("render_key", options.render_key);
+  const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
+  // The preview's exposure (fixed, or automatic from this image) goes in the EXR too, so a
+  // viewer can reproduce the PNG from the EXR.
+  const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
+  meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
+  // Truth about the scene objects, in the manifest and (for resume) in the EXR.
+  nlohmann::json objects;
+  if (!scene.objects.empty()) {
+    objects = objects_json(renderer::object_truth(scene, view, film, options.centre_first_sample));
+    meta.emplace_back("objects", objects.dump());
+  }
+  renderer::write_exr(film, exr, meta, &camera);
+  renderer::write_preview_png(film, run.options.out_dir / (image.stem + ".png"), ev100);
+  report.exr = exr;
+  report.view = view.name;
+  report.frame_index = image.frame;
+  report.time_s = time;
+  report.width = view.width;
+  report.height = view.height;
+  report.spp = scene.settings.spp;
+  report.exposure_ev100 = ev100;
+  report.shared = run.shared();
+  WrittenImage out{report, manifest_entry(s.views[image.view], image.stem, image.frame, time)};
+  if (!objects.is_null()) out.manifest["objects"] = objects;
+  return out;
+}
+
+// The memory budget, before anything expensive is built: the estimate against the
+// options' max_memory, [render] max_memory, or a share of this machine's memory
+// (InputError when over).
+MemoryEstimate check_memory(const Scenario& scenario, const ImageSetOptions& o,
+                            VariantCache& variants) {
+  const auto start = Clock::now();
+  MemoryEstimate estimate = estimate_memory(scenario, &variants);
+  std::size_t budget = 0;
+  std::string source;
+  if (o.max_memory) {
+    budget = *o.max_memory;
+    source = o.max_memory_source;
+  } else if (scenario.render.max_memory) {
+    budget = *scenario.render.max_memory;
+    source = scenario.source + ": [render] max_memory";
+  } else {
+    const MemoryBudget fallback = default_memory_budget(o.ranks_on_node);
+    budget = fallback.bytes;
+    source = fallback.source;
+  }
+  check_memory_budget(estimate, budget, source);
+  spdlog::info("memory: an estimated {:.0f} MB of a {:.0f} MB budget ({:.2f} s)",
+               static_cast<double>(estimate.total_bytes()) / 1e6, static_cast<double>(budget) / 1e6,
+               seconds_since(start));
+  return estimate;
+}
+
+}  // namespace
+
+std::string image_stem(const std::string& view, std::size_t frame, std::size_t frames) {
+  return frames == 1 ? view : fmt::format("{}_f{:04d}", view, frame);
+}
+
+ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions& options) {
+  const std::vector<Image> images = images_to_render(scenario, options);
+  const SetRun run{scenario, options, Clock::now()};
+  const std::filesystem::path& out_dir = options.out_dir;
+  // The image module (PNG previews) is loaded now rather than after the first image: a
+  // missing module fails before hours of rendering, and the memory estimate counts it.
+  renderer::image_io();
+  VariantCache variants;  // generated by the estimate, reused by the first scene
+  const MemoryEstimate estimate = check_memory(scenario, options, variants);
+  ImageSetResult result;
+  result.memory_estimate_bytes = estimate.total_bytes();
+  // Without wind every frame shows the same geometry: the scene is built once.
+  const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
+  std::optional<renderer::Scene> scene;
+  std::optional<renderer::Renderer> renderer;
+  std::size_t scene_frame = 0;
+  nlohmann::json manifest = nlohmann::json::array();
+  bool first = true;
+  // A later image that fails (its scene, its file) leaves the images already written with a
+  // manifest that says the set is unfinished.
+  const auto unfinished = [&] {
+    if (run.writer() && !options.task_index && !manifest.empty())
+      write_manifest(out_dir / "manifest.json", scenario, manifest, false);
+  };
+  for (const Image& image : images) try {
+      // Shared renders would all have to agree: finished images are skipped in one process.
+      if (options.resume && !run.shared() && already_finished(run, image)) {
+        manifest.push_back(manifest_entry(scenario.views[image.view], image.stem, image.frame,
+                                          scenario.render.frames[image.frame]));
+        if (!scenario.objects.empty())
+          manifest.back()["objects"] = saved_objects(out_dir / (image.stem + ".exr"));
+        ++result.skipped;
+        continue;
+      }
+      if (!scene || (sway && image.frame != scene_frame)) {
+        if (options.stop && options.stop()) {  // asked to stop before a long build
+          result.stopped_at = image.stem;
+          return result;
+        }
+        renderer.reset();
+        scene.reset();  // one scene at a time: the memory estimate counts one
+        const auto build_start = Clock::now();
+        scene = build_scene(scenario, scenario.render.frames[image.frame], &variants);
+        result.scene_seconds += seconds_since(build_start);
+        variants.clear();
+        scene_frame = image.frame;
+        if (first)
+          spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(run.start),
+                       scene->instances.size(), scene->prototypes.size());
+        renderer.emplace(*scene);
+      }
+      std::optional<WrittenImage> done;
+      try {
+        done = render_image(run, *scene, *renderer, image, first);
+      } catch (const renderer::RenderInterrupted&) {
+        result.stopped_at = image.stem;
+        return result;
+      }
+      first = false;
+      if (!done) continue;
+      result.images.push_back(done->report);
+      manifest.push_back(done->manifest);
+      if (options.written) options.written(done->report);
+    } catch (...) {
+      unfinished();
+      throw;
+    }
+  if (result.skipped > 0) spdlog::info("skipped {} finished images (--resume)", result.skipped);
+  // The estimate's honesty, visible on every render (docs/PERFORMANCE.md "Memory budget").
+  spdlog::info("peak memory {:.0f} MB (estimated {:.0f} MB)",
+               static_cast<double>(peak_resident_bytes()) / 1e6,
+               static_cast<double>(estimate.total_bytes()) / 1e6);
+  if (run.writer() && !options.task_index)
+    write_manifest(out_dir / "manifest.json", scenario, manifest);
+  return result;
+}
+
+std::vector<std::string> check_image_set(const Scenario& scenario,
+                                         const std::filesystem::path& out_dir) {
+  const std::vector<double>& frames = scenario.render.frames;
+  nlohmann::json entries = nlohmann::json::array();
+  std::vector<std::string> missing;
+  for (std::size_t f = 0; f < frames.size(); ++f)
+    for (const ViewSettings& vs : scenario.views) {
+      const std::string stem = image_stem(vs.name, f, frames.size());
+      for (const char* ext : {".exr", ".png"})
+        if (!std::filesystem::exists(out_dir / (stem + ext))) missing.push_back(stem + ext);
+      entries.push_back(manifest_entry(vs, stem, f, frames[f]));
+    }
+  if (missing.empty()) write_manifest(out_dir / "manifest.json", scenario, entries);
+  return missing;
+}
+
+}  // namespace landsim::scenes
