@@ -8,6 +8,7 @@ namespace landsim::scenes {
 // Source name used in messages and metadata for the embedded scenario.
 inline constexpr const char* kDefaultScenarioName = "<default scenario>";
 
-Scenario default_scenario();
+// `sets`: "key=value" overrides, as load_scenario takes them.
+Scenario default_scenario(const std::vector<std::string>& sets = {});
 
 }  // namespace landsim::scenes

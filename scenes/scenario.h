@@ -44,11 +44,14 @@ struct ViewSettings {
   int height = 360;
 };
 
+// Every scenario key's default is declared once: here, or, where the renderer has the
+// setting too, taken from the renderer's own default; the loader reads each key with the
+// field's value as its default.
 struct RenderSection {
-  int spp = 16;
-  std::uint64_t seed = 1;
+  int spp = renderer::RenderSettings{}.spp;
+  std::uint64_t seed = renderer::RenderSettings{}.seed;
   int threads = 0;  // 0: every core
-  int max_bounces = 4;
+  int max_bounces = renderer::RenderSettings{}.max_bounces;
   std::optional<double> exposure_ev100;          // empty: "auto"
   std::vector<double> frames{0.0};               // seconds; wind sway is evaluated at each
   double checkpoint_seconds = 60.0;              // 0: no checkpoints
@@ -83,11 +86,11 @@ struct GrassSettings {
   std::string location;                     // "file:line:column" of its table, for messages
   int type = 1;                             // 1-3, the vegetation map's bits 14-15
   std::optional<featuremaps::Cover> cover;  // where it grows besides the feature map
-  double density_per_m2 = 150.0;
-  double blade_length = 0.3;
-  double blade_width = 0.004;
-  double curvature = 0.3;
-  Vec3f colour{0.10f, 0.22f, 0.05f};
+  double density_per_m2 = renderer::GrassType{}.density_per_m2;
+  double blade_length = renderer::GrassType{}.blade_length;
+  double blade_width = renderer::GrassType{}.blade_width;
+  double curvature = renderer::GrassType{}.curvature;
+  Vec3f colour = renderer::GrassType{}.reflectance;
 };
 
 // The shading variation a scenario has unless [ground] says otherwise.
@@ -205,11 +208,14 @@ inline constexpr int kMaxSpp = 1 << 20;
 // Wind and gust speeds (Weber & Penn section 4.7), in [wind] and on tree's command line alike.
 inline constexpr double kMaxWindSpeed = 100.0;
 
-// Throws InputError naming file:line:column, the key and what was expected.
-Scenario load_scenario(const std::filesystem::path& file);
+// Throws InputError naming file:line:column, the key and what was expected. `sets` are
+// "key=value" overrides applied before reading (`--set`, scenes/detail/scenario_overrides):
+// the same validation, messages naming the override; they count in the scenario's hash.
+Scenario load_scenario(const std::filesystem::path& file,
+                       const std::vector<std::string>& sets = {});
 // `source` names the text in messages; relative paths resolve against `base_dir`.
 Scenario parse_scenario(std::string_view text, const std::string& source,
-                        const std::string& base_dir);
+                        const std::string& base_dir, const std::vector<std::string>& sets = {});
 
 // Checks an image size (also used for command-line overrides); throws InputError.
 void check_image_size(int width, int height, const std::string& where);

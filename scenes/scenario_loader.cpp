@@ -11,6 +11,8 @@
 #include "featuremaps/placement.h"
 #include "params/table_reader.h"
 #include "scenes/scenario.h"
+
+#include "scenes/detail/scenario_overrides.h"
 #include "scenes/sensor_bands.h"
 #include "scenes/solar_position.h"
 #include "terrain/raster_files.h"
@@ -82,9 +84,9 @@ TerrainSettings read_terrain(const toml::table& t, const std::string& file,
   if (const auto o = r.optional_numbers("origin", 2, Range{-1e12, 1e12})) {
     s.dem.origin = std::array<double, 2>{(*o)[0], (*o)[1]};
   }
-  s.dem.height_scale = r.number("height_scale", Range{-1e6, 1e6}, 1.0);
+  s.dem.height_scale = r.number("height_scale", Range{-1e6, 1e6}, s.dem.height_scale);
   if (s.dem.height_scale == 0.0) r.fail("height_scale", "expected a non-zero number, got 0");
-  s.dem.height_offset = r.number("height_offset", Range{-1e6, 1e6}, 0.0);
+  s.dem.height_offset = r.number("height_offset", Range{-1e6, 1e6}, s.dem.height_offset);
   const std::string nodata = r.choice("nodata", {"hole", "fill"}, "hole");
   s.dem.nodata = nodata == "fill" ? terrain::NodataPolicy::fill : terrain::NodataPolicy::hole;
   s.albedo = to_vec3f(r.vec3("albedo", kUnit, Vec3(s.albedo)));
@@ -181,9 +183,9 @@ ViewSettings read_view(const toml::table& t, const std::string& path, const std:
   if (std::abs(d.z) / length(d) > 0.9999) {
     r.fail("target", "the view looks straight up or down; the camera needs a horizontal component");
   }
-  v.fov_y_deg = r.number("fov", Range{0.0, 180.0, true, true}, 40.0);
-  v.width = static_cast<int>(r.integer("width", 1, kMaxImageSide, 640));
-  v.height = static_cast<int>(r.integer("height", 1, kMaxImageSide, 360));
+  v.fov_y_deg = r.number("fov", Range{0.0, 180.0, true, true}, v.fov_y_deg);
+  v.width = static_cast<int>(r.integer("width", 1, kMaxImageSide, v.width));
+  v.height = static_cast<int>(r.integer("height", 1, kMaxImageSide, v.height));
   try {
     check_image_size(v.width, v.height, "");
   } catch (const InputError& e) {
@@ -240,16 +242,16 @@ std::optional<double> read_exposure(TableReader& r) {
 RenderSection read_render(const toml::table& t, const std::string& file) {
   TableReader r(t, "render", file);
   RenderSection s;
-  s.spp = static_cast<int>(r.integer("spp", 1, kMaxSpp, 16));
-  s.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT64_MAX, 1));
-  s.threads = static_cast<int>(r.integer("threads", 0, 1024, 0));
-  s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, 4));
+  s.spp = static_cast<int>(r.integer("spp", 1, kMaxSpp, s.spp));
+  s.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT64_MAX, s.seed));
+  s.threads = static_cast<int>(r.integer("threads", 0, 1024, s.threads));
+  s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, s.max_bounces));
   s.exposure_ev100 = read_exposure(r);
-  s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, 60.0);
+  s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, s.checkpoint_seconds);
   s.season = *trees::season_from_name(
       r.choice("season", {"spring", "summer", "autumn", "winter"}, "summer"));
-  s.degradation = r.boolean("degradation", true);
-  s.quality = r.number("quality", Range{0.0, 1.0, true, false}, 1.0);
+  s.degradation = r.boolean("degradation", s.degradation);
+  s.quality = r.number("quality", Range{0.0, 1.0, true, false}, s.quality);
   s.max_memory = r.byte_size("max_memory");
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");
@@ -269,11 +271,11 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
 WindSettings read_wind(const toml::table& t, const std::string& file) {
   TableReader r(t, "wind", file);
   WindSettings w;
-  w.speed = r.number("speed", Range{0.0, kMaxWindSpeed}, 0.0);
-  w.gust = r.number("gust", Range{0.0, kMaxWindSpeed}, 0.0);
-  w.direction_deg = r.number("direction", Range{0.0, 360.0}, 270.0);
-  w.gust_scale = r.number("gust_scale", Range{1.0, 100000.0}, 30.0);
-  w.phase_groups = static_cast<int>(r.integer("phase_groups", 1, 16, 4));
+  w.speed = r.number("speed", Range{0.0, kMaxWindSpeed}, w.speed);
+  w.gust = r.number("gust", Range{0.0, kMaxWindSpeed}, w.gust);
+  w.direction_deg = r.number("direction", Range{0.0, 360.0}, w.direction_deg);
+  w.gust_scale = r.number("gust_scale", Range{1.0, 100000.0}, w.gust_scale);
+  w.phase_groups = static_cast<int>(r.integer("phase_groups", 1, 16, w.phase_groups));
   r.finish();
   return w;
 }
@@ -432,11 +434,11 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
       TableReader optics = r.table("leaf_optics");
       s.species.colours.leaf_optics = trees::read_leaf_contents(optics);
     }
-    s.variants = static_cast<int>(r.integer("variants", 1, 256, 4));
-    s.density_per_ha = r.number("density_per_ha", Range{0.0, 100000.0, true}, 200.0);
-    s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, 0.1);
-    s.colour_variation = r.number("colour_variation", Range{0.0, 0.9}, 0.0);
-    s.min_spacing = r.number("min_spacing", Range{0.0, 1000.0}, 0.0);
+    s.variants = static_cast<int>(r.integer("variants", 1, 256, s.variants));
+    s.density_per_ha = r.number("density_per_ha", Range{0.0, 100000.0, true}, s.density_per_ha);
+    s.scale_variation = r.number("scale_variation", Range{0.0, 0.9}, s.scale_variation);
+    s.colour_variation = r.number("colour_variation", Range{0.0, 0.9}, s.colour_variation);
+    s.min_spacing = r.number("min_spacing", Range{0.0, 1000.0}, s.min_spacing);
     // Trees stand on a jittered grid of one tree per spacing^2 (featuremaps/placement.h).
     if (const double grid = featuremaps::grid_spacing(s.density_per_ha); s.min_spacing > grid)
       r.fail("min_spacing", fmt::format("expected at most the grid spacing {:.3g} m of "
@@ -449,7 +451,7 @@ std::vector<SpeciesSettings> read_species(const toml::table& root, const std::st
     }
     r.allow("bark_texture");
     read_age(r, *a->get(i)->as_table(), s);
-    s.evergreen = r.boolean("evergreen", false);
+    s.evergreen = r.boolean("evergreen", s.evergreen);
     if (r.has("cover")) s.cover = read_cover(r);
     r.finish();
     out.push_back(std::move(s));
@@ -470,10 +472,10 @@ std::vector<GrassSettings> read_grass(const toml::table& root, const std::string
     g.type = static_cast<int>(r.integer("type", 1, 3));
     if (!types.insert(g.type).second)
       r.fail("type", "grass type " + std::to_string(g.type) + " is defined twice");
-    g.density_per_m2 = r.number("density_per_m2", Range{0.0, 2000.0, true}, 150.0);
-    g.blade_length = r.number("blade_length", Range{0.01, 3.0}, 0.3);
-    g.blade_width = r.number("blade_width", Range{0.0005, 0.05}, 0.004);
-    g.curvature = r.number("curvature", Range{0.0, 1.0}, 0.3);
+    g.density_per_m2 = r.number("density_per_m2", Range{0.0, 2000.0, true}, g.density_per_m2);
+    g.blade_length = r.number("blade_length", Range{0.01, 3.0}, g.blade_length);
+    g.blade_width = r.number("blade_width", Range{0.0005, 0.05}, g.blade_width);
+    g.curvature = r.number("curvature", Range{0.0, 1.0}, g.curvature);
     g.colour = to_vec3f(r.vec3("colour", kUnit, Vec3{0.10, 0.22, 0.05}));
     if (r.has("cover")) g.cover = read_cover(r);
     r.finish();
@@ -533,7 +535,7 @@ renderer::GroundRule read_rule(TableReader& r) {
   if (const auto a = r.optional_number("above", any)) rule.above = *a;
   if (const auto b = r.optional_number("below", any)) rule.below = *b;
   if (!r.has("above") && !r.has("below")) r.fail("measure", "give above, below or both");
-  rule.softness = r.number("softness", Range{0.0, 1e6}, 0.0);
+  rule.softness = r.number("softness", Range{0.0, 1e6}, rule.softness);
   const toml::node* on = r.value("on", "an array of ground material names",
                                  "[\"terrain\", \"soil\", \"rock\", \"grass\", \"surroundings\"]");
   if (on == nullptr) {
@@ -580,15 +582,15 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file,
   g.rock = to_vec3f(r.vec3("rock", kUnit, Vec3(g.rock)));
   g.water = to_vec3f(r.vec3("water", kUnit, Vec3(g.water)));
   g.road = to_vec3f(r.vec3("road", kUnit, Vec3(g.road)));
-  g.soil_moisture = r.number("soil_moisture", kUnit, 0.0);
+  g.soil_moisture = r.number("soil_moisture", kUnit, g.soil_moisture);
   read_per_material(r, "variation", "a fraction 0-1, or a table of material = fraction",
                     "0.15 (road 0.05, rock 0.2, water 0)", kUnit, g.shading.variation);
   if (const auto sc = r.optional_numbers("variation_scales", 2, kPositive))
     g.shading.scales = {(*sc)[0], (*sc)[1]};
   for (TableReader& rule : r.tables("rules")) g.shading.rules.push_back(read_rule(rule));
   read_textures(r, base_dir, g);
-  g.shading.texture_size = r.number("texture_size", kPositive, 2.0);
-  g.detail = r.boolean("detail", false);
+  g.shading.texture_size = r.number("texture_size", kPositive, g.shading.texture_size);
+  g.detail = r.boolean("detail", g.detail);
   read_per_material(r, "detail_amplitude", "metres 0-50, or a table of material = metres",
                     "0.3 (rock 1.0, grass 0.2, road, water and surroundings 0)", Range{0.0, 50.0},
                     g.detail_amplitude);
@@ -661,11 +663,11 @@ std::vector<ObjectSettings> read_objects(const toml::table& root, const std::str
     if (!std::filesystem::is_regular_file(o.file))
       r.fail("file", "file not found: " + o.file + " (expected a mesh: OBJ, PLY, glTF or GLB)");
     read_object_position(r, o);
-    o.heading_deg = r.number("heading", Range{-360.0, 360.0}, 0.0);
-    o.scale = r.number("scale", Range{0.0, 1000.0, true}, 1.0);
-    o.unit_scale = r.number("unit_scale", Range{0.0, 1e6, true}, 1.0);
+    o.heading_deg = r.number("heading", Range{-360.0, 360.0}, o.heading_deg);
+    o.scale = r.number("scale", Range{0.0, 1000.0, true}, o.scale);
+    o.unit_scale = r.number("unit_scale", Range{0.0, 1e6, true}, o.unit_scale);
     o.z_up = r.choice("up_axis", {"y", "z"}, "y") == "z";
-    o.align_to_ground = r.boolean("align_to_ground", false);
+    o.align_to_ground = r.boolean("align_to_ground", o.align_to_ground);
     o.clear_radius = r.optional_number("clear_radius", Range{0.0, 10000.0});
     o.materials = read_object_materials(r);
     r.finish();
@@ -756,7 +758,7 @@ void check_image_size(int width, int height, const std::string& where) {
 }
 
 Scenario parse_scenario(std::string_view text, const std::string& source,
-                        const std::string& base_dir) {
+                        const std::string& base_dir, const std::vector<std::string>& sets) {
   toml::table root;
   try {
     root = toml::parse(text, source);
@@ -768,11 +770,16 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
                      ": this is a species file (it names a tree core), not a scenario; a "
                      "scenario has [terrain], [sun] and [[views]] (landsim tree takes species "
                      "files)");
+  detail::apply_overrides(root, sets);
   refuse_unknown_tables(root, source);
   Scenario s;
   s.source = source;
-  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
-  for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a over the text and the overrides
+  const auto add = [&hash](std::string_view part) {
+    for (const char c : part) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+  };
+  add(text);
+  for (const std::string& set : sets) add("\n--set " + set);
   s.text_hash = fmt::format("{:016x}", hash);
   s.terrain = read_terrain(sub_table(root, "terrain", source, true), source, base_dir);
   s.sun = read_sun(sub_table(root, "sun", source, true), source);
@@ -817,14 +824,14 @@ bool has_cover(const Scenario& s) {
          std::any_of(s.grass.begin(), s.grass.end(), [](const auto& g) { return g.cover; });
 }
 
-Scenario load_scenario(const std::filesystem::path& file) {
+Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& sets) {
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file)) {
     throw InputError(file.string() + ": cannot open scenario file");
   }
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scenario(text.str(), file.string(), file.parent_path().string());
+  return parse_scenario(text.str(), file.string(), file.parent_path().string(), sets);
 }
 
 }  // namespace landsim::scenes

@@ -46,11 +46,12 @@ CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
                   "Render this POV-Ray scene with POV-Ray and landsim at its camera, and compare")
       ->check(CLI::ExistingFile)
       ->excludes("--reference");
+  add_set_option(*cmd, args.sets);
   return cmd;
 }
 
 int run_crosscheck(const CrosscheckArgs& args) {
-  scenes::Scenario s = scenario_or_default(args.scenario);
+  scenes::Scenario s = scenario_or_default(args.scenario, args.sets);
   override_view_sizes(s, args.width, args.height);
   const renderer::Scene scene = scenes::build_scene(s);
   exporters::CrosscheckOptions o;

@@ -4,6 +4,7 @@
 //                     [--reference IMAGE [--mask MASK] [--align N] | --pov FILE.pov]`
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -12,6 +13,7 @@ class App;
 namespace landsim::app {
 
 struct CrosscheckArgs {
+  std::vector<std::string> sets;  // --set key=value overrides
   std::string scenario;
   std::string out;
   std::string view;

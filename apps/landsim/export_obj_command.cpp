@@ -32,11 +32,12 @@ CLI::App* add_export_obj_command(CLI::App& app, ExportObjArgs& args) {
   cmd->add_flag("--print-pathtracer", args.print_pathtracer,
                 "Print only the command line of Embree's pathtracer tutorial for this OBJ and "
                 "camera (with --flatten --frame scene; used by bench/embree_pathtracer.sh)");
+  add_set_option(*cmd, args.sets);
   return cmd;
 }
 
 int run_export_obj(const ExportObjArgs& args) {
-  const scenes::Scenario scenario = scenario_or_default(args.scenario);
+  const scenes::Scenario scenario = scenario_or_default(args.scenario, args.sets);
   const renderer::Scene scene = scenes::build_scene(scenario);
   const renderer::View& v = scene.views[view_index(scenario, args.view)];
   exporters::SceneObjOptions o;

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -11,6 +12,7 @@ class App;
 namespace landsim::app {
 
 struct ExportObjArgs {
+  std::vector<std::string> sets;  // --set key=value overrides
   std::string scenario;
   std::string out;
   std::string view;                      // empty: the first

@@ -24,11 +24,12 @@ CLI::App* add_export_pov_command(CLI::App& app, ExportPovArgs& args) {
       "export-pov", "Write the scene as POV-Ray 3.7 files (scene.pov, meshes.inc)");
   add_scene_view_options(*cmd, args.scenario, args.out, args.view);
   cmd->add_option("--frame", args.frame, "Frame index (wind sway)")->check(CLI::NonNegativeNumber);
+  add_set_option(*cmd, args.sets);
   return cmd;
 }
 
 int run_export_pov(const ExportPovArgs& args) {
-  const scenes::Scenario s = scenario_or_default(args.scenario);
+  const scenes::Scenario s = scenario_or_default(args.scenario, args.sets);
   if (args.frame >= static_cast<int>(s.render.frames.size())) {
     throw InputError(fmt::format("--frame: {} has {} frames", s.source, s.render.frames.size()));
   }

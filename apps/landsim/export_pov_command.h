@@ -1,6 +1,7 @@
 #pragma once
 // `landsim export-pov SCENARIO --out DIR [--view NAME] [--frame N]`
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -9,6 +10,7 @@ class App;
 namespace landsim::app {
 
 struct ExportPovArgs {
+  std::vector<std::string> sets;  // --set key=value overrides
   std::string scenario;
   std::string out;
   std::string view;

@@ -17,11 +17,12 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
       "info", "Describe a scenario's scene without building it: expected trees, triangles, memory");
   cmd->add_option("scenario", args.scenario, "Scenario TOML file (default: the embedded scene)");
   cmd->add_flag("--json", args.json, "Print one JSON object on stdout");
+  add_set_option(*cmd, args.sets);
   return cmd;
 }
 
 int run_info(const InfoArgs& args) {
-  const scenes::Scenario scenario = scenario_or_default(args.scenario);
+  const scenes::Scenario scenario = scenario_or_default(args.scenario, args.sets);
   const scenes::MemoryEstimate e = scenes::estimate_memory(scenario);
   const auto count = [](double n) { return static_cast<std::size_t>(std::llround(n)); };
   if (args.json) {

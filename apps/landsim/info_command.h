@@ -1,6 +1,7 @@
 #pragma once
 // `landsim info [SCENARIO] [--json]`: the scene described without building it.
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -9,7 +10,8 @@ class App;
 namespace landsim::app {
 
 struct InfoArgs {
-  std::string scenario;  // empty: the embedded default scene
+  std::vector<std::string> sets;  // --set key=value overrides
+  std::string scenario;           // empty: the embedded default scene
   bool json = false;
 };
 

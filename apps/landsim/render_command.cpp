@@ -69,6 +69,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->transform(CLI::AsSizeValue(true));
   cmd->add_flag("--check", args.check,
                 "Render nothing: check every image of the set is in --out, write the manifest");
+  add_set_option(*cmd, args.sets);
   return cmd;
 }
 
@@ -158,7 +159,7 @@ scenes::SharedRender shared_render(const MpiSession& session) {
 }  // namespace
 
 int run_render(const RenderArgs& args) {
-  scenes::Scenario scenario = scenario_or_default(args.scenario);
+  scenes::Scenario scenario = scenario_or_default(args.scenario, args.sets);
   apply_overrides(scenario, args);
   const std::filesystem::path out_dir(args.out_dir);
   if (args.check) return check_images(scenario, out_dir);

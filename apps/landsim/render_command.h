@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -14,7 +15,8 @@ class App;
 namespace landsim::app {
 
 struct RenderArgs {
-  std::string scenario;  // empty: the embedded default scene
+  std::vector<std::string> sets;  // --set key=value overrides
+  std::string scenario;           // empty: the embedded default scene
   std::string out_dir = "out";
   std::string view;  // empty: every view
   std::optional<int> spp;

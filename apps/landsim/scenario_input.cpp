@@ -17,8 +17,17 @@ void add_scene_view_options(CLI::App& cmd, std::string& scenario, std::string& o
   cmd.add_option("--view", view, "View name (default: the first)");
 }
 
-scenes::Scenario scenario_or_default(const std::string& path) {
-  return path.empty() ? scenes::default_scenario() : scenes::load_scenario(path);
+scenes::Scenario scenario_or_default(const std::string& path,
+                                     const std::vector<std::string>& sets) {
+  return path.empty() ? scenes::default_scenario(sets) : scenes::load_scenario(path, sets);
+}
+
+void add_set_option(CLI::App& cmd, std::vector<std::string>& sets) {
+  cmd.add_option("--set", sets,
+                 "Set a scenario key, e.g. --set sun.elevation=30 or --set views.0.fov=25 "
+                 "(repeatable; the file's validation)")
+      ->take_all()
+      ->allow_extra_args(false);
 }
 
 void add_size_options(CLI::App& cmd, std::optional<int>& width, std::optional<int>& height) {

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scenes/scenario.h"
 
@@ -18,8 +19,13 @@ namespace landsim::app {
 void add_scene_view_options(CLI::App& cmd, std::string& scenario, std::string& out,
                             std::string& view);
 
-// `path` empty: the embedded default scene. InputError for a bad file.
-scenes::Scenario scenario_or_default(const std::string& path);
+// `path` empty: the embedded default scene; `sets` are --set's "key=value" overrides.
+// InputError for a bad file or override.
+scenes::Scenario scenario_or_default(const std::string& path,
+                                     const std::vector<std::string>& sets = {});
+
+// --set key=value (repeatable): any scenario key, with the file's validation.
+void add_set_option(CLI::App& cmd, std::vector<std::string>& sets);
 
 // --spp for commands that render with a fixed default (16): the same range as the
 // scenario's [render] spp everywhere.

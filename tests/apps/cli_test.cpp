@@ -971,6 +971,27 @@ TEST(Cli, ASpeciesWithEditsRendersAsSeveralVariants) {
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "v.exr"));
 }
 
+// --set sets any scenario key for one run, with the file's validation: a set sun changes the
+// image, a bad value exits 2 naming the override and writes nothing.
+TEST(Cli, SetOverridesAScenarioKeyWithItsValidation) {
+  TempDir dir;
+  const auto file = dir.write("s.toml", scenario("", "", "spp = 1"));
+  ASSERT_EQ(run("render " + file.string() + " --out " + (dir / "a").string(), dir).exit_code, 0);
+  const Result low = run("render " + file.string() + " --out " + (dir / "b").string() +
+                             " --set sun.elevation=5 --set render.seed=3",
+                         dir);
+  ASSERT_EQ(low.exit_code, 0) << low.err;
+  EXPECT_NE(testing::read_file(dir / "a" / "v.exr"), testing::read_file(dir / "b" / "v.exr"));
+  const Result bad =
+      run("render " + file.string() + " --out " + (dir / "c").string() + " --set sun.elevation=95",
+          dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--set sun.elevation=95: [sun] elevation"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "c"));
+  const Result info = run("info " + file.string() + " --json --set views.0.width=64", dir);
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+}
+
 // --resume renders only what is missing: finished images of the same scenario, view, time,
 // samples, seed and size are kept as they are; another sample count renders them again.
 TEST(Cli, ResumeSkipsFinishedImages) {
