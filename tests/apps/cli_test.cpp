@@ -54,6 +54,15 @@ std::string aspen_entry(const std::string& extra) {
          "\"\nvariants = 1\ndensity_per_ha = 40\n" + extra + "\n";
 }
 
+// The volcano's land-cover classes and their class map as a [featuremaps] table (it
+// selects species bits 0 and 1 and grass types 1 and 2).
+std::string volcano_class_maps() {
+  return "[featuremaps]\nclasses = \"" +
+         testing::source_file("data/featuremaps/volcano_landcover.asc").string() +
+         "\"\nclass_map = \"" +
+         testing::source_file("scenes/examples/volcano_classes.toml").string() + "\"\n";
+}
+
 bool has_files(const std::filesystem::path& dir) {
   return std::filesystem::exists(dir) && !std::filesystem::is_empty(dir);
 }
@@ -195,11 +204,7 @@ TEST(Cli, SilentWrongScenesWarnAndStrictRefusesThem) {
   TempDir dir;
   // The volcano's class map selects species bits 0 and 1 and grass types 1 and 2; only bit 0
   // and grass 1 are defined here.
-  const std::string maps = "[featuremaps]\nclasses = \"" +
-                           testing::source_file("data/featuremaps/volcano_landcover.asc").string() +
-                           "\"\nclass_map = \"" +
-                           testing::source_file("scenes/examples/volcano_classes.toml").string() +
-                           "\"\n";
+  const std::string maps = volcano_class_maps();
   std::string text = scenario("", "", "spp = 1") + aspen_entry("") + "[[grass]]\ntype = 1\n";
   text.insert(text.find("[sun]"), maps);
   const auto file = dir.write("w.toml", text);
@@ -955,11 +960,7 @@ TEST(Cli, KilledRenderResumesToTheSameImage) {
 // four variants (issue 41: so_bent's bend named internode numbers and grew for seed 1 only).
 TEST(Cli, ASpeciesWithEditsRendersAsSeveralVariants) {
   TempDir dir;
-  const std::string maps = "[featuremaps]\nclasses = \"" +
-                           testing::source_file("data/featuremaps/volcano_landcover.asc").string() +
-                           "\"\nclass_map = \"" +
-                           testing::source_file("scenes/examples/volcano_classes.toml").string() +
-                           "\"\n";
+  const std::string maps = volcano_class_maps();
   std::string text = scenario("", "", "spp = 1") + "\n[[species]]\nbit = 0\nfile = \"" +
                      testing::source_file("data/species/so_bent.toml").string() +
                      "\"\nvariants = 4\ndensity_per_ha = 5\n";
