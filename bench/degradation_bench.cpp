@@ -29,11 +29,11 @@
 #include <vector>
 
 #include "core/counter_rng.h"
+#include "renderer/acceleration/embree_scene.h"
+#include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
-#include "renderer/embree_scene.h"
-#include "renderer/image_output.h"
-#include "renderer/render.h"
-#include "renderer/stochastic_lod.h"
+#include "renderer/output/image_output.h"
+#include "renderer/transport/render.h"
 #include "trees/species.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "renderer/image_output.h"
+#include "renderer/output/image_output.h"
 
 namespace {
 

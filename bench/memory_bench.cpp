@@ -1,13 +1,13 @@
 // Embree's memory per primitive and per instance, measured as the growth of this process's
 // resident memory while building scenes of a million of each (issue 27). The constants of
-// renderer/memory_model.h come from here; rerun after an Embree upgrade:
+// renderer/acceleration/memory_model.h come from here; rerun after an Embree upgrade:
 //   build/bin/memory_bench
 // Not a Google Benchmark: resident memory is per process, and each figure is one build.
 #include <embree3/rtcore.h>
 
 #include <fmt/format.h>
 #include "core/process_memory.h"
-#include "renderer/image_io.h"
+#include "renderer/output/image_io.h"
 
 #include <atomic>
 #include <cstdint>

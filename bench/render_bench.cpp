@@ -2,7 +2,7 @@
 // threads, with the rays per second that implies (camera, bounce and shadow rays).
 #include <benchmark/benchmark.h>
 
-#include "renderer/render.h"
+#include "renderer/transport/render.h"
 #include "scenes/default_scenario.h"
 #include "scenes/scene_builder.h"
 

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "renderer/colour_matching.h"
-#include "renderer/exposure.h"
-#include "renderer/film.h"
-#include "renderer/image_output.h"
-#include "renderer/sky.h"
+#include "renderer/atmosphere/sky.h"
+#include "renderer/output/exposure.h"
+#include "renderer/output/film.h"
+#include "renderer/output/image_output.h"
+#include "renderer/spectra/colour_matching.h"
 
 namespace {
 

@@ -15,11 +15,11 @@
 #include <optional>
 #include <string>
 
+#include "renderer/acceleration/embree_scene.h"
+#include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
-#include "renderer/detail/ray_recorder.h"
-#include "renderer/embree_scene.h"
-#include "renderer/path_tracer.h"
-#include "renderer/stochastic_lod.h"
+#include "renderer/transport/detail/ray_recorder.h"
+#include "renderer/transport/path_tracer.h"
 #include "scenes/default_scenario.h"
 #include "scenes/scene_builder.h"
 

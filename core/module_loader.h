@@ -7,7 +7,7 @@
 //
 // A module exports one C function returning a table of function pointers; the table's type
 // is declared in the header of the library that uses it (terrain/raster_io.h,
-// renderer/image_io.h).
+// renderer/output/image_io.h).
 #include <dlfcn.h>
 
 #include <cstdlib>
@@ -49,8 +49,8 @@ const Table& module_table(const char* module, const char* symbol) {
     void* entry = handle != nullptr ? dlsym(handle, symbol) : nullptr;
     if (entry == nullptr) {
       throw ModuleError("cannot load landsim's " + std::string(module) + " module " +
-                               file.string() + ": " + (why != nullptr ? why : dlerror()) +
-                               " (set LANDSIM_MODULE_DIR to the folder that holds it)");
+                        file.string() + ": " + (why != nullptr ? why : dlerror()) +
+                        " (set LANDSIM_MODULE_DIR to the folder that holds it)");
     }
     using Entry = const Table* (*)();
     table = reinterpret_cast<Entry>(entry)();

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/image_output.h"
-#include "renderer/render.h"
+#include "renderer/output/image_output.h"
 #include "renderer/scene.h"
+#include "renderer/transport/render.h"
 #include "trees/mesher.h"
 
 namespace landsim::exporters {

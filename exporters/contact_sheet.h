@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/film.h"
+#include "renderer/output/film.h"
 #include "renderer/scene.h"
 #include "trees/degradation.h"
 #include "trees/geometry.h"

@@ -19,10 +19,10 @@
 #include "core/input_error.h"
 #include "exporters/pov_camera.h"
 #include "exporters/pov_export.h"
-#include "renderer/exposure.h"
-#include "renderer/image_output.h"
-#include "renderer/render.h"
-#include "renderer/sky.h"
+#include "renderer/atmosphere/sky.h"
+#include "renderer/output/exposure.h"
+#include "renderer/output/image_output.h"
+#include "renderer/transport/render.h"
 
 namespace landsim::exporters {
 namespace {

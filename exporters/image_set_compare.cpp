@@ -11,8 +11,8 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
-#include "renderer/film.h"
-#include "renderer/image_output.h"
+#include "renderer/output/film.h"
+#include "renderer/output/image_output.h"
 
 namespace landsim::exporters {
 namespace {

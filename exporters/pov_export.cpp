@@ -10,9 +10,9 @@
 #include <numbers>
 
 #include "core/atomic_file.h"
-#include "renderer/colour_matching.h"
-#include "renderer/exposure.h"
-#include "renderer/grass_patch.h"
+#include "renderer/materials/grass_patch.h"
+#include "renderer/output/exposure.h"
+#include "renderer/spectra/colour_matching.h"
 
 namespace landsim::exporters {
 namespace {

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "renderer/atmosphere/sky.h"
 #include "renderer/scene.h"
-#include "renderer/sky.h"
 
 namespace landsim::exporters {
 

@@ -1,7 +1,7 @@
 // A sensor band's response CSV ([[bands]] response files, docs/SCENARIO.md), then the band
 // it makes.
 #include "fuzz/fuzz_input.h"
-#include "renderer/sensor_band.h"
+#include "renderer/spectra/sensor_band.h"
 #include "scenes/sensor_bands.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

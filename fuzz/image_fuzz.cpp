@@ -2,7 +2,7 @@
 // crosscheck's reference (header probe first, then the pixels), as PNG, EXR, TIFF or JPEG
 // chosen by the input's first byte.
 #include "fuzz/fuzz_input.h"
-#include "renderer/image_io.h"
+#include "renderer/output/image_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

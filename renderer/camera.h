@@ -1,7 +1,7 @@
 #pragma once
 // Pinhole camera: turns a position on the image plane into a primary ray.
 #include "core/vec3.h"
-#include "renderer/image_output.h"
+#include "renderer/output/image_output.h"
 #include "renderer/scene.h"
 
 namespace landsim::renderer {

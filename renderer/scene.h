@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "core/vec3.h"
-#include "renderer/ground_shading.h"
-#include "renderer/spectrum.h"
+#include "renderer/materials/ground_shading.h"
+#include "renderer/spectra/spectrum.h"
 #include "terrain/ground_mesh.h"
 #include "trees/degradation.h"
 #include "trees/geometry.h"
@@ -30,7 +30,8 @@ inline constexpr float kLeafTransmittanceRatio = 0.8f;
 
 // A material's measured or modelled spectra (docs/SPECTRAL.md): leaves from PROSPECT-D,
 // soils from measured spectra. Where a material has none, the path tracer upsamples its RGB
-// (renderer/spectral_colour.h). Shared: one per species variant, grass type or ground material.
+// (renderer/spectra/spectral_colour.h). Shared: one per species variant, grass type or ground
+// material.
 struct SpectralOptics {
   Spectrum reflectance;
   Spectrum transmittance;  // zero for opaque materials
@@ -49,12 +50,12 @@ struct Ground {
 
   terrain::GroundMesh mesh;
   Vec3f albedo = kDefaultGroundAlbedo;  // material 0: the terrain's own
-  // The plain beyond the grid (renderer/plain.h), and the ground the sky model sees
+  // The plain beyond the grid (renderer/transport/plain.h), and the ground the sky model sees
   // (Hosek-Wilkie's ground albedo): the mean albedo along the grid's edge
   // (scenes/detail/plain_albedo); empty: `albedo`.
   std::optional<Vec3f> edge_albedo;
   Vec3f plain_albedo() const { return edge_albedo.value_or(albedo); }
-  // The plain's height, scene frame z (renderer/plain.h): the mean along the grid's edge
+  // The plain's height, scene frame z (renderer/transport/plain.h): the mean along the grid's edge
   // (scenes/detail/plain_albedo); empty: the mean of the mesh's rim.
   std::optional<float> plain_height;
   // False: no plain, rays below the horizon see the sky model's (studio scenes: a cutaway
@@ -91,7 +92,7 @@ struct GrassType {
 
 // Where blades may stand, at the vegetation map's own resolution: the grass type of each
 // cell (0: none, and none on road or water), so that a field's edge follows the map, not the
-// patches' tiles (renderer/grass_patch.h: grass_blade_kept).
+// patches' tiles (renderer/materials/grass_patch.h: grass_blade_kept).
 struct GrassMask {
   Vec3 corner;  // south-west corner of cell (0, 0), scene frame (z unused)
   double cell_x = 1.0, cell_y = 1.0;
@@ -172,7 +173,7 @@ struct RenderSettings {
   int spp = 16;
   std::uint64_t seed = 1;
   int max_bounces = 4;
-  // The preview PNG's exposure value at ISO 100; empty: automatic (renderer/exposure.h).
+  // The preview PNG's exposure value at ISO 100; empty: automatic (renderer/output/exposure.h).
   // The EXR stays in cd/m2 either way.
   std::optional<double> exposure_ev100;
   // Range degradation (Weber & Penn section 5) of trees, and stochastic blending of tree and
@@ -239,7 +240,7 @@ struct TreeInstance {
 class ObjectTexture;
 
 // A mesh material: a diffuse base colour under a GGX glossy coat, as glTF's
-// metallic-roughness model has it (renderer/glossy.h).
+// metallic-roughness model has it (renderer/transport/glossy.h).
 struct ObjectMaterial {
   Vec3f base_colour{0.8f, 0.8f, 0.8f};  // linear RGB
   float roughness = 0.5f;               // perceptual: GGX alpha = roughness^2

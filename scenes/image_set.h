@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/render.h"
+#include "renderer/transport/render.h"
 #include "scenes/scenario.h"
 
 namespace landsim::scenes {

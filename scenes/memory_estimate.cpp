@@ -13,9 +13,9 @@
 #include "core/input_error.h"
 #include "core/process_memory.h"
 #include "featuremaps/placement.h"
-#include "renderer/grass_patch.h"
-#include "renderer/image_io.h"
-#include "renderer/memory_model.h"
+#include "renderer/acceleration/memory_model.h"
+#include "renderer/materials/grass_patch.h"
+#include "renderer/output/image_io.h"
 #include "scenes/detail/camera_check.h"
 #include "scenes/detail/context_terrain.h"
 #include "scenes/detail/grass_cover.h"
@@ -154,8 +154,8 @@ double variants_in_use(double n, int v) { return v * (1.0 - std::pow(1.0 - 1.0 /
 
 // Top-level entries per tree with range degradation: only trees at least
 // kPerPixelBlendMinPixels tall on screen are drawn at two levels with complementary ray
-// masks (renderer/stochastic_lod.h); the rest take one. Measured on the calibration scenes
-// (bench/memory.sh): 1.000 to 1.001 entries per tree.
+// masks (renderer/acceleration/stochastic_lod.h); the rest take one. Measured on the calibration
+// scenes (bench/memory.sh): 1.000 to 1.001 entries per tree.
 constexpr double kEntriesPerDegradedTree = 1.0;
 // The levels below a degraded variant's nearest one: each smaller than the last.
 constexpr double kFartherLevels = 1.5;
@@ -183,7 +183,7 @@ std::size_t MemoryEstimate::total_bytes() const {
   return total;
 }
 
-// A texture as the scene holds it (renderer/texture_image: linear RGB floats), from its
+// A texture as the scene holds it (renderer/materials/texture_image: linear RGB floats), from its
 // header alone; zero when the header cannot be read (the build reports why). The module's
 // buffers while it is read are gone before the trees are built (measured: a 4096 x 4096
 // texture added 205 MB to the peak, its RGB floats' 201 MB).
@@ -331,7 +331,8 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   part("image", "image", p.view_film, "a smaller --width/--height");
   part("objects", "scene objects", object_bytes(s, keep),
        "[[objects]] meshes of fewer triangles, or smaller textures");
-  // Objects are placed on the drawn ground through a BVH of its own (renderer/ground_probe).
+  // Objects are placed on the drawn ground through a BVH of its own
+  // (renderer/acceleration/ground_probe).
   if (!s.objects.empty())
     part("ground_probe", "the ground probe placing objects",
          ground.triangles * mm::kEmbreeGridTriangle + ground.vertices * 12.0,

@@ -3,9 +3,9 @@
 // cheap to get, before anything expensive is built (the memory budget, issue 27): the
 // expected trees from each species' feature-map area and density (no tree is placed), the
 // geometry of one generated variant per species, the grass tiles and the patches each view
-// draws, Embree's bytes per primitive and per instance (renderer/memory_model.h), and the
-// film. docs/PERFORMANCE.md "Memory budget" says how each part is computed and how close
-// the total comes to measured peaks.
+// draws, Embree's bytes per primitive and per instance (renderer/acceleration/memory_model.h), and
+// the film. docs/PERFORMANCE.md "Memory budget" says how each part is computed and how close the
+// total comes to measured peaks.
 #include <cstddef>
 #include <map>
 #include <string>

@@ -12,7 +12,7 @@
 #include "featuremaps/cover.h"
 #include "featuremaps/vegetation_map.h"
 #include "renderer/scene.h"
-#include "renderer/sensor_band.h"
+#include "renderer/spectra/sensor_band.h"
 #include "terrain/dem_loader.h"
 #include "trees/species.h"
 
@@ -109,8 +109,9 @@ struct GroundMaterials {
   // Soil moisture 0-1: the soil colours are dry soil's; moisture darkens their spectra as
   // the measured wet soil is darker (docs/SPECTRAL.md "Soil").
   double soil_moisture = 0.0;
-  // Variation, rules and texture size (renderer/ground_shading.h); its textures are loaded
-  // from `texture_files` (resolved paths, by material id; empty: none) when the scene is built.
+  // Variation, rules and texture size (renderer/materials/ground_shading.h); its textures are
+  // loaded from `texture_files` (resolved paths, by material id; empty: none) when the scene is
+  // built.
   renderer::GroundShading shading = scenario_ground_shading();
   std::array<std::string, renderer::kGroundMaterials> texture_files;
   std::array<std::string, renderer::kGroundMaterials> texture_locations;  // "file:line:col"
@@ -173,7 +174,7 @@ struct BandSettings {
   std::string description;  // "box 630-690 nm", or "response " and the response file's path
   std::vector<renderer::ResponsePoint> response;
 };
-// Bands per image set (renderer/integrator.h kMaxBands).
+// Bands per image set (renderer/transport/integrator.h kMaxBands).
 inline constexpr int kMaxSensorBands = 8;
 
 struct Scenario;

@@ -485,7 +485,7 @@ std::vector<GrassSettings> read_grass(const toml::table& root, const std::string
   return out;
 }
 
-// Ground material names in [ground] and their ids (renderer/ground_shading.h); "grass" is
+// Ground material names in [ground] and their ids (renderer/materials/ground_shading.h); "grass" is
 // the ground under all three grass types.
 const std::vector<std::pair<std::string, std::vector<int>>> kGroundNames{
     {"terrain", {0}}, {"road", {1}},        {"water", {2}},       {"rock", {3}},

@@ -1,6 +1,6 @@
 #include "scenes/scene_builder.h"
 
-#include "renderer/vegetation_optics.h"
+#include "renderer/spectra/vegetation_optics.h"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -13,8 +13,8 @@
 #include "core/counter_rng.h"
 #include "core/input_error.h"
 #include "featuremaps/placement.h"
-#include "renderer/bark_texture.h"
-#include "renderer/sky.h"
+#include "renderer/atmosphere/sky.h"
+#include "renderer/materials/bark_texture.h"
 #include "scenes/detail/camera_check.h"
 #include "scenes/detail/context_terrain.h"
 #include "scenes/detail/grass_cover.h"

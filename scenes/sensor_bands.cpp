@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/input_error.h"
-#include "renderer/spectrum.h"
+#include "renderer/spectra/spectrum.h"
 
 namespace landsim::scenes {
 namespace {

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "renderer/sensor_band.h"
+#include "renderer/spectra/sensor_band.h"
 
 namespace landsim::scenes {
 

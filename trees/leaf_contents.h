@@ -1,7 +1,7 @@
 #pragma once
 // A leaf's structure and contents in the units of the PROSPECT leaf model (Feret et al. 2017,
 // PROSPECT-D), from which the renderer computes its reflectance and transmittance spectra
-// (renderer/prospect.h, docs/SPECTRAL.md). The defaults are the typical green leaf of the
+// (renderer/spectra/prospect.h, docs/SPECTRAL.md). The defaults are the typical green leaf of the
 // PROSAIL literature.
 namespace landsim::trees {
 

@@ -11,7 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/counter_rng.h"
 #include "exporters/contact_sheet.h"
-#include "renderer/image_output.h"
+#include "renderer/output/image_output.h"
 #include "scenario_input.h"
 #include "scenes/scenario.h"
 #include "trees/harmonic/parameters.h"

@@ -5,7 +5,7 @@
 // on who renders them, so the image equals a single-process render exactly. Rank 0 writes
 // checkpoints of the finished prefix of tiles and resumes from them like a plain render.
 #include "mpi_session.h"
-#include "renderer/render.h"
+#include "renderer/transport/render.h"
 
 namespace landsim::app {
 

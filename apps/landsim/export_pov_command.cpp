@@ -11,9 +11,9 @@
 
 #include "core/input_error.h"
 #include "exporters/pov_export.h"
-#include "renderer/colour_matching.h"
-#include "renderer/exposure.h"
-#include "renderer/sky.h"
+#include "renderer/atmosphere/sky.h"
+#include "renderer/output/exposure.h"
+#include "renderer/spectra/colour_matching.h"
 #include "scenario_input.h"
 #include "scenes/scene_builder.h"
 

@@ -15,7 +15,7 @@
 #include "core/input_error.h"
 #include "core/process_memory.h"
 #include "mpi_session.h"
-#include "renderer/render.h"
+#include "renderer/transport/render.h"
 #include "scenario_input.h"
 #include "scenes/image_set.h"
 #ifdef LANDSIM_HAVE_MPI

@@ -1,7 +1,7 @@
-// liblandsim_images.so: the image function table of renderer/image_io.h on OpenImageIO and
+// liblandsim_images.so: the image function table of renderer/output/image_io.h on OpenImageIO and
 // OpenColorIO. Loaded by landsim the first time an image file is read or a PNG written
 // (core/module_loader.h).
-#include "renderer/image_io.h"
+#include "renderer/output/image_io.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imagebuf.h>

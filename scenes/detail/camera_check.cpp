@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/input_warnings.h"
-#include "renderer/plain.h"
+#include "renderer/transport/plain.h"
 
 namespace landsim::scenes::detail {
 

@@ -13,7 +13,7 @@ void warn_cameras_below_ground(const Scenario& s, const terrain::ElevationGrid& 
 // the instance's scale) sees the tree from within: warned about once per view.
 void warn_cameras_inside_trees(const Scenario& s, const renderer::Scene& scene);
 // A camera beyond the drawn ground and below the plain that continues it
-// (renderer/plain.h) is inside the land beyond the grid and sees nothing else.
+// (renderer/transport/plain.h) is inside the land beyond the grid and sees nothing else.
 void warn_cameras_under_the_plain(const Scenario& s, const renderer::Scene& scene);
 
 }  // namespace landsim::scenes::detail

@@ -13,7 +13,7 @@ namespace landsim::scenes::detail {
 Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
                   const Vec3& origin);
 
-// The plain's height (renderer/plain.h), scene frame: the mean height of the grid's edge
+// The plain's height (renderer/transport/plain.h), scene frame: the mean height of the grid's edge
 // cells (valid cells beside the grid's border or a nodata cell); empty when it has none.
 std::optional<float> edge_height(const terrain::ElevationGrid& grid, const Vec3& origin);
 

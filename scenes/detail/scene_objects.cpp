@@ -14,8 +14,8 @@
 
 #include "core/input_error.h"
 #include "core/input_warnings.h"
-#include "renderer/ground_probe.h"
-#include "renderer/object_texture.h"
+#include "renderer/acceleration/ground_probe.h"
+#include "renderer/materials/object_texture.h"
 #include "scenes/detail/mesh_file_check.h"
 #include "scenes/mesh_io.h"
 

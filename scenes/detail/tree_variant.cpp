@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "core/counter_rng.h"
-#include "renderer/spectral_colour.h"
-#include "renderer/vegetation_optics.h"
+#include "renderer/spectra/spectral_colour.h"
+#include "renderer/spectra/vegetation_optics.h"
 #include "trees/species.h"
 
 namespace landsim::scenes::detail {

@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "core/input_error.h"
-#include "renderer/film.h"
-#include "renderer/image_output.h"
+#include "renderer/output/film.h"
+#include "renderer/output/image_output.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::exporters {

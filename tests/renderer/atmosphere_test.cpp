@@ -11,11 +11,11 @@
 #include <numbers>
 #include <vector>
 
-#include "renderer/colour_matching.h"
-#include "renderer/image_output.h"
-#include "renderer/render.h"
-#include "renderer/sky.h"
-#include "renderer/spectral_colour.h"
+#include "renderer/atmosphere/sky.h"
+#include "renderer/output/image_output.h"
+#include "renderer/spectra/colour_matching.h"
+#include "renderer/spectra/spectral_colour.h"
+#include "renderer/transport/render.h"
 #include "terrain/ground_mesh.h"
 #include "tests/renderer/test_scenes.h"
 #include "tests/support/temp_dir.h"

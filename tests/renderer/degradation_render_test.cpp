@@ -7,11 +7,11 @@
 #include <numbers>
 #include <set>
 
+#include "renderer/acceleration/embree_scene.h"
+#include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
-#include "renderer/embree_scene.h"
-#include "renderer/grass_patch.h"
-#include "renderer/render.h"
-#include "renderer/stochastic_lod.h"
+#include "renderer/materials/grass_patch.h"
+#include "renderer/transport/render.h"
 #include "tests/renderer/film_stats.h"
 #include "tests/renderer/test_scenes.h"
 #include "trees/species.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Image statistics the renderer tests share.
-#include "renderer/film.h"
+#include "renderer/output/film.h"
 
 namespace landsim::test {
 

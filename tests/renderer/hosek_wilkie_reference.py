@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """An independent evaluation of the published Hosek-Wilkie tables (data/sky/), for
-tests/renderer/hosek_wilkie_test.cpp: written from the papers and the data's README, sharing
-no code with renderer/hosek_wilkie.cpp.
+tests/renderer/atmosphere/hosek_wilkie_test.cpp: written from the papers and the data's README, sharing
+no code with renderer/atmosphere/hosek_wilkie.cpp.
 
 Prints, one per line:
   sky  elevation_deg turbidity albedo theta_deg gamma_deg R G B   (cd/m2-scaled Rec. 709)

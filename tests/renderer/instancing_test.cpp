@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/bark_texture.h"
-#include "renderer/embree_scene.h"
-#include "renderer/render.h"
+#include "renderer/acceleration/embree_scene.h"
+#include "renderer/materials/bark_texture.h"
+#include "renderer/transport/render.h"
 #include "tests/support/single_item.h"
 #include "trees/mesher.h"
 

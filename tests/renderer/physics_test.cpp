@@ -8,9 +8,9 @@
 #include <numbers>
 
 #include "core/counter_rng.h"
-#include "renderer/embree_scene.h"
-#include "renderer/haze.h"
-#include "renderer/render.h"
+#include "renderer/acceleration/embree_scene.h"
+#include "renderer/atmosphere/haze.h"
+#include "renderer/transport/render.h"
 #include "terrain/ground_mesh.h"
 #include "tests/renderer/film_stats.h"
 #include "tests/renderer/test_scenes.h"

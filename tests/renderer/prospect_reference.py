@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""An independent evaluation of PROSPECT-D (Feret et al. 2017) for tests/renderer/prospect_test.cpp:
+"""An independent evaluation of PROSPECT-D (Feret et al. 2017) for tests/renderer/spectra/prospect_test.cpp:
 written from the papers (Jacquemoud and Baret 1990's plate model, Stern 1964's average
-transmissivity, Stokes' equations for N - 1 plates), sharing no code with renderer/prospect.cpp;
+transmissivity, Stokes' equations for N - 1 plates), sharing no code with renderer/spectra/prospect.cpp;
 the exponential integral E1 by its power series and continued fraction.
 
 Usage: prospect_reference.py data/spectra/prospect_d_dataSpec_PDB.txt

@@ -1,14 +1,14 @@
-// Rendering in bands (renderer/path_tracer, film, image_output, render): a white plane's band
-// radiance is the band's irradiance over pi; band layers survive the EXR and the tile packing.
+// Rendering in bands (renderer/transport/path_tracer, film, image_output, render): a white plane's
+// band radiance is the band's irradiance over pi; band layers survive the EXR and the tile packing.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "renderer/image_output.h"
-#include "renderer/render.h"
-#include "renderer/sensor_band.h"
-#include "renderer/sky.h"
+#include "renderer/atmosphere/sky.h"
+#include "renderer/output/image_output.h"
+#include "renderer/spectra/sensor_band.h"
+#include "renderer/transport/render.h"
 #include "terrain/ground_mesh.h"
 #include "tests/renderer/test_scenes.h"
 #include "tests/support/temp_dir.h"

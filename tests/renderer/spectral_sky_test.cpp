@@ -1,15 +1,15 @@
-// The spectral sky and sun (renderer/sky, renderer/near_infrared): the spectral tables agree
-// with the RGB ones in luminance, the sun keeps the scene's colour, the near infrared joins
-// the tables at 720 nm.
+// The spectral sky and sun (renderer/atmosphere/sky, renderer/spectra/near_infrared): the spectral
+// tables agree with the RGB ones in luminance, the sun keeps the scene's colour, the near infrared
+// joins the tables at 720 nm.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "renderer/colour_matching.h"
-#include "renderer/near_infrared.h"
-#include "renderer/sky.h"
-#include "renderer/spectral_colour.h"
+#include "renderer/atmosphere/sky.h"
+#include "renderer/spectra/colour_matching.h"
+#include "renderer/spectra/near_infrared.h"
+#include "renderer/spectra/spectral_colour.h"
 
 namespace landsim::renderer {
 namespace {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "renderer/colour_matching.h"
-#include "renderer/render.h"
+#include "renderer/spectra/colour_matching.h"
+#include "renderer/transport/render.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"
 

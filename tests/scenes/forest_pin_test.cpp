@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <string>
 
-#include "renderer/render.h"
+#include "renderer/transport/render.h"
 #include "scenes/scenario.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "core/input_error.h"
-#include "renderer/vegetation_optics.h"
+#include "renderer/spectra/vegetation_optics.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/scenario.h"
 #include "scenes/scene_builder.h"

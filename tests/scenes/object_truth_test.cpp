@@ -1,13 +1,13 @@
-// Object truth (renderer/object_truth.h) on scenes built from scenarios: what the manifest
+// Object truth (renderer/output/object_truth.h) on scenes built from scenarios: what the manifest
 // reports agrees with the film's target AOV, occlusion lowers the visible fraction, and a
 // glTF and an OBJ of the same mesh render the same image.
-#include "renderer/object_truth.h"
+#include "renderer/output/object_truth.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "renderer/render.h"
+#include "renderer/transport/render.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"
 

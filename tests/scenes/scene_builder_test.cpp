@@ -91,7 +91,7 @@ TEST(SceneBuilder, WithDetailTreesStandOnTheReliefAndTheGroundIsFiner) {
   EXPECT_NO_THROW(build_scene(load_scenario(dir.write("c.toml", stretched))));
 }
 
-// The plain beyond the grid (renderer/plain.h) lies at the mean height of the grid's edge
+// The plain beyond the grid (renderer/transport/plain.h) lies at the mean height of the grid's edge
 // cells; a camera beyond the grid and below it is inside the land beyond and is warned about.
 TEST(SceneBuilder, ThePlainLiesAtTheEdgesMeanHeightAndACameraUnderItIsWarned) {
   landsim::testing::TempDir dir;

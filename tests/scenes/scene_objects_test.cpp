@@ -11,9 +11,9 @@
 #include <numbers>
 
 #include "core/input_error.h"
-#include "renderer/ground_probe.h"
-#include "renderer/image_io.h"
-#include "renderer/object_texture.h"
+#include "renderer/acceleration/ground_probe.h"
+#include "renderer/materials/object_texture.h"
+#include "renderer/output/image_io.h"
 #include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/rasters.h"

@@ -6,10 +6,10 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "renderer/atmosphere/sky.h"
 #include "renderer/camera.h"
-#include "renderer/plain.h"
-#include "renderer/render.h"
-#include "renderer/sky.h"
+#include "renderer/transport/plain.h"
+#include "renderer/transport/render.h"
 #include "scenes/scenario.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <set>
 
-#include "renderer/spectral_colour.h"
+#include "renderer/spectra/spectral_colour.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"
 #include "trees/species.h"

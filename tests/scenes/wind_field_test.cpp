@@ -9,7 +9,7 @@
 #include <numbers>
 #include <set>
 
-#include "renderer/render.h"
+#include "renderer/transport/render.h"
 #include "scenes/scene_builder.h"
 #include "tests/support/temp_dir.h"
 

@@ -1,0 +1,50 @@
+#pragma once
+// Truth about the scene objects in a rendered image, for detection studies: how much of each
+// object is seen, how much would be without occluders, where, how far, and how it stands out
+// from what surrounds it (docs/OBJECTS.md "Truth").
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/output/film.h"
+#include "renderer/scene.h"
+
+namespace landsim::renderer {
+
+// Pixel bounds, inclusive: x0, y0, x1, y1 (row 0 at the top).
+using PixelBox = std::array<int, 4>;
+
+struct ObjectTruth {
+  std::string name;
+  // Pixels whose first sample's first hit is this object (the film's target AOV).
+  std::uint64_t visible_pixels = 0;
+  // Pixels whose first-sample ray meets the object when nothing else is in the scene: its
+  // projected footprint, occluders ignored.
+  std::uint64_t footprint_pixels = 0;
+  double visible_fraction = 0.0;  // visible / footprint; 0 with an empty footprint
+  std::optional<PixelBox> bbox;   // of the visible pixels; empty when none is
+  std::optional<PixelBox> footprint_bbox;
+  double range = 0.0;  // metres, camera to the centre of the object's bounding box
+  // Contrast of the visible pixels against their surround: mean luminance (cd/m2) of the
+  // visible pixels, of the background ring (pixels within `ring_width` of a visible pixel
+  // that no object covers), and Weber's contrast (L - Lb) / Lb (empty when Lb is 0 or the
+  // object unseen).
+  double luminance = 0.0;
+  double background_luminance = 0.0;
+  std::uint64_t background_pixels = 0;
+  int ring_width = 0;
+  std::optional<double> contrast;
+};
+
+// The ring's width in pixels for an object whose visible pixels span `box`: a tenth of its
+// larger side, at least 3 pixels.
+int ring_width(const PixelBox& box);
+
+// Every object's truth in `film`, rendered from `view` with the scene's seed; `centre_first`
+// as the render's option (the first sample through the pixel centre).
+std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, const Film& film,
+                                      bool centre_first);
+
+}  // namespace landsim::renderer

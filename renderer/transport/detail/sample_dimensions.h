@@ -1,0 +1,27 @@
+#pragma once
+// Private to renderer/: which random dimension of a pixel sample's counter-based stream each
+// decision uses, shared by the integrators so that the same decision draws the same number
+// (the POV-comparable tracer's first hit sees the physical tracer's sun sample).
+#include <cstdint>
+
+namespace landsim::renderer::detail {
+
+// 0-1 pixel jitter, then kDimsPerBounce per bounce.
+inline constexpr std::uint32_t kFirstBounceDim = 2;
+inline constexpr std::uint32_t kDimsPerBounce = 12;
+enum Dim : std::uint32_t {
+  kSun0 = 0,
+  kSun1,
+  kSky0,
+  kSky1,
+  kChoice,
+  kDir,
+  kRoulette,
+  kHaze,
+  kFresnel,
+  kSunRoulette,  // shadow-ray roulette (renderer/transport/shadow_roulette.h)
+  kSkyRoulette,
+  kHazeRoulette
+};
+
+}  // namespace landsim::renderer::detail

@@ -1,0 +1,318 @@
+#include "renderer/transport/path_tracer.h"
+
+#include "renderer/spectra/spectral_colour.h"
+#include "renderer/transport/detail/sample_dimensions.h"
+#include "renderer/transport/glossy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace landsim::renderer {
+namespace {
+
+using namespace detail;  // sample dimensions
+
+constexpr float kPi = std::numbers::pi_v<float>;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// Paths are rouletted (by throughput) from their second vertex on: the third and later
+// vertices add 0.4% of the forest's light but cost a quarter of its rays (docs/PERFORMANCE.md
+// "Forest scale").
+constexpr int kRouletteAfter = 1;
+// Shadow rays that would add less than this fraction of the sky's mean radiance (largest
+// component) to the pixel are rouletted (renderer/transport/shadow_roulette.h); chosen by
+// measurement: 0.2 adds 3% to the noise of the forest benchmark, 0.5 adds 20%.
+constexpr float kShadowRouletteFraction = 0.2f;
+
+// Cosine-weighted direction about n (pdf cos / pi), Malley's method.
+Vec3f sample_cosine(const Vec3f& n, float u1, float u2) {
+  const float r = std::sqrt(u1);
+  const float phi = 2.0f * kPi * u2;
+  const float z = std::sqrt(std::max(0.0f, 1.0f - u1));
+  Vec3f t, b;
+  orthonormal_basis(n, t, b);
+  return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * z);
+}
+
+float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
+
+// 1 in the bins some output sees (the colour-matching functions, or a band), 0 elsewhere.
+Spectrum seen_bins(const Scene& scene) {
+  Spectrum seen;
+  const auto& rgb = rgb_weights();
+  float largest = 0.0f;
+  for (const Vec3f& w : rgb)
+    largest = std::max(largest, max_component(Vec3f{std::abs(w.x), std::abs(w.y), std::abs(w.z)}));
+  for (int k = 0; k < kSpectrumBins; ++k) {
+    const Vec3f& w = rgb[static_cast<std::size_t>(k)];
+    const float colour = std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z)});
+    bool band = false;
+    for (const SpectralBand& b : scene.bands) band = band || b.weight[k] > 0.0f;
+    seen[k] = colour > 1e-4f * largest || band ? 1.0f : 0.0f;
+  }
+  return seen;
+}
+
+}  // namespace
+
+PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
+    : scene_(scene),
+      embree_(embree),
+      sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
+      plain_(plain_surface(scene.ground)),
+      haze_(scene.haze),
+      sun_direction_(Vec3f(normalize(scene.sun.direction))),
+      // The roulette compares spectral contributions: the sky's mean as a spectrum.
+      roulette_threshold_(kShadowRouletteFraction *
+                          max_component(emission_spectrum(sky_.mean_radiance()))),
+      horizon_(sky_),
+      sun_transmittance_at_base_(static_cast<float>(haze_.transmittance(
+          Vec3{0.0, 0.0, scene.haze.base_height}, Vec3(sun_direction_), kInfiniteDistance))),
+      sun_spectrum_(sky_.sun_spectral_irradiance()),
+      haze_albedo_(reflectance_spectrum(haze_.albedo())),
+      inverse_haze_albedo_(safe_divide(Spectrum::constant(1.0f), haze_albedo_)),
+      seen_bins_(seen_bins(scene)) {}
+
+std::optional<Hit> PathTracer::intersect(const Ray& ray, std::uint32_t mask) const {
+  if (auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask)) return hit;
+  const auto plain = plain_hit(plain_, ray);
+  if (!plain) return std::nullopt;
+  Hit hit;
+  hit.t = plain->t;
+  hit.geometric_normal = hit.shading_normal = plain->normal;
+  hit.object = ObjectClass::ground;
+  hit.plain = true;
+  return hit;
+}
+
+bool PathTracer::occluded(const Ray& ray, std::uint32_t mask) const {
+  return embree_.occluded(ray, 0.0f, kInfinity, mask) || plain_hit(plain_, ray).has_value();
+}
+
+Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
+                               const SpectralMaterial& s, float u1, float u2,
+                               const Spectrum& throughput, float u_roulette,
+                               std::uint32_t& rays) const {
+  // As sample_sun (renderer/transport/surface.h) with the spectral material: one direction in the
+  // disc.
+  const Vec3f l =
+      sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
+  bool front = false;
+  const Spectrum f = reflected_light(s, m, v, l, front);
+  if (max_component(f) <= 0.0f) return {};
+  const Spectrum light = f * sun_spectrum_;
+  const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
+  if (weight == 0.0f) return {};
+  ++rays;
+  const Ray ray{offset_point(v, front ? v.ng : -v.ng), l};
+  if (occluded(ray, v.mask)) return {};
+  return light * (weight * static_cast<float>(haze_.transmittance(
+                               Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance)));
+}
+
+// The probability of sampling the glossy coat rather than the diffuse base: the coat's
+// Fresnel reflectance toward the viewer against what the base reflects of the rest.
+static float coat_probability(const ShadingPoint& v, const SurfaceMaterial& m) {
+  const float coat = max_component(schlick_fresnel(m.specular, dot(v.n, v.wo)));
+  const float base = max_component(m.reflectance) * (1.0f - coat);
+  return std::clamp(coat / std::max(coat + base, 1e-6f), 0.1f, 0.9f);
+}
+
+float PathTracer::bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m,
+                           const Vec3f& dir) const {
+  if (m.glossy()) {
+    const float c = coat_probability(v, m);
+    return c * ggx_pdf(m.alpha, v.n, v.wo, dir) + (1.0f - c) * std::max(0.0f, dot(v.n, dir)) / kPi;
+  }
+  const float r = max_component(m.reflectance), t = max_component(m.transmittance);
+  if (r + t <= 0.0f) return 0.0f;
+  const float c = dot(v.n, dir);
+  return (c > 0.0f ? r / (r + t) : t / (r + t)) * std::abs(c) / kPi;
+}
+
+Spectrum PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m,
+                               const SpectralMaterial& s, float u1, float u2,
+                               const Spectrum& throughput, float u_roulette,
+                               std::uint32_t& rays) const {
+  float pdf = 0.0f;
+  const Vec3f l = sky_.sample(u1, u2, pdf);
+  bool front = false;
+  const Spectrum f = reflected_light(s, m, v, l, front);
+  if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
+  const Spectrum light =
+      f * sky_.spectral_radiance(l) * (power_heuristic(pdf, bsdf_pdf(v, m, l)) / pdf);
+  const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
+  if (weight == 0.0f) return {};
+  ++rays;
+  const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
+  if (occluded({origin, l}, v.mask)) return {};
+  const auto t_haze =
+      static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
+  return light * (weight * t_haze);
+}
+
+Spectrum PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, float u,
+                                     const Spectrum& throughput, const ShadowRoulette& roulette,
+                                     std::uint32_t mask, std::uint32_t& rays) const {
+  const Vec3 o(ray.origin), d(ray.direction);
+  const double scattered = -std::expm1(-depth);  // 1 - T over the segment
+  if (scattered <= 0.0) return {};
+  // Sunlight scattered once, at a distance drawn in proportion to sigma x transmittance.
+  const double s = haze_.sample_distance(o, d, t, u, depth);
+  const Vec3f p = ray.origin + ray.direction * static_cast<float>(s);
+  const auto phase = static_cast<float>(haze_.phase(dot(ray.direction, sun_direction_)));
+  const Spectrum& a = haze_albedo_;
+  // Unshadowed, the sun scattered here adds a x sun x (1 - T): the roulette's contribution.
+  Spectrum sun = sun_spectrum_ * (phase * static_cast<float>(haze_.transmittance(
+                                              Vec3(p), Vec3(sun_direction_), kInfiniteDistance)));
+  const float weight = shadow_roulette_weight(
+      importance(throughput * a * sun) * static_cast<float>(scattered), roulette);
+  if (weight > 0.0f) {
+    ++rays;
+    sun = occluded({p, sun_direction_}, mask) ? Spectrum{} : sun * weight;
+  } else {
+    sun = {};
+  }
+  // Skylight (multiple scattering, which single scattering alone misses) as an ambient
+  // source, sized so that an unshadowed, endless horizontal view sees exactly the sky's
+  // horizon radiance in that direction: distant ridges fade toward the horizon colour.
+  const Spectrum horizon = horizon_.spectral(ray.direction);
+  const float sun_at_base = phase * sun_transmittance_at_base_;
+  Spectrum ambient;
+  for (int k = 0; k < kSpectrumBins; ++k)
+    ambient[k] =
+        a[k] > 0.0f ? std::max(0.0f, horizon[k] / a[k] - sun_spectrum_[k] * sun_at_base) : 0.0f;
+  return a * (ambient + sun) * static_cast<float>(scattered);
+}
+
+void PathTracer::finish(PathSample& out, const Spectrum& radiance) const {
+  out.radiance = spectrum_to_rgb(radiance);
+  const std::size_t bands = std::min<std::size_t>(scene_.bands.size(), kMaxBands);
+  for (std::size_t b = 0; b < bands; ++b) {
+    const Spectrum& w = scene_.bands[b].weight;
+    float sum = 0.0f;
+    for (int k = 0; k < kSpectrumBins; ++k) sum += w[k] * radiance[k];
+    out.bands[b] = sum;
+  }
+}
+
+PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
+                             std::uint32_t mask) const {
+  PathSample out;
+  out.first.depth = kInfinity;
+  Ray ray = camera_ray;
+  Spectrum throughput = Spectrum::constant(1.0f);
+  Spectrum radiance;
+  float last_pdf = 0.0f;      // BSDF pdf of the ray being traced (for MIS with sky NEE)
+  bool last_specular = true;  // camera rays and mirror bounces see the sky unweighted
+
+  for (int bounce = 0; bounce <= scene_.settings.max_bounces; ++bounce) {
+    const std::uint32_t dim = kFirstBounceDim + kDimsPerBounce * static_cast<std::uint32_t>(bounce);
+    ++out.rays;
+    const auto hit = intersect(ray, mask);
+    // Haze lies over every segment. Camera and mirror rays that leave upward see the haze
+    // veil over the sky too (dense fog whitens the whole sky; any haze the sky's last degrees,
+    // so the hazed ground and the sky meet at the horizon without a seam). Diffuse bounces
+    // that leave upward are only attenuated, as next-event estimation of the sky is
+    // (sky_light), so the two estimators of the same light agree under MIS.
+    const bool leaves_upward = !hit && ray.direction.z > 0.0f;
+    if (haze_.enabled() && leaves_upward && !last_specular) {
+      throughput = throughput * static_cast<float>(haze_.transmittance(
+                                    Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance));
+    } else if (haze_.enabled()) {
+      const double t = hit ? hit->t : kInfiniteDistance;
+      // The segment's optical depth, once: its transmittance, its scattered share, and where
+      // along it the sun is sampled all follow from it.
+      const double depth = haze_.optical_depth(Vec3(ray.origin), Vec3(ray.direction), t);
+      const auto transmitted = static_cast<float>(std::exp(-depth));
+      // The camera's own segment carries every pixel's haze veil: its sun ray is always
+      // traced (rouletted, the veil's noise grew by 4%); later segments are short, their
+      // rays rouletted.
+      const ShadowRoulette r =
+          bounce == 0 ? ShadowRoulette{} : roulette(rng.uniform(dim + kHazeRoulette));
+      radiance += throughput * haze_in_scatter(ray, t, depth, rng.uniform(dim + kHaze), throughput,
+                                               r, mask, out.rays);
+      throughput = throughput * transmitted;
+    }
+    if (!hit) {
+      const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
+      radiance += throughput * sky_.spectral_radiance(ray.direction) * w;
+      // The sun's disc is seen only along specular paths: every diffuse vertex already took
+      // it by next-event estimation.
+      if (last_specular) radiance += throughput * sky_.sun_spectral_radiance(ray.direction);
+      break;
+    }
+    const ShadingPoint v = shading_point(ray, *hit, mask);
+    const SurfaceMaterial m = surface_material(scene_, *hit, v);
+    const SpectralMaterial sm = spectral_material(m);
+    if (bounce == 0) out.first = first_hit(scene_, *hit, v, m);
+    const float fresnel = water_fresnel(m, ray.direction, v.ng);
+    // The roulette sees what reaches the pixel: the throughput and the water's share.
+    const Spectrum seen = throughput * (1.0f - fresnel);
+    Spectrum direct = sun_light(v, m, sm, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), seen,
+                                rng.uniform(dim + kSunRoulette), out.rays);
+    direct += sky_light(v, m, sm, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
+                        rng.uniform(dim + kSkyRoulette), out.rays);
+    radiance += seen * direct;
+
+    if (m.water && rng.uniform(dim + kFresnel) < fresnel) {
+      // Mirror reflection off the water's (geometric) surface, chosen with probability F.
+      const Vec3f mirrored = ray.direction - v.ng * (2.0f * dot(ray.direction, v.ng));
+      ray = {offset_point(v, v.ng), normalize(mirrored)};
+      last_specular = true;
+      continue;
+    }
+    if (m.glossy()) {
+      // Coat or base, chosen by coat_probability; the weight is f cos / (the mixture's pdf),
+      // which bsdf_pdf also gives the sky's MIS.
+      const float choice = rng.uniform(dim + kChoice);
+      const float c = coat_probability(v, m);
+      const bool coat = choice < c;
+      const float u = std::min(coat ? choice / c : (choice - c) / (1.0f - c), 0.99999994f);
+      const Vec3f next = coat ? ggx_sample(m.alpha, v.n, v.wo, u, rng.uniform(dim + kDir))
+                              : sample_cosine(v.n, u, rng.uniform(dim + kDir));
+      bool front = false;
+      const Spectrum f = reflected_light(sm, m, v, next, front);
+      const float pdf = bsdf_pdf(v, m, next);
+      if (!front || pdf <= 0.0f || max_component(f) <= 0.0f) break;
+      throughput = throughput * f / pdf;
+      last_pdf = pdf;
+      last_specular = false;
+      if (bounce >= kRouletteAfter) {
+        const float survive = std::clamp(importance(throughput), 0.05f, 1.0f);
+        if (rng.uniform(dim + kRoulette) >= survive) break;
+        throughput = throughput / survive;
+      }
+      ray = {offset_point(v, v.ng), next};
+      continue;
+    }
+    // Lambertian reflection or (two-sided surfaces) transmission, chosen in proportion to
+    // their strength; cosine sampling makes the weight the chosen coefficient / probability.
+    const float r = max_component(m.reflectance), tr = max_component(m.transmittance);
+    if (r + tr <= 0.0f) break;
+    const float p_reflect = r / (r + tr);
+    const float choice = rng.uniform(dim + kChoice);
+    const bool reflect = choice < p_reflect;
+    // The choice's own random number, rescaled, also places the direction.
+    const float u = reflect ? choice / p_reflect : (choice - p_reflect) / (1.0f - p_reflect);
+    const Vec3f next =
+        sample_cosine(reflect ? v.n : -v.n, std::min(u, 0.99999994f), rng.uniform(dim + kDir));
+    if (dot(next, reflect ? v.ng : -v.ng) <= 0.0f)
+      break;  // shading normal pointed it into the surface
+    throughput =
+        throughput * (reflect ? sm.reflectance / p_reflect : sm.transmittance / (1.0f - p_reflect));
+    last_pdf = bsdf_pdf(v, m, next);
+    last_specular = false;
+    if (bounce >= kRouletteAfter) {
+      const float survive = std::clamp(importance(throughput), 0.05f, 1.0f);
+      if (rng.uniform(dim + kRoulette) >= survive) break;
+      throughput = throughput / survive;
+    }
+    ray = {offset_point(v, reflect ? v.ng : -v.ng), next};
+  }
+  finish(out, radiance);
+  return out;
+}
+
+}  // namespace landsim::renderer

@@ -1,0 +1,290 @@
+#include "renderer/transport/render.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <mutex>
+
+#include "core/counter_rng.h"
+#include "renderer/acceleration/embree_scene.h"
+#include "renderer/acceleration/stochastic_lod.h"
+#include "renderer/camera.h"
+#include "renderer/output/image_output.h"
+#include "renderer/transport/comparable_tracer.h"
+#include "renderer/transport/path_tracer.h"
+
+#include <spdlog/spdlog.h>
+
+namespace landsim::renderer {
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct TileGrid {
+  int cols, rows;
+  int count() const { return cols * rows; }
+};
+
+TileGrid tile_grid(int width, int height) {
+  return {(width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize};
+}
+TileGrid tile_grid(const View& view) { return tile_grid(view.width, view.height); }
+
+template <typename Visit>
+void for_each_tile_pixel(const TileGrid& grid, int tile, int width, int height, Visit&& visit) {
+  const int x0 = (tile % grid.cols) * kTileSize, y0 = (tile / grid.cols) * kTileSize;
+  for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+    for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) visit(x, y);
+}
+
+// Renders one tile into the film; returns the rays it traced.
+std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const View& view,
+                          const RenderSettings& settings, int tile, const TileGrid& grid,
+                          bool centre_first, Film& film) {
+  const int x0 = (tile % grid.cols) * kTileSize;
+  const int y0 = (tile / grid.cols) * kTileSize;
+  const int x1 = std::min(x0 + kTileSize, view.width);
+  const int y1 = std::min(y0 + kTileSize, view.height);
+  std::uint64_t rays = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(view.width) +
+                         static_cast<std::uint64_t>(x);
+      Vec3f sum{};
+      std::array<float, kMaxBands> band_sum{};
+      FirstHit first;
+      const std::uint32_t mask = pixel_ray_mask(pixel);
+      for (int s = 0; s < settings.spp; ++s) {
+        const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
+        const Ray ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
+        const PathSample sample = tracer.trace(ray, rng, mask);
+        sum += sample.radiance;
+        for (int b = 0; b < film.band_count(); ++b)
+          band_sum[static_cast<std::size_t>(b)] += sample.bands[static_cast<std::size_t>(b)];
+        rays += sample.rays;
+        if (s == 0) first = sample.first;  // AOVs from the first sample: no blending of ids
+      }
+      PixelAovs aovs;
+      aovs.depth = first.depth;
+      aovs.normal = first.normal;
+      aovs.albedo = first.albedo;
+      aovs.object = static_cast<std::uint32_t>(first.object);
+      if (first.instance >= 0) aovs.instance = static_cast<std::uint32_t>(first.instance);
+      if (first.species >= 0) aovs.species = static_cast<std::uint32_t>(first.species);
+      aovs.level = first.level;
+      aovs.target = first.target;
+      const float inverse_spp = 1.0f / static_cast<float>(settings.spp);
+      film.set(x, y, sum * inverse_spp, aovs);
+      for (float& b : band_sum) b *= inverse_spp;
+      film.set_bands(x, y, band_sum.data());
+    }
+  }
+  return rays;
+}
+
+// Tiles rendered between checkpoint opportunities.
+constexpr int kTilesPerWave = 64;
+
+}  // namespace
+
+Ray sample_ray(const Camera& camera, const CounterRng& rng, int x, int y, bool centre) {
+  return camera.ray(static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0)),
+                    static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1)));
+}
+
+int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) {
+  if (options.checkpoint.empty() || !std::filesystem::exists(options.checkpoint)) return 0;
+  ImageMetadata meta;
+  Film saved = read_exr(options.checkpoint, &meta);
+  std::string key, done;
+  for (const auto& [k, v] : meta) {
+    if (k == "render_key") key = v;
+    if (k == "tiles_done") done = v;
+  }
+  if (key != options.render_key || done.empty() || saved.width() != film.width() ||
+      saved.height() != film.height() || !saved.order_bands(film.band_names())) {
+    spdlog::warn("{}: checkpoint of another render, starting afresh", options.checkpoint.string());
+    return 0;
+  }
+  film = std::move(saved);
+  const int tiles = std::clamp(std::stoi(done), 0, tile_count);
+  spdlog::info("resuming {} after {} of {} tiles", options.checkpoint.string(), tiles, tile_count);
+  return tiles;
+}
+
+// Grass detail and (with degradation) tree detail depend on the camera, so such scenes get
+// an Embree scene per view.
+static bool detail_per_view(const Scene& scene) {
+  return scene.grass.cols > 0 || (scene.settings.degradation && !scene.instances.empty());
+}
+
+Renderer::Renderer(const Scene& scene)
+    : scene_(scene),
+      embree_(detail_per_view(scene) ? nullptr : std::make_unique<EmbreeScene>(scene)) {}
+
+Renderer::~Renderer() = default;
+
+struct ViewRenderer::State {
+  explicit State(const View& view) : camera(view) {}
+  Camera camera;
+  std::unique_ptr<EmbreeScene> per_view;
+  std::unique_ptr<Integrator> tracer;
+  std::unique_ptr<tbb::task_arena> arena;
+};
+
+ViewRenderer::ViewRenderer(const Renderer& renderer, const View& view, const RenderOptions& options)
+    : scene_(renderer.scene_),
+      view_(view),
+      options_(options),
+      state_(std::make_unique<State>(view)) {
+  if (!renderer.embree_) state_->per_view = std::make_unique<EmbreeScene>(scene_, &view);
+  const EmbreeScene& embree = renderer.embree_ ? *renderer.embree_ : *state_->per_view;
+  if (options.comparable)
+    state_->tracer = std::make_unique<ComparableTracer>(scene_, embree, *options.comparable);
+  else
+    state_->tracer = std::make_unique<PathTracer>(scene_, embree);
+  const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
+  state_->arena = std::make_unique<tbb::task_arena>(threads);
+}
+
+ViewRenderer::~ViewRenderer() = default;
+
+int ViewRenderer::tile_count() const { return tile_grid(view_).count(); }
+
+Film ViewRenderer::new_film() const { return make_film(scene_, view_); }
+
+std::uint64_t ViewRenderer::render_tiles(int first, int last, Film& film,
+                                         const std::function<void()>& tile_done) const {
+  const TileGrid grid = tile_grid(view_);
+  std::atomic<std::uint64_t> rays{0};
+  state_->arena->execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<int>(first, last, 1), [&](const tbb::blocked_range<int>& r) {
+          for (int tile = r.begin(); tile != r.end(); ++tile) {
+            rays += render_tile(*state_->tracer, state_->camera, view_, scene_.settings, tile, grid,
+                                options_.centre_first_sample, film);
+            if (tile_done) tile_done();
+          }
+        });
+  });
+  return rays.load();
+}
+
+Film Renderer::render(const View& view, const RenderOptions& options, RenderStats* stats) const {
+  const auto start = std::chrono::steady_clock::now();
+  Film film = make_film(scene_, view);
+  const ViewRenderer tiles(*this, view, options);
+  const double setup =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.started) options.started();
+  const int count = tiles.tile_count();
+  const int first_tile = options.resume ? resume_checkpoint(options, film, count) : 0;
+  std::uint64_t rays = 0;
+  std::atomic<int> tiles_done{first_tile};
+  std::mutex progress_mutex;
+  const auto tile_done = [&] {
+    const int done = ++tiles_done;
+    if (options.progress && (done * 20 / count != (done - 1) * 20 / count)) {
+      const std::lock_guard lock(progress_mutex);
+      options.progress(static_cast<double>(done) / count);
+    }
+  };
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  // The first checkpoint comes early (a render killed in its first minute keeps something);
+  // then one every checkpoint_seconds.
+  double interval = std::min(options.first_checkpoint_seconds, options.checkpoint_seconds);
+  // Waves of tiles in a fixed order: between waves the film is a consistent snapshot.
+  for (int wave = first_tile; wave < count; wave += kTilesPerWave) {
+    const int wave_end = std::min(wave + kTilesPerWave, count);
+    rays += tiles.render_tiles(wave, wave_end, film, tile_done);
+    const bool stop = wave_end < count && options.stop && options.stop(wave_end);
+    const auto now = std::chrono::steady_clock::now();
+    if (!options.checkpoint.empty() && wave_end < count &&
+        (stop || std::chrono::duration<double>(now - last_checkpoint).count() >= interval)) {
+      write_checkpoint(options, film, wave_end);
+      last_checkpoint = now;
+      interval = options.checkpoint_seconds;
+    }
+    if (stop)
+      throw RenderInterrupted("render stopped after " + std::to_string(wave_end) + " tiles");
+  }
+  if (!options.checkpoint.empty()) {
+    std::error_code ignored;
+    std::filesystem::remove(options.checkpoint, ignored);
+  }
+
+  if (stats != nullptr) {
+    stats->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->rays = rays;
+    stats->setup_seconds = setup;
+  }
+  return film;
+}
+
+void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_done) {
+  write_exr(film, options.checkpoint,
+            {{"render_key", options.render_key}, {"tiles_done", std::to_string(tiles_done)}},
+            nullptr, false);
+}
+
+Film make_film(const Scene& scene, const View& view) {
+  std::vector<std::string> names;
+  for (const SpectralBand& b : scene.bands) names.push_back(b.name);
+  return Film(view.width, view.height, std::move(names));
+}
+
+// A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
+// species, instance, level and target: 15 words per pixel, then the bands (float bits).
+constexpr std::size_t kWordsPerPixel = 15;
+
+std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
+  const TileGrid grid = tile_grid(film.width(), film.height());
+  std::vector<std::uint32_t> words;
+  const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+  for (int tile = first; tile < last; ++tile)
+    for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
+      const Vec3f c = film.rgb(x, y), n = film.normal(x, y), a = film.albedo(x, y);
+      words.insert(words.end(),
+                   {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y),
+                    bits(n.z), bits(a.x), bits(a.y), bits(a.z), film.object(x, y),
+                    film.species(x, y), film.instance(x, y), film.level(x, y), film.target(x, y)});
+      for (int b = 0; b < film.band_count(); ++b) words.push_back(bits(film.band(x, y, b)));
+    });
+  return words;
+}
+
+void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, Film& film) {
+  const TileGrid grid = tile_grid(film.width(), film.height());
+  const auto f = [&](std::size_t k) { return std::bit_cast<float>(words[k]); };
+  std::size_t k = 0;
+  for (int tile = first; tile < last; ++tile)
+    for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
+      const std::size_t per_pixel = kWordsPerPixel + static_cast<std::size_t>(film.band_count());
+      if (k + per_pixel > words.size()) throw std::runtime_error("tile data too short");
+      PixelAovs aovs;
+      aovs.depth = f(k + 3);
+      aovs.normal = {f(k + 4), f(k + 5), f(k + 6)};
+      aovs.albedo = {f(k + 7), f(k + 8), f(k + 9)};
+      aovs.object = words[k + 10];
+      aovs.species = words[k + 11];
+      aovs.instance = words[k + 12];
+      aovs.level = words[k + 13];
+      aovs.target = words[k + 14];
+      film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
+      std::array<float, kMaxBands> bands{};
+      for (int b = 0; b < film.band_count(); ++b)
+        bands[static_cast<std::size_t>(b)] = f(k + kWordsPerPixel + static_cast<std::size_t>(b));
+      film.set_bands(x, y, bands.data());
+      k += per_pixel;
+    });
+}
+
+int tile_count(const View& view) { return tile_grid(view).count(); }
+
+}  // namespace landsim::renderer

@@ -1,0 +1,91 @@
+#include "renderer/output/image_output.h"
+
+#include <cmath>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "tests/support/temp_dir.h"
+
+namespace landsim::renderer {
+namespace {
+
+Film test_film() {
+  Film film(5, 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 5; ++x)
+      film.set(x, y, {0.1f * static_cast<float>(x), 0.2f * static_cast<float>(y), 0.5f},
+               {10.0f + static_cast<float>(x),
+                {0.0f, 0.0f, 1.0f},
+                {0.3f, 0.3f, 0.3f},
+                1,
+                kNoId,
+                static_cast<std::uint32_t>(y),
+                0});
+  return film;
+}
+
+int file_count(const std::filesystem::path& dir) {
+  int n = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
+  return n;
+}
+
+TEST(ImageOutput, ExrRoundTripsRadianceDepthAndMetadata) {
+  testing::TempDir dir;
+  const auto path = dir / "v.exr";
+  write_exr(test_film(), path, {{"view", "v"}});
+  EXPECT_EQ(file_count(dir.path()), 1);  // no temporary left behind
+
+  Imf::InputFile in(path.c_str());
+  const auto& dw = in.header().dataWindow();
+  ASSERT_EQ(dw.max.x - dw.min.x + 1, 5);
+  ASSERT_EQ(dw.max.y - dw.min.y + 1, 3);
+  for (const char* c : {"R", "G", "B", "Z", "N.X", "N.Y", "N.Z"}) {
+    EXPECT_NE(in.header().channels().findChannel(c), nullptr) << c;
+  }
+  const auto* view = in.header().findTypedAttribute<Imf::StringAttribute>("landsim/view");
+  ASSERT_NE(view, nullptr);
+  EXPECT_EQ(view->value(), "v");
+
+  std::vector<float> r(15), z(15);
+  Imf::FrameBuffer fb;
+  fb.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(r.data()), sizeof(float),
+                            5 * sizeof(float)));
+  fb.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float),
+                            5 * sizeof(float)));
+  in.setFrameBuffer(fb);
+  in.readPixels(dw.min.y, dw.max.y);
+  EXPECT_FLOAT_EQ(r[2 * 5 + 4], 0.4f);
+  EXPECT_FLOAT_EQ(z[1 * 5 + 3], 13.0f);
+}
+
+TEST(ImageOutput, PreviewPngIsSrgbEncoded) {
+  testing::TempDir dir;
+  const auto path = dir / "v.png";
+  // EV100 -log2(1.2): the preview's gain 1 / (1.2 x 2^EV100) is 1.
+  const double unit_gain = -std::log2(1.2);
+  write_preview_png(test_film(), path, unit_gain);
+  EXPECT_EQ(file_count(dir.path()), 1);
+  auto in = OIIO::ImageInput::open(path.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 5);
+  EXPECT_EQ(in->spec().height, 3);
+  std::vector<unsigned char> px(5 * 3 * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+  // Linear 0.5 is sRGB 188 (not 128: the transfer function is applied).
+  EXPECT_NEAR(px[2], 188, 1);
+  // One EV less doubles linear 0.4 to 0.8, sRGB 231.
+  write_preview_png(test_film(), path, unit_gain - 1.0);
+  in = OIIO::ImageInput::open(path.string());
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+  EXPECT_NEAR(px[(2 * 5 + 2) * 3 + 1], 231, 1);
+}
+
+}  // namespace
+}  // namespace landsim::renderer

@@ -1,0 +1,44 @@
+// Sensor bands (renderer/spectra/sensor_band): responses integrated exactly over the bins.
+#include "renderer/spectra/sensor_band.h"
+
+#include <gtest/gtest.h>
+
+namespace landsim::renderer {
+namespace {
+
+TEST(SensorBand, BoxWeighsEachBinByItsOverlap) {
+  // 630-690 nm over the 20 nm bins from 380: 620-640 holds 10 nm of it, 640-660 and 660-680
+  // all 20, 680-700 the last 10.
+  const SpectralBand red = sensor_band("red", box_response(660.0, 60.0));
+  EXPECT_EQ(red.name, "red");
+  EXPECT_FLOAT_EQ(red.weight[12], 10.0f);
+  EXPECT_FLOAT_EQ(red.weight[13], 20.0f);
+  EXPECT_FLOAT_EQ(red.weight[14], 20.0f);
+  EXPECT_FLOAT_EQ(red.weight[15], 10.0f);
+  float total = 0.0f;
+  for (float w : red.weight.v) total += w;
+  EXPECT_FLOAT_EQ(total, 60.0f);
+}
+
+TEST(SensorBand, TriangleIntegratesExactly) {
+  // 0 at 500, 1 at 520, 0 at 540: area 20; bin 500-520 holds half, 520-540 the other half.
+  const SpectralBand b = sensor_band("t", {{500.0, 0.0}, {520.0, 1.0}, {540.0, 0.0}});
+  EXPECT_FLOAT_EQ(b.weight[6], 10.0f);
+  EXPECT_FLOAT_EQ(b.weight[7], 10.0f);
+  // Shifted by 10 nm, the peak inside bin 520-540.
+  const SpectralBand c = sensor_band("t", {{510.0, 0.0}, {530.0, 1.0}, {550.0, 0.0}});
+  EXPECT_FLOAT_EQ(c.weight[6], 2.5f);   // 510-520: 0 to 0.5
+  EXPECT_FLOAT_EQ(c.weight[7], 15.0f);  // 520-540: 0.5 to 1 to 0.5
+  EXPECT_FLOAT_EQ(c.weight[8], 2.5f);   // 540-550: 0.5 to 0
+}
+
+TEST(SensorBand, BandRadianceOfAFlatSpectrumIsItsIntegral) {
+  const SpectralBand nir = sensor_band("nir", box_response(835.0, 130.0));
+  const Spectrum flat = Spectrum::constant(0.5f);
+  float sum = 0.0f;
+  for (int k = 0; k < kSpectrumBins; ++k) sum += nir.weight[k] * flat[k];
+  EXPECT_FLOAT_EQ(sum, 65.0f);  // 0.5 W m-2 sr-1 nm-1 over 130 nm
+}
+
+}  // namespace
+}  // namespace landsim::renderer

@@ -1,0 +1,152 @@
+#include "renderer/transport/render.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "tests/renderer/test_scenes.h"
+
+namespace landsim::renderer {
+namespace {
+
+struct SlopeMeans {
+  double east = 0.0, west = 0.0;
+  int east_n = 0, west_n = 0;
+};
+
+// Mean luminance of the pixels on each slope whose neighbours within kMargin pixels are on the
+// same slope too (the pixel filter mixes a pixel's neighbours into it), or with `per_albedo`
+// the mean luminance over the albedo's (the ground's colour varies over the terrain).
+constexpr int kMargin = 2;
+SlopeMeans slope_means(const Film& film, bool per_albedo = false) {
+  const auto side = [&](int x, int y) {
+    const float nx = film.normal(x, y).x;
+    return nx > 0.44f ? 1 : nx < -0.44f ? -1 : 0;
+  };
+  SlopeMeans m;
+  for (int y = 0; y < film.height(); ++y) {
+    for (int x = 0; x < film.width(); ++x) {
+      const int here = side(x, y);
+      bool inside = here != 0;
+      for (int dy = -kMargin; dy <= kMargin; ++dy)
+        for (int dx = -kMargin; dx <= kMargin; ++dx)
+          inside = inside && side(std::clamp(x + dx, 0, film.width() - 1),
+                                  std::clamp(y + dy, 0, film.height() - 1)) == here;
+      if (!inside) continue;
+      const Vec3f a = film.albedo(x, y);
+      const double albedo = 0.2126 * a.x + 0.7152 * a.y + 0.0722 * a.z;
+      const double value = film.luminance(x, y) / (per_albedo ? albedo : 1.0);
+      (here > 0 ? m.east : m.west) += value;
+      ++(here > 0 ? m.east_n : m.west_n);
+    }
+  }
+  m.east /= std::max(m.east_n, 1);
+  m.west /= std::max(m.west_n, 1);
+  return m;
+}
+
+TEST(Renderer, SlopeFacingTheSunIsBrighter) {
+  // Sun 30 degrees up in the east over two 26.6-degree slopes (1 in 2): Lambert's cosines.
+  const double slope = std::atan(0.5), sun = 30.0 * std::numbers::pi / 180.0;
+  const double facing = std::cos(sun) * std::sin(slope) + std::sin(sun) * std::cos(slope);
+  const double away = -std::cos(sun) * std::sin(slope) + std::sin(sun) * std::cos(slope);
+  ASSERT_NEAR(facing / away, 13.9, 0.1);
+  // Sunlight alone: a black sky, a black plain beyond the grid (the west slope looks down on
+  // it: sunlit, it adds 5% there), direct light only (the ridge is convex: no slope lights
+  // the other). Each slope's luminance over its albedo is E cos / pi, E the sun's
+  // illuminance.
+  Scene scene = testing::ridge_scene();
+  scene.sky.model = SkyKind::gradient;
+  scene.sky.zenith_radiance = scene.sky.horizon_radiance = {0.0f, 0.0f, 0.0f};
+  scene.ground.edge_albedo = Vec3f{0.0f, 0.0f, 0.0f};
+  scene.settings.max_bounces = 0;
+  const SlopeMeans sunlit = slope_means(Renderer(scene).render(scene.views[0], {}), true);
+  ASSERT_GT(sunlit.east_n, 50);
+  ASSERT_GT(sunlit.west_n, 50);
+  const Vec3f e = scene.sun.irradiance;
+  const double lux = 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z;
+  EXPECT_NEAR(sunlit.east, lux * facing / std::numbers::pi, 0.01 * lux * facing / std::numbers::pi);
+  EXPECT_NEAR(sunlit.west, lux * away / std::numbers::pi, 0.01 * lux * away / std::numbers::pi);
+  EXPECT_NEAR(sunlit.east / sunlit.west, facing / away, 0.02 * facing / away);
+  // The sky lights both slopes, the west one relatively more: a smaller ratio, still large.
+  const Scene daylight = testing::ridge_scene();
+  const SlopeMeans m = slope_means(Renderer(daylight).render(daylight.views[0], {}), true);
+  EXPECT_GT(m.west, 1.2 * sunlit.west);
+  EXPECT_LT(m.east / m.west, 0.9 * facing / away);
+  EXPECT_GT(m.east / m.west, 3.0);
+}
+
+TEST(Renderer, BitIdenticalForAnyThreadCount) {
+  const Scene scene = testing::ridge_scene();
+  const Renderer renderer(scene);
+  RenderOptions one;
+  one.threads = 1;
+  RenderOptions two;
+  two.threads = 2;
+  const Film a = renderer.render(scene.views[0], one);
+  const Film b = renderer.render(scene.views[0], two);
+  ASSERT_EQ(a.rgb_data().size(), b.rgb_data().size());
+  EXPECT_EQ(
+      std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
+      0);
+  EXPECT_EQ(std::memcmp(a.depth_data().data(), b.depth_data().data(),
+                        a.depth_data().size() * sizeof(float)),
+            0);
+}
+
+TEST(Renderer, SeedChangesTheNoiseNotTheMean) {
+  Scene scene = testing::ridge_scene();
+  const Film a = Renderer(scene).render(scene.views[0], {});
+  scene.settings.seed = 10;
+  const Film b = Renderer(scene).render(scene.views[0], {});
+  EXPECT_NE(
+      std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
+      0);
+  double sa = 0, sb = 0;
+  for (std::size_t i = 0; i < a.rgb_data().size(); ++i) {
+    sa += a.rgb_data()[i];
+    sb += b.rgb_data()[i];
+  }
+  EXPECT_NEAR(sa / sb, 1.0, 0.03);
+}
+
+TEST(Renderer, DepthIsTheDistanceToTheGround) {
+  Scene scene = testing::ridge_scene();
+  // Straight down the ridge line from 100 m above the crest (60 m high at x = 102.5).
+  scene.views[0] = {"down", {102.5, 100.0, 160.0}, {102.5, 100.001, 0.0}, 1.0, 3, 3};
+  const Film film = Renderer(scene).render(scene.views[0], {});
+  EXPECT_NEAR(film.depth(1, 1), 100.0f, 0.3f);
+  EXPECT_EQ(film.object(1, 1), 1);  // ground
+}
+
+TEST(Renderer, SkyPixelsHaveInfiniteDepthAndSkyRadiance) {
+  Scene scene = testing::ridge_scene();
+  scene.views[0] = {"up", {102.5, 100.0, 160.0}, {102.5, 200.0, 260.0}, 10.0, 4, 4};
+  const Film film = Renderer(scene).render(scene.views[0], {});
+  EXPECT_TRUE(std::isinf(film.depth(2, 2)));
+  EXPECT_EQ(film.object(2, 2), 0);
+  EXPECT_GT(film.rgb(2, 2).z, film.rgb(2, 2).x);  // blue sky
+}
+
+TEST(Renderer, ProgressReachesOne) {
+  const Scene scene = testing::ridge_scene();
+  double last = 0.0;
+  int calls = 0;
+  RenderOptions options;
+  options.progress = [&](double f) {
+    EXPECT_GE(f, last);
+    last = f;
+    ++calls;
+  };
+  RenderStats stats;
+  Renderer(scene).render(scene.views[0], options, &stats);
+  EXPECT_GT(calls, 0);
+  EXPECT_DOUBLE_EQ(last, 1.0);
+  // At least one camera ray per sample.
+  EXPECT_GE(stats.rays, 64u * 48u * 4u);
+}
+
+}  // namespace
+}  // namespace landsim::renderer

@@ -1,0 +1,60 @@
+// Shadow-ray roulette: unbiased (the weights average to one over the decision's random
+// number), bounded (no traced ray adds more than the threshold), and a dark surface under a
+// uniform sky (where most shadow rays are rouletted) keeps its exact radiance.
+#include <gtest/gtest.h>
+
+#include "renderer/transport/render.h"
+#include "renderer/transport/shadow_roulette.h"
+#include "terrain/ground_mesh.h"
+#include "tests/renderer/film_stats.h"
+
+namespace landsim::renderer {
+namespace {
+
+// The mean weight over u on a fine regular grid of [0, 1).
+double mean_weight(float contribution, float threshold) {
+  const int n = 100000;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i)
+    sum += shadow_roulette_weight(contribution, {threshold, (static_cast<float>(i) + 0.5f) / n});
+  return sum / n;
+}
+
+TEST(ShadowRoulette, WeightsAverageToOne) {
+  for (const float c : {0.001f, 0.01f, 0.05f, 0.099f}) EXPECT_NEAR(mean_weight(c, 0.1f), 1.0, 1e-3);
+}
+
+TEST(ShadowRoulette, BrightRaysAreAlwaysTracedAndFaintOnesBounded) {
+  EXPECT_EQ(shadow_roulette_weight(0.3f, {0.1f, 0.999f}), 1.0f);
+  EXPECT_EQ(shadow_roulette_weight(0.3f, {0.0f, 0.5f}), 1.0f);  // threshold 0: no roulette
+  EXPECT_EQ(shadow_roulette_weight(0.0f, {0.1f, 0.0f}), 0.0f);
+  // Traced faint rays add exactly the threshold; the others nothing.
+  EXPECT_FLOAT_EQ(0.02f * shadow_roulette_weight(0.02f, {0.1f, 0.1f}), 0.1f);
+  EXPECT_EQ(shadow_roulette_weight(0.02f, {0.1f, 0.3f}), 0.0f);
+}
+
+TEST(ShadowRoulette, DarkGroundUnderUniformSkyKeepsItsRadiance) {
+  // A plane of albedo 0.1 under a uniform sky of radiance 0.5 (no sun) returns 0.05 exactly:
+  // it sees only sky. Its sky shadow rays mostly add less than the threshold (0.2 x 0.5), so
+  // a biased roulette would show here.
+  std::vector<float> h(9, 0.0f);
+  const terrain::ElevationGrid grid(3, 3, terrain::GeoTransform{-1.5e4, 1.5e4, 1e4, 1e4}, h);
+  Scene s;
+  s.ground.mesh = terrain::build_ground_mesh(grid, Vec3{});
+  s.ground.albedo = {0.1f, 0.1f, 0.1f};
+  s.sky.model = SkyKind::gradient;
+  s.sky.zenith_radiance = s.sky.horizon_radiance = {0.5f, 0.5f, 0.5f};
+  s.sun.irradiance = {0.0f, 0.0f, 0.0f};
+  s.settings.spp = 256;
+  const View down{"v", {0.0, 0.0, 10.0}, {5.0, 0.0, 0.0}, 40.0, 24, 24};
+  RenderStats stats;
+  const Film film = Renderer(s).render(down, {}, &stats);
+  EXPECT_NEAR(test::mean_luminance(film), 0.05, 0.05 * 0.01);
+  // And rays were saved: camera + bounce to the sky = 2 per sample, plus the sky's shadow
+  // rays that survived (all of them would make 3).
+  const double per_sample = static_cast<double>(stats.rays) / (24.0 * 24.0 * 256.0);
+  EXPECT_LT(per_sample, 2.9);
+}
+
+}  // namespace
+}  // namespace landsim::renderer
