@@ -19,6 +19,7 @@
 #include "scenes/detail/camera_check.h"
 #include "scenes/detail/context_terrain.h"
 #include "scenes/detail/grass_cover.h"
+#include "scenes/detail/scene_foundation.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
 #include "scenes/scene_builder.h"
@@ -225,29 +226,34 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   e.program_bytes =
       resident_bytes() +
       (renderer::image_io_loaded() ? std::size_t{0} : static_cast<std::size_t>(mm::kImageModule));
-  const terrain::ElevationGrid grid = terrain::load_elevation(s.terrain.elevation, s.terrain.dem);
+  // The build's own first stages: the grid, the ground rasters and the vegetation map.
+  const detail::SceneFoundation foundation = detail::lay_foundation(s);
+  const terrain::ElevationGrid& grid = foundation.grid;
   detail::warn_cameras_below_ground(s, grid);
   const Vec3 origin = grid.centre();
   const GroundSize ground = ground_size(s, grid);
   Parts p;
   p.scene_ground = ground.vertices * 24.0 + ground.triangles * (12.0 + 1.0);
   p.view_ground = ground.triangles * mm::kEmbreeGridTriangle;
-  p.build_extra = ground.cells * 4.0;
+  // The grid (or the context grids) as the ground counts it, plus the rasters and the map.
+  p.build_extra = ground.cells * 4.0 + foundation.bytes() -
+                  static_cast<double>(grid.cols()) * grid.rows() * sizeof(float);
   e.triangles_stored = e.triangles_instanced = ground.triangles;
 
-  const std::optional<featuremaps::VegetationMap> map = detail::scene_vegetation(s, grid);
+  const std::optional<featuremaps::VegetationMap>& map = foundation.map;
   renderer::GrassCover cover;
   std::vector<SpeciesExtent> extent(s.species.size());
   std::vector<double> trees(s.species.size(), 0.0);
   if (map) {
-    p.build_extra += static_cast<double>(map->cols()) * map->rows() * (2.0 + 4.0);
     extent = species_extents(s, *map, grid);
     for (std::size_t k = 0; k < s.species.size(); ++k) {
       trees[k] = extent[k].area * s.species[k].density_per_ha / 1e4;
       e.instances += trees[k];
       e.instances_per_species[s.species[k].species.name] += trees[k];
     }
-    if (!s.grass.empty()) cover = detail::grass_cover(s, *map, grid, origin);
+    if (!s.grass.empty())
+      cover = detail::grass_cover(
+          s, *map, grid, origin, [&](double x, double y) { return foundation.blocks_grass(x, y); });
   }
   // One variant per species stands for all of its variants.
   std::vector<std::optional<renderer::TreePrototype>> variant(s.species.size());

@@ -19,6 +19,7 @@
 #include "scenes/detail/context_terrain.h"
 #include "scenes/detail/grass_cover.h"
 #include "scenes/detail/plain_albedo.h"
+#include "scenes/detail/scene_foundation.h"
 #include "scenes/detail/scene_objects.h"
 #include "scenes/detail/tree_variant.h"
 #include "scenes/detail/vegetation_input.h"
@@ -99,32 +100,8 @@ void lift_grass(const terrain::SurfaceDetail& relief, renderer::Scene& scene) {
     }
 }
 
-// A ground feature map: a raster whose non-zero cells carry one material.
-struct MaterialRaster {
-  std::optional<terrain::ElevationGrid> grid;
-  bool covers(double x, double y) const {
-    if (!grid) return false;
-    const terrain::GeoTransform& t = grid->transform();
-    const double c = (x - t.origin_x) / t.cell_size_x, r = (t.origin_y - y) / t.cell_size_y;
-    if (!(c >= 0 && r >= 0 && c < grid->cols() && r < grid->rows())) return false;
-    const float v = grid->at(static_cast<int>(c), static_cast<int>(r));
-    return !std::isnan(v) && v != 0.0f;
-  }
-};
-
-MaterialRaster material_raster(const std::string& path) {
-  if (path.empty()) return {};
-  return {terrain::load_elevation(path)};
-}
-
-// The ground feature maps by material id - 1: road, water, rock, soil.
-using GroundRasters = std::array<MaterialRaster, 4>;
-
-GroundRasters ground_rasters(const Scenario& s) {
-  const FeatureMapSettings f = s.featuremaps.value_or(FeatureMapSettings{});
-  return {material_raster(f.road), material_raster(f.water), material_raster(f.rock),
-          material_raster(f.soil)};
-}
+using detail::GroundRasters;
+using detail::MaterialRaster;
 
 // The material the ground maps give a point, by priority: road, water, rock, soil, then the
 // ground under a grass type [[grass]] defines; none where no map says.
@@ -279,13 +256,12 @@ Vec3 sun_direction(double elevation_deg, double azimuth_deg) {
 }
 
 renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache* reuse) {
-  const terrain::ElevationGrid grid =
-      terrain::load_elevation(scenario.terrain.elevation, scenario.terrain.dem);
+  const detail::SceneFoundation foundation = detail::lay_foundation(scenario);
+  const terrain::ElevationGrid& grid = foundation.grid;
+  const GroundRasters& rasters = foundation.rasters;
+  const std::optional<featuremaps::VegetationMap>& map = foundation.map;
   renderer::Scene scene;
   scene.origin = grid.centre();
-  const GroundRasters rasters = ground_rasters(scenario);
-  std::optional<featuremaps::VegetationMap> map;
-  if (scenario.featuremaps || has_cover(scenario)) map = detail::scene_vegetation(scenario, grid);
   const std::optional<terrain::SurfaceDetail> relief =
       surface_detail(scenario, grid, rasters, map ? &*map : nullptr);
   add_ground_mesh(scenario, grid, relief ? &*relief : nullptr, scene);
@@ -321,10 +297,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   if (map) {
     if (!scenario.species.empty()) detail::warn_cameras_inside_trees(scenario, scene);
     if (!scenario.grass.empty()) {
-      // No blade stands on road or water.
-      const auto blocked = [&](double x, double y) {
-        return rasters[0].covers(x, y) || rasters[1].covers(x, y);
-      };
+      const auto blocked = [&](double x, double y) { return foundation.blocks_grass(x, y); };
       scene.grass = detail::grass_cover(scenario, *map, grid, scene.origin, blocked);
       if (relief) lift_grass(*relief, scene);
     }

@@ -44,6 +44,36 @@ TEST(MemoryEstimate, CountsWhatTheBuilderPlacesWithoutPlacingIt) {
   EXPECT_NEAR(e.triangles_stored, triangles, 0.25 * triangles);
 }
 
+// The estimate reads the build's own first stages (scenes/detail/scene_foundation), so grass
+// kept off a road raster is kept off in the estimate too (it replayed the build without the
+// road and water masks before, and counted grass on the road).
+TEST(MemoryEstimate, GrassOffTheRoadIsOffInTheEstimateAndTheRoadIsCounted) {
+  landsim::testing::TempDir dir;
+  std::string road =
+      "ncols 61\nnrows 87\nxllcorner 0.0\nyllcorner 0.0\ncellsize 10.0\n"
+      "NODATA_value -9999\n";
+  for (int r = 0; r < 87; ++r) {
+    for (int c = 0; c < 61; ++c) road += c < 30 ? "1 " : "0 ";
+    road += "\n";
+  }
+  dir.write("road.asc", road);
+  const std::string base =
+      "[terrain]\nelevation = \"" +
+      landsim::testing::source_file("data/terrain/volcano.asc").string() +
+      "\"\n[sun]\nelevation = 30\nazimuth = 200\n[[views]]\nname = \"v\"\n"
+      "position = [300.0, -200.0, 300.0]\ntarget = [300.0, 400.0, 120.0]\nwidth = 64\n"
+      "height = 36\n[[grass]]\ntype = 1\ncover = \"everywhere\"\n";
+  const Scenario open = parse_scenario(base, "open.toml", dir.path().string());
+  const Scenario with_road = parse_scenario(base + "[featuremaps]\nroad = \"road.asc\"\n",
+                                            "road.toml", dir.path().string());
+  const MemoryEstimate e = estimate_memory(with_road);
+  const renderer::Scene scene = build_scene(with_road);
+  std::size_t tiles = 0;
+  for (std::uint8_t t : scene.grass.type) tiles += t != 0 ? 1 : 0;
+  EXPECT_EQ(e.grass_tiles, tiles);
+  EXPECT_LT(e.grass_tiles, estimate_memory(open).grass_tiles * 3 / 4);  // half is road
+}
+
 TEST(MemoryEstimate, PartsScaleWithWhatTheyCount) {
   const Scenario s = default_scenario();
   const MemoryEstimate base = estimate_memory(s);
