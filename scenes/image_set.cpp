@@ -348,6 +348,7 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
       if (!scene || (sway && image.frame != scene_frame)) {
         if (options.stop && options.stop()) {  // asked to stop before a long build
           result.stopped_at = image.stem;
+          result.stopped_before_tracing = true;
           return result;
         }
         renderer.reset();

@@ -65,8 +65,10 @@ struct ImageSetResult {
   std::size_t skipped = 0;          // finished images kept (resume)
   double scene_seconds = 0.0;       // building scenes
   std::uint64_t memory_estimate_bytes = 0;
-  // Set when `stop` stopped the render: the image whose checkpoint holds its progress.
+  // Set when `stop` stopped the render: the image it stopped at; its checkpoint holds the
+  // progress unless the stop came before its scene was built (`stopped_before_tracing`).
   std::optional<std::string> stopped_at;
+  bool stopped_before_tracing = false;
 };
 
 // The image names of a set: <view> for a single frame, <view>_f<index> for several.

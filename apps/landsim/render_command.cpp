@@ -190,8 +190,14 @@ int run_render(const RenderArgs& args) {
     result = scenes::render_image_set(scenario, options);
   }
   if (result.stopped_at) {
-    spdlog::error("stopped by signal {} at {}: its checkpoint is in {}; continue with --resume",
-                  static_cast<int>(g_stop_signal), *result.stopped_at, out_dir.string());
+    if (result.stopped_before_tracing)
+      spdlog::error(
+          "stopped by signal {} before rendering {} (nothing of it written); "
+          "continue with --resume",
+          static_cast<int>(g_stop_signal), *result.stopped_at);
+    else
+      spdlog::error("stopped by signal {} at {}: its checkpoint is in {}; continue with --resume",
+                    static_cast<int>(g_stop_signal), *result.stopped_at, out_dir.string());
     return 128 + static_cast<int>(g_stop_signal);
   }
   const bool writer = session == nullptr || session->rank() == 0;

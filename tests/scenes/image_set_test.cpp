@@ -94,6 +94,7 @@ TEST(ImageSet, AStopBeforeTheSceneWritesNothing) {
   const ImageSetResult r = render_image_set(two_frames(), o);
   ASSERT_TRUE(r.stopped_at.has_value());
   EXPECT_EQ(*r.stopped_at, "v_f0000");
+  EXPECT_TRUE(r.stopped_before_tracing);
   EXPECT_TRUE(r.images.empty());
   EXPECT_FALSE(std::filesystem::exists(o.out_dir));
 }
