@@ -99,6 +99,20 @@ TEST(ImageSet, AStopBeforeTheSceneWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(o.out_dir));
 }
 
+// A later image that cannot be written (its name taken by a directory) leaves the finished
+// ones with a manifest that says the set is unfinished, and the error goes to the caller.
+TEST(ImageSet, ALaterImageThatFailsLeavesAManifestOfTheFinishedOnes) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  std::filesystem::create_directories(o.out_dir / "v_f0001.exr");
+  EXPECT_ANY_THROW(render_image_set(two_frames(), o));
+  const nlohmann::json m = manifest_in(o.out_dir);
+  EXPECT_FALSE(m["complete"].get<bool>());
+  ASSERT_EQ(m["images"].size(), 1u);
+  EXPECT_EQ(m["images"][0]["path"], "v_f0000.exr");
+}
+
 TEST(ImageSet, CheckNamesTheMissingImagesAndWritesTheManifestWhenNoneAre) {
   TempDir dir;
   ImageSetOptions o;
