@@ -1,6 +1,6 @@
 #pragma once
 // An image set: every frame of every view of a scenario path-traced into a directory of
-// EXR images with PNG previews and a manifest.json (docs/SCENARIO.md "Outputs"), with the
+// EXR images with PNG previews and a manifest.json (docs/SCENARIO.md "Image sets"), with the
 // memory budget checked before anything is built, resume from finished images and
 // checkpoints, the scene rebuilt between frames only when the wind moves it, and object
 // truth. The one entry point `landsim render`, its MPI driver and scripts call; the CLI
