@@ -146,6 +146,11 @@ nlohmann::json saved_objects(const std::filesystem::path& exr) {
   return nullptr;
 }
 
+// The image names of a set: <view> for a single frame, <view>_f<index> for several.
+std::string image_stem(const std::string& view, std::size_t frame, std::size_t frames) {
+  return frames == 1 ? view : fmt::format("{}_f{:04d}", view, frame);
+}
+
 // One image of the set: a frame of a view.
 struct Image {
   std::size_t frame = 0;
@@ -306,10 +311,6 @@ MemoryEstimate check_memory(const Scenario& scenario, const ImageSetOptions& o,
 }
 
 }  // namespace
-
-std::string image_stem(const std::string& view, std::size_t frame, std::size_t frames) {
-  return frames == 1 ? view : fmt::format("{}_f{:04d}", view, frame);
-}
 
 ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions& options) {
   const std::vector<Image> images = images_to_render(scenario, options);

@@ -71,9 +71,6 @@ struct ImageSetResult {
   bool stopped_before_tracing = false;
 };
 
-// The image names of a set: <view> for a single frame, <view>_f<index> for several.
-std::string image_stem(const std::string& view, std::size_t frame, std::size_t frames);
-
 // Renders the set into options.out_dir. Throws InputError for bad input (nothing written);
 // when a later image fails, the manifest lists the finished ones with "complete": false.
 ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions& options);

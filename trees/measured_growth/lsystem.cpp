@@ -58,9 +58,10 @@ std::vector<Module> derive(const Parameters& p, std::uint64_t seed, double age) 
     scaffold(hash_combine(1, static_cast<std::uint64_t>(grown)), t, a.f_height(t));
   // Productions: a branch that has grown its period bifurcates into two, each at the crown's
   // half-angle (plus noise) on either side of it, the plane turned by the divergence.
+  const double period = bifurcation_age(p);  // one bisection over f_H, the same for every branch
   for (std::size_t i = 0; i < modules.size(); ++i) {
     const Module parent = modules[i];
-    const double t = parent.t0 + bifurcation_age(p);
+    const double t = parent.t0 + period;
     if (t >= age || !bifurcates(p, parent)) continue;
     const Vec3 side = rotate_about(any_perpendicular(parent.direction), parent.direction,
                                    (parent.generation + 1) * p.divergence);

@@ -68,14 +68,15 @@ void read_leaves(TableReader r, Parameters& p) {
   r.finish();
 }
 
-double h_max_of(const Parameters& p) { return p.allometry.f_height(p.allometry.max_age); }
-double l_max_of(const Parameters& p) { return p.l_max > 0.0 ? p.l_max : h_max_of(p); }
-
 }  // namespace
+
+double max_height(const Parameters& p) { return p.allometry.f_height(p.allometry.max_age); }
+
+double length_scale(const Parameters& p) { return p.l_max > 0.0 ? p.l_max : max_height(p); }
 
 double bifurcation_age(const Parameters& p) {
   const Allometry& a = p.allometry;
-  const double wanted = h_max_of(p) * p.branch_length / l_max_of(p);
+  const double wanted = max_height(p) * p.branch_length / length_scale(p);
   if (wanted <= a.f_height(0.0)) return 0.0;
   if (wanted > a.f_height(a.max_age)) return std::numeric_limits<double>::infinity();
   double lo = 0.0, hi = a.max_age;  // f_H increases with age
@@ -99,10 +100,11 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
                      " leaves at full leaf area (limit 2,000,000): raise leaves.area");
   // A branch born at its maximum length would fork at once, every fork again: refused.
   if (!(bifurcation_age(p) > 0.0))
-    throw InputError(source + ": growth.branch_length " + params::format_number(p.branch_length) +
-                     " m is no longer than a branch is at its creation (" +
-                     params::format_number(p.allometry.f_height(0.0) / h_max_of(p) * l_max_of(p)) +
-                     " m for c_l = 1): every branch would fork at once; raise it");
+    throw InputError(
+        source + ": growth.branch_length " + params::format_number(p.branch_length) +
+        " m is no longer than a branch is at its creation (" +
+        params::format_number(p.allometry.f_height(0.0) / max_height(p) * length_scale(p)) +
+        " m for c_l = 1): every branch would fork at once; raise it");
   const double scaffolds = p.allometry.max_age / p.scaffold_interval;
   const double per_scaffold = std::pow(2.0, p.max_generations + 1);
   if (scaffolds * per_scaffold > 2e6)

@@ -30,6 +30,11 @@ struct Parameters {
   double scatter = 1.0;
 };
 
+// H_max: the largest height, f_H at the data's end.
+double max_height(const Parameters& p);
+// l_max: a c_l = 1 branch's length scale, the species' or else H_max.
+double length_scale(const Parameters& p);
+
 // Section 5: a branch grows l(t) = c_l l_max / H_max f_H(t - t0) and bifurcates when it
 // reaches its maximum length, c_l x `branch_length` (a child's maximum is its parent's times
 // the same factor s as its c_l): when f_H(t - t0) = H_max branch_length / l_max, the same

@@ -74,14 +74,15 @@ TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, doub
   tree.height = a.f_height(age);
   tree.crown_base = tree.height - a.f_crown_height(age);
   tree.dbh_radius = p.c_dbh * a.f_dbh(age) / 200.0;
-  const double h_max = a.f_height(a.max_age);
-  const double l_max = p.l_max > 0.0 ? p.l_max : h_max;
+  const double h_max = max_height(p);
+  const double l_max = length_scale(p);
   // The branch's length at time t: grown by the age function, ended by the crown's shape.
   const CrownShape shape(a, age);
   const auto length_at = [&](const Module& m, const Vec3& base, double t) {
     const double grown = m.c_l * l_max / h_max * a.f_height(t - m.t0);
     return room(base, m.direction, shape.at(t), grown);
   };
+  const double period = bifurcation_age(p);
   tree.branches.resize(modules.size());
   std::vector<bool> removed(modules.size(), false);
   for (std::size_t i = 0; i < modules.size(); ++i) {
@@ -98,7 +99,7 @@ TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, doub
     }
     // A branch that bifurcated stopped growing then: its tip, where the children start,
     // stays put, so no child is ever pushed out of the crown.
-    const double stop = m.t0 + bifurcation_age(p);
+    const double stop = m.t0 + period;
     b.length =
         bifurcates(p, m) && age >= stop ? length_at(m, b.base, stop) : length_at(m, b.base, age);
     b.tip = b.base + m.direction * b.length;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <ranges>
 #include <string>
 
 #include "core/input_error.h"
@@ -226,10 +227,6 @@ void carry(Plant& plant, std::uint32_t first, const Vec3& pivot, const Vec3& mov
   }
 }
 
-}  // namespace
-
-namespace {
-
 std::string format_point(const Vec3& p) {
   return "[" + params::format_number(p.x) + ", " + params::format_number(p.y) + ", " +
          params::format_number(p.z) + "]";
@@ -242,9 +239,10 @@ double segment_distance(const Internode& n, const Vec3& p) {
   return length(p - (n.base + d * t));
 }
 
-// Of `candidates`, the one whose tip is nearest p (ties to the first).
-std::uint32_t nearest_tip(const Plant& plant, const std::vector<std::uint32_t>& candidates,
-                          const Vec3& p) {
+// Of `candidates` (internode indices), the living one whose tip is nearest p (ties to the
+// first).
+template <typename Indices>
+std::uint32_t nearest_tip(const Plant& plant, const Indices& candidates, const Vec3& p) {
   std::uint32_t best = kNone;
   double nearest = std::numeric_limits<double>::infinity();
   for (std::uint32_t k : candidates) {
@@ -270,9 +268,9 @@ std::uint32_t nearest_internode(const Plant& plant, const Vec3& p) {
 BendPath bend_path(const Plant& plant, const Bend& b) {
   BendPath r;
   if (b.handles.empty() || plant.size() == 0) return r;
-  std::vector<std::uint32_t> all(plant.size());
-  for (std::uint32_t k = 0; k < plant.size(); ++k) all[k] = k;
-  const std::uint32_t end = nearest_tip(plant, all, b.handles.back().at);
+  const std::uint32_t end = nearest_tip(
+      plant, std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(plant.size())),
+      b.handles.back().at);
   if (end == kNone) return r;
   std::vector<std::uint32_t> from_root;  // the way up from the seedling to E
   for (std::uint32_t k = end; k != kNone; k = plant[k].parent) from_root.push_back(k);

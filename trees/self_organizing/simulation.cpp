@@ -81,6 +81,10 @@ class Simulation {
   // left after every bud's occupancy zone; the others get none.
   std::vector<BudSpace> compete(const std::vector<BudRef>& buds, const std::vector<Vec3>& positions,
                                 const std::vector<Vec3>& directions) const {
+    const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
+    if (phase_ == nullptr || !phase_->selective)  // every bud competes: no copies
+      return allocate_markers(markers_.points(), positions, directions, radius,
+                              p_.space.perception_angle);
     std::vector<std::size_t> rivals;
     std::vector<Vec3> at, towards;
     for (std::size_t b = 0; b < buds.size(); ++b) {
@@ -89,7 +93,6 @@ class Simulation {
       at.push_back(positions[b]);
       towards.push_back(directions[b]);
     }
-    const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
     const std::vector<BudSpace> won =
         allocate_markers(markers_.points(), at, towards, radius, p_.space.perception_angle);
     std::vector<BudSpace> space(buds.size());

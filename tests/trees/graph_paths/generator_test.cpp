@@ -116,29 +116,29 @@ TEST(GraphPathsGenerator, DownwardRotationMakesWeepingBranches) {
   EXPECT_LT(weeping, straight - 0.3);
 }
 
-TEST(GraphPathsGenerator, LifespanEndsSomeBranchesEarly) {
-  GraphStatistics free_growth, bush;
+// Nodes of a three-level tree (seed 5) with the lifespan rule at `lifespan`, each child ending
+// with `terminate`; lifespan 0: without the rule.
+std::size_t nodes_with_lifespan(double lifespan, double terminate = 0.3) {
   Parameters p = iterated(3);
-  generate_skeleton(p, 5, &free_growth);
-  p.iteration.use_lifespan = true;
-  p.iteration.lifespan = 2.0;
-  generate_skeleton(p, 5, &bush);
-  EXPECT_LT(bush.nodes, free_growth.nodes * 3 / 4);
-  EXPECT_GT(bush.nodes, 0u);
+  p.iteration.use_lifespan = lifespan > 0.0;
+  p.iteration.lifespan = lifespan;
+  p.iteration.terminate_probability = terminate;
+  GraphStatistics stats;
+  generate_skeleton(p, 5, &stats);
+  return stats.nodes;
+}
+
+TEST(GraphPathsGenerator, LifespanEndsSomeBranchesEarly) {
+  const std::size_t free_growth = nodes_with_lifespan(0.0), bush = nodes_with_lifespan(2.0);
+  EXPECT_LT(bush, free_growth * 3 / 4);
+  EXPECT_GT(bush, 0u);
 }
 
 // Section 3.3.3's decrement is a uniform part of the current lifespan L, so without the
 // 30% ending (and without light) no lifespan runs out: a lifespan of 1 grows as far as
 // free growth. (A fixed-size loss of about 1 per level stopped most branches at level 2.)
 TEST(GraphPathsGenerator, ALifespanLosesAPartOfItselfAndNeverRunsOutAlone) {
-  GraphStatistics free_growth, unending;
-  Parameters p = iterated(3);
-  generate_skeleton(p, 5, &free_growth);
-  p.iteration.use_lifespan = true;
-  p.iteration.lifespan = 1.0;
-  p.iteration.terminate_probability = 0.0;
-  generate_skeleton(p, 5, &unending);
-  EXPECT_EQ(unending.nodes, free_growth.nodes);
+  EXPECT_EQ(nodes_with_lifespan(1.0, 0.0), nodes_with_lifespan(0.0));
 }
 
 TEST(GraphPathsGenerator, LightFavoursTheSubgraphsFacingIt) {

@@ -124,8 +124,11 @@ TEST(MeasuredGrowth, ABranchBifurcatesWhenItReachesItsMaximumLength) {
   p.branch_length = 1e3;
   EXPECT_TRUE(std::isinf(bifurcation_age(p)));
   // Scaffolds take section 5's diameter rule from the trunk's c_d = 1 (was a fixed 0.5).
-  for (const Module& m : derive(p, 1, 5.0))
-    if (m.parent == kLeader) EXPECT_NEAR(m.c_d, m.c_l * (1.0 - 0.7 * m.c_l), 1e-12);
+  for (const Module& m : derive(p, 1, 5.0)) {
+    if (m.parent == kLeader) {
+      EXPECT_NEAR(m.c_d, m.c_l * (1.0 - 0.7 * m.c_l), 1e-12);
+    }
+  }
 }
 
 // A branch's tip is its thicker child's base, so the tree has no steps where it forks; one

@@ -15,21 +15,28 @@
 namespace landsim::trees::weber_penn {
 namespace {
 
-const std::vector<std::string> kKeys = {
-    "Shape",         "BaseSize",      "Scale",        "ScaleV",     "ZScale",      "ZScaleV",
-    "Levels",        "Ratio",         "RatioPower",   "Lobes",      "LobeDepth",   "Flare",
-    "0Scale",        "0ScaleV",       "0Length",      "0LengthV",   "0Taper",      "0BaseSplits",
-    "0SegSplits",    "0SplitAngle",   "0SplitAngleV", "0CurveRes",  "0Curve",      "0CurveBack",
-    "0CurveV",       "1DownAngle",    "1DownAngleV",  "1Rotate",    "1RotateV",    "1Branches",
-    "1Length",       "1LengthV",      "1Taper",       "1SegSplits", "1SplitAngle", "1SplitAngleV",
-    "1CurveRes",     "1Curve",        "1CurveBack",   "1CurveV",    "2DownAngle",  "2DownAngleV",
-    "2Rotate",       "2RotateV",      "2Branches",    "2Length",    "2LengthV",    "2Taper",
-    "2SegSplits",    "2SplitAngle",   "2SplitAngleV", "2CurveRes",  "2Curve",      "2CurveBack",
-    "2CurveV",       "3DownAngle",    "3DownAngleV",  "3Rotate",    "3RotateV",    "3Branches",
-    "3Length",       "3LengthV",      "3Taper",       "3SegSplits", "3SplitAngle", "3SplitAngleV",
-    "3CurveRes",     "3Curve",        "3CurveBack",   "3CurveV",    "Leaves",      "LeafShape",
-    "LeafScale",     "LeafScaleX",    "AttractionUp", "PruneRatio", "PruneWidth",  "PruneWidthPeak",
-    "PrunePowerLow", "PrunePowerHigh"};
+// The appendix's parameters in its order: the tree's, the trunk's, three levels alike, the
+// leaves' and the pruning's.
+std::vector<std::string> appendix_keys() {
+  std::vector<std::string> keys = {
+      "Shape",        "BaseSize",  "Scale",       "ScaleV",     "ZScale",
+      "ZScaleV",      "Levels",    "Ratio",       "RatioPower", "Lobes",
+      "LobeDepth",    "Flare",     "0Scale",      "0ScaleV",    "0Length",
+      "0LengthV",     "0Taper",    "0BaseSplits", "0SegSplits", "0SplitAngle",
+      "0SplitAngleV", "0CurveRes", "0Curve",      "0CurveBack", "0CurveV"};
+  for (const char* level : {"1", "2", "3"})
+    for (const char* name :
+         {"DownAngle", "DownAngleV", "Rotate", "RotateV", "Branches", "Length", "LengthV", "Taper",
+          "SegSplits", "SplitAngle", "SplitAngleV", "CurveRes", "Curve", "CurveBack", "CurveV"})
+      keys.push_back(std::string(level) + name);
+  for (const char* name :
+       {"Leaves", "LeafShape", "LeafScale", "LeafScaleX", "AttractionUp", "PruneRatio",
+        "PruneWidth", "PruneWidthPeak", "PrunePowerLow", "PrunePowerHigh"})
+    keys.push_back(name);
+  return keys;
+}
+
+const std::vector<std::string> kKeys = appendix_keys();
 
 const std::map<std::string, std::vector<double>> kAppendix = {
     {"quaking_aspen", {7, 0.4, 13, 3,   1,    0,  3,   0.015, 1.2, 5,   0.07, 0.6, 1,  0,   1, 0, 1,
