@@ -201,7 +201,7 @@ std::map<std::int32_t, double> coverage(const renderer::Scene& scene, const rend
         const float dx = (0.5f + static_cast<float>(k % 3)) / 3.0f;
         const float dy = (0.5f + static_cast<float>(k / 3)) / 3.0f;
         const auto hit = embree.intersect(
-            camera.ray(static_cast<float>(x) + dx, static_cast<float>(y) + dy), 0.0f, 1e30f, mask);
+            *camera.ray(static_cast<float>(x) + dx, static_cast<float>(y) + dy), 0.0f, 1e30f, mask);
         if (hit && hit->instance >= 0) c[hit->instance] += 1.0 / 9.0;
       }
     }

@@ -23,6 +23,12 @@ struct Vec3T {
     z += o.z;
     return *this;
   }
+  constexpr Vec3T& operator-=(const Vec3T& o) {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
   constexpr Vec3T& operator*=(T s) {
     x *= s;
     y *= s;

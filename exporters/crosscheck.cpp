@@ -131,7 +131,9 @@ Cover ours(std::uint8_t object) {
       object == static_cast<std::uint8_t>(renderer::ObjectClass::leaf)) {
     return Cover::tree;
   }
-  return object == 0 ? Cover::sky : Cover::ground;
+  // POV-Ray traces no ray outside a fisheye's circle either: black in its mask, as the sky.
+  const bool nothing = object == 0 || object == static_cast<std::uint8_t>(renderer::ObjectClass::none);
+  return nothing ? Cover::sky : Cover::ground;
 }
 
 Cover theirs(const float* rgb) {
@@ -219,7 +221,8 @@ void write_side_by_side(const renderer::Film& film, const renderer::FloatImage& 
 nlohmann::json camera_json(const std::optional<renderer::View>& camera) {
   if (!camera) return nullptr;
   const auto v = [](const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); };
-  return {{"position", v(camera->position)},
+  return {{"projection", renderer::projection_name(camera->lens.projection)},
+          {"position", v(camera->position)},
           {"target", v(camera->target)},
           {"fov_y_deg", camera->fov_y_deg}};
 }

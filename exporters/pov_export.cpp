@@ -1,7 +1,10 @@
 #include "exporters/pov_export.h"
 
+#include "exporters/pov_view.h"
+
 #include <fmt/format.h>
 #include <fmt/os.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <array>
@@ -267,11 +270,12 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
   AtomicFile file(dir / "scene.pov");
   {
     auto out = fmt::output_file(file.temp_path().string());
-    const double aspect = static_cast<double>(view.width) / view.height;
-    const double hfov = 2.0 *
-                        std::atan(std::tan(view.fov_y_deg * std::numbers::pi / 360.0) * aspect) *
-                        180.0 / std::numbers::pi;
+    const PovView camera = pov_view(view);
     out.print("// landsim export: view {}\n#version 3.7;\n", sanitize_for_pov(view.name));
+    for (const std::string& u : camera.unshown) {
+      out.print("// not shown by POV-Ray's camera: {}\n", u);
+      spdlog::warn("export-pov: view {}: not shown by POV-Ray's camera: {}", view.name, u);
+    }
     out.print("#ifndef (LS_Mask) #declare LS_Mask = 0; #end\n");
     // Lights are in cd/m2 and lux; POV-Ray writes what it computes, so an 8-bit image needs
     // the exposure (LS_Exposure=1 on the command line keeps the photometric values, for EXR).
@@ -290,10 +294,7 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
         "  #else texture {{ pigment {{ rgb Albedo }} finish {{ ambient 1 diffuse 1 specular "
         "Specular roughness Roughness }} }} #end\n#end\n");
     out.print("#include \"meshes.inc\"\n");  // its ground meshes use LS_Texture
-    out.print(
-        "camera {{ perspective location {} look_at {} sky <0, 1, 0> right x*{:.9g} up y angle "
-        "{:.9g} }}\n",
-        pov(view.position), pov(view.target), aspect, hfov);
+    out.print("{}\n", camera.camera);
     const Vec3 sun = normalize(scene.sun.direction) * 1e7;
     out.print("#if (!LS_Mask)\nlight_source {{ {} color {} parallel point_at <0, 0, 0> }}\n",
               pov(sun), light(scene.sun.irradiance / std::numbers::pi_v<float>));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "renderer/camera_model.h"
 #include "renderer/materials/ground_shading.h"
 #include "renderer/spectra/spectrum.h"
 #include "terrain/ground_mesh.h"
@@ -150,16 +151,25 @@ struct Haze {
   double asymmetry = 0.7;             // Henyey-Greenstein g
 };
 
+// A camera (docs/CAMERAS.md). Its optical axis runs from `position` through `target`; the
+// image's up is `up` made perpendicular to the axis, then turned by `roll`. Along a vertical
+// axis with the default up (+z), the image's right is horizontal and perpendicular to
+// `heading` (so a nadir view with heading 0 has north at the top).
 struct View {
   std::string name;
   Vec3 position;  // scene frame
-  Vec3 target;    // scene frame
+  Vec3 target;    // scene frame, any point on the optical axis ahead of the camera
+  // Vertical field of view (perspective), or the image circle's angular diameter (fisheye).
   double fov_y_deg = 40.0;
   int width = 640;
   int height = 360;
   // Multiplies the calibrated range every tree's degradation level is chosen for: 1 for
   // renders; Plate 4 (and tests) draw a tree at a range's detail while framing it closely.
   double detail_range_scale = 1.0;
+  Vec3 up{0.0, 0.0, 1.0};
+  double roll_deg = 0.0;     // clockwise about the axis, seen from behind the camera
+  double heading_deg = 0.0;  // clockwise from north
+  Lens lens;
 };
 
 // A sensor band (docs/SPECTRAL.md): the image set gets one layer of its band radiance,

@@ -42,8 +42,45 @@ std::string sky_text(const renderer::Sky& sky) {
   return "gradient";
 }
 
+// The whole camera model (docs/CAMERAS.md), positions and axes in terrain coordinates: in the
+// manifest and, as JSON text, the EXR's "camera" attribute.
+nlohmann::json camera_json(const renderer::View& v, const Vec3& origin) {
+  const renderer::Camera camera(v);
+  const renderer::CameraBasis b = renderer::camera_basis(v);
+  const renderer::Lens& l = v.lens;
+  nlohmann::json out = {{"projection", renderer::projection_name(l.projection)},
+                        {"position", vec_json(v.position + origin)},
+                        {"target", vec_json(v.target + origin)},
+                        {"forward", vec_json(b.forward)},
+                        {"up", vec_json(b.up)},
+                        {"right", vec_json(b.right)},
+                        {"roll_deg", v.roll_deg},
+                        {"width", v.width},
+                        {"height", v.height}};
+  using renderer::Projection;
+  if (l.projection == Projection::orthographic) {
+    out["extent_m"] = {l.extent_width, l.extent_height};
+    return out;
+  }
+  if (l.projection == Projection::spherical) return out;
+  out["fov_y_deg"] = v.fov_y_deg;
+  const std::array<double, 9> k = camera.intrinsics();
+  out["K"] = {{k[0], k[1], k[2]}, {k[3], k[4], k[5]}, {k[6], k[7], k[8]}};
+  out["principal_point_offset_px"] = {l.principal_x, l.principal_y};
+  if (l.focal_length_mm > 0.0) out["focal_length_mm"] = l.focal_length_mm;
+  if (l.projection != Projection::perspective) return out;
+  const renderer::Distortion& d = l.distortion;
+  out["distortion"] = {{"model", "opencv brown-conrady"},
+                       {"k1", d.k1}, {"k2", d.k2}, {"k3", d.k3}, {"p1", d.p1}, {"p2", d.p2}};
+  if (l.aperture_radius > 0.0) {
+    out["f_number"] = l.f_number;
+    out["focus_distance_m"] = l.focus_distance;
+  }
+  return out;
+}
+
 // The EXR header's description of the image: what made it.
-renderer::ImageMetadata metadata(const Scenario& s, const ViewSettings& v,
+renderer::ImageMetadata metadata(const Scenario& s, const renderer::View& v,
                                  const renderer::Scene& scene) {
   const Vec3& sun = scene.sun.direction;
   renderer::ImageMetadata out = {
@@ -51,9 +88,10 @@ renderer::ImageMetadata metadata(const Scenario& s, const ViewSettings& v,
       {"scenario", s.source},
       {"scenario_hash", s.text_hash},
       {"view", v.name},
-      {"camera_position", vec_text(v.position)},
-      {"camera_target", vec_text(v.target)},
+      {"camera_position", vec_text(v.position + scene.origin)},
+      {"camera_target", vec_text(v.target + scene.origin)},
       {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
+      {"camera", camera_json(v, scene.origin).dump()},
       {"scene_origin", vec_text(scene.origin)},
       {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
       {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
@@ -97,19 +135,11 @@ void write_manifest(const std::filesystem::path& path, const Scenario& s,
   write_file_atomically(path, manifest.dump(2) + "\n");
 }
 
+// `camera`: camera_json of the image's placed view.
 nlohmann::json manifest_entry(const ViewSettings& vs, const std::string& stem, std::size_t f,
-                              double time) {
-  return {{"path", stem + ".exr"},
-          {"preview", stem + ".png"},
-          {"view", vs.name},
-          {"frame_index", f},
-          {"time_s", time},
-          {"camera",
-           {{"position", vec_json(vs.position)},
-            {"target", vec_json(vs.target)},
-            {"fov_y_deg", vs.fov_y_deg},
-            {"width", vs.width},
-            {"height", vs.height}}}};
+                              double time, nlohmann::json camera) {
+  return {{"path", stem + ".exr"}, {"preview", stem + ".png"}, {"view", vs.name},
+          {"frame_index", f},      {"time_s", time},           {"camera", std::move(camera)}};
 }
 
 nlohmann::json box_json(const std::optional<renderer::PixelBox>& b) {
@@ -140,9 +170,10 @@ nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth) {
 }
 
 // A finished image's object truth, as its EXR keeps it (resume).
-nlohmann::json saved_objects(const std::filesystem::path& exr) {
+// A JSON attribute (objects, camera) of an image already written; null when it has none.
+nlohmann::json saved_json(const std::filesystem::path& exr, const std::string& attribute) {
   for (const auto& [key, value] : renderer::read_exr_metadata(exr))
-    if (key == "objects") return nlohmann::json::parse(value, nullptr, false);
+    if (key == attribute) return nlohmann::json::parse(value, nullptr, false);
   return nullptr;
 }
 
@@ -253,7 +284,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   const Scenario& s = run.scenario;
   const double time = s.render.frames[image.frame];
   const auto exr = run.options.out_dir / (image.stem + ".exr");
-  renderer::ImageMetadata meta = metadata(s, s.views[image.view], scene);
+  renderer::ImageMetadata meta = metadata(s, view, scene);
   meta.emplace_back("time_s", fmt::format("{}", time));
   meta.emplace_back("render_key", options.render_key);
   const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
@@ -278,7 +309,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   report.spp = scene.settings.spp;
   report.exposure_ev100 = ev100;
   report.shared = run.shared();
-  WrittenImage out{report, manifest_entry(s.views[image.view], image.stem, image.frame, time)};
+  WrittenImage out{report, manifest_entry(s.views[image.view], image.stem, image.frame, time,
+                                          camera_json(view, scene.origin))};
   if (!objects.is_null()) out.manifest["objects"] = objects;
   return out;
 }
@@ -339,10 +371,11 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
   for (const Image& image : images) try {
       // Shared renders would all have to agree: finished images are skipped in one process.
       if (options.resume && !run.shared() && already_finished(run, image)) {
+        const auto exr = out_dir / (image.stem + ".exr");
         manifest.push_back(manifest_entry(scenario.views[image.view], image.stem, image.frame,
-                                          scenario.render.frames[image.frame]));
-        if (!scenario.objects.empty())
-          manifest.back()["objects"] = saved_objects(out_dir / (image.stem + ".exr"));
+                                          scenario.render.frames[image.frame],
+                                          saved_json(exr, "camera")));
+        if (!scenario.objects.empty()) manifest.back()["objects"] = saved_json(exr, "objects");
         ++result.skipped;
         continue;
       }
@@ -400,7 +433,9 @@ std::vector<std::string> check_image_set(const Scenario& scenario,
       const std::string stem = image_stem(vs.name, f, frames.size());
       for (const char* ext : {".exr", ".png"})
         if (!std::filesystem::exists(out_dir / (stem + ext))) missing.push_back(stem + ext);
-      entries.push_back(manifest_entry(vs, stem, f, frames[f]));
+      if (missing.empty())
+        entries.push_back(
+            manifest_entry(vs, stem, f, frames[f], saved_json(out_dir / (stem + ".exr"), "camera")));
     }
   if (missing.empty()) write_manifest(out_dir / "manifest.json", scenario, entries);
   return missing;

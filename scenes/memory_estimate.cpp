@@ -1,5 +1,7 @@
 #include "scenes/memory_estimate.h"
 
+#include "renderer/camera.h"
+
 #include "scenes/detail/scene_objects.h"
 
 #include <fmt/format.h>
@@ -72,9 +74,10 @@ struct GroundSize {
 // while the scene is built.
 constexpr double kContextTrianglesPerCell = 2.0;
 
-GroundSize context_ground_size(const Scenario& s, const terrain::ElevationGrid& grid) {
+GroundSize context_ground_size(const Scenario& s, const terrain::ElevationGrid& grid,
+                               const std::vector<renderer::View>& views) {
   const terrain::TerrainField field = detail::context_terrain(s, grid);
-  terrain::ContextMeshOptions options = context_mesh_options(s);
+  terrain::ContextMeshOptions options = context_mesh_options(views, grid.min_height());
   // The quadtree's shape does not depend on the relief's amplitudes: a flat one counts it.
   const auto samples =
       static_cast<std::size_t>(grid.cols()) * static_cast<std::size_t>(grid.rows());
@@ -86,8 +89,9 @@ GroundSize context_ground_size(const Scenario& s, const terrain::ElevationGrid& 
   return {field.stored_cells(), cells, cells * kContextTrianglesPerCell};
 }
 
-GroundSize ground_size(const Scenario& s, const terrain::ElevationGrid& grid) {
-  if (!s.terrain.context.empty() || s.ground.detail) return context_ground_size(s, grid);
+GroundSize ground_size(const Scenario& s, const terrain::ElevationGrid& grid,
+                       const std::vector<renderer::View>& views) {
+  if (!s.terrain.context.empty() || s.ground.detail) return context_ground_size(s, grid, views);
   GroundSize g;
   g.cells = static_cast<double>(grid.cols()) * grid.rows();
   g.vertices = g.cells - static_cast<double>(grid.nodata_count());
@@ -106,10 +110,12 @@ struct SpeciesExtent {
   std::vector<double> nearest;  // per view, metres
 };
 
-std::vector<SpeciesExtent> species_extents(const Scenario& s, const featuremaps::VegetationMap& map,
+std::vector<SpeciesExtent> species_extents(const Scenario& s,
+                                           const std::vector<renderer::View>& views,
+                                           const featuremaps::VegetationMap& map,
                                            const terrain::ElevationGrid& grid) {
   std::vector<SpeciesExtent> extent(s.species.size());
-  for (SpeciesExtent& e : extent) e.nearest.assign(s.views.size(), 1e300);
+  for (SpeciesExtent& e : extent) e.nearest.assign(views.size(), 1e300);
   const terrain::GeoTransform& t = map.transform();
   const double cell_area = t.cell_size_x * t.cell_size_y;
   const double half_diagonal = 0.5 * std::hypot(t.cell_size_x, t.cell_size_y);
@@ -124,8 +130,8 @@ std::vector<SpeciesExtent> species_extents(const Scenario& s, const featuremaps:
       for (std::size_t k = 0; k < s.species.size(); ++k) {
         if (s.species[k].bit != *bit) continue;
         extent[k].area += cell_area;
-        for (std::size_t v = 0; v < s.views.size(); ++v) {
-          const double d = length(Vec3{x, y, *z} - s.views[v].position) - half_diagonal;
+        for (std::size_t v = 0; v < views.size(); ++v) {
+          const double d = length(Vec3{x, y, *z} - views[v].position) - half_diagonal;
           extent[k].nearest[v] = std::min(extent[k].nearest[v], std::max(d, 1.0));
         }
       }
@@ -229,9 +235,9 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   // The build's own first stages: the grid, the ground rasters and the vegetation map.
   const detail::SceneFoundation foundation = detail::lay_foundation(s);
   const terrain::ElevationGrid& grid = foundation.grid;
-  detail::warn_cameras_below_ground(s, grid);
+  detail::warn_cameras_below_ground(s, foundation.views, grid);
   const Vec3 origin = grid.centre();
-  const GroundSize ground = ground_size(s, grid);
+  const GroundSize ground = ground_size(s, grid, foundation.views);
   Parts p;
   p.scene_ground = ground.vertices * 24.0 + ground.triangles * (12.0 + 1.0);
   p.view_ground = ground.triangles * mm::kEmbreeGridTriangle;
@@ -245,7 +251,7 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   std::vector<SpeciesExtent> extent(s.species.size());
   std::vector<double> trees(s.species.size(), 0.0);
   if (map) {
-    extent = species_extents(s, *map, grid);
+    extent = species_extents(s, foundation.views, *map, grid);
     for (std::size_t k = 0; k < s.species.size(); ++k) {
       trees[k] = extent[k].area * s.species[k].density_per_ha / 1e4;
       e.instances += trees[k];
@@ -263,10 +269,11 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
           detail::make_tree_variant(s, static_cast<std::uint32_t>(k), 0, s.render.frames.front());
   });
   const bool degrade = s.render.degradation;
-  std::vector<renderer::View> views;
-  for (const ViewSettings& v : s.views)
-    views.push_back(
-        {v.name, v.position - origin, v.target - origin, v.fov_y_deg, v.width, v.height});
+  std::vector<renderer::View> views = foundation.views;
+  for (renderer::View& v : views) {
+    v.position -= origin;
+    v.target -= origin;
+  }
   std::vector<double> view_prototypes(views.size(), 0.0);
   for (std::size_t k = 0; k < s.species.size(); ++k) {
     if (!variant[k]) continue;
@@ -279,9 +286,8 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
     e.triangles_stored += used * size.triangles;
     e.triangles_instanced += trees[k] * size.triangles;
     for (std::size_t v = 0; v < views.size(); ++v) {
-      const double r2 =
-          views[v].detail_range_scale *
-          trees::calibrated_range(extent[k].nearest[v], views[v].height, views[v].fov_y_deg);
+      const double r2 = views[v].detail_range_scale *
+                        renderer::calibrated_view_range(views[v], extent[k].nearest[v]);
       view_prototypes[v] += used * (degrade ? kFartherLevels * embree_level_bytes(*variant[k], r2)
                                             : embree_level_bytes(*variant[k], std::nullopt));
     }

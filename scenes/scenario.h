@@ -34,14 +34,18 @@ struct SunSettings {
   std::optional<Vec3f> irradiance;
 };
 
-struct ViewSettings {
-  std::string name;
-  std::string location;  // "file:line:column" of its position, for messages
-  Vec3 position;         // terrain coordinates
-  Vec3 target;           // terrain coordinates
-  double fov_y_deg = 40.0;
-  int width = 640;
-  int height = 360;
+// A [[views]] table (docs/CAMERAS.md): the camera as the renderer takes it, in terrain
+// coordinates, and what places it on the terrain (scenes/view_placement.h).
+struct ViewSettings : renderer::View {
+  std::string location;  // "file:line:column" of the table, for messages
+  // The camera stands this high over the ground below it (position's z is then 0).
+  std::optional<double> altitude_above_ground;
+  // Orthographic align = "grid": each pixel covers this many cells of the elevation grid
+  // each way, its edges on cell edges; 0: not aligned.
+  int grid_cells_per_pixel = 0;
+  bool has_position = true;  // align = "grid" may leave the position to the grid's centre
+  bool aims_at_point = true;  // `target` was given (else the axis is a direction)
+  bool has_size = true;       // align = "grid" may leave width and height to the grid
 };
 
 // Every scenario key's default is declared once: here, or, where the renderer has the

@@ -13,6 +13,7 @@
 #include "scenes/scenario.h"
 
 #include "scenes/detail/scenario_overrides.h"
+#include "scenes/detail/view_reader.h"
 #include "scenes/sensor_bands.h"
 #include "scenes/solar_position.h"
 #include "terrain/raster_files.h"
@@ -167,34 +168,6 @@ renderer::Haze read_haze(const toml::table& root, const std::string& file) {
   return h;
 }
 
-ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file) {
-  TableReader r(t, path, file);
-  ViewSettings v;
-  v.name = r.string("name");
-  static const std::regex kName("[A-Za-z0-9_.-]+");
-  if (!std::regex_match(v.name, kName) || v.name[0] == '.') {
-    r.fail("name", "expected letters, digits, '_', '-' or '.' (it names the output files), got \"" +
-                       v.name + "\"");
-  }
-  v.position = r.vec3("position");
-  v.target = r.vec3("target");
-  const Vec3 d = v.target - v.position;
-  if (length(d) < 1e-6) r.fail("target", "must differ from position");
-  if (std::abs(d.z) / length(d) > 0.9999) {
-    r.fail("target", "the view looks straight up or down; the camera needs a horizontal component");
-  }
-  v.fov_y_deg = r.number("fov", Range{0.0, 180.0, true, true}, v.fov_y_deg);
-  v.width = static_cast<int>(r.integer("width", 1, kMaxImageSide, v.width));
-  v.height = static_cast<int>(r.integer("height", 1, kMaxImageSide, v.height));
-  try {
-    check_image_size(v.width, v.height, "");
-  } catch (const InputError& e) {
-    r.fail("width", e.what());
-  }
-  r.finish();
-  return v;
-}
-
 std::vector<ViewSettings> read_views(const toml::table& root, const std::string& file) {
   const toml::node* n = root.get("views");
   if (n == nullptr) throw InputError(file + ": at least one [[views]] table is required");
@@ -211,7 +184,7 @@ std::vector<ViewSettings> read_views(const toml::table& root, const std::string&
     const auto name = a->get(i)->as_table()->get("name");
     const std::optional<std::string> text = name ? name->value<std::string>() : std::nullopt;
     const std::string path = text ? "views \"" + *text + "\"" : "views[" + std::to_string(i) + "]";
-    views.push_back(read_view(*a->get(i)->as_table(), path, file));
+    views.push_back(detail::read_view(*a->get(i)->as_table(), path, file));
     const TableReader located(*a->get(i)->as_table(), path, file);
     views.back().location = located.location(a->get(i)->as_table()->get("position"));
     if (!names.insert(views.back().name).second) {

@@ -1,5 +1,7 @@
 #include "scenes/scene_builder.h"
 
+#include "renderer/camera.h"
+
 #include "renderer/spectra/vegetation_optics.h"
 
 #include <fmt/format.h>
@@ -177,13 +179,14 @@ void set_spectral_optics(const Scenario& s, renderer::Scene& scene) {
 // The ground mesh: the grid's own, or with context grids the grid and its surroundings; in
 // the latter case context triangles take kSurroundings (feature maps may override it).
 void add_ground_mesh(const Scenario& s, const terrain::ElevationGrid& grid,
+                     const std::vector<renderer::View>& views,
                      const terrain::SurfaceDetail* relief, renderer::Scene& scene) {
   if (s.terrain.context.empty() && relief == nullptr) {
     scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
     return;
   }
   const terrain::TerrainField field = detail::context_terrain(s, grid);
-  terrain::ContextMeshOptions options = context_mesh_options(s);
+  terrain::ContextMeshOptions options = context_mesh_options(views, grid.min_height());
   options.detail = relief;
   terrain::ContextMesh m = terrain::build_context_mesh(field, scene.origin, options);
   scene.ground.mesh = std::move(m.mesh);
@@ -234,14 +237,26 @@ std::optional<terrain::SurfaceDetail> surface_detail(const Scenario& s,
 
 }  // namespace
 
-terrain::ContextMeshOptions context_mesh_options(const Scenario& s) {
+terrain::ContextMeshOptions context_mesh_options(const std::vector<renderer::View>& views,
+                                                 double lowest_ground) {
   terrain::ContextMeshOptions o;
   double pixel = 1.0;        // the finest pixel of any view, radians
   double calibration = 0.0;  // the largest of r2 / distance (Weber & Penn section 5)
-  for (const ViewSettings& v : s.views) {
+  for (const renderer::View& v : views) {
     o.views.push_back({v.position.x, v.position.y});
-    pixel = std::min(pixel, v.fov_y_deg * std::numbers::pi / 180.0 / v.height);
-    calibration = std::max(calibration, trees::calibrated_range(1.0, v.height, v.fov_y_deg));
+    if (v.lens.projection == renderer::Projection::perspective) {
+      pixel = std::min(pixel, v.fov_y_deg * std::numbers::pi / 180.0 / v.height);
+      calibration = std::max(calibration, trees::calibrated_range(1.0, v.height, v.fov_y_deg));
+      continue;
+    }
+    // Other models by their footprint at the ground below (an orthographic pixel is the same
+    // size at every range: as seen from the camera's height).
+    const double d = v.lens.projection == renderer::Projection::orthographic
+                         ? std::max(1.0, v.position.z - lowest_ground)
+                         : 1.0;
+    const double r2 = renderer::calibrated_view_range(v, d) / d;
+    pixel = std::min(pixel, r2 * 0.06 * std::numbers::pi / 180.0);
+    calibration = std::max(calibration, r2);
   }
   o.range_factor = std::clamp(1.0 / (kContextCellPixels * pixel), 2.0, 400.0);
   // Detail cells of r2 / kDetailRange metres at calibrated range r2.
@@ -264,7 +279,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.origin = grid.centre();
   const std::optional<terrain::SurfaceDetail> relief =
       surface_detail(scenario, grid, rasters, map ? &*map : nullptr);
-  add_ground_mesh(scenario, grid, relief ? &*relief : nullptr, scene);
+  add_ground_mesh(scenario, grid, foundation.views, relief ? &*relief : nullptr, scene);
   scene.ground.albedo = scenario.terrain.albedo;
   scene.ground.shading = ground_shading(scenario);
   scene.sun.direction = sun_direction(scenario.sun.elevation_deg, scenario.sun.azimuth_deg);
@@ -278,10 +293,11 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.haze = scenario.haze;
   scene.haze.base_height =
       grid.min_height() - scene.origin.z;  // the visibility holds at the lowest ground
-  detail::warn_cameras_below_ground(scenario, grid);
-  for (const ViewSettings& v : scenario.views) {
-    scene.views.push_back({v.name, v.position - scene.origin, v.target - scene.origin, v.fov_y_deg,
-                           v.width, v.height});
+  detail::warn_cameras_below_ground(scenario, foundation.views, grid);
+  for (renderer::View v : foundation.views) {
+    v.position -= scene.origin;
+    v.target -= scene.origin;
+    scene.views.push_back(std::move(v));
   }
   scene.settings.spp = scenario.render.spp;
   scene.settings.seed = scenario.render.seed;

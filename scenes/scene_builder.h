@@ -21,8 +21,10 @@ inline constexpr double kContextCellPixels = 4.0;
 // calibrated range r2 (the range trees degrade by, Weber & Penn section 5): 1 m at 250 m.
 inline constexpr double kDetailRange = 250.0;
 
-// The views and the range factor the context mesh is built for (terrain/context_mesh.h).
-terrain::ContextMeshOptions context_mesh_options(const Scenario& scenario);
+// The views and the range factor the context mesh is built for (terrain/context_mesh.h),
+// from the placed views (terrain coordinates) over ground no lower than `lowest_ground`.
+terrain::ContextMeshOptions context_mesh_options(const std::vector<renderer::View>& views,
+                                                 double lowest_ground);
 
 // Unit vector toward the sun from elevation and azimuth (clockwise from north), in degrees.
 Vec3 sun_direction(double elevation_deg, double azimuth_deg);

@@ -1,8 +1,10 @@
 #include "renderer/acceleration/embree_scene.h"
 
+
 #include "renderer/acceleration/detail/embree_errors.h"
 #include "renderer/acceleration/detail/prototype_levels.h"
 #include "renderer/acceleration/stochastic_lod.h"
+#include "renderer/camera.h"
 #include "renderer/materials/grass_patch.h"
 #include "renderer/transport/detail/ray_recorder.h"
 #include "trees/degradation.h"
@@ -345,10 +347,8 @@ struct EmbreeScene::Impl {
     const Vec3 centre = inst.position + Vec3(0.0, 0.0, 0.5 * (b[0].z + b[1].z) * inst.scale);
     const double distance = std::max(length(centre - view.position), 1e-6);
     const double size = std::max({b[1].x - b[0].x, b[1].y - b[0].y, b[1].z - b[0].z}) * inst.scale;
-    const double tan_half = std::tan(0.5 * view.fov_y_deg * std::numbers::pi / 180.0);
-    return {
-        view.detail_range_scale * trees::calibrated_range(distance, view.height, view.fov_y_deg),
-        size / (2.0 * distance * tan_half) * view.height};
+    return {view.detail_range_scale * calibrated_view_range(view, distance),
+            pixels_across(view, size, distance)};
   }
 
   // Every object prototype once as a scene of its own (mesh normals as attribute 0, texture

@@ -21,7 +21,8 @@ enum class ObjectClass : std::uint8_t {
   bark = 2,
   leaf = 3,
   grass = 4,
-  object = 5  // a scene object ([[objects]]: vehicles, structures)
+  object = 5,  // a scene object ([[objects]]: vehicles, structures)
+  none = 6     // no ray leaves this pixel (outside a fisheye's image circle)
 };
 
 struct Hit {

@@ -5,6 +5,7 @@
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/stochastic_lod.h"
+#include "renderer/camera.h"
 #include "trees/degradation.h"
 
 namespace landsim::renderer {
@@ -43,8 +44,7 @@ GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std:
   return b;
 }
 
-int grass_level(double distance, int image_height, double fov_y_deg) {
-  const double r2 = trees::calibrated_range(distance, image_height, fov_y_deg);
+int grass_level(double r2) {
   for (int level = 0; level < kGrassLevels; ++level) {
     if (r2 < kLevelEnd[level]) return level;
   }
@@ -117,8 +117,7 @@ std::array<float, 12> grass_patch_frame(const Vec3f& centre, const Vec3f& normal
   return {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, centre.x, centre.y, centre.z};
 }
 
-GrassBlend grass_blend(double distance, int image_height, double fov_y_deg) {
-  const double r2 = trees::calibrated_range(distance, image_height, fov_y_deg);
+GrassBlend grass_blend(double r2) {
   GrassBlend b;
   for (int level = 0; level < kGrassLevels; ++level) {
     // log4 of r2 over the level's end: the band [-1/4, 1/4] blends into the next level.
@@ -147,12 +146,12 @@ void for_each_grass_patch(const GrassCover& cover, const View& view, bool blend,
       const Vec3f centre{static_cast<float>(cover.corner.x + (c + 0.5) * cover.tile),
                          static_cast<float>(cover.corner.y + (r + 0.5) * cover.tile),
                          cover.height[k]};
-      const double distance = length(Vec3(centre) - view.position);
+      const double r2 = calibrated_view_range(view, length(Vec3(centre) - view.position));
       GrassBlend b;
       if (blend) {
-        b = grass_blend(distance, view.height, view.fov_y_deg);
+        b = grass_blend(r2);
       } else {
-        b.lower = grass_level(distance, view.height, view.fov_y_deg);
+        b.lower = grass_level(r2);
       }
       // Most tiles of a large cover lie beyond the grass range: no frame for those.
       if (b.lower < 0) continue;

@@ -56,10 +56,10 @@ bool grass_blade_kept(const GrassMask& mask, int type, double x, double y);
 // Level 0 has every blade; level k keeps 1 / 4^k of them, each 2^k times as wide.
 GrassBlades make_grass_patch(const GrassType& type, double tile, int level, std::uint64_t seed);
 
-// Which level a patch at `distance` gets, from the calibrated range r2 = distance x 1000 /
-// image_height x fov_y / 60 (the paper's section 5 calibration); -1: no blades (the ground's
-// grass tint stands in for them).
-int grass_level(double distance, int image_height, double fov_y_deg);
+// Which level a patch at calibrated range r2 gets (the paper's section 5 calibration, the
+// view's pixel footprint: renderer/camera.h calibrated_view_range); -1: no blades (the
+// ground's grass tint stands in for them).
+int grass_level(double r2);
 
 // The column-major 3x4 transform placing a patch on its tile: z along the terrain normal,
 // x kept as close to east as the tilt allows, then turned by the tile's look.
@@ -74,7 +74,7 @@ struct GrassBlend {
   int upper = -1;
   double upper_weight = 0.0;
 };
-GrassBlend grass_blend(double distance, int image_height, double fov_y_deg);
+GrassBlend grass_blend(double r2);
 
 // One patch instance: its type (1-3), level, variant, tile, frame and the ray mask that
 // sees it.

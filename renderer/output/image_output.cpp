@@ -140,7 +140,7 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
   if (camera != nullptr) {
     // Imath is column-vector-on-the-right transposed: OpenEXR stores row-vector matrices.
     Imf::addWorldToCamera(header, to_m44(camera->world_to_camera));
-    Imf::addWorldToNDC(header, to_m44(camera->world_to_ndc));
+    if (camera->has_ndc) Imf::addWorldToNDC(header, to_m44(camera->world_to_ndc));
   }
   // Photometric units, stated the standard way (whiteLuminance: the cd/m2 of RGB (1, 1, 1);
   // Rec. 709 primaries and white) and in words.

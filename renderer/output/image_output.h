@@ -21,6 +21,7 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 struct CameraMatrices {
   std::array<float, 16> world_to_camera{};
   std::array<float, 16> world_to_ndc{};
+  bool has_ndc = false;  // fisheye and spherical images have no linear map to NDC
 };
 
 // What the EXR's RGB are (also its "landsim/unit" attribute; whiteLuminance is 1).

@@ -25,8 +25,9 @@ std::vector<std::uint32_t> footprints(const Scene& scene, const View& view, bool
       const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(view.width) +
                          static_cast<std::uint64_t>(x);
       const CounterRng rng(scene.settings.seed, pixel, 0);
-      const auto hit = objects.intersect(sample_ray(camera, rng, x, y, centre_first), 0.0f,
-                                         std::numeric_limits<float>::infinity());
+      const std::optional<Ray> ray = sample_ray(camera, rng, x, y, centre_first);
+      if (!ray) continue;
+      const auto hit = objects.intersect(*ray, 0.0f, std::numeric_limits<float>::infinity());
       if (hit && hit->object_index >= 0)
         out[static_cast<std::size_t>(pixel)] = static_cast<std::uint32_t>(hit->object_index + 1);
     }

@@ -14,6 +14,7 @@
 #include "renderer/acceleration/embree_scene.h"
 #include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
+#include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/output/image_output.h"
 #include "renderer/transport/comparable_tracer.h"
 #include "renderer/transport/path_tracer.h"
@@ -42,6 +43,14 @@ void for_each_tile_pixel(const TileGrid& grid, int tile, int width, int height, 
     for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) visit(x, y);
 }
 
+// A sample of a pixel no ray leaves: black, and "none" in every truth layer.
+PathSample outside_the_image() {
+  PathSample s;
+  s.first.object = ObjectClass::none;
+  s.first.depth = std::numeric_limits<float>::infinity();
+  return s;
+}
+
 // Renders one tile into the film; returns the rays it traced.
 std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const View& view,
                           const RenderSettings& settings, int tile, const TileGrid& grid,
@@ -61,8 +70,8 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       const std::uint32_t mask = pixel_ray_mask(pixel);
       for (int s = 0; s < settings.spp; ++s) {
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
-        const Ray ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
-        const PathSample sample = tracer.trace(ray, rng, mask);
+        const std::optional<Ray> ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
+        const PathSample sample = ray ? tracer.trace(*ray, rng, mask) : outside_the_image();
         sum += sample.radiance;
         for (int b = 0; b < film.band_count(); ++b)
           band_sum[static_cast<std::size_t>(b)] += sample.bands[static_cast<std::size_t>(b)];
@@ -92,9 +101,12 @@ constexpr int kTilesPerWave = 64;
 
 }  // namespace
 
-Ray sample_ray(const Camera& camera, const CounterRng& rng, int x, int y, bool centre) {
-  return camera.ray(static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0)),
-                    static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1)));
+std::optional<Ray> sample_ray(const Camera& camera, const CounterRng& rng, int x, int y,
+                              bool centre) {
+  const float px = static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0));
+  const float py = static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1));
+  if (!camera.has_aperture() || centre) return camera.ray(px, py);
+  return camera.ray(px, py, rng.uniform(detail::kLens0), rng.uniform(detail::kLens1));
 }
 
 int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) {

@@ -105,8 +105,11 @@ class ViewRenderer {
 int tile_count(const View& view);
 // The camera ray of pixel (x, y)'s sample drawn by `rng` (its dimensions 0 and 1 jitter it);
 // `centre`: through the pixel's centre. The first sample (rng's sample 0) is the one the
-// AOVs record, and object truth (renderer/output/object_truth.h) traces it again.
-Ray sample_ray(const Camera& camera, const CounterRng& rng, int x, int y, bool centre);
+// AOVs record, and object truth (renderer/output/object_truth.h) traces it again. Empty
+// where the camera sends no ray. A thin lens draws its aperture position from the
+// lens dimensions (detail/sample_dimensions.h).
+std::optional<Ray> sample_ray(const Camera& camera, const CounterRng& rng, int x, int y,
+                              bool centre);
 // Checkpoints: the film so far and the tiles [0, tiles_done) it holds (options.checkpoint,
 // options.render_key); resume_checkpoint loads a matching one and returns its tiles_done.
 void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_done);

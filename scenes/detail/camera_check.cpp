@@ -10,14 +10,15 @@
 
 namespace landsim::scenes::detail {
 
-void warn_cameras_below_ground(const Scenario& s, const terrain::ElevationGrid& grid) {
-  for (const ViewSettings& v : s.views) {
-    const std::optional<double> ground = grid.height(v.position.x, v.position.y);
-    if (ground && v.position.z < *ground)
-      warn_input(
-          fmt::format("{}: [views \"{}\"] position: the camera is {:.1f} m below the "
-                      "ground (the terrain is at {:.1f} m there)",
-                      v.location, v.name, *ground - v.position.z, *ground));
+void warn_cameras_below_ground(const Scenario& s, const std::vector<renderer::View>& placed,
+                               const terrain::ElevationGrid& grid) {
+  for (std::size_t k = 0; k < placed.size() && k < s.views.size(); ++k) {
+    const Vec3& p = placed[k].position;
+    const std::optional<double> ground = grid.height(p.x, p.y);
+    if (ground && p.z < *ground)
+      warn_input(fmt::format("{}: [views \"{}\"] position: the camera is {:.1f} m below the "
+                             "ground (the terrain is at {:.1f} m there)",
+                             s.views[k].location, s.views[k].name, *ground - p.z, *ground));
   }
 }
 

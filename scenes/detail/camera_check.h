@@ -8,7 +8,9 @@
 
 namespace landsim::scenes::detail {
 
-void warn_cameras_below_ground(const Scenario& s, const terrain::ElevationGrid& grid);
+// `placed`: the scenario's views placed on the grid (terrain coordinates).
+void warn_cameras_below_ground(const Scenario& s, const std::vector<renderer::View>& placed,
+                               const terrain::ElevationGrid& grid);
 // A camera inside a tree's bounds (the upright cylinder around its prototype's vertices, at
 // the instance's scale) sees the tree from within: warned about once per view.
 void warn_cameras_inside_trees(const Scenario& s, const renderer::Scene& scene);

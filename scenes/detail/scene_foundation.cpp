@@ -1,5 +1,7 @@
 #include "scenes/detail/scene_foundation.h"
 
+#include "scenes/view_placement.h"
+
 #include <cmath>
 
 #include "scenes/detail/vegetation_input.h"
@@ -44,7 +46,9 @@ SceneFoundation lay_foundation(const Scenario& s) {
                            material_raster(f.rock), material_raster(f.soil)};
   std::optional<featuremaps::VegetationMap> map;
   if (s.featuremaps || has_cover(s)) map = scene_vegetation(s, grid);
-  return {std::move(grid), std::move(rasters), std::move(map)};
+  std::vector<renderer::View> views;
+  for (const ViewSettings& v : s.views) views.push_back(place_view(v, grid));
+  return {std::move(grid), std::move(rasters), std::move(map), std::move(views)};
 }
 
 }  // namespace landsim::scenes::detail

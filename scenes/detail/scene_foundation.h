@@ -5,6 +5,7 @@
 // masks that keep grass off, for one) instead of replaying the build.
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "featuremaps/vegetation_map.h"
 #include "scenes/scenario.h"
@@ -25,6 +26,8 @@ struct SceneFoundation {
   terrain::ElevationGrid grid;
   GroundRasters rasters;
   std::optional<featuremaps::VegetationMap> map;  // empty without feature maps or covers
+  // The scenario's views placed on the grid (scenes/view_placement.h), terrain coordinates.
+  std::vector<renderer::View> views;
   // No grass blade stands on road or water.
   bool blocks_grass(double x, double y) const {
     return rasters[0].covers(x, y) || rasters[1].covers(x, y);

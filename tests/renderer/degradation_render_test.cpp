@@ -67,7 +67,7 @@ double coverage(const EmbreeScene& embree, const View& view) {
       for (int k = 0; k < 16; ++k) {
         const float dx = 0.125f + 0.25f * static_cast<float>(k % 4);
         const float dy = 0.125f + 0.25f * static_cast<float>(k / 4);
-        const Ray ray = camera.ray(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
+        const Ray ray = *camera.ray(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
         hits += embree.intersect(ray, 0.0f, 1e30f, mask).has_value();
       }
     }
@@ -168,7 +168,7 @@ TEST(DegradationRender, SmallTreesTakeOneLevelEachInProportion) {
   for (int y = 0; y < v.height; ++y)
     for (int x = 0; x < v.width; ++x) {
       const auto hit = embree.intersect(
-          camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f), 0.0f, 1e30f,
+          *camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f), 0.0f, 1e30f,
           pixel_ray_mask(static_cast<std::uint64_t>(y * v.width + x)));
       if (hit && hit->instance >= 0) levels[hit->instance].insert(hit->level);
     }
@@ -228,7 +228,7 @@ TEST(StochasticLod, LadderPositionsInterpolateBetweenSteps) {
 }
 
 // Calibrated range r2 at 1000 pixels and 60 degrees is the distance itself.
-GrassBlend blend_at(double r2) { return grass_blend(r2, 1000, 60.0); }
+GrassBlend blend_at(double r2) { return grass_blend(r2); }
 
 TEST(GrassBlend, LevelsBlendAroundEachLevelsEndAndFadeAfterTheLast) {
   EXPECT_EQ(blend_at(10.0).lower, 0);

@@ -120,7 +120,7 @@ TEST(Physics, SunShadowFallsWhereGeometryPutsIt) {
   for (int y = 0; y < 80; ++y) {
     for (int x = 0; x < 80; ++x) {
       if (film.object(x, y) != 1) continue;
-      const Ray r = cam.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      const Ray r = *cam.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
       const Vec3f p = r.origin + r.direction * film.depth(x, y);
       const bool in_shadow = p.x > 0.3f && p.x < 3.7f && std::abs(p.y) < 0.7f;
       const bool clearly_lit = p.x < -0.3f || p.x > 4.3f || std::abs(p.y) > 1.3f;
@@ -229,7 +229,7 @@ TEST(Physics, AovsAgreeWithTheScene) {
       const std::uint32_t id = film.instance(x, y);
       ASSERT_LT(id, 2u);
       // The hit point, from depth along the pixel's (first-sample) ray, lies on that instance.
-      const Ray r = cam.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      const Ray r = *cam.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
       const Vec3f p = r.origin + r.direction * film.depth(x, y);
       EXPECT_NEAR(p.x, s.instances[id].position.x, 3.5);
       EXPECT_NEAR(p.y, 50.0f, 0.5f);

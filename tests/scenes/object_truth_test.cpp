@@ -174,5 +174,37 @@ TEST(ObjectTruth, AGltfAndAnObjOfTheSameMeshGiveTheSameImage) {
   EXPECT_GT(count(a, 1).pixels, 100u);
 }
 
+// The car seen straight down from 60 m above the ground, and on a map view of 10 cm pixels
+// (docs/CAMERAS.md): in both its truth holds (wholly visible, counts from the film) and its
+// box is where the camera model puts the car's centre.
+TEST(ObjectTruth, HoldsForANadirViewAndAMapView) {
+  TempDir dir;
+  const std::string views[] = {
+      "[[views]]\nname = \"v\"\nposition = [1100.0, 2100.0]\naltitude_above_ground = 60\n"
+      "direction = [0, 0, -1]\nfov = 10\nwidth = 96\nheight = 64\n",
+      "[[views]]\nname = \"v\"\nposition = [1100.0, 2100.0, 400.0]\n"
+      "projection = \"orthographic\"\npixel_size = 0.1\nwidth = 96\nheight = 64\n"};
+  for (const std::string& view : views) {
+    std::string text = scenario(dir, "car.obj");
+    const auto from = text.find("[[views]]"), to = text.find("[render]");
+    text.replace(from, to - from, view);
+    const renderer::Scene scene = build(dir, text);
+    const renderer::Film film = render(scene);
+    const auto truth = renderer::object_truth(scene, scene.views[0], film, false);
+    ASSERT_EQ(truth.size(), 1u);
+    const Count direct = count(film, 1);
+    ASSERT_GT(direct.pixels, 200u) << view;
+    EXPECT_EQ(truth[0].visible_pixels, direct.pixels);
+    EXPECT_EQ(truth[0].visible_fraction, 1.0);
+    ASSERT_TRUE(truth[0].bbox);
+    EXPECT_EQ(*truth[0].bbox, direct.box);
+    // The car stands at the image centre (its box around pixel (48, 32)).
+    EXPECT_LE((*truth[0].bbox)[0], 48);
+    EXPECT_GE((*truth[0].bbox)[2], 47);
+    EXPECT_LE((*truth[0].bbox)[1], 32);
+    EXPECT_GE((*truth[0].bbox)[3], 31);
+  }
+}
+
 }  // namespace
 }  // namespace landsim::scenes

@@ -67,7 +67,7 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
       const auto object = static_cast<renderer::ObjectClass>(film.object(x, y));
       if (object == renderer::ObjectClass::sky || !std::isfinite(film.depth(x, y))) continue;
       const renderer::Ray ray =
-          camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+          *camera.ray(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
       const Vec3f at = ray.origin + ray.direction * film.depth(x, y);
       if (at.x < grid.min_x || at.x > grid.max_x || at.y < grid.min_y || at.y > grid.max_y)
         continue;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <ranges>
 #include <string>
 
 #include "core/input_error.h"
@@ -239,13 +238,14 @@ double segment_distance(const Internode& n, const Vec3& p) {
   return length(p - (n.base + d * t));
 }
 
-// Of `candidates` (internode indices), the living one whose tip is nearest p (ties to the
-// first).
-template <typename Indices>
-std::uint32_t nearest_tip(const Plant& plant, const Indices& candidates, const Vec3& p) {
+// Of the n internodes index(0), ..., index(n - 1), the living one whose tip is nearest p
+// (ties to the first).
+template <typename Index>
+std::uint32_t nearest_tip(const Plant& plant, std::size_t n, Index index, const Vec3& p) {
   std::uint32_t best = kNone;
   double nearest = std::numeric_limits<double>::infinity();
-  for (std::uint32_t k : candidates) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t k = index(i);
     const double d = length(plant[k].tip - p);
     if (plant[k].alive && d < nearest) nearest = d, best = k;
   }
@@ -269,7 +269,7 @@ BendPath bend_path(const Plant& plant, const Bend& b) {
   BendPath r;
   if (b.handles.empty() || plant.size() == 0) return r;
   const std::uint32_t end = nearest_tip(
-      plant, std::views::iota(std::uint32_t{0}, static_cast<std::uint32_t>(plant.size())),
+      plant, plant.size(), [](std::size_t i) { return static_cast<std::uint32_t>(i); },
       b.handles.back().at);
   if (end == kNone) return r;
   std::vector<std::uint32_t> from_root;  // the way up from the seedling to E
@@ -283,7 +283,8 @@ BendPath bend_path(const Plant& plant, const Bend& b) {
   }
   r.path.assign(from_root.begin() + static_cast<std::ptrdiff_t>(first), from_root.end());
   for (std::size_t h = 0; h + 1 < b.handles.size(); ++h)
-    r.handles.push_back(nearest_tip(plant, r.path, b.handles[h].at));
+    r.handles.push_back(nearest_tip(
+        plant, r.path.size(), [&](std::size_t i) { return r.path[i]; }, b.handles[h].at));
   r.handles.push_back(end);
   return r;
 }

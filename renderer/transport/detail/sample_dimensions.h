@@ -6,7 +6,9 @@
 
 namespace landsim::renderer::detail {
 
-// 0-1 pixel jitter, then kDimsPerBounce per bounce.
+// 0-1 pixel jitter, then kDimsPerBounce per bounce; a thin lens's aperture position far
+// above every bounce's.
+inline constexpr std::uint32_t kLens0 = 0xFFFF0000u, kLens1 = kLens0 + 1;
 inline constexpr std::uint32_t kFirstBounceDim = 2;
 inline constexpr std::uint32_t kDimsPerBounce = 12;
 enum Dim : std::uint32_t {

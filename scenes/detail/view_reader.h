@@ -1,0 +1,16 @@
+#pragma once
+// Private to scenes/: reads one [[views]] table (docs/CAMERAS.md) into a ViewSettings, every
+// key checked against the others (a focal length needs a sensor, distortion must not fold
+// the frame, ...), errors at the key's file:line.
+// Include from .cpp files only (toml++ is a heavy header).
+#include <toml++/toml.h>
+
+#include <string>
+
+#include "scenes/scenario.h"
+
+namespace landsim::scenes::detail {
+
+ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file);
+
+}  // namespace landsim::scenes::detail
