@@ -65,7 +65,7 @@ std::uint64_t trace_view(const renderer::PathTracer& tracer, const renderer::Vie
               for (int s = 0; s < settings.spp; ++s) {
                 const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
                 const renderer::Ray ray = *camera.ray(static_cast<float>(x) + rng.uniform(0),
-                                                     static_cast<float>(y) + rng.uniform(1));
+                                                      static_cast<float>(y) + rng.uniform(1));
                 local += tracer.trace(ray, rng, mask).rays;
               }
             }

@@ -132,7 +132,8 @@ Cover ours(std::uint8_t object) {
     return Cover::tree;
   }
   // POV-Ray traces no ray outside a fisheye's circle either: black in its mask, as the sky.
-  const bool nothing = object == 0 || object == static_cast<std::uint8_t>(renderer::ObjectClass::none);
+  const bool nothing =
+      object == 0 || object == static_cast<std::uint8_t>(renderer::ObjectClass::none);
   return nothing ? Cover::sky : Cover::ground;
 }
 

@@ -50,10 +50,10 @@ PovView pov_view(const renderer::View& v) {
       // POV-Ray's fisheye is equidistant, its circle's radius 1 / |right| of half the width.
       const double half = 0.5 * v.fov_y_deg * std::numbers::pi / 180.0;
       const double circle = 2.0 * l.fisheye_focal * half;
-      out.camera = fmt::format(
-          "camera {{ fisheye location {} direction {} right {} up {} angle {:.9g} }}",
-          pov(v.position), pov(b.forward), pov(b.right * (v.width / circle)),
-          pov(b.up * (v.height / circle)), v.fov_y_deg);
+      out.camera =
+          fmt::format("camera {{ fisheye location {} direction {} right {} up {} angle {:.9g} }}",
+                      pov(v.position), pov(b.forward), pov(b.right * (v.width / circle)),
+                      pov(b.up * (v.height / circle)), v.fov_y_deg);
       if (l.projection == Projection::fisheye_equisolid)
         out.unshown.push_back(
             "the equisolid mapping (POV-Ray's fisheye is equidistant; written as one of the same "

@@ -32,7 +32,8 @@ std::pair<float, float> concentric_disc(float u, float v) {
   const float a = 2.0f * u - 1.0f, b = 2.0f * v - 1.0f;
   if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
   const float quarter = std::numbers::pi_v<float> / 4.0f;
-  if (std::abs(a) > std::abs(b)) return {a * std::cos(quarter * b / a), a * std::sin(quarter * b / a)};
+  if (std::abs(a) > std::abs(b))
+    return {a * std::cos(quarter * b / a), a * std::sin(quarter * b / a)};
   return {b * std::sin(quarter * a / b), b * std::cos(quarter * a / b)};
 }
 
@@ -165,15 +166,15 @@ std::optional<Ray> Camera::fisheye_ray(float px, float py) const {
 }
 
 Ray Camera::spherical_ray(float px, float py) const {
-  const double azimuth = (px / view_.width - 0.5) * 2.0 * std::numbers::pi;
-  const double elevation = (0.5 - py / view_.height) * std::numbers::pi;
+  const double azimuth = (double{px} / view_.width - 0.5) * 2.0 * std::numbers::pi;
+  const double elevation = (0.5 - double{py} / view_.height) * std::numbers::pi;
   const double c = std::cos(elevation);
   return {position_, towards(c * std::sin(azimuth), std::sin(elevation), c * std::cos(azimuth))};
 }
 
 Ray Camera::orthographic_ray(float px, float py) const {
-  const double x = (px / view_.width - 0.5) * view_.lens.extent_width;
-  const double y = (0.5 - py / view_.height) * view_.lens.extent_height;
+  const double x = (double{px} / view_.width - 0.5) * view_.lens.extent_width;
+  const double y = (0.5 - double{py} / view_.height) * view_.lens.extent_height;
   return {Vec3f(view_.position + x * basis_.right + y * basis_.up), forward_};
 }
 

@@ -31,7 +31,7 @@ struct Lens {
   // Perspective and fisheye: the principal point's offset from the image centre, pixels,
   // x right, y down.
   double principal_x = 0.0, principal_y = 0.0;
-  Distortion distortion;  // perspective only
+  Distortion distortion{};  // perspective only
   // Orthographic: the width and height the image spans, metres.
   double extent_width = 0.0, extent_height = 0.0;
   // Fisheye: focal length in pixels; rays leave up to half the view's fov from the axis.

@@ -169,7 +169,7 @@ struct View {
   Vec3 up{0.0, 0.0, 1.0};
   double roll_deg = 0.0;     // clockwise about the axis, seen from behind the camera
   double heading_deg = 0.0;  // clockwise from north
-  Lens lens;
+  Lens lens{};
 };
 
 // A sensor band (docs/SPECTRAL.md): the image set gets one layer of its band radiance,

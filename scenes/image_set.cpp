@@ -71,7 +71,11 @@ nlohmann::json camera_json(const renderer::View& v, const Vec3& origin) {
   if (l.projection != Projection::perspective) return out;
   const renderer::Distortion& d = l.distortion;
   out["distortion"] = {{"model", "opencv brown-conrady"},
-                       {"k1", d.k1}, {"k2", d.k2}, {"k3", d.k3}, {"p1", d.p1}, {"p2", d.p2}};
+                       {"k1", d.k1},
+                       {"k2", d.k2},
+                       {"k3", d.k3},
+                       {"p1", d.p1},
+                       {"p2", d.p2}};
   if (l.aperture_radius > 0.0) {
     out["f_number"] = l.f_number;
     out["focus_distance_m"] = l.focus_distance;
@@ -434,8 +438,8 @@ std::vector<std::string> check_image_set(const Scenario& scenario,
       for (const char* ext : {".exr", ".png"})
         if (!std::filesystem::exists(out_dir / (stem + ext))) missing.push_back(stem + ext);
       if (missing.empty())
-        entries.push_back(
-            manifest_entry(vs, stem, f, frames[f], saved_json(out_dir / (stem + ".exr"), "camera")));
+        entries.push_back(manifest_entry(vs, stem, f, frames[f],
+                                         saved_json(out_dir / (stem + ".exr"), "camera")));
     }
   if (missing.empty()) write_manifest(out_dir / "manifest.json", scenario, entries);
   return missing;

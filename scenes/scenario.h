@@ -43,7 +43,7 @@ struct ViewSettings : renderer::View {
   // Orthographic align = "grid": each pixel covers this many cells of the elevation grid
   // each way, its edges on cell edges; 0: not aligned.
   int grid_cells_per_pixel = 0;
-  bool has_position = true;  // align = "grid" may leave the position to the grid's centre
+  bool has_position = true;   // align = "grid" may leave the position to the grid's centre
   bool aims_at_point = true;  // `target` was given (else the axis is a direction)
   bool has_size = true;       // align = "grid" may leave width and height to the grid
 };

@@ -179,8 +179,8 @@ void set_spectral_optics(const Scenario& s, renderer::Scene& scene) {
 // The ground mesh: the grid's own, or with context grids the grid and its surroundings; in
 // the latter case context triangles take kSurroundings (feature maps may override it).
 void add_ground_mesh(const Scenario& s, const terrain::ElevationGrid& grid,
-                     const std::vector<renderer::View>& views,
-                     const terrain::SurfaceDetail* relief, renderer::Scene& scene) {
+                     const std::vector<renderer::View>& views, const terrain::SurfaceDetail* relief,
+                     renderer::Scene& scene) {
   if (s.terrain.context.empty() && relief == nullptr) {
     scene.ground.mesh = terrain::build_ground_mesh(grid, scene.origin);
     return;

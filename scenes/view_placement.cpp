@@ -31,9 +31,9 @@ void align_to_grid(renderer::View& out, const ViewSettings& v, const terrain::El
     west = t.origin_x +
            std::round((v.position.x - 0.5 * out.lens.extent_width - t.origin_x) / t.cell_size_x) *
                t.cell_size_x;
-    north = t.origin_y -
-            std::round((t.origin_y - (v.position.y + 0.5 * out.lens.extent_height)) / t.cell_size_y) *
-                t.cell_size_y;
+    north = t.origin_y - std::round((t.origin_y - (v.position.y + 0.5 * out.lens.extent_height)) /
+                                    t.cell_size_y) *
+                             t.cell_size_y;
   }
   const double z = v.has_position ? v.position.z : grid.max_height() + kMapCameraClearance;
   out.position = {west + 0.5 * out.lens.extent_width, north - 0.5 * out.lens.extent_height, z};

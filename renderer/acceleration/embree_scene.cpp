@@ -1,6 +1,5 @@
 #include "renderer/acceleration/embree_scene.h"
 
-
 #include "renderer/acceleration/detail/embree_errors.h"
 #include "renderer/acceleration/detail/prototype_levels.h"
 #include "renderer/acceleration/stochastic_lod.h"

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/acceleration/embree_scene.h"
+
 namespace landsim::renderer {
 namespace {
 
@@ -12,12 +14,16 @@ constexpr double kLuminanceFloor = 1e-4;
 }  // namespace
 
 double log_average_luminance(const Film& film) {
-  if (film.pixel_count() == 0) return kLuminanceFloor;
   double sum = 0.0;
+  std::size_t seen = 0;
   for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x)
+    for (int x = 0; x < film.width(); ++x) {
+      // Pixels no ray leaves (outside a fisheye's circle) are not part of the picture.
+      if (film.object(x, y) == static_cast<std::uint8_t>(ObjectClass::none)) continue;
       sum += std::log(std::max(static_cast<double>(film.luminance(x, y)), kLuminanceFloor));
-  return std::exp(sum / static_cast<double>(film.pixel_count()));
+      ++seen;
+    }
+  return seen == 0 ? kLuminanceFloor : std::exp(sum / static_cast<double>(seen));
 }
 
 double exposure_ev100(const Film& film, std::optional<double> fixed_ev100) {

@@ -14,9 +14,9 @@
 #include "renderer/acceleration/embree_scene.h"
 #include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
-#include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/output/image_output.h"
 #include "renderer/transport/comparable_tracer.h"
+#include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/path_tracer.h"
 
 #include <spdlog/spdlog.h>

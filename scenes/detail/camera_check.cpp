@@ -16,9 +16,10 @@ void warn_cameras_below_ground(const Scenario& s, const std::vector<renderer::Vi
     const Vec3& p = placed[k].position;
     const std::optional<double> ground = grid.height(p.x, p.y);
     if (ground && p.z < *ground)
-      warn_input(fmt::format("{}: [views \"{}\"] position: the camera is {:.1f} m below the "
-                             "ground (the terrain is at {:.1f} m there)",
-                             s.views[k].location, s.views[k].name, *ground - p.z, *ground));
+      warn_input(
+          fmt::format("{}: [views \"{}\"] position: the camera is {:.1f} m below the "
+                      "ground (the terrain is at {:.1f} m there)",
+                      s.views[k].location, s.views[k].name, *ground - p.z, *ground));
   }
 }
 

@@ -28,8 +28,8 @@ void only_for(TableReader& r, std::string_view key, bool applies, const std::str
 }
 
 Projection read_projection(TableReader& r) {
-  const std::string p = r.choice("projection", {"perspective", "orthographic", "fisheye", "spherical"},
-                                 "perspective");
+  const std::string p = r.choice(
+      "projection", {"perspective", "orthographic", "fisheye", "spherical"}, "perspective");
   only_for(r, "mapping", p == "fisheye", "projection = \"fisheye\"");
   if (p == "fisheye")
     return r.choice("mapping", {"equidistant", "equisolid"}, "equidistant") == "equisolid"
@@ -71,8 +71,8 @@ void read_placement(TableReader& r, ViewSettings& v) {
 // The optical axis: exactly one of target, direction, or yaw and pitch (orthographic views
 // look straight down by default).
 void read_axis(TableReader& r, ViewSettings& v) {
-  const int given = int{r.has("target")} + int{r.has("direction")} +
-                    int{r.has("yaw") || r.has("pitch")};
+  const int given =
+      int{r.has("target")} + int{r.has("direction")} + int{r.has("yaw") || r.has("pitch")};
   if (given > 1)
     r.fail(r.has("direction") ? "direction" : "yaw",
            "give one of target, direction, or yaw and pitch");
@@ -135,10 +135,8 @@ void read_perspective(TableReader& r, ViewSettings& v) {
   if (r.has("fov")) r.fail("fov", "give fov or focal_length, not both");
   v.lens.focal_length_mm = r.number("focal_length", Range{0.0, 1e5, true});
   const auto pitch = read_pitch(r, v);
-  if (!pitch)
-    r.fail("focal_length", "needs sensor_size (mm, width x height) or pixel_pitch (um)");
-  v.fov_y_deg = 2.0 * std::atan(0.5 * v.height * pitch->second / v.lens.focal_length_mm) /
-                kDegree;
+  if (!pitch) r.fail("focal_length", "needs sensor_size (mm, width x height) or pixel_pitch (um)");
+  v.fov_y_deg = 2.0 * std::atan(0.5 * v.height * pitch->second / v.lens.focal_length_mm) / kDegree;
   v.lens.fx_over_fy = pitch->second / pitch->first;
 }
 
@@ -147,7 +145,8 @@ void read_fisheye(TableReader& r, ViewSettings& v) {
   const double half = 0.5 * v.fov_y_deg * kDegree;
   const bool equidistant = v.lens.projection == Projection::fisheye_equidistant;
   if (r.has("focal_length")) {
-    if (r.has("image_circle")) r.fail("image_circle", "give image_circle or focal_length, not both");
+    if (r.has("image_circle"))
+      r.fail("image_circle", "give image_circle or focal_length, not both");
     v.lens.focal_length_mm = r.number("focal_length", Range{0.0, 1e5, true});
     const auto pitch = read_pitch(r, v);
     if (!pitch)
@@ -159,8 +158,7 @@ void read_fisheye(TableReader& r, ViewSettings& v) {
     if (r.has(k)) r.fail(k, "needs focal_length (mm)");
   const double circle =
       r.number("image_circle", Range{0.0, 1e6, true}, std::min(v.width, v.height));
-  v.lens.fisheye_focal =
-      0.5 * circle / (equidistant ? half : 2.0 * std::sin(0.5 * half));
+  v.lens.fisheye_focal = 0.5 * circle / (equidistant ? half : 2.0 * std::sin(0.5 * half));
 }
 
 void read_orthographic(TableReader& r, ViewSettings& v) {
@@ -169,7 +167,8 @@ void read_orthographic(TableReader& r, ViewSettings& v) {
       if (r.has(k)) r.fail(k, "align = \"grid\" sets the pixel size from cells_per_pixel");
     return;
   }
-  if (r.has("extent") && r.has("pixel_size")) r.fail("pixel_size", "give extent or pixel_size, not both");
+  if (r.has("extent") && r.has("pixel_size"))
+    r.fail("pixel_size", "give extent or pixel_size, not both");
   if (r.has("pixel_size")) {
     const double p = r.number("pixel_size", Range{0.0, 1e6, true});
     v.lens.extent_width = p * v.width;
@@ -177,8 +176,9 @@ void read_orthographic(TableReader& r, ViewSettings& v) {
     return;
   }
   if (!r.has("extent"))
-    r.fail("extent", "projection = \"orthographic\" needs extent ([width, height], metres), "
-                     "pixel_size (metres) or align = \"grid\"");
+    r.fail("extent",
+           "projection = \"orthographic\" needs extent ([width, height], metres), "
+           "pixel_size (metres) or align = \"grid\"");
   const std::vector<double> e = r.numbers("extent", 2, Range{0.0, 1e8, true});
   v.lens.extent_width = e[0];
   v.lens.extent_height = e[1];
@@ -227,9 +227,10 @@ void read_distortion(TableReader& r, ViewSettings& v) {
   c.p2 = d.number("p2", Range{-1.0, 1.0}, 0.0);
   d.finish();
   if (!renderer::unfolded_within(c, frame_radius(v)))
-    r.fail("distortion", "folds the image: the radial distortion stops growing (or never "
-                         "reaches the frame's corners) inside the frame, so one pixel would see "
-                         "two directions");
+    r.fail("distortion",
+           "folds the image: the radial distortion stops growing (or never "
+           "reaches the frame's corners) inside the frame, so one pixel would see "
+           "two directions");
 }
 
 void read_aperture(TableReader& r, ViewSettings& v) {

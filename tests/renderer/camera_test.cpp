@@ -149,10 +149,11 @@ TEST(Camera, FisheyesMapTheAngleFromTheAxisToTheRadius) {
     v.lens.fisheye_focal = 140.0;
     const Camera cam(v);
     const double theta = 80.0 * kPi / 180.0;
-    const double r = p == Projection::fisheye_equidistant ? 140.0 * theta
-                                                          : 2.0 * 140.0 * std::sin(0.5 * theta);
+    const double r =
+        p == Projection::fisheye_equidistant ? 140.0 * theta : 2.0 * 140.0 * std::sin(0.5 * theta);
     // 80 degrees off the axis, towards the upper left at 45 degrees.
-    const Vec3 q{-std::sin(theta) * std::sqrt(0.5), std::cos(theta), std::sin(theta) * std::sqrt(0.5)};
+    const Vec3 q{-std::sin(theta) * std::sqrt(0.5), std::cos(theta),
+                 std::sin(theta) * std::sqrt(0.5)};
     const auto at = cam.project(q * 50.0);
     ASSERT_TRUE(at);
     EXPECT_NEAR(at->x, 250.0 - r * std::sqrt(0.5), 0.05);
@@ -224,7 +225,7 @@ TEST(Camera, AThinLensFocusesItsRaysOnThePlaneInFocus) {
   const Ray centre = *cam.ray(70.5f, 20.5f);
   const Vec3 focus = Vec3(centre.origin) + (25.0 / centre.direction.y) * Vec3(centre.direction);
   double spread = 0.0;
-  for (const auto [lu, lv] : {std::pair{0.1f, 0.2f}, {0.9f, 0.4f}, {0.3f, 0.95f}}) {
+  for (const auto& [lu, lv] : {std::pair{0.1f, 0.2f}, {0.9f, 0.4f}, {0.3f, 0.95f}}) {
     const Ray r = *cam.ray(70.5f, 20.5f, lu, lv);
     const double t = (25.0 - r.origin.y) / r.direction.y;
     EXPECT_LT(length(Vec3(r.origin) + t * Vec3(r.direction) - focus), 1e-4);

@@ -193,7 +193,8 @@ TEST(Scenario, OutOfRangeNumbersAreRefused) {
 TEST(Scenario, MissingRequiredKeyAndTable) {
   std::string no_target = scenario_text();
   no_target.replace(no_target.find("target"), 6, "#arget");
-  EXPECT_NE(error_of(no_target).find("[views \"a\"] target: expected target, direction, or yaw and pitch"),
+  EXPECT_NE(error_of(no_target).find(
+                "[views \"a\"] target: expected target, direction, or yaw and pitch"),
             std::string::npos);
   EXPECT_NE(error_of("[terrain]\nelevation = \"" + volcano() + "\"\n").find("[sun]"),
             std::string::npos);

@@ -138,7 +138,8 @@ TEST(SceneObjects, APanelOnAKnollClearsTheGroundAndTouchesIt) {
   double lowest = std::numeric_limits<double>::infinity();
   for (int i = 0; i <= 40; ++i)
     for (int j = 0; j <= 40; ++j) {
-      const Vec3 w = scene.objects[0].apply(Vec3f{-10.0f + 0.5f * i, -10.0f + 0.5f * j, 0.0f});
+      const Vec3 w = scene.objects[0].apply(Vec3f{-10.0f + 0.5f * static_cast<float>(i),
+                                                  -10.0f + 0.5f * static_cast<float>(j), 0.0f});
       const std::optional<double> h = probe.height(w.x, w.y);
       ASSERT_TRUE(h.has_value());
       lowest = std::min(lowest, w.z - *h);

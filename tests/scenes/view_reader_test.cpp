@@ -17,7 +17,8 @@ constexpr double kPi = std::numbers::pi;
 std::string scenario_with_view(const std::string& view) {
   return "[terrain]\nelevation = \"" +
          landsim::testing::source_file("data/terrain/volcano.asc").string() +
-         "\"\n[sun]\nelevation = 40\nazimuth = 180\n[[views]]\nname = \"v\"\nposition = [300.0, 400.0, 500.0]\nwidth = 600\n"
+         "\"\n[sun]\nelevation = 40\nazimuth = 180\n[[views]]\nname = \"v\"\nposition = [300.0, "
+         "400.0, 500.0]\nwidth = 600\n"
          "height = 400\n" +
          view + "\n";
 }
@@ -54,14 +55,16 @@ TEST(ViewReader, StraightDownAndStraightUpAreViews) {
 }
 
 TEST(ViewReader, AFocalLengthWithASensorGivesTheFieldOfView) {
-  const ViewSettings s = view_of("target = [300, 500, 400]\nfocal_length = 35\nsensor_size = [36, 24]");
+  const ViewSettings s =
+      view_of("target = [300, 500, 400]\nfocal_length = 35\nsensor_size = [36, 24]");
   EXPECT_NEAR(s.fov_y_deg, 2.0 * std::atan(12.0 / 35.0) * 180.0 / kPi, 1e-9);
   EXPECT_NEAR(s.lens.fx_over_fy, 1.0, 1e-12);
   // 5 um pixels: 400 of them are 2 mm high.
   const ViewSettings p = view_of("target = [300, 500, 400]\nfocal_length = 50\npixel_pitch = 5");
   EXPECT_NEAR(p.fov_y_deg, 2.0 * std::atan(1.0 / 50.0) * 180.0 / kPi, 1e-9);
   // Non-square pixels: 36 mm over 600 columns, 30 mm over 400 rows.
-  const ViewSettings n = view_of("target = [300, 500, 400]\nfocal_length = 35\nsensor_size = [36, 30]");
+  const ViewSettings n =
+      view_of("target = [300, 500, 400]\nfocal_length = 35\nsensor_size = [36, 30]");
   EXPECT_NEAR(n.lens.fx_over_fy, (30.0 / 400.0) / (36.0 / 600.0), 1e-12);
 }
 
@@ -109,8 +112,8 @@ TEST(ViewReader, RefusesWhatNoCameraCanBe) {
                  "needs sensor_size");
   expect_refused("target = [300, 500, 400]\nfov = 30\nfocal_length = 35\npixel_pitch = 4", "fov",
                  "not both");
-  expect_refused("target = [300, 500, 400]\nfov = 100\ndistortion = { k1 = -0.6 }",
-                 "distortion", "folds the image");
+  expect_refused("target = [300, 500, 400]\nfov = 100\ndistortion = { k1 = -0.6 }", "distortion",
+                 "folds the image");
   expect_refused("target = [300, 500, 400]\ndirection = [0, 1, 0]", "direction", "one of");
   expect_refused("projection = \"orthographic\"", "extent", "needs extent");
   expect_refused("target = [300, 500, 400]\nextent = [10, 10]", "extent", "orthographic");
