@@ -131,9 +131,9 @@ TEST(Crosscheck, SceneObjectsAgreeWithPovRayAndJoinTheObjectIou) {
 }
 
 // Every camera model POV-Ray has, exported with its own camera block (docs/CAMERAS.md): a
-// nadir view, a map of 1 m pixels and one of the whole grid (a pixel per cell), a rolled view
-// and a fisheye.
-TEST(Crosscheck, NadirMapRolledAndFisheyeViewsAgreeWithPovRay) {
+// nadir view, a map of 1 m pixels and one of the whole grid (a pixel per cell), a rolled view,
+// a fisheye and a panorama.
+TEST(Crosscheck, NadirMapRolledFisheyeAndSphericalViewsAgreeWithPovRay) {
   LANDSIM_REQUIRE_TOOL("povray", "povray");
   const std::pair<const char*, std::string> views[] = {
       {"nadir",
@@ -146,7 +146,10 @@ TEST(Crosscheck, NadirMapRolledAndFisheyeViewsAgreeWithPovRay) {
       {"rolled", std::string(kStandView) + "roll = 25\n"},
       {"fisheye",
        "[[views]]\nname = \"fisheye\"\nposition = [230.0, 735.0, 112.0]\ntarget = [230.0, "
-       "790.0, 104.0]\nprojection = \"fisheye\"\nfov = 180\nwidth = 64\nheight = 64\n"}};
+       "790.0, 104.0]\nprojection = \"fisheye\"\nfov = 180\nwidth = 64\nheight = 64\n"},
+      {"spherical",
+       "[[views]]\nname = \"panorama\"\nposition = [230.0, 735.0, 112.0]\nyaw = 20\npitch = 0\n"
+       "projection = \"spherical\"\nwidth = 128\nheight = 64\n"}};
   for (const auto& [name, view] : views) {
     TempDir dir;
     const Scenario s = small_scene(dir, "fanpalm.xml", "", view);
