@@ -96,6 +96,37 @@ TEST(Renderer, BitIdenticalForAnyThreadCount) {
             0);
 }
 
+// Straight down the ridge with a fisheye and a thin-lens camera: outside the fisheye's
+// circle no ray leaves (black, object "none", infinite depth), and both render the same bits
+// on one and two threads (the lens positions are the samples' own random numbers).
+TEST(Renderer, FisheyeAndThinLensViewsAreDeterministicAndTheCircleIsBlackOutside) {
+  Scene scene = testing::ridge_scene();
+  View fisheye{"fisheye", {102.5, 100.0, 160.0}, {102.5, 100.0, 0.0}, 180.0, 24, 24};
+  fisheye.lens.projection = Projection::fisheye_equisolid;
+  fisheye.lens.fisheye_focal = 12.0 / (2.0 * std::sin(std::numbers::pi / 4.0));
+  View lens{"lens", {102.5, 60.0, 120.0}, {102.5, 100.0, 60.0}, 30.0, 24, 16};
+  lens.lens.aperture_radius = 0.5;
+  lens.lens.focus_distance = 40.0;
+  for (const View& v : {fisheye, lens}) {
+    scene.views[0] = v;
+    const Renderer renderer(scene);
+    RenderOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const Film a = renderer.render(v, one), b = renderer.render(v, two);
+    EXPECT_EQ(
+        std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
+        0)
+        << v.name;
+    EXPECT_EQ(a.object(12, 12), 1) << v.name;  // the ridge below
+  }
+  const Film f = Renderer(scene).render(fisheye, {});
+  EXPECT_EQ(f.object(0, 0), static_cast<std::uint8_t>(ObjectClass::none));
+  EXPECT_TRUE(std::isinf(f.depth(0, 0)));
+  EXPECT_EQ(f.rgb(0, 0), (Vec3f{0.0f, 0.0f, 0.0f}));
+  EXPECT_EQ(f.object(12, 1), 1);  // inside the circle, near its top: the ground
+}
+
 TEST(Renderer, SeedChangesTheNoiseNotTheMean) {
   Scene scene = testing::ridge_scene();
   const Film a = Renderer(scene).render(scene.views[0], {});
