@@ -6,6 +6,8 @@
 
 #include "core/input_error.h"
 #include "renderer/camera.h"
+#include "terrain/dem_loader.h"
+#include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
 namespace {
@@ -72,6 +74,25 @@ TEST(ViewPlacement, AGridAlignedMapOfCoarserPixelsKeepsItsEdgesOnCellEdges) {
   EXPECT_NEAR(corner->x, 1.0, 0.01);
   EXPECT_NEAR(corner->y, 1.0, 0.01);
   EXPECT_NEAR(placed.position.z, 400.0, 1e-12);
+}
+
+// The example of docs/CAMERAS.md: the nadir view stands 2 km over the truck, which it shows
+// at its centre, and the map covers the whole grid a pixel per cell.
+TEST(ViewPlacement, TheKagweneCamerasExamplePlacesItsViews) {
+  const Scenario s =
+      load_scenario(landsim::testing::source_file("scenes/examples/kagwene_cameras.toml"));
+  const terrain::ElevationGrid grid = terrain::load_elevation(s.terrain.elevation, s.terrain.dem);
+  ASSERT_EQ(s.views.size(), 5u);
+  const renderer::View nadir = place_view(s.views[0], grid);
+  const Vec3 truck{583150.0, 676400.0, *grid.height(583150.0, 676400.0)};
+  EXPECT_NEAR(nadir.position.z - truck.z, 2000.0, 1e-6);
+  const auto at = renderer::Camera(nadir).project(truck);
+  ASSERT_TRUE(at);
+  EXPECT_NEAR(at->x, 240.0, 0.01);
+  EXPECT_NEAR(at->y, 180.0, 0.01);
+  const renderer::View map = place_view(s.views[1], grid);
+  EXPECT_EQ(map.width, grid.cols());
+  EXPECT_EQ(map.height, grid.rows());
 }
 
 }  // namespace
