@@ -17,6 +17,7 @@ Film::Film(int width, int height, std::vector<std::string> band_names)
       instance_(pixel_count(), kNoId),
       level_(pixel_count()),
       target_(pixel_count()),
+      coverage_(pixel_count()),
       band_names_(std::move(band_names)),
       bands_(band_names_.size(), std::vector<float>(pixel_count())) {}
 
@@ -51,6 +52,7 @@ void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
   instance_[i] = a.instance;
   level_[i] = a.level;
   target_[i] = a.target;
+  coverage_[i] = a.coverage;
 }
 
 Vec3f Film::rgb(int x, int y) const {

@@ -12,7 +12,8 @@ namespace landsim::renderer {
 
 inline constexpr std::uint32_t kNoId = 0xffffffffu;
 
-// What the first hit of a pixel's first sample saw.
+// What the first hit of a pixel's first sample saw, and (target, coverage) what all of its
+// samples saw of the scene objects.
 struct PixelAovs {
   float depth = 0.0f;              // distance from the camera, metres; infinity for the sky
   Vec3f normal;                    // shading normal facing the camera; zero for the sky
@@ -21,7 +22,10 @@ struct PixelAovs {
   std::uint32_t species = kNoId;   // species index, trees only
   std::uint32_t instance = kNoId;  // tree instance index
   std::uint32_t level = 0;         // level of detail drawn (0 = full)
-  std::uint32_t target = 0;        // scene object index + 1 (0: no object)
+  // The scene object (index + 1) most of the pixel's samples first hit (0: none hit one) and
+  // the fraction of the samples that hit it: sub-pixel truth (docs/OBJECTS.md "Truth").
+  std::uint32_t target = 0;
+  float coverage = 0.0f;
 };
 
 class Film {
@@ -58,6 +62,7 @@ class Film {
   std::uint32_t instance(int x, int y) const { return instance_[index(x, y)]; }
   std::uint32_t level(int x, int y) const { return level_[index(x, y)]; }
   std::uint32_t target(int x, int y) const { return target_[index(x, y)]; }
+  float coverage(int x, int y) const { return coverage_[index(x, y)]; }
 
   // Planes, for writers and readers (checkpoints).
   std::vector<float>& rgb_data() { return rgb_; }
@@ -78,6 +83,8 @@ class Film {
   const std::vector<std::uint32_t>& level_data() const { return level_; }
   std::vector<std::uint32_t>& target_data() { return target_; }
   const std::vector<std::uint32_t>& target_data() const { return target_; }
+  std::vector<float>& coverage_data() { return coverage_; }
+  const std::vector<float>& coverage_data() const { return coverage_; }
 
  private:
   std::size_t index(int x, int y) const {
@@ -89,6 +96,7 @@ class Film {
   int height_;
   std::vector<float> rgb_, depth_, normal_, albedo_;
   std::vector<std::uint32_t> object_, species_, instance_, level_, target_;
+  std::vector<float> coverage_;
   std::vector<std::string> band_names_;
   std::vector<std::vector<float>> bands_;  // per band, a plane
 };

@@ -79,13 +79,16 @@ void add_slice(Imf::FrameBuffer& fb, const char* name, Imf::PixelType type, std:
 
 struct Channel {
   const char* name;
-  bool id;  // UINT channel (else FLOAT)
+  bool id;        // UINT channel (else FLOAT)
+  bool required;  // in every landsim EXR (coverage came later: zero when absent)
 };
-constexpr Channel kChannels[] = {{"R", false},        {"G", false},        {"B", false},
-                                 {"Z", false},        {"N.X", false},      {"N.Y", false},
-                                 {"N.Z", false},      {"albedo.R", false}, {"albedo.G", false},
-                                 {"albedo.B", false}, {"object", true},    {"species", true},
-                                 {"instance", true},  {"lod", true},       {"target", true}};
+constexpr Channel kChannels[] = {
+    {"R", false, true},        {"G", false, true},        {"B", false, true},
+    {"Z", false, true},        {"N.X", false, true},      {"N.Y", false, true},
+    {"N.Z", false, true},      {"albedo.R", false, true}, {"albedo.G", false, true},
+    {"albedo.B", false, true}, {"object", true, true},    {"species", true, true},
+    {"instance", true, true},  {"lod", true, true},       {"target", true, true},
+    {"coverage", false, false}};
 
 // Sensor bands are channels of their own: "band." and the band's name.
 constexpr std::string_view kBandPrefix = "band.";
@@ -111,6 +114,7 @@ Imf::FrameBuffer frame_buffer(Film& film) {
   add_slice(fb, "instance", Imf::UINT, film.instance_data(), 1, 0, w);
   add_slice(fb, "lod", Imf::UINT, film.level_data(), 1, 0, w);
   add_slice(fb, "target", Imf::UINT, film.target_data(), 1, 0, w);
+  add_slice(fb, "coverage", Imf::FLOAT, film.coverage_data(), 1, 0, w);
   for (int b = 0; b < film.band_count(); ++b)
     add_slice(fb, band_channel(film.band_name(b)).c_str(), Imf::FLOAT, film.band_data(b), 1, 0, w);
   return fb;
@@ -191,7 +195,7 @@ Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata) {
   }
   Film film(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1, std::move(bands));
   for (const Channel& c : kChannels) {
-    if (in.header().channels().findChannel(c.name) == nullptr) {
+    if (c.required && in.header().channels().findChannel(c.name) == nullptr) {
       throw std::runtime_error(path.string() + ": not a landsim image (no channel " + c.name + ")");
     }
   }

@@ -14,22 +14,82 @@
 namespace landsim::renderer {
 namespace {
 
-// Per pixel, the object (index + 1) the first sample's ray meets in a scene of the objects
-// alone; 0 for none. The rays are the render's own (sample_ray, sample 0).
-std::vector<std::uint32_t> footprints(const Scene& scene, const View& view, bool centre_first) {
+// An object's axis-aligned bounding box in the scene frame: low and high corners.
+std::array<Vec3, 2> object_bounds(const Scene& scene, const ObjectInstance& o) {
+  const ObjectPrototype& p = scene.object_prototypes[o.prototype];
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity()};
+  Vec3 hi = -lo;
+  for (const Vec3f& v : p.vertices) {
+    const Vec3 w = o.apply(v);
+    lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
+    hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
+  }
+  return {lo, hi};
+}
+
+// The pixels an object can cover: the rectangle around its bounding box's projected corners
+// (two pixels of margin), or the whole image when a corner has no image position.
+PixelBox projected_bounds(const Scene& scene, const ObjectInstance& o, const Camera& camera,
+                          const View& view) {
+  const auto [lo, hi] = object_bounds(scene, o);
+  const PixelBox whole{0, 0, view.width - 1, view.height - 1};
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 c{k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
+    const std::optional<ImagePoint> at = camera.project(c);
+    if (!at) return whole;
+    x0 = std::min(x0, at->x), y0 = std::min(y0, at->y);
+    x1 = std::max(x1, at->x), y1 = std::max(y1, at->y);
+  }
+  // Lens distortion and wide models bend edges between corners: the margin covers a little.
+  const auto clamp_to = [](double v, int hi_index) {
+    return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi_index)));
+  };
+  if (x1 < -2.0 || y1 < -2.0 || x0 > view.width + 2.0 || y0 > view.height + 2.0)
+    return {0, 0, -1, -1};  // wholly outside the frame
+  return {clamp_to(std::floor(x0) - 2.0, view.width - 1),
+          clamp_to(std::floor(y0) - 2.0, view.height - 1),
+          clamp_to(std::ceil(x1) + 2.0, view.width - 1),
+          clamp_to(std::ceil(y1) + 2.0, view.height - 1)};
+}
+
+// Per pixel, the share of its samples whose ray meets each object in a scene of the objects
+// alone (the render's own rays: sample_ray of every sample), as (object index, share) pairs.
+struct FootprintHit {
+  std::uint32_t object;
+  float share;
+};
+std::vector<std::vector<FootprintHit>> footprints(const Scene& scene, const View& view,
+                                                  bool centre_first) {
   const EmbreeScene objects(scene, nullptr, EmbreeScene::Contents::objects_only);
   const Camera camera(view);
-  std::vector<std::uint32_t> out(static_cast<std::size_t>(view.width) * view.height, 0);
+  std::vector<std::uint8_t> near(static_cast<std::size_t>(view.width) * view.height, 0);
+  for (const ObjectInstance& o : scene.objects) {
+    const PixelBox b = projected_bounds(scene, o, camera, view);
+    for (int y = b[1]; y <= b[3]; ++y)
+      for (int x = b[0]; x <= b[2]; ++x) near[static_cast<std::size_t>(y) * view.width + x] = 1;
+  }
+  std::vector<std::vector<FootprintHit>> out(near.size());
+  const int spp = scene.settings.spp;
   tbb::parallel_for(0, view.height, [&](int y) {
     for (int x = 0; x < view.width; ++x) {
       const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(view.width) +
                          static_cast<std::uint64_t>(x);
-      const CounterRng rng(scene.settings.seed, pixel, 0);
-      const std::optional<Ray> ray = sample_ray(camera, rng, x, y, centre_first);
-      if (!ray) continue;
-      const auto hit = objects.intersect(*ray, 0.0f, std::numeric_limits<float>::infinity());
-      if (hit && hit->object_index >= 0)
-        out[static_cast<std::size_t>(pixel)] = static_cast<std::uint32_t>(hit->object_index + 1);
+      if (!near[pixel]) continue;
+      std::vector<FootprintHit>& hits = out[pixel];
+      for (int s = 0; s < spp; ++s) {
+        const CounterRng rng(scene.settings.seed, pixel, static_cast<std::uint64_t>(s));
+        const std::optional<Ray> ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
+        if (!ray) continue;
+        const auto hit = objects.intersect(*ray, 0.0f, std::numeric_limits<float>::infinity());
+        if (!hit || hit->object_index < 0) continue;
+        const auto id = static_cast<std::uint32_t>(hit->object_index);
+        auto it = std::find_if(hits.begin(), hits.end(),
+                               [&](const FootprintHit& h) { return h.object == id; });
+        if (it == hits.end()) it = hits.insert(hits.end(), {id, 0.0f});
+        it->share += 1.0f / static_cast<float>(spp);
+      }
     }
   });
   return out;
@@ -48,15 +108,7 @@ void grow(std::optional<PixelBox>& box, int x, int y) {
 
 // The centre of an object's bounding box in the scene frame.
 Vec3 object_centre(const Scene& scene, const ObjectInstance& o) {
-  const ObjectPrototype& p = scene.object_prototypes[o.prototype];
-  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-          std::numeric_limits<double>::infinity()};
-  Vec3 hi = -lo;
-  for (const Vec3f& v : p.vertices) {
-    const Vec3 w = o.apply(v);
-    lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
-    hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
-  }
+  const auto [lo, hi] = object_bounds(scene, o);
   return (lo + hi) * 0.5;
 }
 
@@ -104,7 +156,7 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
                                       bool centre_first) {
   std::vector<ObjectTruth> out(scene.objects.size());
   if (out.empty()) return out;
-  const std::vector<std::uint32_t> footprint = footprints(scene, view, centre_first);
+  const std::vector<std::vector<FootprintHit>> footprint = footprints(scene, view, centre_first);
   std::vector<double> luminance(out.size(), 0.0);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
@@ -112,22 +164,22 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
       if (seen > 0 && seen <= out.size()) {
         ObjectTruth& t = out[seen - 1];
         ++t.visible_pixels;
+        t.visible_coverage += film.coverage(x, y);
         grow(t.bbox, x, y);
         luminance[seen - 1] += film.luminance(x, y);
       }
-      const std::uint32_t f = footprint[static_cast<std::size_t>(y) * film.width() + x];
-      if (f > 0) {
-        ++out[f - 1].footprint_pixels;
-        grow(out[f - 1].footprint_bbox, x, y);
+      for (const FootprintHit& f : footprint[static_cast<std::size_t>(y) * film.width() + x]) {
+        ++out[f.object].footprint_pixels;
+        out[f.object].footprint_coverage += f.share;
+        grow(out[f.object].footprint_bbox, x, y);
       }
     }
   for (std::size_t i = 0; i < out.size(); ++i) {
     ObjectTruth& t = out[i];
     t.name = scene.objects[i].name;
     t.range = length(object_centre(scene, scene.objects[i]) - view.position);
-    if (t.footprint_pixels > 0)
-      t.visible_fraction =
-          static_cast<double>(t.visible_pixels) / static_cast<double>(t.footprint_pixels);
+    if (t.footprint_coverage > 0.0)
+      t.visible_fraction = std::min(1.0, t.visible_coverage / t.footprint_coverage);
     if (t.visible_pixels == 0) continue;
     t.luminance = luminance[i] / static_cast<double>(t.visible_pixels);
     t.ring_width = ring_width(*t.bbox);

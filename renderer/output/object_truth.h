@@ -16,15 +16,21 @@ namespace landsim::renderer {
 // Pixel bounds, inclusive: x0, y0, x1, y1 (row 0 at the top).
 using PixelBox = std::array<int, 4>;
 
+// Sub-pixel truth: every sample of a pixel counts. A pixel "covers" an object when any of its
+// samples first hits it (coverage > 0; the film's target layer names the object most of
+// them hit, its coverage layer the share); coverage sums are in pixels.
 struct ObjectTruth {
   std::string name;
-  // Pixels whose first sample's first hit is this object (the film's target AOV).
+  // Pixels whose target is this object, and the sum of their coverage.
   std::uint64_t visible_pixels = 0;
-  // Pixels whose first-sample ray meets the object when nothing else is in the scene: its
-  // projected footprint, occluders ignored.
+  double visible_coverage = 0.0;
+  // The same for the samples' rays in a scene of the objects alone: the projected
+  // footprint, occluders ignored.
   std::uint64_t footprint_pixels = 0;
-  double visible_fraction = 0.0;  // visible / footprint; 0 with an empty footprint
-  std::optional<PixelBox> bbox;   // of the visible pixels; empty when none is
+  double footprint_coverage = 0.0;
+  // visible / footprint coverage; 0 with an empty footprint.
+  double visible_fraction = 0.0;
+  std::optional<PixelBox> bbox;  // of the visible pixels; empty when none is
   std::optional<PixelBox> footprint_bbox;
   double range = 0.0;  // metres, camera to the centre of the object's bounding box
   // Contrast of the visible pixels against their surround: mean luminance (cd/m2) of the

@@ -43,6 +43,38 @@ void for_each_tile_pixel(const TileGrid& grid, int tile, int width, int height, 
     for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) visit(x, y);
 }
 
+// The scene objects a pixel's samples first hit, and how often: the one most of them hit
+// (ties: the one hit first) and its share. A few distinct objects per pixel at most matter.
+class TargetTally {
+ public:
+  void add(std::uint32_t target) {
+    if (target == 0) return;
+    for (std::size_t i = 0; i < size_; ++i)
+      if (ids_[i] == target) {
+        ++counts_[i];
+        return;
+      }
+    if (size_ < ids_.size()) {
+      ids_[size_] = target;
+      counts_[size_++] = 1;
+    }
+  }
+  std::uint32_t most() const { return size_ == 0 ? 0 : ids_[best()]; }
+  float fraction(int spp) const {
+    return size_ == 0 ? 0.0f : static_cast<float>(counts_[best()]) / static_cast<float>(spp);
+  }
+
+ private:
+  std::size_t best() const {
+    std::size_t b = 0;
+    for (std::size_t i = 1; i < size_; ++i)
+      if (counts_[i] > counts_[b]) b = i;
+    return b;
+  }
+  std::array<std::uint32_t, 4> ids_{}, counts_{};
+  std::size_t size_ = 0;
+};
+
 // A sample of a pixel no ray leaves: black, and "none" in every truth layer.
 PathSample outside_the_image() {
   PathSample s;
@@ -67,6 +99,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       Vec3f sum{};
       std::array<float, kMaxBands> band_sum{};
       FirstHit first;
+      TargetTally targets;
       const std::uint32_t mask = pixel_ray_mask(pixel);
       for (int s = 0; s < settings.spp; ++s) {
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
@@ -77,6 +110,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
           band_sum[static_cast<std::size_t>(b)] += sample.bands[static_cast<std::size_t>(b)];
         rays += sample.rays;
         if (s == 0) first = sample.first;  // AOVs from the first sample: no blending of ids
+        targets.add(sample.first.target);
       }
       PixelAovs aovs;
       aovs.depth = first.depth;
@@ -86,7 +120,8 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       if (first.instance >= 0) aovs.instance = static_cast<std::uint32_t>(first.instance);
       if (first.species >= 0) aovs.species = static_cast<std::uint32_t>(first.species);
       aovs.level = first.level;
-      aovs.target = first.target;
+      aovs.target = targets.most();
+      aovs.coverage = targets.fraction(settings.spp);
       const float inverse_spp = 1.0f / static_cast<float>(settings.spp);
       film.set(x, y, sum * inverse_spp, aovs);
       for (float& b : band_sum) b *= inverse_spp;
@@ -252,8 +287,9 @@ Film make_film(const Scene& scene, const View& view) {
 }
 
 // A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
-// species, instance, level and target: 15 words per pixel, then the bands (float bits).
-constexpr std::size_t kWordsPerPixel = 15;
+// species, instance, level, target and coverage (float bits): 16 words per pixel, then the
+// bands (float bits).
+constexpr std::size_t kWordsPerPixel = 16;
 
 std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   const TileGrid grid = tile_grid(film.width(), film.height());
@@ -262,10 +298,10 @@ std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   for (int tile = first; tile < last; ++tile)
     for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
       const Vec3f c = film.rgb(x, y), n = film.normal(x, y), a = film.albedo(x, y);
-      words.insert(words.end(),
-                   {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y),
-                    bits(n.z), bits(a.x), bits(a.y), bits(a.z), film.object(x, y),
-                    film.species(x, y), film.instance(x, y), film.level(x, y), film.target(x, y)});
+      words.insert(words.end(), {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x),
+                                 bits(n.y), bits(n.z), bits(a.x), bits(a.y), bits(a.z),
+                                 film.object(x, y), film.species(x, y), film.instance(x, y),
+                                 film.level(x, y), film.target(x, y), bits(film.coverage(x, y))});
       for (int b = 0; b < film.band_count(); ++b) words.push_back(bits(film.band(x, y, b)));
     });
   return words;
@@ -288,6 +324,7 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
       aovs.instance = words[k + 12];
       aovs.level = words[k + 13];
       aovs.target = words[k + 14];
+      aovs.coverage = f(k + 15);
       film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
       std::array<float, kMaxBands> bands{};
       for (int b = 0; b < film.band_count(); ++b)
