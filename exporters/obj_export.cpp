@@ -115,6 +115,8 @@ std::vector<std::size_t> nearest_instances(const renderer::Scene& scene, std::si
                              length(scene.instances[b].position - near);
                     });
   order.resize(n);
+  // Listed in the scene's order, so each row's instance id is the EXR's (docs/OUTPUTS.md).
+  std::sort(order.begin(), order.end());
   return order;
 }
 
@@ -233,13 +235,13 @@ SceneObjSummary write_scene_obj(const renderer::Scene& scene, const std::filesys
              "leaned in the wind (a turn about the horizontal axis (lean_x, lean_y) by its "
              "length in degrees), its trunk base moved to x, y, z ("
           << (options.terrain_frame ? "terrain" : "scene") << " frame, metres)\n"
-          << "prototype,x,y,z,rotation_deg,scale,lean_x_deg,lean_y_deg\n";
+          << "instance,prototype,x,y,z,rotation_deg,scale,lean_x_deg,lean_y_deg\n";
       for (std::size_t i : chosen) {
         const renderer::TreeInstance& inst = scene.instances[i];
         const Vec3 at = inst.position + shift;
         constexpr double kDegrees = 180.0 / 3.14159265358979323846;
-        csv << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f},{:.6f},{:.4f},{:.4f}\n", inst.prototype,
-                           at.x, at.y, at.z, inst.rotation * kDegrees, inst.scale,
+        csv << fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.6f},{:.4f},{:.4f}\n", i,
+                           inst.prototype, at.x, at.y, at.z, inst.rotation * kDegrees, inst.scale,
                            inst.lean.x * kDegrees, inst.lean.y * kDegrees);
       }
       if (!csv) throw std::runtime_error("cannot write " + summary.instances_file.string());

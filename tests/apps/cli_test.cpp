@@ -320,10 +320,10 @@ TEST(Cli, ExportObjWritesPrototypesOnceAndListsInstancesInTerrainCoordinates) {
   std::string line;
   int rows = 0;
   while (std::getline(csv, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("prototype,", 0) == 0) continue;
+    if (line.empty() || line[0] == '#' || line.rfind("instance,", 0) == 0) continue;
     ++rows;
     double x = 0.0, y = 0.0;
-    ASSERT_EQ(std::sscanf(line.c_str(), "%*d,%lf,%lf", &x, &y), 2) << line;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%*d,%*d,%lf,%lf", &x, &y), 2) << line;
     // The volcano grid's own coordinates: 0-610 m east, 0-870 m north.
     EXPECT_TRUE(x >= 0.0 && x <= 610.0 && y >= 0.0 && y <= 870.0) << line;
   }
