@@ -14,6 +14,7 @@
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
 #include "renderer/output/object_truth.h"
+#include "scenes/detail/legend.h"
 #include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
 
@@ -96,6 +97,7 @@ renderer::ImageMetadata metadata(const Scenario& s, const renderer::View& v,
       {"camera_target", vec_text(v.target + scene.origin)},
       {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
       {"camera", camera_json(v, scene.origin).dump()},
+      {"legend", detail::legend(s).dump()},
       {"scene_origin", vec_text(scene.origin)},
       {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
       {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
@@ -135,6 +137,7 @@ void write_manifest(const std::filesystem::path& path, const Scenario& s,
       {"sun", {{"elevation_deg", s.sun.elevation_deg}, {"azimuth_deg", s.sun.azimuth_deg}}},
       {"wind", {{"speed", s.wind.speed}, {"gust", s.wind.gust}}},
       {"bands", bands_json(s)},
+      {"legend", detail::legend(s)},
       {"images", images}};
   write_file_atomically(path, manifest.dump(2) + "\n");
 }

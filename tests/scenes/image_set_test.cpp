@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <set>
 #include <string>
 
 #include "core/input_error.h"
+#include "renderer/output/image_output.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -125,6 +127,56 @@ TEST(ImageSet, CheckNamesTheMissingImagesAndWritesTheManifestWhenNoneAre) {
   render_image_set(two_frames(), o);
   EXPECT_TRUE(check_image_set(two_frames(), o.out_dir).empty());
   EXPECT_EQ(manifest_in(o.out_dir)["images"].size(), 2u);
+}
+
+// The legend (docs/OUTPUTS.md) names every id the layers hold, and each layer's none: two
+// species and a truck on the volcano, in the manifest and in the EXR alike.
+TEST(ImageSet, TheLegendNamesEveryIdInTheLayers) {
+  const auto data = [](const std::string& f) {
+    return landsim::testing::source_file("data/" + f).string();
+  };
+  const std::string text =
+      "[terrain]\nelevation = \"" + data("terrain/volcano.asc") +
+      "\"\n[sun]\nelevation = 30\nazimuth = 300\n"
+      "[[species]]\nbit = 0\nfile = \"" +
+      data("species/quaking_aspen.toml") +
+      "\"\nvariants = 2\ndensity_per_ha = 40\ncover = { rectangle = [250, 700, 290, 780] }\n"
+      "[[species]]\nbit = 1\nfile = \"" +
+      data("species/fanpalm.xml") +
+      "\"\nvariants = 1\ndensity_per_ha = 40\ncover = { rectangle = [290, 700, 330, 780] }\n"
+      "[[objects]]\nname = \"truck\"\nfile = \"" +
+      data("objects/truck.obj") +
+      "\"\nposition = [290, 690]\n"
+      "[[views]]\nname = \"v\"\nposition = [290.0, 640.0, 140.0]\n"
+      "target = [290.0, 740.0, 110.0]\nwidth = 64\nheight = 48\n[render]\nspp = 2\n";
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  render_image_set(parse_scenario(text, "set.toml", "."), o);
+  const nlohmann::json legend = manifest_in(o.out_dir)["legend"];
+  renderer::ImageMetadata meta;
+  const renderer::Film film = renderer::read_exr(o.out_dir / "v.exr", &meta);
+  bool in_exr = false;
+  for (const auto& [key, value] : meta)
+    in_exr |= key == "legend" && nlohmann::json::parse(value) == legend;
+  EXPECT_TRUE(in_exr);
+  ASSERT_EQ(legend["species"]["values"].size(), 2u);
+  EXPECT_EQ(legend["species"]["values"][1]["core"], "weber_penn");
+  EXPECT_EQ(legend["target"]["values"][0]["name"], "truck");
+  std::set<std::uint64_t> species_seen, targets_seen, classes_seen;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const auto s = film.species(x, y);
+      if (s != legend["species"]["none"].get<std::uint64_t>()) species_seen.insert(s);
+      if (film.target(x, y) != legend["target"]["none"].get<std::uint32_t>())
+        targets_seen.insert(film.target(x, y));
+      classes_seen.insert(film.object(x, y));
+    }
+  EXPECT_EQ(species_seen.size(), 2u);  // both species in view
+  for (const auto s : species_seen) EXPECT_LT(s, legend["species"]["values"].size());
+  EXPECT_EQ(targets_seen, (std::set<std::uint64_t>{1}));  // the truck, id 1
+  for (const auto c : classes_seen)
+    EXPECT_TRUE(legend["object"]["values"].contains(std::to_string(c))) << c;
 }
 
 }  // namespace
