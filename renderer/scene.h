@@ -290,6 +290,9 @@ struct ObjectInstance {
 
 struct Scene {
   Vec3 origin;  // terrain coordinates of the scene frame's (0, 0, 0)
+  // The terrain's coordinate reference system (well-known text; empty for a local grid),
+  // for georeferenced outputs.
+  std::string crs_wkt;
   Ground ground;
   std::vector<TreePrototype> prototypes;
   std::vector<TreeInstance> instances;

@@ -14,6 +14,7 @@
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
 #include "renderer/output/object_truth.h"
+#include "scenes/detail/geo_rasters.h"
 #include "scenes/detail/legend.h"
 #include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
@@ -310,6 +311,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   }
   renderer::write_exr(film, exr, meta, &camera);
   renderer::write_preview_png(film, run.options.out_dir / (image.stem + ".png"), ev100);
+  detail::write_geo_rasters(film, view, scene, s, run.options.out_dir, image.stem);
   report.exr = exr;
   report.view = view.name;
   report.frame_index = image.frame;

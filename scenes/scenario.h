@@ -64,6 +64,9 @@ struct RenderSection {
   double quality = 1.0;     // the paper's quality factor, (0, 1]
   // The memory budget in bytes ("8 GB" in the file); empty: a share of physical memory.
   std::optional<std::uint64_t> max_memory;
+  // Georeferenced rasters beside each EXR (docs/OUTPUTS.md "GeoTIFF and ENVI").
+  bool geotiff = false;
+  bool envi = false;
 };
 
 struct WindSettings {

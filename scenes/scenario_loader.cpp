@@ -212,6 +212,29 @@ std::optional<double> read_exposure(TableReader& r) {
   return ev;
 }
 
+// [render] formats: "exr" (always written: the set's own record) and optionally "geotiff",
+// "envi".
+void read_formats(TableReader& r, RenderSection& s) {
+  const toml::node* n =
+      r.value("formats", "an array of \"exr\", \"geotiff\", \"envi\"", "[\"exr\"]");
+  if (n == nullptr) return;
+  const toml::array* a = n->as_array();
+  if (a == nullptr) r.fail_at(*n, "formats", "expected an array such as [\"exr\", \"geotiff\"]");
+  bool exr = false;
+  for (const toml::node& f : *a) {
+    const std::optional<std::string> name = f.value<std::string>();
+    if (!name || (*name != "exr" && *name != "geotiff" && *name != "envi"))
+      r.fail_at(f, "formats", "expected \"exr\", \"geotiff\" or \"envi\"");
+    exr |= *name == "exr";
+    s.geotiff |= *name == "geotiff";
+    s.envi |= *name == "envi";
+  }
+  if (!exr)
+    r.fail_at(*n, "formats",
+              "must include \"exr\" (the image set's own record, read by --resume "
+              "and compare)");
+}
+
 RenderSection read_render(const toml::table& t, const std::string& file) {
   TableReader r(t, "render", file);
   RenderSection s;
@@ -226,6 +249,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.degradation = r.boolean("degradation", s.degradation);
   s.quality = r.number("quality", Range{0.0, 1.0, true, false}, s.quality);
   s.max_memory = r.byte_size("max_memory");
+  read_formats(r, s);
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");
     const toml::array* a = n->as_array();

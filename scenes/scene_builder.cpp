@@ -277,6 +277,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   const std::optional<featuremaps::VegetationMap>& map = foundation.map;
   renderer::Scene scene;
   scene.origin = grid.centre();
+  scene.crs_wkt = grid.crs_wkt();
   const std::optional<terrain::SurfaceDetail> relief =
       surface_detail(scenario, grid, rasters, map ? &*map : nullptr);
   add_ground_mesh(scenario, grid, foundation.views, relief ? &*relief : nullptr, scene);

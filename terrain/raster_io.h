@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace landsim::terrain {
@@ -21,7 +22,7 @@ struct RasterHeader {
   std::string crs_wkt;                                // empty when absent
 };
 
-enum class CellType { float32, uint16 };
+enum class CellType { float32, uint16, uint32 };
 
 // Band 1 of a raster in another coordinate reference system: GDAL's warper resamples it
 // (bilinear) onto the grid GDAL suggests in the target CRS, north-up.
@@ -29,6 +30,27 @@ struct WarpedRaster {
   int cols = 0, rows = 0;
   std::array<double, 6> geotransform{};  // GDAL's order
   std::vector<float> cells;              // cols x rows, north first; NaN: nodata or outside
+};
+
+// One band of a raster to write: its name (the band description), cells (cols x rows,
+// row-major, north first, of the file's type) and, for spectral bands, the centre wavelength.
+struct OutputBand {
+  std::string name;
+  const void* cells = nullptr;
+  std::optional<double> wavelength_nm;
+};
+
+// A raster to write through one of GDAL's drivers ("GTiff", "ENVI"): its bands share a
+// type; it is north-up georeferenced when `geotransform` is given, in `crs_wkt` when not
+// empty; `metadata` goes to the dataset's default domain.
+struct OutputRaster {
+  std::string driver;
+  int cols = 0, rows = 0;
+  CellType type = CellType::float32;
+  std::vector<OutputBand> bands;
+  std::optional<std::array<double, 6>> geotransform;
+  std::string crs_wkt;
+  std::vector<std::pair<std::string, std::string>> metadata;
 };
 
 // Every function returns false on failure and puts GDAL's last message (possibly empty) in
@@ -61,6 +83,9 @@ struct RasterIo {
   // flagged in `enclosed` (holes surrounded by known cells) take the filled values whole.
   bool (*fade_offsets)(float* cells, const std::uint8_t* enclosed, int cols, int rows, double band,
                        std::string& error);
+  // Writes `raster` to `path` (GTiff: DEFLATE-compressed; ENVI: the .hdr beside it, with
+  // "wavelength" when every band has one).
+  bool (*write_raster)(const std::string& path, const OutputRaster& raster, std::string& error);
 };
 
 // The module's table, loaded on first use (std::runtime_error when the module is missing).

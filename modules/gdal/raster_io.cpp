@@ -106,12 +106,24 @@ bool read_header(const std::string& path, RasterHeader& header, std::string& err
   return true;
 }
 
+GDALDataType gdal_type(CellType type) {
+  switch (type) {
+    case CellType::float32:
+      return GDT_Float32;
+    case CellType::uint16:
+      return GDT_UInt16;
+    case CellType::uint32:
+      return GDT_UInt32;
+  }
+  return GDT_Float32;
+}
+
 bool read_band(const std::string& path, CellType type, void* cells, std::string& error) {
   const QuietErrors quiet;
   const Dataset ds = open(path);
   if (!ds || GDALGetRasterCount(ds.get()) < 1) return quiet.fail(error);
   const int cols = GDALGetRasterXSize(ds.get()), rows = GDALGetRasterYSize(ds.get());
-  const GDALDataType as = type == CellType::float32 ? GDT_Float32 : GDT_UInt16;
+  const GDALDataType as = gdal_type(type);
   if (GDALRasterIO(GDALGetRasterBand(ds.get(), 1), GF_Read, 0, 0, cols, rows, cells, cols, rows, as,
                    0, 0) != CE_None)
     return quiet.fail(error);
@@ -150,6 +162,55 @@ bool write_uint16_geotiff(const std::string& path, int cols, int rows, const std
   if (GDALRasterIO(GDALGetRasterBand(ds.get(), 1), GF_Write, 0, 0, cols, rows,
                    const_cast<std::uint16_t*>(cells), cols, rows, GDT_UInt16, 0, 0) != CE_None)
     return quiet.fail(error);
+  ds.reset();  // flush and close: the caller renames the file next
+  return CPLGetLastErrorType() < CE_Failure ? true : quiet.fail(error);
+}
+
+// ENVI's header lists wavelengths as "{w1, w2, ...}" (its own metadata domain, "ENVI").
+std::string envi_list(const std::vector<OutputBand>& bands) {
+  std::string list = "{";
+  for (std::size_t b = 0; b < bands.size(); ++b)
+    list += (b > 0 ? ", " : "") + std::to_string(*bands[b].wavelength_nm);
+  return list + "}";
+}
+
+bool write_raster(const std::string& path, const OutputRaster& r, std::string& error) {
+  const QuietErrors quiet;
+  GDALDriverH driver = GDALGetDriverByName(r.driver.c_str());
+  if (driver == nullptr) return quiet.fail(error);
+  char* tiff_options[] = {const_cast<char*>("COMPRESS=DEFLATE"), nullptr};
+  const GDALDataType type = gdal_type(r.type);
+  Dataset ds(GDALCreate(driver, path.c_str(), r.cols, r.rows, static_cast<int>(r.bands.size()),
+                        type, r.driver == "GTiff" ? tiff_options : nullptr));
+  if (!ds) return quiet.fail(error);
+  if (r.geotransform) {
+    double gt[6];
+    std::copy(r.geotransform->begin(), r.geotransform->end(), gt);
+    GDALSetGeoTransform(ds.get(), gt);
+  }
+  if (!r.crs_wkt.empty()) GDALSetProjection(ds.get(), r.crs_wkt.c_str());
+  for (const auto& [key, value] : r.metadata)
+    GDALSetMetadataItem(ds.get(), key.c_str(), value.c_str(), nullptr);
+  bool every_wavelength = !r.bands.empty();
+  for (std::size_t b = 0; b < r.bands.size(); ++b) {
+    const OutputBand& band = r.bands[b];
+    GDALRasterBandH h = GDALGetRasterBand(ds.get(), static_cast<int>(b) + 1);
+    GDALSetDescription(h, band.name.c_str());
+    every_wavelength = every_wavelength && band.wavelength_nm.has_value();
+    if (band.wavelength_nm) {
+      const std::string nm = std::to_string(*band.wavelength_nm);
+      GDALSetMetadataItem(h, "wavelength", nm.c_str(), nullptr);
+      GDALSetMetadataItem(h, "wavelength_units", "nm", nullptr);
+    }
+    // GDAL only reads the buffer on a write.
+    if (GDALRasterIO(h, GF_Write, 0, 0, r.cols, r.rows, const_cast<void*>(band.cells), r.cols,
+                     r.rows, type, 0, 0) != CE_None)
+      return quiet.fail(error);
+  }
+  if (r.driver == "ENVI" && every_wavelength) {
+    GDALSetMetadataItem(ds.get(), "wavelength", envi_list(r.bands).c_str(), "ENVI");
+    GDALSetMetadataItem(ds.get(), "wavelength_units", "Nanometers", "ENVI");
+  }
   ds.reset();  // flush and close: the caller renames the file next
   return CPLGetLastErrorType() < CE_Failure ? true : quiet.fail(error);
 }
@@ -281,8 +342,9 @@ bool fade_offsets(float* cells, const std::uint8_t* enclosed, int cols, int rows
   return true;
 }
 
-const RasterIo kTable{mount_memory_file, file_exists,          read_file,   read_header, read_band,
-                      fill_nodata,       write_uint16_geotiff, warp_raster, fade_offsets};
+const RasterIo kTable{
+    mount_memory_file, file_exists,          read_file,   read_header,  read_band,
+    fill_nodata,       write_uint16_geotiff, warp_raster, fade_offsets, write_raster};
 
 }  // namespace
 }  // namespace landsim::terrain

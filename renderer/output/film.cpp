@@ -18,6 +18,7 @@ Film::Film(int width, int height, std::vector<std::string> band_names)
       level_(pixel_count()),
       target_(pixel_count()),
       coverage_(pixel_count()),
+      position_(3 * pixel_count(), kNoPosition),
       band_names_(std::move(band_names)),
       bands_(band_names_.size(), std::vector<float>(pixel_count())) {}
 
@@ -45,6 +46,7 @@ void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
     rgb_[3 * i + c] = rgb[c];
     normal_[3 * i + c] = a.normal[c];
     albedo_[3 * i + c] = a.albedo[c];
+    position_[3 * i + c] = a.position[c];
   }
   depth_[i] = a.depth;
   object_[i] = a.object;
@@ -53,6 +55,11 @@ void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
   level_[i] = a.level;
   target_[i] = a.target;
   coverage_[i] = a.coverage;
+}
+
+Vec3f Film::position(int x, int y) const {
+  const std::size_t i = 3 * index(x, y);
+  return {position_[i], position_[i + 1], position_[i + 2]};
 }
 
 Vec3f Film::rgb(int x, int y) const {

@@ -3,6 +3,7 @@
 // RGB, row 0 at the top.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 namespace landsim::renderer {
 
 inline constexpr std::uint32_t kNoId = 0xffffffffu;
+inline constexpr float kNoPosition = std::numeric_limits<float>::quiet_NaN();
 
 // What the first hit of a pixel's first sample saw, and (target, coverage) what all of its
 // samples saw of the scene objects.
@@ -26,6 +28,9 @@ struct PixelAovs {
   // the fraction of the samples that hit it: sub-pixel truth (docs/OBJECTS.md "Truth").
   std::uint32_t target = 0;
   float coverage = 0.0f;
+  // Where the first sample's ray first hits, scene frame (the scene's origin added gives the
+  // terrain's CRS); NaN where it hits nothing.
+  Vec3f position{kNoPosition, kNoPosition, kNoPosition};
 };
 
 class Film {
@@ -63,6 +68,7 @@ class Film {
   std::uint32_t level(int x, int y) const { return level_[index(x, y)]; }
   std::uint32_t target(int x, int y) const { return target_[index(x, y)]; }
   float coverage(int x, int y) const { return coverage_[index(x, y)]; }
+  Vec3f position(int x, int y) const;
 
   // Planes, for writers and readers (checkpoints).
   std::vector<float>& rgb_data() { return rgb_; }
@@ -83,6 +89,8 @@ class Film {
   const std::vector<std::uint32_t>& level_data() const { return level_; }
   std::vector<std::uint32_t>& target_data() { return target_; }
   const std::vector<std::uint32_t>& target_data() const { return target_; }
+  std::vector<float>& position_data() { return position_; }
+  const std::vector<float>& position_data() const { return position_; }
   std::vector<float>& coverage_data() { return coverage_; }
   const std::vector<float>& coverage_data() const { return coverage_; }
 
@@ -96,7 +104,7 @@ class Film {
   int height_;
   std::vector<float> rgb_, depth_, normal_, albedo_;
   std::vector<std::uint32_t> object_, species_, instance_, level_, target_;
-  std::vector<float> coverage_;
+  std::vector<float> coverage_, position_;
   std::vector<std::string> band_names_;
   std::vector<std::vector<float>> bands_;  // per band, a plane
 };

@@ -83,12 +83,13 @@ struct Channel {
   bool required;  // in every landsim EXR (coverage came later: zero when absent)
 };
 constexpr Channel kChannels[] = {
-    {"R", false, true},        {"G", false, true},        {"B", false, true},
-    {"Z", false, true},        {"N.X", false, true},      {"N.Y", false, true},
-    {"N.Z", false, true},      {"albedo.R", false, true}, {"albedo.G", false, true},
-    {"albedo.B", false, true}, {"object", true, true},    {"species", true, true},
-    {"instance", true, true},  {"lod", true, true},       {"target", true, true},
-    {"coverage", false, false}};
+    {"R", false, true},         {"G", false, true},        {"B", false, true},
+    {"Z", false, true},         {"N.X", false, true},      {"N.Y", false, true},
+    {"N.Z", false, true},       {"albedo.R", false, true}, {"albedo.G", false, true},
+    {"albedo.B", false, true},  {"object", true, true},    {"species", true, true},
+    {"instance", true, true},   {"lod", true, true},       {"target", true, true},
+    {"coverage", false, false}, {"P.X", false, false},     {"P.Y", false, false},
+    {"P.Z", false, false}};
 
 // Sensor bands are channels of their own: "band." and the band's name.
 constexpr std::string_view kBandPrefix = "band.";
@@ -115,6 +116,9 @@ Imf::FrameBuffer frame_buffer(Film& film) {
   add_slice(fb, "lod", Imf::UINT, film.level_data(), 1, 0, w);
   add_slice(fb, "target", Imf::UINT, film.target_data(), 1, 0, w);
   add_slice(fb, "coverage", Imf::FLOAT, film.coverage_data(), 1, 0, w);
+  add_slice(fb, "P.X", Imf::FLOAT, film.position_data(), 3, 0, w);
+  add_slice(fb, "P.Y", Imf::FLOAT, film.position_data(), 3, 1, w);
+  add_slice(fb, "P.Z", Imf::FLOAT, film.position_data(), 3, 2, w);
   for (int b = 0; b < film.band_count(); ++b)
     add_slice(fb, band_channel(film.band_name(b)).c_str(), Imf::FLOAT, film.band_data(b), 1, 0, w);
   return fb;

@@ -99,6 +99,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       Vec3f sum{};
       std::array<float, kMaxBands> band_sum{};
       FirstHit first;
+      PixelAovs aovs;
       TargetTally targets;
       const std::uint32_t mask = pixel_ray_mask(pixel);
       for (int s = 0; s < settings.spp; ++s) {
@@ -109,10 +110,13 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
         for (int b = 0; b < film.band_count(); ++b)
           band_sum[static_cast<std::size_t>(b)] += sample.bands[static_cast<std::size_t>(b)];
         rays += sample.rays;
-        if (s == 0) first = sample.first;  // AOVs from the first sample: no blending of ids
+        if (s == 0) {  // AOVs from the first sample: no blending of ids
+          first = sample.first;
+          if (ray && std::isfinite(first.depth))
+            aovs.position = ray->origin + first.depth * ray->direction;
+        }
         targets.add(sample.first.target);
       }
-      PixelAovs aovs;
       aovs.depth = first.depth;
       aovs.normal = first.normal;
       aovs.albedo = first.albedo;
@@ -287,9 +291,9 @@ Film make_film(const Scene& scene, const View& view) {
 }
 
 // A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
-// species, instance, level, target and coverage (float bits): 16 words per pixel, then the
-// bands (float bits).
-constexpr std::size_t kWordsPerPixel = 16;
+// species, instance, level, target, then coverage and position (float bits): 19 words per
+// pixel, then the bands (float bits).
+constexpr std::size_t kWordsPerPixel = 19;
 
 std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   const TileGrid grid = tile_grid(film.width(), film.height());
@@ -298,10 +302,12 @@ std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   for (int tile = first; tile < last; ++tile)
     for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
       const Vec3f c = film.rgb(x, y), n = film.normal(x, y), a = film.albedo(x, y);
-      words.insert(words.end(), {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x),
-                                 bits(n.y), bits(n.z), bits(a.x), bits(a.y), bits(a.z),
-                                 film.object(x, y), film.species(x, y), film.instance(x, y),
-                                 film.level(x, y), film.target(x, y), bits(film.coverage(x, y))});
+      words.insert(
+          words.end(),
+          {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y), bits(n.z),
+           bits(a.x), bits(a.y), bits(a.z), film.object(x, y), film.species(x, y),
+           film.instance(x, y), film.level(x, y), film.target(x, y), bits(film.coverage(x, y)),
+           bits(film.position(x, y).x), bits(film.position(x, y).y), bits(film.position(x, y).z)});
       for (int b = 0; b < film.band_count(); ++b) words.push_back(bits(film.band(x, y, b)));
     });
   return words;
@@ -325,6 +331,7 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
       aovs.level = words[k + 13];
       aovs.target = words[k + 14];
       aovs.coverage = f(k + 15);
+      aovs.position = {f(k + 16), f(k + 17), f(k + 18)};
       film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
       std::array<float, kMaxBands> bands{};
       for (int b = 0; b < film.band_count(); ++b)
