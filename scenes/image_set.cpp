@@ -155,8 +155,20 @@ nlohmann::json box_json(const std::optional<renderer::PixelBox>& b) {
   return {{"x0", (*b)[0]}, {"y0", (*b)[1]}, {"x1", (*b)[2]}, {"y1", (*b)[3]}};
 }
 
+// An object's oriented box (terrain frame, and the camera's: OpenCV's axes).
+nlohmann::json box3d_json(const renderer::ObjectBox& b, const Vec3& origin) {
+  const auto& m = b.rotation_camera;
+  return {{"centre", vec_json(b.centre + origin)},
+          {"size_m", vec_json(b.size)},
+          {"heading_deg", b.heading_deg},
+          {"pitch_deg", b.pitch_deg},
+          {"roll_deg", b.roll_deg},
+          {"centre_camera", vec_json(b.centre_camera)},
+          {"rotation_camera", {{m[0], m[1], m[2]}, {m[3], m[4], m[5]}, {m[6], m[7], m[8]}}}};
+}
+
 // The manifest's truth about each object in an image (docs/OBJECTS.md "Truth").
-nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth) {
+nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth, const Vec3& origin) {
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t i = 0; i < truth.size(); ++i) {
     const renderer::ObjectTruth& t = truth[i];
@@ -171,6 +183,8 @@ nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth) {
                    {"bbox", box_json(t.bbox)},
                    {"footprint_bbox", box_json(t.footprint_bbox)},
                    {"range_m", t.range},
+                   {"truncation", t.truncation ? nlohmann::json(*t.truncation) : nlohmann::json()},
+                   {"box3d", box3d_json(t.box, origin)},
                    {"luminance", t.luminance},
                    {"background_luminance", t.background_luminance},
                    {"background_pixels", t.background_pixels},
@@ -306,7 +320,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   // Truth about the scene objects, in the manifest and (for resume) in the EXR.
   nlohmann::json objects;
   if (!scene.objects.empty()) {
-    objects = objects_json(renderer::object_truth(scene, view, film, options.centre_first_sample));
+    objects = objects_json(renderer::object_truth(scene, view, film, options.centre_first_sample),
+                           scene.origin);
     meta.emplace_back("objects", objects.dump());
   }
   renderer::write_exr(film, exr, meta, &camera);

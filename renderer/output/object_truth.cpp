@@ -28,30 +28,72 @@ std::array<Vec3, 2> object_bounds(const Scene& scene, const ObjectInstance& o) {
   return {lo, hi};
 }
 
-// The pixels an object can cover: the rectangle around its bounding box's projected corners
-// (two pixels of margin), or the whole image when a corner has no image position.
-PixelBox projected_bounds(const Scene& scene, const ObjectInstance& o, const Camera& camera,
-                          const View& view) {
+// The image rectangle around an object's bounding box's projected corners, two pixels of
+// margin (lens distortion and wide models bend edges between corners), unclamped: x0, y0,
+// x1, y1; empty when a corner has no image position.
+std::optional<std::array<double, 4>> projected_rectangle(const Scene& scene,
+                                                         const ObjectInstance& o,
+                                                         const Camera& camera) {
   const auto [lo, hi] = object_bounds(scene, o);
-  const PixelBox whole{0, 0, view.width - 1, view.height - 1};
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  std::array<double, 4> r{1e300, 1e300, -1e300, -1e300};
   for (int k = 0; k < 8; ++k) {
     const Vec3 c{k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
     const std::optional<ImagePoint> at = camera.project(c);
-    if (!at) return whole;
-    x0 = std::min(x0, at->x), y0 = std::min(y0, at->y);
-    x1 = std::max(x1, at->x), y1 = std::max(y1, at->y);
+    if (!at) return std::nullopt;
+    r = {std::min(r[0], at->x), std::min(r[1], at->y), std::max(r[2], at->x),
+         std::max(r[3], at->y)};
   }
-  // Lens distortion and wide models bend edges between corners: the margin covers a little.
+  return std::array<double, 4>{std::floor(r[0]) - 2.0, std::floor(r[1]) - 2.0,
+                               std::ceil(r[2]) + 2.0, std::ceil(r[3]) + 2.0};
+}
+
+// The pixels of the frame an object can cover (the whole frame when its rectangle is
+// unknown; x1 < x0 when it lies wholly outside).
+PixelBox projected_bounds(const Scene& scene, const ObjectInstance& o, const Camera& camera,
+                          const View& view) {
+  const auto r = projected_rectangle(scene, o, camera);
+  if (!r) return {0, 0, view.width - 1, view.height - 1};
   const auto clamp_to = [](double v, int hi_index) {
     return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi_index)));
   };
-  if (x1 < -2.0 || y1 < -2.0 || x0 > view.width + 2.0 || y0 > view.height + 2.0)
-    return {0, 0, -1, -1};  // wholly outside the frame
-  return {clamp_to(std::floor(x0) - 2.0, view.width - 1),
-          clamp_to(std::floor(y0) - 2.0, view.height - 1),
-          clamp_to(std::ceil(x1) + 2.0, view.width - 1),
-          clamp_to(std::ceil(y1) + 2.0, view.height - 1)};
+  if ((*r)[2] < 0.0 || (*r)[3] < 0.0 || (*r)[0] >= view.width || (*r)[1] >= view.height)
+    return {0, 0, -1, -1};
+  return {clamp_to((*r)[0], view.width - 1), clamp_to((*r)[1], view.height - 1),
+          clamp_to((*r)[2], view.width - 1), clamp_to((*r)[3], view.height - 1)};
+}
+
+// The object's footprint coverage beyond the frame: the same rays continued past its edges
+// (perspective and orthographic views only; empty for the others, and when the part beyond
+// spans more than four frames).
+std::optional<double> coverage_beyond_the_frame(const Scene& scene, std::size_t index,
+                                                const EmbreeScene& objects, const Camera& camera,
+                                                const View& view, int spp) {
+  using renderer::Projection;
+  if (view.lens.projection != Projection::perspective &&
+      view.lens.projection != Projection::orthographic)
+    return std::nullopt;
+  const auto r = projected_rectangle(scene, scene.objects[index], camera);
+  if (!r) return std::nullopt;
+  const double area = ((*r)[2] - (*r)[0] + 1.0) * ((*r)[3] - (*r)[1] + 1.0);
+  if (area > 4.0 * view.width * view.height) return std::nullopt;
+  double sum = 0.0;
+  for (int y = static_cast<int>((*r)[1]); y <= static_cast<int>((*r)[3]); ++y)
+    for (int x = static_cast<int>((*r)[0]); x <= static_cast<int>((*r)[2]); ++x) {
+      if (x >= 0 && y >= 0 && x < view.width && y < view.height) continue;
+      // A key of its own for each pixel beyond the frame (in-frame keys are below 2^63).
+      const std::uint64_t key = (std::uint64_t{1} << 63) |
+                                (std::uint64_t{static_cast<std::uint32_t>(x)} << 32) |
+                                static_cast<std::uint32_t>(y);
+      for (int s = 0; s < spp; ++s) {
+        const CounterRng rng(scene.settings.seed, key, static_cast<std::uint64_t>(s));
+        const std::optional<Ray> ray = sample_ray(camera, rng, x, y, false);
+        if (!ray) continue;
+        const auto hit = objects.intersect(*ray, 0.0f, std::numeric_limits<float>::infinity());
+        if (hit && hit->object_index == static_cast<std::int32_t>(index))
+          sum += 1.0 / static_cast<double>(spp);
+      }
+    }
+  return sum;
 }
 
 // Per pixel, the share of its samples whose ray meets each object in a scene of the objects
@@ -60,8 +102,11 @@ struct FootprintHit {
   std::uint32_t object;
   float share;
 };
-std::vector<std::vector<FootprintHit>> footprints(const Scene& scene, const View& view,
-                                                  bool centre_first) {
+struct Footprints {
+  std::vector<std::vector<FootprintHit>> pixels;        // per pixel of the frame
+  std::vector<std::optional<double>> beyond_the_frame;  // per object
+};
+Footprints footprints(const Scene& scene, const View& view, bool centre_first) {
   const EmbreeScene objects(scene, nullptr, EmbreeScene::Contents::objects_only);
   const Camera camera(view);
   std::vector<std::uint8_t> near(static_cast<std::size_t>(view.width) * view.height, 0);
@@ -70,7 +115,9 @@ std::vector<std::vector<FootprintHit>> footprints(const Scene& scene, const View
     for (int y = b[1]; y <= b[3]; ++y)
       for (int x = b[0]; x <= b[2]; ++x) near[static_cast<std::size_t>(y) * view.width + x] = 1;
   }
-  std::vector<std::vector<FootprintHit>> out(near.size());
+  Footprints result;
+  std::vector<std::vector<FootprintHit>>& out = result.pixels;
+  out.resize(near.size());
   const int spp = scene.settings.spp;
   tbb::parallel_for(0, view.height, [&](int y) {
     for (int x = 0; x < view.width; ++x) {
@@ -92,7 +139,42 @@ std::vector<std::vector<FootprintHit>> footprints(const Scene& scene, const View
       }
     }
   });
-  return out;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    result.beyond_the_frame.push_back(
+        coverage_beyond_the_frame(scene, i, objects, camera, view, spp));
+  return result;
+}
+
+// The object's oriented box: its mesh's bounds in its own frame (x right, y front, z up),
+// carried into the scene frame, and seen from the camera.
+ObjectBox object_box(const Scene& scene, const ObjectInstance& o, const View& view) {
+  const ObjectPrototype& p = scene.object_prototypes[o.prototype];
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3f& v : p.vertices) {
+    lo = {std::min(lo.x, double{v.x}), std::min(lo.y, double{v.y}), std::min(lo.z, double{v.z})};
+    hi = {std::max(hi.x, double{v.x}), std::max(hi.y, double{v.y}), std::max(hi.z, double{v.z})};
+  }
+  ObjectBox b;
+  const double scale = length(o.turn({1.0, 0.0, 0.0}));
+  b.size = (hi - lo) * scale;
+  b.centre = o.apply(Vec3f((lo + hi) * 0.5));
+  b.right = normalize(o.turn({1.0, 0.0, 0.0}));
+  b.front = normalize(o.turn({0.0, 1.0, 0.0}));
+  b.up = normalize(o.turn({0.0, 0.0, 1.0}));
+  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  b.heading_deg = std::atan2(b.front.x, b.front.y) * kDegrees;
+  b.pitch_deg = std::asin(std::clamp(b.front.z, -1.0, 1.0)) * kDegrees;
+  b.roll_deg = std::atan2(-b.right.z, b.up.z) * kDegrees;
+  // The camera frame as OpenCV's: x right, y down, z forward.
+  const CameraBasis c = camera_basis(view);
+  const auto camera_frame = [&](const Vec3& d) {
+    return Vec3{dot(d, c.right), -dot(d, c.up), dot(d, c.forward)};
+  };
+  b.centre_camera = camera_frame(b.centre - view.position);
+  const Vec3 axes[3] = {camera_frame(b.right), camera_frame(b.front), camera_frame(b.up)};
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) b.rotation_camera[static_cast<std::size_t>(3 * r + k)] = axes[k][r];
+  return b;
 }
 
 void grow(std::optional<PixelBox>& box, int x, int y) {
@@ -156,7 +238,7 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
                                       bool centre_first) {
   std::vector<ObjectTruth> out(scene.objects.size());
   if (out.empty()) return out;
-  const std::vector<std::vector<FootprintHit>> footprint = footprints(scene, view, centre_first);
+  const Footprints footprint = footprints(scene, view, centre_first);
   std::vector<double> luminance(out.size(), 0.0);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
@@ -168,7 +250,8 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
         grow(t.bbox, x, y);
         luminance[seen - 1] += film.luminance(x, y);
       }
-      for (const FootprintHit& f : footprint[static_cast<std::size_t>(y) * film.width() + x]) {
+      for (const FootprintHit& f :
+           footprint.pixels[static_cast<std::size_t>(y) * film.width() + x]) {
         ++out[f.object].footprint_pixels;
         out[f.object].footprint_coverage += f.share;
         grow(out[f.object].footprint_bbox, x, y);
@@ -178,6 +261,11 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
     ObjectTruth& t = out[i];
     t.name = scene.objects[i].name;
     t.range = length(object_centre(scene, scene.objects[i]) - view.position);
+    t.box = object_box(scene, scene.objects[i], view);
+    if (const std::optional<double> beyond = footprint.beyond_the_frame[i]) {
+      const double whole = t.footprint_coverage + *beyond;
+      t.truncation = whole > 0.0 ? *beyond / whole : 0.0;
+    }
     if (t.footprint_coverage > 0.0)
       t.visible_fraction = std::min(1.0, t.visible_coverage / t.footprint_coverage);
     if (t.visible_pixels == 0) continue;

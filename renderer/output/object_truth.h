@@ -19,6 +19,19 @@ using PixelBox = std::array<int, 4>;
 // Sub-pixel truth: every sample of a pixel counts. A pixel "covers" an object when any of its
 // samples first hits it (coverage > 0; the film's target layer names the object most of
 // them hit, its coverage layer the share); coverage sums are in pixels.
+// An object's oriented box: its mesh's bounds in its own frame (x right, y front, z up)
+// placed in the scene frame; the angles are Tait-Bryan: heading clockwise from north, then
+// pitch (front up positive), then roll (right side down positive).
+struct ObjectBox {
+  Vec3 centre;  // scene frame
+  Vec3 size;    // metres along right, front, up
+  Vec3 right, front, up;
+  double heading_deg = 0.0, pitch_deg = 0.0, roll_deg = 0.0;
+  Vec3 centre_camera;  // camera frame, OpenCV's: x right, y down, z forward
+  // The box's axes (right, front, up) as the columns, in the camera frame, row-major.
+  std::array<double, 9> rotation_camera{};
+};
+
 struct ObjectTruth {
   std::string name;
   // Pixels whose target is this object, and the sum of their coverage.
@@ -33,6 +46,10 @@ struct ObjectTruth {
   std::optional<PixelBox> bbox;  // of the visible pixels; empty when none is
   std::optional<PixelBox> footprint_bbox;
   double range = 0.0;  // metres, camera to the centre of the object's bounding box
+  ObjectBox box;
+  // The share of the footprint beyond the frame (the same rays continued past its edges);
+  // empty where that is not measured (fisheye and spherical views, a huge part beyond).
+  std::optional<double> truncation;
   // Contrast of the visible pixels against their surround: mean luminance (cd/m2) of the
   // visible pixels, of the background ring (pixels within `ring_width` of a visible pixel
   // that no object covers), and Weber's contrast (L - Lb) / Lb (empty when Lb is 0 or the

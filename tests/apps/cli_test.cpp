@@ -607,10 +607,14 @@ TEST(Cli, TheTargetLayerAndTheManifestAgreeOnEveryObject) {
     EXPECT_EQ(o["target"], id);
     std::uint64_t pixels = 0;
     int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+    std::uint64_t first_on_it = 0;
     for (std::size_t i = 0; i < target.size(); ++i) {
+      // A pixel whose first sample is on an object has it as its target (the target layer
+      // counts every sample, the object layer the first: edges differ).
+      EXPECT_TRUE(object[i] != 5u || target[i] != 0u) << "class 5 without a target";
       if (target[i] != id) continue;
       ++pixels;
-      EXPECT_EQ(object[i], 5u) << "objects are class 5 in the object layer";
+      first_on_it += object[i] == 5u;
       const int x = static_cast<int>(i % 160), y = static_cast<int>(i / 160);
       x0 = std::min(x0, x);
       y0 = std::min(y0, y);
@@ -618,6 +622,7 @@ TEST(Cli, TheTargetLayerAndTheManifestAgreeOnEveryObject) {
       y1 = std::max(y1, y);
     }
     ASSERT_GT(pixels, 20u) << o["name"];
+    EXPECT_GT(first_on_it, pixels / 2) << o["name"];
     EXPECT_EQ(o["visible_pixels"], pixels) << o["name"];
     EXPECT_EQ(o["bbox"]["x0"], x0);
     EXPECT_EQ(o["bbox"]["y0"], y0);

@@ -334,9 +334,26 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   ASSERT_GT(documented.size(), 40u);
   Fixture f;
   // The class-raster alternative to `vegetation` is set by the default scenario, which the
-  // DefaultScenario tests load and render.
+  // DefaultScenario tests load and render; camera keys by the cameras example (its views
+  // placed by ViewPlacement.TheKagweneCamerasExamplePlacesItsViews) and the views below.
+  const std::string cameras =
+      "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +
+      "\"\n[sun]\nelevation = 30\nazimuth = 200\n"
+      "[[views]]\nname = \"lens\"\nposition = [300.0, 100.0, 300.0]\ntarget = [300.0, 400.0, "
+      "150.0]\nup = [0.1, 0.0, 1.0]\nfocal_length = 50\npixel_pitch = 5\n"
+      "principal_point = [3.0, -2.0]\nf_number = 4\nfocus_distance = 120\n"
+      "[[views]]\nname = \"fisheye\"\nposition = [300.0, 400.0, 200.0]\nyaw = 0\npitch = -90\n"
+      "projection = \"fisheye\"\nmapping = \"equisolid\"\nimage_circle = 300\n"
+      "[[views]]\nname = \"extent\"\nposition = [300.0, 400.0, 600.0]\n"
+      "projection = \"orthographic\"\nextent = [400.0, 200.0]\n"
+      "[[views]]\nname = \"pixels\"\nposition = [300.0, 400.0, 600.0]\n"
+      "projection = \"orthographic\"\npixel_size = 2.0\n"
+      "[[views]]\nname = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n"
+      "cells_per_pixel = 2\n[render]\nformats = [\"exr\", \"geotiff\"]\n";
+  EXPECT_EQ(load_scenario(f.dir.write("cameras.toml", cameras)).views.size(), 5u);
   const std::string text =
-      f.text() + landsim::testing::read_file(source_file("scenes/examples/default.toml"));
+      f.text() + landsim::testing::read_file(source_file("scenes/examples/default.toml")) +
+      landsim::testing::read_file(source_file("scenes/examples/kagwene_cameras.toml")) + cameras;
   for (const std::string& k : documented) {
     EXPECT_NE(text.find("\n" + k + " ="), std::string::npos)
         << "documented key '" << k << "' is set by no test scenario";

@@ -249,5 +249,32 @@ TEST(ObjectTruth, ADistantCarKeepsItsSubPixelCoverage) {
   }
 }
 
+// The car's oriented box (its heading of 60 degrees, on a gentle slope) and truncation: in
+// the frame, none; with the principal point moved so that the car's centre is on the right
+// edge, about half of it is beyond the frame, apart from occlusion (none here).
+TEST(ObjectTruth, TheBoxAndTruncationAreTheObjectsOwn) {
+  TempDir dir;
+  const renderer::Scene scene = build(dir, scenario(dir, "car.obj"));
+  const auto truth = renderer::object_truth(scene, scene.views[0], render(scene), false);
+  ASSERT_EQ(truth.size(), 1u);
+  const renderer::ObjectBox& b = truth[0].box;
+  EXPECT_NEAR(b.heading_deg, 60.0, 1.0);
+  EXPECT_LT(std::abs(b.pitch_deg), 3.0);
+  EXPECT_LT(std::abs(b.roll_deg), 3.0);
+  EXPECT_GT(b.size.y, b.size.x);  // a car is longer than wide
+  EXPECT_NEAR(length(b.centre_camera), truth[0].range, 0.05);
+  EXPECT_GT(b.centre_camera.z, 0.0);  // ahead of the camera
+  ASSERT_TRUE(truth[0].truncation);
+  EXPECT_NEAR(*truth[0].truncation, 0.0, 1e-9);
+  renderer::Scene shifted = scene;
+  // The target (the car) projects at width / 2 + principal_x: the right edge.
+  shifted.views[0].lens.principal_x = 0.5 * shifted.views[0].width;
+  const auto cut = renderer::object_truth(shifted, shifted.views[0], render(shifted), false);
+  ASSERT_TRUE(cut[0].truncation);
+  EXPECT_GT(*cut[0].truncation, 0.3);
+  EXPECT_LT(*cut[0].truncation, 0.7);
+  EXPECT_NEAR(cut[0].visible_fraction, 1.0, 1e-9);  // truncation is not occlusion
+}
+
 }  // namespace
 }  // namespace landsim::scenes
