@@ -11,6 +11,7 @@
 #include <new>
 #include <vector>
 
+#include "annotate_command.h"
 #include "command.h"
 #include "compare_command.h"
 #include "core/input_error.h"
@@ -65,6 +66,7 @@ int main(int argc, char** argv) {
       cmd::command(app, cmd::add_export_pov_command, cmd::run_export_pov),
       cmd::command(app, cmd::add_crosscheck_command, cmd::run_crosscheck),
       cmd::command(app, cmd::add_compare_command, cmd::run_compare),
+      cmd::command(app, cmd::add_annotate_command, cmd::run_annotate),
       cmd::command(app, cmd::add_featuremap_command, cmd::run_featuremap_build),
       cmd::command(app, cmd::add_discover_command, cmd::run_discover),
       cmd::command(app, cmd::add_grow_command, cmd::run_grow),

@@ -151,5 +151,13 @@ TEST(JsonContract, Compare) {
   expect_contract("compare", set.string() + " " + set.string(), dir);
 }
 
+TEST(JsonContract, Annotate) {
+  TempDir dir;
+  const auto set = dir / "set";
+  ASSERT_EQ(testing::run_landsim("render --spp 1 --width 32 --out " + set.string(), dir).exit_code,
+            0);
+  expect_contract("annotate", set.string() + " --format yolo", dir);
+}
+
 }  // namespace
 }  // namespace landsim

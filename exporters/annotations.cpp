@@ -1,0 +1,244 @@
+#include "exporters/annotations.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "core/atomic_file.h"
+#include "core/input_error.h"
+#include "renderer/output/image_output.h"
+
+namespace landsim::exporters {
+namespace {
+
+using nlohmann::json;
+
+json read_manifest(const std::filesystem::path& set) {
+  const std::filesystem::path file = set / "manifest.json";
+  std::ifstream in(file);
+  if (!in)
+    throw InputError(file.string() +
+                     ": cannot read it (expected a folder written by landsim render)");
+  json j = json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("images") || !j["images"].is_array() || !j.contains("legend"))
+    throw InputError(file.string() +
+                     ": not a landsim manifest with a legend (expected \"images\" and "
+                     "\"legend\"; render the set again with this version)");
+  return j;
+}
+
+// The class of each target id: its mesh file's stem.
+std::map<std::uint32_t, std::string> classes(const json& legend) {
+  std::map<std::uint32_t, std::string> out;
+  for (const json& v : legend["target"]["values"])
+    out[v["id"].get<std::uint32_t>()] =
+        std::filesystem::path(v["file"].get<std::string>()).stem().string();
+  return out;
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  AtomicFile out(path);
+  {
+    std::ofstream f(out.temp_path(), std::ios::binary);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + path.string());
+  }
+  out.commit();
+}
+
+// An object of an image worth annotating: in the manifest's truth with enough pixels.
+bool annotated(const json& o, const AnnotationOptions& options) {
+  return !o["bbox"].is_null() && o["visible_pixels"].get<std::size_t>() >= options.min_pixels;
+}
+
+std::string stem_of(const json& image) {
+  return std::filesystem::path(image["path"].get<std::string>()).stem().string();
+}
+
+// KITTI's occlusion level from the visible fraction: 0 fully visible, 1 partly, 2 largely.
+int occlusion_level(double visible_fraction) {
+  return visible_fraction >= 0.9 ? 0 : visible_fraction >= 0.5 ? 1 : 2;
+}
+
+std::string kitti_line(const json& o, const std::string& type) {
+  const json& b = o["bbox"];
+  const json& box = o["box3d"];
+  const auto m = box["rotation_camera"];
+  const auto size = box["size_m"].get<std::vector<double>>();  // right, front, up
+  const auto c = box["centre_camera"].get<std::vector<double>>();
+  // The box's front and up in the camera frame (columns 1 and 2 of rotation_camera).
+  const double fx = m[0][1].get<double>(), fz = m[2][1].get<double>();
+  const double ux = m[0][2].get<double>(), uy = m[1][2].get<double>(), uz = m[2][2].get<double>();
+  const double ry = std::atan2(-fz, fx);  // KITTI: the front is (cos ry, 0, -sin ry)
+  // KITTI locates a box by its bottom centre.
+  const double h = size[2];
+  const double x = c[0] - 0.5 * h * ux, y = c[1] - 0.5 * h * uy, z = c[2] - 0.5 * h * uz;
+  const double alpha = ry - std::atan2(x, z);
+  const double truncation = o["truncation"].is_null() ? 0.0 : o["truncation"].get<double>();
+  return fmt::format(
+      "{} {:.3f} {} {:.3f} {} {} {} {} {:.3f} {:.3f} {:.3f} {:.3f} {:.3f} {:.3f} {:.3f}\n", type,
+      truncation, occlusion_level(o["visible_fraction"].get<double>()),
+      std::remainder(alpha, 2.0 * M_PI), b["x0"].get<int>(), b["y0"].get<int>(),
+      b["x1"].get<int>() + 1, b["y1"].get<int>() + 1, h, size[0], size[1], x, y, z, ry);
+}
+
+std::string kitti_calib(const json& camera) {
+  const json& k = camera["K"];
+  std::string p2 = "P2:";
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) p2 += fmt::format(" {:.9g}", k[r][c].get<double>());
+    p2 += " 0";
+  }
+  return p2 + "\nR0_rect: 1 0 0 0 1 0 0 0 1\n";
+}
+
+void write_kitti(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
+                 const AnnotationOptions& options, AnnotationSummary& summary) {
+  const auto names = classes(m["legend"]);
+  std::filesystem::create_directories(out / "label_2");
+  std::filesystem::create_directories(out / "calib");
+  for (const json& image : m["images"]) {
+    if (!image["camera"].contains("K") || image["camera"]["projection"] != "perspective")
+      throw InputError((set / "manifest.json").string() + ": image " +
+                       image["path"].get<std::string>() +
+                       ": KITTI needs perspective views (its calib is a pinhole's P2)");
+    std::string labels;
+    for (const json& o : image.value("objects", json::array()))
+      if (annotated(o, options)) {
+        labels += kitti_line(o, names.at(o["target"].get<std::uint32_t>()));
+        ++summary.objects;
+      }
+    write_text(out / "label_2" / (stem_of(image) + ".txt"), labels);
+    write_text(out / "calib" / (stem_of(image) + ".txt"), kitti_calib(image["camera"]));
+    ++summary.images;
+  }
+}
+
+void write_yolo(const json& m, const std::filesystem::path& out, const AnnotationOptions& options,
+                AnnotationSummary& summary) {
+  const auto names = classes(m["legend"]);
+  std::map<std::string, int> index;
+  std::string list;
+  for (const auto& [id, name] : names)
+    if (index.emplace(name, static_cast<int>(index.size())).second) list += name + "\n";
+  std::filesystem::create_directories(out / "labels");
+  write_text(out / "classes.txt", list);
+  for (const json& image : m["images"]) {
+    const double w = image["camera"]["width"].get<double>(),
+                 h = image["camera"]["height"].get<double>();
+    std::string labels;
+    for (const json& o : image.value("objects", json::array())) {
+      if (!annotated(o, options)) continue;
+      const json& b = o["bbox"];
+      const double x0 = b["x0"].get<double>(), y0 = b["y0"].get<double>();
+      const double x1 = b["x1"].get<double>() + 1.0, y1 = b["y1"].get<double>() + 1.0;
+      labels += fmt::format("{} {:.6f} {:.6f} {:.6f} {:.6f}\n",
+                            index.at(names.at(o["target"].get<std::uint32_t>())),
+                            0.5 * (x0 + x1) / w, 0.5 * (y0 + y1) / h, (x1 - x0) / w, (y1 - y0) / h);
+      ++summary.objects;
+    }
+    write_text(out / "labels" / (stem_of(image) + ".txt"), labels);
+    ++summary.images;
+  }
+}
+
+void write_coco(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
+                const AnnotationOptions& options, AnnotationSummary& summary) {
+  const auto names = classes(m["legend"]);
+  std::map<std::string, int> category;
+  json categories = json::array();
+  for (const auto& [id, name] : names)
+    if (category.emplace(name, static_cast<int>(category.size()) + 1).second)
+      categories.push_back(
+          {{"id", category.at(name)}, {"name", name}, {"supercategory", "object"}});
+  json images = json::array(), annotations = json::array();
+  for (const json& image : m["images"]) {
+    const renderer::Film film = renderer::read_exr(set / image["path"].get<std::string>());
+    const int image_id = static_cast<int>(images.size()) + 1;
+    images.push_back({{"id", image_id},
+                      {"file_name", image["preview"]},
+                      {"exr", image["path"]},
+                      {"width", film.width()},
+                      {"height", film.height()}});
+    for (const json& o : image.value("objects", json::array())) {
+      if (!annotated(o, options)) continue;
+      const auto target = o["target"].get<std::uint32_t>();
+      std::vector<std::uint8_t> mask(film.pixel_count());
+      std::size_t area = 0;
+      for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x)
+          if (film.target(x, y) == target) {
+            mask[static_cast<std::size_t>(y) * film.width() + x] = 1;
+            ++area;
+          }
+      const json& b = o["bbox"];
+      const int x0 = b["x0"], y0 = b["y0"], x1 = b["x1"], y1 = b["y1"];
+      annotations.push_back({{"id", annotations.size() + 1},
+                             {"image_id", image_id},
+                             {"category_id", category.at(names.at(target))},
+                             {"bbox", {x0, y0, x1 - x0 + 1, y1 - y0 + 1}},
+                             {"area", area},
+                             {"iscrowd", 0},
+                             {"segmentation",
+                              {{"size", {film.height(), film.width()}},
+                               {"counts", coco_rle(mask, film.width(), film.height())}}},
+                             {"landsim",
+                              {{"name", o["name"]},
+                               {"visible_coverage", o["visible_coverage"]},
+                               {"visible_fraction", o["visible_fraction"]},
+                               {"truncation", o["truncation"]}}}});
+      ++summary.objects;
+    }
+    ++summary.images;
+  }
+  const json coco = {{"info", {{"description", "landsim image set " + set.string()}}},
+                     {"images", images},
+                     {"annotations", annotations},
+                     {"categories", categories}};
+  std::filesystem::create_directories(out);
+  write_text(out / "annotations.json", coco.dump() + "\n");
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> coco_rle(const std::vector<std::uint8_t>& mask, int width, int height) {
+  std::vector<std::uint32_t> counts;
+  std::uint8_t current = 0;
+  std::uint32_t run = 0;
+  for (int x = 0; x < width; ++x)
+    for (int y = 0; y < height; ++y) {
+      const std::uint8_t v = mask[static_cast<std::size_t>(y) * width + x] != 0 ? 1 : 0;
+      if (v != current) {
+        counts.push_back(run);
+        run = 0;
+        current = v;
+      }
+      ++run;
+    }
+  counts.push_back(run);
+  return counts;
+}
+
+AnnotationSummary write_annotations(const std::filesystem::path& set,
+                                    const std::filesystem::path& out,
+                                    const AnnotationOptions& options) {
+  const json m = read_manifest(set);
+  AnnotationSummary summary;
+  switch (options.format) {
+    case AnnotationFormat::coco:
+      write_coco(m, set, out, options, summary);
+      break;
+    case AnnotationFormat::kitti:
+      write_kitti(m, set, out, options, summary);
+      break;
+    case AnnotationFormat::yolo:
+      write_yolo(m, out, options, summary);
+      break;
+  }
+  return summary;
+}
+
+}  // namespace landsim::exporters

@@ -1,0 +1,138 @@
+// COCO, KITTI and YOLO annotations of a rendered set: COCO's RLE masks decode to the target
+// layer exactly, KITTI's calib projects each 3D box's centre into its 2D box, YOLO lists
+// every object with coverage.
+#include "exporters/annotations.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "renderer/output/image_output.h"
+#include "scenes/image_set.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::exporters {
+namespace {
+
+using landsim::testing::source_file;
+using landsim::testing::TempDir;
+
+// A car and a truck (the far one small) on the volcano's north, rendered at 8 spp.
+std::filesystem::path rendered_set(const TempDir& dir) {
+  const auto object = [](const std::string& name, const std::string& file, double x, double y) {
+    return "[[objects]]\nname = \"" + name + "\"\nfile = \"" +
+           source_file("data/objects/" + file).string() + "\"\nposition = [" + std::to_string(x) +
+           ", " + std::to_string(y) + "]\nheading = 30\n";
+  };
+  const std::string text =
+      "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +
+      "\"\n[sun]\nelevation = 40\nazimuth = 200\n[[views]]\nname = \"v\"\nposition = [300.0, "
+      "640.0, 165.0]\ntarget = [300.0, 710.0, 122.0]\nfov = 30\nwidth = 96\nheight = 64\n"
+      "[render]\nspp = 8\n" +
+      object("car", "car.obj", 296.0, 690.0) + object("truck", "truck.obj", 310.0, 760.0);
+  scenes::ImageSetOptions o;
+  o.out_dir = dir / "set";
+  scenes::render_image_set(scenes::parse_scenario(text, "set.toml", "."), o);
+  return o.out_dir;
+}
+
+nlohmann::json load(const std::filesystem::path& p) {
+  return nlohmann::json::parse(landsim::testing::read_file(p));
+}
+
+TEST(Annotations, CocoMasksAreTheTargetLayer) {
+  TempDir dir;
+  const auto set = rendered_set(dir);
+  AnnotationOptions o;
+  const AnnotationSummary s = write_annotations(set, dir / "coco", o);
+  EXPECT_EQ(s.images, 1u);
+  EXPECT_EQ(s.objects, 2u);
+  const nlohmann::json coco = load(dir / "coco" / "annotations.json");
+  ASSERT_EQ(coco["categories"].size(), 2u);
+  const renderer::Film film = renderer::read_exr(set / "v.exr");
+  for (const nlohmann::json& a : coco["annotations"]) {
+    // Decode the column-major runs (zeros first).
+    std::vector<std::uint8_t> mask;
+    std::uint8_t value = 0;
+    for (const auto& run : a["segmentation"]["counts"]) {
+      mask.insert(mask.end(), run.get<std::size_t>(), value);
+      value ^= 1;
+    }
+    ASSERT_EQ(mask.size(), film.pixel_count());
+    const std::string name = a["landsim"]["name"];
+    const std::uint32_t target = name == "car" ? 1 : 2;
+    std::size_t differ = 0, area = 0;
+    for (int x = 0; x < film.width(); ++x)
+      for (int y = 0; y < film.height(); ++y) {
+        const bool in = mask[static_cast<std::size_t>(x) * film.height() + y] != 0;
+        differ += in != (film.target(x, y) == target);
+        area += in;
+      }
+    EXPECT_EQ(differ, 0u) << name;
+    EXPECT_EQ(a["area"].get<std::size_t>(), area);
+    EXPECT_EQ(a["iscrowd"], 0);
+  }
+}
+
+TEST(Annotations, KittiCalibProjectsEachBoxCentreIntoIts2dBox) {
+  TempDir dir;
+  const auto set = rendered_set(dir);
+  AnnotationOptions o;
+  o.format = AnnotationFormat::kitti;
+  write_annotations(set, dir / "kitti", o);
+  std::istringstream calib(landsim::testing::read_file(dir / "kitti" / "calib" / "v.txt"));
+  std::string tag;
+  double p[12];
+  calib >> tag;
+  ASSERT_EQ(tag, "P2:");
+  for (double& v : p) calib >> v;
+  std::istringstream labels(landsim::testing::read_file(dir / "kitti" / "label_2" / "v.txt"));
+  int lines = 0;
+  for (std::string line; std::getline(labels, line);) {
+    std::istringstream f(line);
+    std::string type;
+    double trunc, alpha, x0, y0, x1, y1, h, w, l, x, y, z, ry;
+    int occluded;
+    f >> type >> trunc >> occluded >> alpha >> x0 >> y0 >> x1 >> y1 >> h >> w >> l >> x >> y >> z >>
+        ry;
+    ASSERT_TRUE(f) << line;
+    // The box's centre: half its height above the bottom centre KITTI gives (y is down).
+    const double cy = y - 0.5 * h;
+    const double u = (p[0] * x + p[1] * cy + p[2] * z + p[3]) / z;
+    const double v = (p[4] * x + p[5] * cy + p[6] * z + p[7]) / z;
+    EXPECT_GE(u, x0 - 1.0) << line;
+    EXPECT_LE(u, x1 + 1.0) << line;
+    EXPECT_GE(v, y0 - 1.0) << line;
+    EXPECT_LE(v, y1 + 1.0) << line;
+    EXPECT_TRUE(type == "car" || type == "truck");
+    ++lines;
+  }
+  EXPECT_EQ(lines, 2);
+}
+
+TEST(Annotations, YoloListsEveryObjectWithCoverage) {
+  TempDir dir;
+  const auto set = rendered_set(dir);
+  AnnotationOptions o;
+  o.format = AnnotationFormat::yolo;
+  write_annotations(set, dir / "yolo", o);
+  const nlohmann::json manifest = load(set / "manifest.json");
+  std::size_t covered = 0;
+  for (const auto& obj : manifest["images"][0]["objects"]) covered += obj["visible_coverage"] > 0.0;
+  std::istringstream labels(landsim::testing::read_file(dir / "yolo" / "labels" / "v.txt"));
+  std::size_t rows = 0;
+  for (std::string line; std::getline(labels, line);) {
+    int cls;
+    double cx, cy, w, h;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%d %lf %lf %lf %lf", &cls, &cx, &cy, &w, &h), 5);
+    EXPECT_TRUE(cx > 0.0 && cx < 1.0 && cy > 0.0 && cy < 1.0 && w > 0.0 && h > 0.0);
+    ++rows;
+  }
+  EXPECT_EQ(rows, covered);
+  EXPECT_EQ(landsim::testing::read_file(dir / "yolo" / "classes.txt"), "car\ntruck\n");
+}
+
+}  // namespace
+}  // namespace landsim::exporters
