@@ -30,6 +30,31 @@ json read_manifest(const std::filesystem::path& set) {
   return j;
 }
 
+// A tree in an image: its instance id's pixels (first samples), their box and its species.
+struct TreeSeen {
+  std::uint32_t species = 0;
+  std::size_t pixels = 0;
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+};
+std::map<std::uint32_t, TreeSeen> trees_in(const renderer::Film& film) {
+  std::map<std::uint32_t, TreeSeen> out;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const std::uint32_t id = film.instance(x, y);
+      if (id == renderer::kNoId) continue;
+      TreeSeen& t = out[id];
+      t.species = film.species(x, y);
+      ++t.pixels;
+      t.x0 = std::min(t.x0, x), t.y0 = std::min(t.y0, y);
+      t.x1 = std::max(t.x1, x), t.y1 = std::max(t.y1, y);
+    }
+  return out;
+}
+
+std::string species_name(const json& legend, std::uint32_t species) {
+  return legend["species"]["values"].at(species)["name"].get<std::string>();
+}
+
 // The class of each target id: its mesh file's stem.
 std::map<std::uint32_t, std::string> classes(const json& legend) {
   std::map<std::uint32_t, std::string> out;
@@ -117,13 +142,17 @@ void write_kitti(const json& m, const std::filesystem::path& set, const std::fil
   }
 }
 
-void write_yolo(const json& m, const std::filesystem::path& out, const AnnotationOptions& options,
-                AnnotationSummary& summary) {
+void write_yolo(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
+                const AnnotationOptions& options, AnnotationSummary& summary) {
   const auto names = classes(m["legend"]);
   std::map<std::string, int> index;
   std::string list;
   for (const auto& [id, name] : names)
     if (index.emplace(name, static_cast<int>(index.size())).second) list += name + "\n";
+  if (options.trees)
+    for (const json& sp : m["legend"]["species"]["values"])
+      if (index.emplace(sp["name"].get<std::string>(), static_cast<int>(index.size())).second)
+        list += sp["name"].get<std::string>() + "\n";
   std::filesystem::create_directories(out / "labels");
   write_text(out / "classes.txt", list);
   for (const json& image : m["images"]) {
@@ -140,6 +169,16 @@ void write_yolo(const json& m, const std::filesystem::path& out, const Annotatio
                             0.5 * (x0 + x1) / w, 0.5 * (y0 + y1) / h, (x1 - x0) / w, (y1 - y0) / h);
       ++summary.objects;
     }
+    if (options.trees)
+      for (const auto& [id, t] :
+           trees_in(renderer::read_exr(set / image["path"].get<std::string>()))) {
+        if (t.pixels < options.min_pixels) continue;
+        const double x0 = t.x0, y0 = t.y0, x1 = t.x1 + 1.0, y1 = t.y1 + 1.0;
+        labels += fmt::format("{} {:.6f} {:.6f} {:.6f} {:.6f}\n",
+                              index.at(species_name(m["legend"], t.species)), 0.5 * (x0 + x1) / w,
+                              0.5 * (y0 + y1) / h, (x1 - x0) / w, (y1 - y0) / h);
+        ++summary.objects;
+      }
     write_text(out / "labels" / (stem_of(image) + ".txt"), labels);
     ++summary.images;
   }
@@ -154,6 +193,13 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
     if (category.emplace(name, static_cast<int>(category.size()) + 1).second)
       categories.push_back(
           {{"id", category.at(name)}, {"name", name}, {"supercategory", "object"}});
+  if (options.trees)
+    for (const json& sp : m["legend"]["species"]["values"]) {
+      const std::string name = sp["name"];
+      if (category.emplace(name, static_cast<int>(category.size()) + 1).second)
+        categories.push_back(
+            {{"id", category.at(name)}, {"name", name}, {"supercategory", "tree"}});
+    }
   json images = json::array(), annotations = json::array();
   for (const json& image : m["images"]) {
     const renderer::Film film = renderer::read_exr(set / image["path"].get<std::string>());
@@ -192,6 +238,25 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
                                {"truncation", o["truncation"]}}}});
       ++summary.objects;
     }
+    if (options.trees)
+      for (const auto& [id, t] : trees_in(film)) {
+        if (t.pixels < options.min_pixels) continue;
+        std::vector<std::uint8_t> mask(film.pixel_count());
+        for (int y = t.y0; y <= t.y1; ++y)
+          for (int x = t.x0; x <= t.x1; ++x)
+            mask[static_cast<std::size_t>(y) * film.width() + x] = film.instance(x, y) == id;
+        annotations.push_back({{"id", annotations.size() + 1},
+                               {"image_id", image_id},
+                               {"category_id", category.at(species_name(m["legend"], t.species))},
+                               {"bbox", {t.x0, t.y0, t.x1 - t.x0 + 1, t.y1 - t.y0 + 1}},
+                               {"area", t.pixels},
+                               {"iscrowd", 0},
+                               {"segmentation",
+                                {{"size", {film.height(), film.width()}},
+                                 {"counts", coco_rle(mask, film.width(), film.height())}}},
+                               {"landsim", {{"instance", id}}}});
+        ++summary.objects;
+      }
     ++summary.images;
   }
   const json coco = {{"info", {{"description", "landsim image set " + set.string()}}},
@@ -235,7 +300,7 @@ AnnotationSummary write_annotations(const std::filesystem::path& set,
       write_kitti(m, set, out, options, summary);
       break;
     case AnnotationFormat::yolo:
-      write_yolo(m, out, options, summary);
+      write_yolo(m, set, out, options, summary);
       break;
   }
   return summary;

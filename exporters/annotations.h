@@ -18,6 +18,8 @@ struct AnnotationOptions {
   AnnotationFormat format = AnnotationFormat::coco;
   // Objects covering fewer visible pixels (coverage > 0) are left out.
   std::size_t min_pixels = 1;
+  // COCO and YOLO: each tree (the instance layer) too, its species its category.
+  bool trees = false;
 };
 
 struct AnnotationSummary {

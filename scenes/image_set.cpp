@@ -326,7 +326,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   }
   renderer::write_exr(film, exr, meta, &camera);
   renderer::write_preview_png(film, run.options.out_dir / (image.stem + ".png"), ev100);
-  detail::write_geo_rasters(film, view, scene, s, run.options.out_dir, image.stem);
+  detail::write_geo_rasters(film, view, scene, s, run.options.out_dir, image.stem,
+                            camera_json(view, scene.origin).dump());
   report.exr = exr;
   report.view = view.name;
   report.frame_index = image.frame;

@@ -23,6 +23,8 @@ CLI::App* add_annotate_command(CLI::App& app, AnnotateArgs& args) {
                   "Leave out objects with fewer visible pixels (any coverage counts)")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
+  cmd->add_flag("--trees", args.trees,
+                "COCO and YOLO: each tree too (the instance layer), its species its category");
   cmd->add_flag("--json", args.json, "Print what was written as one JSON object on stdout");
   return cmd;
 }
@@ -33,6 +35,7 @@ int run_annotate(const AnnotateArgs& args) {
              : args.format == "yolo" ? exporters::AnnotationFormat::yolo
                                      : exporters::AnnotationFormat::coco;
   o.min_pixels = args.min_pixels;
+  o.trees = args.trees;
   const std::string out = args.out.empty() ? args.set + "/" + args.format : args.out;
   const exporters::AnnotationSummary s = exporters::write_annotations(args.set, out, o);
   if (args.json) {

@@ -1,5 +1,6 @@
 #pragma once
-// `landsim annotate SET --format coco|kitti|yolo [--out DIR] [--min-pixels N] [--json]`:
+// `landsim annotate SET --format coco|kitti|yolo [--out DIR] [--min-pixels N] [--trees]
+//                   [--json]`:
 // annotation files for machine-learning tools from an image set (docs/OUTPUTS.md).
 #include <cstddef>
 #include <string>
@@ -15,6 +16,7 @@ struct AnnotateArgs {
   std::string format = "coco";
   std::string out;  // empty: SET/<format>
   std::size_t min_pixels = 1;
+  bool trees = false;
   bool json = false;
 };
 

@@ -80,7 +80,8 @@ std::optional<std::array<double, 6>> map_geotransform(const renderer::View& view
 
 void write_geo_rasters(const renderer::Film& film, const renderer::View& view,
                        const renderer::Scene& scene, const Scenario& s,
-                       const std::filesystem::path& dir, const std::string& stem) {
+                       const std::filesystem::path& dir, const std::string& stem,
+                       const std::string& camera) {
   if (!s.render.geotiff && !s.render.envi) return;
   const std::vector<float> r = plane(film.rgb_data(), 3, 0), g = plane(film.rgb_data(), 3, 1),
                            bl = plane(film.rgb_data(), 3, 2);
@@ -104,6 +105,7 @@ void write_geo_rasters(const renderer::Film& film, const renderer::View& view,
   values.geotransform = map_geotransform(view, scene.origin);
   values.crs_wkt = scene.crs_wkt;
   values.metadata = {{"landsim_view", view.name},
+                     {"landsim_camera", camera},
                      {"landsim_world_origin",
                       fmt::format("{} {} {}", scene.origin.x, scene.origin.y, scene.origin.z)},
                      {"landsim_world",

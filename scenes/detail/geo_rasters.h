@@ -20,10 +20,12 @@ namespace landsim::scenes::detail {
 std::optional<std::array<double, 6>> map_geotransform(const renderer::View& view,
                                                       const Vec3& origin);
 
-// Writes the formats `s.render` asks for (nothing without geotiff or envi); throws
-// std::runtime_error naming the file when GDAL fails.
+// Writes the formats `s.render` asks for (nothing without geotiff or envi), with `camera`
+// (the camera model as the manifest's JSON) in the metadata; throws std::runtime_error
+// naming the file when GDAL fails.
 void write_geo_rasters(const renderer::Film& film, const renderer::View& view,
                        const renderer::Scene& scene, const Scenario& s,
-                       const std::filesystem::path& dir, const std::string& stem);
+                       const std::filesystem::path& dir, const std::string& stem,
+                       const std::string& camera);
 
 }  // namespace landsim::scenes::detail

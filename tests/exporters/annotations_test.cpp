@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "renderer/output/image_output.h"
@@ -132,6 +133,49 @@ TEST(Annotations, YoloListsEveryObjectWithCoverage) {
   }
   EXPECT_EQ(rows, covered);
   EXPECT_EQ(landsim::testing::read_file(dir / "yolo" / "classes.txt"), "car\ntruck\n");
+}
+
+// With --trees, every tree seen is a COCO annotation of its species' category whose mask is
+// its instance's pixels.
+TEST(Annotations, TreesAreInstancesOfTheirSpecies) {
+  TempDir dir;
+  const std::string text =
+      "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +
+      "\"\n[sun]\nelevation = 40\nazimuth = 200\n[[species]]\nbit = 0\nfile = \"" +
+      source_file("data/species/quaking_aspen.toml").string() +
+      "\"\nvariants = 1\ndensity_per_ha = 30\ncover = { rectangle = [260, 680, 340, 760] }\n"
+      "[[views]]\nname = \"v\"\nposition = [300.0, 600.0, 170.0]\ntarget = [300.0, 720.0, "
+      "120.0]\nfov = 40\nwidth = 96\nheight = 64\n[render]\nspp = 1\n";
+  scenes::ImageSetOptions io;
+  io.out_dir = dir / "set";
+  scenes::render_image_set(scenes::parse_scenario(text, "set.toml", "."), io);
+  AnnotationOptions o;
+  o.trees = true;
+  const AnnotationSummary s = write_annotations(io.out_dir, dir / "coco", o);
+  const renderer::Film film = renderer::read_exr(io.out_dir / "v.exr");
+  std::set<std::uint32_t> seen;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      if (film.instance(x, y) != renderer::kNoId) seen.insert(film.instance(x, y));
+  ASSERT_GT(seen.size(), 2u);
+  EXPECT_EQ(s.objects, seen.size());
+  const nlohmann::json coco = load(dir / "coco" / "annotations.json");
+  ASSERT_EQ(coco["categories"].size(), 1u);
+  EXPECT_EQ(coco["categories"][0]["supercategory"], "tree");
+  for (const nlohmann::json& a : coco["annotations"]) {
+    const auto id = a["landsim"]["instance"].get<std::uint32_t>();
+    std::size_t k = 0, differ = 0;
+    std::uint8_t value = 0;
+    for (const auto& run : a["segmentation"]["counts"]) {
+      for (std::size_t n = 0; n < run.get<std::size_t>(); ++n, ++k) {
+        const int x = static_cast<int>(k) / film.height(), y = static_cast<int>(k) % film.height();
+        differ += (value != 0) != (film.instance(x, y) == id);
+      }
+      value ^= 1;
+    }
+    EXPECT_EQ(k, film.pixel_count());
+    EXPECT_EQ(differ, 0u) << id;
+  }
 }
 
 }  // namespace

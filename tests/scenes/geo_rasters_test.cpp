@@ -80,6 +80,10 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
   const char* nm = GDALGetMetadataItem(GDALGetRasterBand(tif.ds, red), "wavelength", nullptr);
   ASSERT_NE(nm, nullptr);
   EXPECT_NEAR(std::stod(nm), 660.0, 0.5);
+  // The camera model, as in the manifest.
+  const char* camera = GDALGetMetadataItem(tif.ds, "landsim_camera", nullptr);
+  ASSERT_NE(camera, nullptr);
+  EXPECT_NE(std::string(camera).find("\"orthographic\""), std::string::npos);
   // Each pixel's first hit lies in its own DEM cell, on the ground the DEM gives there.
   const auto x = read(tif.ds, band_named(tif.ds, "world_x"));
   const auto y = read(tif.ds, band_named(tif.ds, "world_y"));
