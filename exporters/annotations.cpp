@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <stdexcept>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
@@ -23,7 +24,8 @@ json read_manifest(const std::filesystem::path& set) {
     throw InputError(file.string() +
                      ": cannot read it (expected a folder written by landsim render)");
   json j = json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.contains("images") || !j["images"].is_array() || !j.contains("legend"))
+  if (j.is_discarded() || !j.contains("images") || !j.at("images").is_array() ||
+      !j.contains("legend"))
     throw InputError(file.string() +
                      ": not a landsim manifest with a legend (expected \"images\" and "
                      "\"legend\"; render the set again with this version)");
@@ -52,15 +54,15 @@ std::map<std::uint32_t, TreeSeen> trees_in(const renderer::Film& film) {
 }
 
 std::string species_name(const json& legend, std::uint32_t species) {
-  return legend["species"]["values"].at(species)["name"].get<std::string>();
+  return legend.at("species").at("values").at(species).at("name").get<std::string>();
 }
 
 // The class of each target id: its mesh file's stem.
 std::map<std::uint32_t, std::string> classes(const json& legend) {
   std::map<std::uint32_t, std::string> out;
-  for (const json& v : legend["target"]["values"])
-    out[v["id"].get<std::uint32_t>()] =
-        std::filesystem::path(v["file"].get<std::string>()).stem().string();
+  for (const json& v : legend.at("target").at("values"))
+    out[v.at("id").get<std::uint32_t>()] =
+        std::filesystem::path(v.at("file").get<std::string>()).stem().string();
   return out;
 }
 
@@ -76,11 +78,11 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
 
 // An object of an image worth annotating: in the manifest's truth with enough pixels.
 bool annotated(const json& o, const AnnotationOptions& options) {
-  return !o["bbox"].is_null() && o["visible_pixels"].get<std::size_t>() >= options.min_pixels;
+  return !o.at("bbox").is_null() && o.at("visible_pixels").get<std::size_t>() >= options.min_pixels;
 }
 
 std::string stem_of(const json& image) {
-  return std::filesystem::path(image["path"].get<std::string>()).stem().string();
+  return std::filesystem::path(image.at("path").get<std::string>()).stem().string();
 }
 
 // KITTI's occlusion level from the visible fraction: 0 fully visible, 1 partly, 2 largely.
@@ -89,32 +91,33 @@ int occlusion_level(double visible_fraction) {
 }
 
 std::string kitti_line(const json& o, const std::string& type) {
-  const json& b = o["bbox"];
-  const json& box = o["box3d"];
-  const auto m = box["rotation_camera"];
-  const auto size = box["size_m"].get<std::vector<double>>();  // right, front, up
-  const auto c = box["centre_camera"].get<std::vector<double>>();
+  const json& b = o.at("bbox");
+  const json& box = o.at("box3d");
+  const auto m = box.at("rotation_camera");
+  const auto size = box.at("size_m").get<std::vector<double>>();  // right, front, up
+  const auto c = box.at("centre_camera").get<std::vector<double>>();
   // The box's front and up in the camera frame (columns 1 and 2 of rotation_camera).
-  const double fx = m[0][1].get<double>(), fz = m[2][1].get<double>();
-  const double ux = m[0][2].get<double>(), uy = m[1][2].get<double>(), uz = m[2][2].get<double>();
+  const double fx = m.at(0).at(1).get<double>(), fz = m.at(2).at(1).get<double>();
+  const double ux = m.at(0).at(2).get<double>(), uy = m.at(1).at(2).get<double>(),
+               uz = m.at(2).at(2).get<double>();
   const double ry = std::atan2(-fz, fx);  // KITTI: the front is (cos ry, 0, -sin ry)
   // KITTI locates a box by its bottom centre.
-  const double h = size[2];
-  const double x = c[0] - 0.5 * h * ux, y = c[1] - 0.5 * h * uy, z = c[2] - 0.5 * h * uz;
+  const double h = size.at(2);
+  const double x = c.at(0) - 0.5 * h * ux, y = c.at(1) - 0.5 * h * uy, z = c.at(2) - 0.5 * h * uz;
   const double alpha = ry - std::atan2(x, z);
-  const double truncation = o["truncation"].is_null() ? 0.0 : o["truncation"].get<double>();
+  const double truncation = o.at("truncation").is_null() ? 0.0 : o.at("truncation").get<double>();
   return fmt::format(
       "{} {:.3f} {} {:.3f} {} {} {} {} {:.3f} {:.3f} {:.3f} {:.3f} {:.3f} {:.3f} {:.3f}\n", type,
-      truncation, occlusion_level(o["visible_fraction"].get<double>()),
-      std::remainder(alpha, 2.0 * M_PI), b["x0"].get<int>(), b["y0"].get<int>(),
-      b["x1"].get<int>() + 1, b["y1"].get<int>() + 1, h, size[0], size[1], x, y, z, ry);
+      truncation, occlusion_level(o.at("visible_fraction").get<double>()),
+      std::remainder(alpha, 2.0 * M_PI), b.at("x0").get<int>(), b.at("y0").get<int>(),
+      b.at("x1").get<int>() + 1, b.at("y1").get<int>() + 1, h, size.at(0), size.at(1), x, y, z, ry);
 }
 
 std::string kitti_calib(const json& camera) {
-  const json& k = camera["K"];
+  const json& k = camera.at("K");
   std::string p2 = "P2:";
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) p2 += fmt::format(" {:.9g}", k[r][c].get<double>());
+    for (int c = 0; c < 3; ++c) p2 += fmt::format(" {:.9g}", k.at(r).at(c).get<double>());
     p2 += " 0";
   }
   return p2 + "\nR0_rect: 1 0 0 0 1 0 0 0 1\n";
@@ -122,61 +125,61 @@ std::string kitti_calib(const json& camera) {
 
 void write_kitti(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
                  const AnnotationOptions& options, AnnotationSummary& summary) {
-  const auto names = classes(m["legend"]);
+  const auto names = classes(m.at("legend"));
   std::filesystem::create_directories(out / "label_2");
   std::filesystem::create_directories(out / "calib");
-  for (const json& image : m["images"]) {
-    if (!image["camera"].contains("K") || image["camera"]["projection"] != "perspective")
+  for (const json& image : m.at("images")) {
+    if (!image.at("camera").contains("K") || image.at("camera").at("projection") != "perspective")
       throw InputError((set / "manifest.json").string() + ": image " +
-                       image["path"].get<std::string>() +
+                       image.at("path").get<std::string>() +
                        ": KITTI needs perspective views (its calib is a pinhole's P2)");
     std::string labels;
     for (const json& o : image.value("objects", json::array()))
       if (annotated(o, options)) {
-        labels += kitti_line(o, names.at(o["target"].get<std::uint32_t>()));
+        labels += kitti_line(o, names.at(o.at("target").get<std::uint32_t>()));
         ++summary.objects;
       }
     write_text(out / "label_2" / (stem_of(image) + ".txt"), labels);
-    write_text(out / "calib" / (stem_of(image) + ".txt"), kitti_calib(image["camera"]));
+    write_text(out / "calib" / (stem_of(image) + ".txt"), kitti_calib(image.at("camera")));
     ++summary.images;
   }
 }
 
 void write_yolo(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
                 const AnnotationOptions& options, AnnotationSummary& summary) {
-  const auto names = classes(m["legend"]);
+  const auto names = classes(m.at("legend"));
   std::map<std::string, int> index;
   std::string list;
   for (const auto& [id, name] : names)
     if (index.emplace(name, static_cast<int>(index.size())).second) list += name + "\n";
   if (options.trees)
-    for (const json& sp : m["legend"]["species"]["values"])
-      if (index.emplace(sp["name"].get<std::string>(), static_cast<int>(index.size())).second)
-        list += sp["name"].get<std::string>() + "\n";
+    for (const json& sp : m.at("legend").at("species").at("values"))
+      if (index.emplace(sp.at("name").get<std::string>(), static_cast<int>(index.size())).second)
+        list += sp.at("name").get<std::string>() + "\n";
   std::filesystem::create_directories(out / "labels");
   write_text(out / "classes.txt", list);
-  for (const json& image : m["images"]) {
-    const double w = image["camera"]["width"].get<double>(),
-                 h = image["camera"]["height"].get<double>();
+  for (const json& image : m.at("images")) {
+    const double w = image.at("camera").at("width").get<double>(),
+                 h = image.at("camera").at("height").get<double>();
     std::string labels;
     for (const json& o : image.value("objects", json::array())) {
       if (!annotated(o, options)) continue;
-      const json& b = o["bbox"];
-      const double x0 = b["x0"].get<double>(), y0 = b["y0"].get<double>();
-      const double x1 = b["x1"].get<double>() + 1.0, y1 = b["y1"].get<double>() + 1.0;
+      const json& b = o.at("bbox");
+      const double x0 = b.at("x0").get<double>(), y0 = b.at("y0").get<double>();
+      const double x1 = b.at("x1").get<double>() + 1.0, y1 = b.at("y1").get<double>() + 1.0;
       labels += fmt::format("{} {:.6f} {:.6f} {:.6f} {:.6f}\n",
-                            index.at(names.at(o["target"].get<std::uint32_t>())),
+                            index.at(names.at(o.at("target").get<std::uint32_t>())),
                             0.5 * (x0 + x1) / w, 0.5 * (y0 + y1) / h, (x1 - x0) / w, (y1 - y0) / h);
       ++summary.objects;
     }
     if (options.trees)
       for (const auto& [id, t] :
-           trees_in(renderer::read_exr(set / image["path"].get<std::string>()))) {
+           trees_in(renderer::read_exr(set / image.at("path").get<std::string>()))) {
         if (t.pixels < options.min_pixels) continue;
         const double x0 = t.x0, y0 = t.y0, x1 = t.x1 + 1.0, y1 = t.y1 + 1.0;
-        labels += fmt::format("{} {:.6f} {:.6f} {:.6f} {:.6f}\n",
-                              index.at(species_name(m["legend"], t.species)), 0.5 * (x0 + x1) / w,
-                              0.5 * (y0 + y1) / h, (x1 - x0) / w, (y1 - y0) / h);
+        labels += fmt::format(
+            "{} {:.6f} {:.6f} {:.6f} {:.6f}\n", index.at(species_name(m.at("legend"), t.species)),
+            0.5 * (x0 + x1) / w, 0.5 * (y0 + y1) / h, (x1 - x0) / w, (y1 - y0) / h);
         ++summary.objects;
       }
     write_text(out / "labels" / (stem_of(image) + ".txt"), labels);
@@ -186,7 +189,7 @@ void write_yolo(const json& m, const std::filesystem::path& set, const std::file
 
 void write_coco(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
                 const AnnotationOptions& options, AnnotationSummary& summary) {
-  const auto names = classes(m["legend"]);
+  const auto names = classes(m.at("legend"));
   std::map<std::string, int> category;
   json categories = json::array();
   for (const auto& [id, name] : names)
@@ -194,24 +197,24 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
       categories.push_back(
           {{"id", category.at(name)}, {"name", name}, {"supercategory", "object"}});
   if (options.trees)
-    for (const json& sp : m["legend"]["species"]["values"]) {
-      const std::string name = sp["name"];
+    for (const json& sp : m.at("legend").at("species").at("values")) {
+      const std::string name = sp.at("name");
       if (category.emplace(name, static_cast<int>(category.size()) + 1).second)
         categories.push_back(
             {{"id", category.at(name)}, {"name", name}, {"supercategory", "tree"}});
     }
   json images = json::array(), annotations = json::array();
-  for (const json& image : m["images"]) {
-    const renderer::Film film = renderer::read_exr(set / image["path"].get<std::string>());
+  for (const json& image : m.at("images")) {
+    const renderer::Film film = renderer::read_exr(set / image.at("path").get<std::string>());
     const int image_id = static_cast<int>(images.size()) + 1;
     images.push_back({{"id", image_id},
-                      {"file_name", image["preview"]},
-                      {"exr", image["path"]},
+                      {"file_name", image.at("preview")},
+                      {"exr", image.at("path")},
                       {"width", film.width()},
                       {"height", film.height()}});
     for (const json& o : image.value("objects", json::array())) {
       if (!annotated(o, options)) continue;
-      const auto target = o["target"].get<std::uint32_t>();
+      const auto target = o.at("target").get<std::uint32_t>();
       std::vector<std::uint8_t> mask(film.pixel_count());
       std::size_t area = 0;
       for (int y = 0; y < film.height(); ++y)
@@ -220,8 +223,8 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
             mask[static_cast<std::size_t>(y) * film.width() + x] = 1;
             ++area;
           }
-      const json& b = o["bbox"];
-      const int x0 = b["x0"], y0 = b["y0"], x1 = b["x1"], y1 = b["y1"];
+      const json& b = o.at("bbox");
+      const int x0 = b.at("x0"), y0 = b.at("y0"), x1 = b.at("x1"), y1 = b.at("y1");
       annotations.push_back({{"id", annotations.size() + 1},
                              {"image_id", image_id},
                              {"category_id", category.at(names.at(target))},
@@ -232,10 +235,10 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
                               {{"size", {film.height(), film.width()}},
                                {"counts", coco_rle(mask, film.width(), film.height())}}},
                              {"landsim",
-                              {{"name", o["name"]},
-                               {"visible_coverage", o["visible_coverage"]},
-                               {"visible_fraction", o["visible_fraction"]},
-                               {"truncation", o["truncation"]}}}});
+                              {{"name", o.at("name")},
+                               {"visible_coverage", o.at("visible_coverage")},
+                               {"visible_fraction", o.at("visible_fraction")},
+                               {"truncation", o.at("truncation")}}}});
       ++summary.objects;
     }
     if (options.trees)
@@ -245,16 +248,17 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
         for (int y = t.y0; y <= t.y1; ++y)
           for (int x = t.x0; x <= t.x1; ++x)
             mask[static_cast<std::size_t>(y) * film.width() + x] = film.instance(x, y) == id;
-        annotations.push_back({{"id", annotations.size() + 1},
-                               {"image_id", image_id},
-                               {"category_id", category.at(species_name(m["legend"], t.species))},
-                               {"bbox", {t.x0, t.y0, t.x1 - t.x0 + 1, t.y1 - t.y0 + 1}},
-                               {"area", t.pixels},
-                               {"iscrowd", 0},
-                               {"segmentation",
-                                {{"size", {film.height(), film.width()}},
-                                 {"counts", coco_rle(mask, film.width(), film.height())}}},
-                               {"landsim", {{"instance", id}}}});
+        annotations.push_back(
+            {{"id", annotations.size() + 1},
+             {"image_id", image_id},
+             {"category_id", category.at(species_name(m.at("legend"), t.species))},
+             {"bbox", {t.x0, t.y0, t.x1 - t.x0 + 1, t.y1 - t.y0 + 1}},
+             {"area", t.pixels},
+             {"iscrowd", 0},
+             {"segmentation",
+              {{"size", {film.height(), film.width()}},
+               {"counts", coco_rle(mask, film.width(), film.height())}}},
+             {"landsim", {{"instance", id}}}});
         ++summary.objects;
       }
     ++summary.images;
@@ -292,16 +296,27 @@ AnnotationSummary write_annotations(const std::filesystem::path& set,
                                     const AnnotationOptions& options) {
   const json m = read_manifest(set);
   AnnotationSummary summary;
-  switch (options.format) {
-    case AnnotationFormat::coco:
-      write_coco(m, set, out, options, summary);
-      break;
-    case AnnotationFormat::kitti:
-      write_kitti(m, set, out, options, summary);
-      break;
-    case AnnotationFormat::yolo:
-      write_yolo(m, set, out, options, summary);
-      break;
+  try {
+    switch (options.format) {
+      case AnnotationFormat::coco:
+        write_coco(m, set, out, options, summary);
+        break;
+      case AnnotationFormat::kitti:
+        write_kitti(m, set, out, options, summary);
+        break;
+      case AnnotationFormat::yolo:
+        write_yolo(m, set, out, options, summary);
+        break;
+    }
+  } catch (const json::exception& e) {
+    // A key missing or of another type: an edited manifest, or one of an older version.
+    throw InputError((set / "manifest.json").string() +
+                     ": not the manifest landsim writes (render the set again with this "
+                     "version): " +
+                     e.what());
+  } catch (const std::out_of_range& e) {
+    throw InputError((set / "manifest.json").string() +
+                     ": an id its legend does not name: " + e.what());
   }
   return summary;
 }

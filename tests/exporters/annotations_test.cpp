@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/input_error.h"
 #include "renderer/output/image_output.h"
 #include "scenes/image_set.h"
 #include "tests/support/temp_dir.h"
@@ -175,6 +176,29 @@ TEST(Annotations, TreesAreInstancesOfTheirSpecies) {
     }
     EXPECT_EQ(k, film.pixel_count());
     EXPECT_EQ(differ, 0u) << id;
+  }
+}
+
+// A manifest that is not landsim's (edited, or an older version's) is refused with its name,
+// never a crash: each format reads other keys.
+TEST(Annotations, AnEditedManifestIsRefusedByName) {
+  TempDir dir;
+  const auto set = rendered_set(dir);
+  nlohmann::json m = load(set / "manifest.json");
+  m["images"][0]["objects"][0].erase("box3d");
+  m["images"][0]["camera"].erase("width");
+  m["images"][0]["objects"][1]["target"] = 7;  // not in the legend
+  std::ofstream(set / "manifest.json") << m.dump();
+  for (const AnnotationFormat f :
+       {AnnotationFormat::coco, AnnotationFormat::kitti, AnnotationFormat::yolo}) {
+    AnnotationOptions o;
+    o.format = f;
+    try {
+      write_annotations(set, dir / "out", o);
+      ADD_FAILURE() << "an edited manifest was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("manifest.json"), std::string::npos) << e.what();
+    }
   }
 }
 
