@@ -27,7 +27,7 @@ testing::ProgramResult run_mpi(const std::string& args, const TempDir& dir,
 }
 
 // Two views, two frames, trees (so that tiles differ in cost), small images.
-std::filesystem::path image_set(const TempDir& dir) {
+std::filesystem::path image_set(const TempDir& dir, const std::string& more_views = "") {
   const std::string data = testing::source_file("data").string();
   return dir.write("set.toml",
                    "[terrain]\nelevation = \"" + data +
@@ -46,8 +46,8 @@ std::filesystem::path image_set(const TempDir& dir) {
                        "width = 48\nheight = 27\n"
                        "[[views]]\nname = \"b\"\nposition = [100.0, 500.0, 250.0]\ntarget = "
                        "[300.0, 300.0, 130.0]\n"
-                       "width = 40\nheight = 30\n"
-                       "[render]\nspp = 2\nframes = [0.0, 1.0]\n");
+                       "width = 40\nheight = 30\n" +
+                       more_views + "[render]\nspp = 2\nframes = [0.0, 1.0]\n");
 }
 
 void expect_same_files(const std::filesystem::path& a, const std::filesystem::path& b) {
@@ -56,9 +56,17 @@ void expect_same_files(const std::filesystem::path& a, const std::filesystem::pa
     EXPECT_EQ(testing::read_file(a / name), testing::read_file(b / name)) << name;
 }
 
+// Every camera model splits into the same tiles (docs/CAMERAS.md): a rolled fisheye and an
+// orthographic map join the two perspective views.
+const char* const kOtherCameraModels =
+    "[[views]]\nname = \"fisheye\"\nposition = [100.0, 500.0, 250.0]\ntarget = [300.0, 300.0, "
+    "130.0]\nprojection = \"fisheye\"\nfov = 160\nroll = 20\nwidth = 40\nheight = 30\n"
+    "[[views]]\nname = \"map\"\nposition = [300.0, 400.0, 600.0]\nprojection = "
+    "\"orthographic\"\npixel_size = 12.0\nwidth = 32\nheight = 24\n";
+
 TEST(Mpi, AnImageSetSplitAcrossRanksGivesTheSameFilesBitForBit) {
   TempDir dir;
-  const auto scenario = image_set(dir);
+  const auto scenario = image_set(dir, kOtherCameraModels);
   const auto one =
       testing::run_landsim("render " + scenario.string() + " --out " + (dir / "one").string(), dir);
   ASSERT_EQ(one.exit_code, 0) << one.err;
@@ -67,7 +75,7 @@ TEST(Mpi, AnImageSetSplitAcrossRanksGivesTheSameFilesBitForBit) {
   ASSERT_EQ(two.exit_code, 0) << two.err;
   EXPECT_NE(two.err.find("rank 0 of 2"), std::string::npos) << "logs name the rank";
   EXPECT_NE(two.out.find("\"ranks\":2"), std::string::npos) << two.out;
-  EXPECT_EQ(testing::file_names(dir / "two").size(), 9u);  // 4 EXR, 4 PNG, the manifest
+  EXPECT_EQ(testing::file_names(dir / "two").size(), 17u);  // 8 EXR, 8 PNG, the manifest
   expect_same_files(dir / "one", dir / "two");
 }
 
