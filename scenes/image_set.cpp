@@ -108,7 +108,8 @@ renderer::ImageMetadata metadata(const Scenario& s, const renderer::View& v,
                                             s.haze.scale_height)
                               : std::string("none")},
       {"spp", std::to_string(s.render.spp)},
-      {"seed", std::to_string(s.render.seed)}};
+      {"seed", std::to_string(s.render.seed)},
+      {"sampling_seed", std::to_string(scene.settings.seed)}};
   // What each band layer measures: its box or response file.
   for (const BandSettings& b : s.bands) out.emplace_back("band." + b.name, b.description);
   return out;
@@ -135,6 +136,7 @@ void write_manifest(const std::filesystem::path& path, const Scenario& s,
       {"version", LANDSIM_VERSION},
       {"spp", s.render.spp},
       {"seed", s.render.seed},
+      {"sampling_seed", s.render.sampling_seed.value_or(s.render.seed)},
       {"sun", {{"elevation_deg", s.sun.elevation_deg}, {"azimuth_deg", s.sun.azimuth_deg}}},
       {"wind", {{"speed", s.wind.speed}, {"gust", s.wind.gust}}},
       {"bands", bands_json(s)},

@@ -54,6 +54,9 @@ struct ViewSettings : renderer::View {
 struct RenderSection {
   int spp = renderer::RenderSettings{}.spp;
   std::uint64_t seed = renderer::RenderSettings{}.seed;
+  // Seeds the Monte Carlo sampling alone (pixel jitter, light paths); the scene (placement,
+  // variants, grass, ground detail) stays the `seed`'s. Empty: the `seed`.
+  std::optional<std::uint64_t> sampling_seed;
   int threads = 0;  // 0: every core
   int max_bounces = renderer::RenderSettings{}.max_bounces;
   std::optional<double> exposure_ev100;          // empty: "auto"

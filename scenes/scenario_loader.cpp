@@ -240,6 +240,8 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   RenderSection s;
   s.spp = static_cast<int>(r.integer("spp", 1, kMaxSpp, s.spp));
   s.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT64_MAX, s.seed));
+  if (r.has("sampling_seed"))
+    s.sampling_seed = static_cast<std::uint64_t>(r.integer("sampling_seed", 0, INT64_MAX));
   s.threads = static_cast<int>(r.integer("threads", 0, 1024, s.threads));
   s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, s.max_bounces));
   s.exposure_ev100 = read_exposure(r);

@@ -301,7 +301,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
     scene.views.push_back(std::move(v));
   }
   scene.settings.spp = scenario.render.spp;
-  scene.settings.seed = scenario.render.seed;
+  scene.settings.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;

@@ -349,7 +349,7 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "[[views]]\nname = \"pixels\"\nposition = [300.0, 400.0, 600.0]\n"
       "projection = \"orthographic\"\npixel_size = 2.0\n"
       "[[views]]\nname = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n"
-      "cells_per_pixel = 2\n[render]\nformats = [\"exr\", \"geotiff\"]\n";
+      "cells_per_pixel = 2\n[render]\nformats = [\"exr\", \"geotiff\"]\nsampling_seed = 9\n";
   EXPECT_EQ(load_scenario(f.dir.write("cameras.toml", cameras)).views.size(), 5u);
   const std::string text =
       f.text() + landsim::testing::read_file(source_file("scenes/examples/default.toml")) +

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/input_warnings.h"
+#include "renderer/transport/render.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -122,6 +123,37 @@ TEST(SceneBuilder, ThePlainLiesAtTheEdgesMeanHeightAndACameraUnderItIsWarned) {
   EXPECT_NE(said[0].find("the camera is beyond the terrain and 10.0 m below the plain"),
             std::string::npos)
       << said[0];
+}
+
+// A sampling seed changes the noise, never the scene: the same trees in the same places, a
+// different image; without one the render seed samples (today's images stay).
+TEST(SceneBuilder, TheSamplingSeedChangesTheNoiseNotTheScene) {
+  const std::string data = landsim::testing::source_file("data").string();
+  const auto text = [&](const std::string& extra) {
+    return "[terrain]\nelevation = \"" + data +
+           "/terrain/volcano.asc\"\n[sun]\nelevation = "
+           "40\nazimuth = 200\n[[species]]\nbit = 0\nfile = \"" +
+           data +
+           "/species/quaking_aspen.toml\"\nvariants = 2\ndensity_per_ha = 30\ncover = { "
+           "rectangle = [250, 650, 350, 750] }\n[[views]]\nname = \"v\"\nposition = [300.0, "
+           "560.0, 170.0]\ntarget = [300.0, 700.0, 120.0]\nwidth = 32\nheight = 24\n[render]\n"
+           "seed = 4\n" +
+           extra;
+  };
+  const renderer::Scene plain = build_scene(parse_scenario(text(""), "a.toml", "."));
+  const renderer::Scene other =
+      build_scene(parse_scenario(text("sampling_seed = 11\n"), "b.toml", "."));
+  EXPECT_EQ(plain.settings.seed, 4u);
+  EXPECT_EQ(other.settings.seed, 11u);
+  ASSERT_GT(plain.instances.size(), 3u);
+  ASSERT_EQ(plain.instances.size(), other.instances.size());
+  for (std::size_t i = 0; i < plain.instances.size(); ++i) {
+    EXPECT_EQ(plain.instances[i].position, other.instances[i].position);
+    EXPECT_EQ(plain.instances[i].prototype, other.instances[i].prototype);
+  }
+  const renderer::Film a = renderer::Renderer(plain).render(plain.views[0], {});
+  const renderer::Film b = renderer::Renderer(other).render(other.views[0], {});
+  EXPECT_NE(a.rgb_data(), b.rgb_data());
 }
 
 }  // namespace
