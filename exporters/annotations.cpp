@@ -66,6 +66,28 @@ std::map<std::uint32_t, std::string> classes(const json& legend) {
   return out;
 }
 
+// The classes of a set, each once, in order: the objects' (their mesh stems), then with
+// trees the species'.
+struct ClassName {
+  std::string name;
+  const char* supercategory;
+};
+std::vector<ClassName> class_names(const json& m,
+                                   const std::map<std::uint32_t, std::string>& objects,
+                                   bool trees) {
+  std::vector<ClassName> out;
+  const auto add = [&](const std::string& name, const char* super) {
+    for (const ClassName& c : out)
+      if (c.name == name) return;
+    out.push_back({name, super});
+  };
+  for (const auto& [id, name] : objects) add(name, "object");
+  if (trees)
+    for (const json& sp : m.at("legend").at("species").at("values"))
+      add(sp.at("name").get<std::string>(), "tree");
+  return out;
+}
+
 void write_text(const std::filesystem::path& path, const std::string& text) {
   AtomicFile out(path);
   {
@@ -150,12 +172,10 @@ void write_yolo(const json& m, const std::filesystem::path& set, const std::file
   const auto names = classes(m.at("legend"));
   std::map<std::string, int> index;
   std::string list;
-  for (const auto& [id, name] : names)
-    if (index.emplace(name, static_cast<int>(index.size())).second) list += name + "\n";
-  if (options.trees)
-    for (const json& sp : m.at("legend").at("species").at("values"))
-      if (index.emplace(sp.at("name").get<std::string>(), static_cast<int>(index.size())).second)
-        list += sp.at("name").get<std::string>() + "\n";
+  for (const ClassName& c : class_names(m, names, options.trees)) {
+    index.emplace(c.name, static_cast<int>(index.size()));
+    list += c.name + "\n";
+  }
   std::filesystem::create_directories(out / "labels");
   write_text(out / "classes.txt", list);
   for (const json& image : m.at("images")) {
@@ -192,17 +212,11 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
   const auto names = classes(m.at("legend"));
   std::map<std::string, int> category;
   json categories = json::array();
-  for (const auto& [id, name] : names)
-    if (category.emplace(name, static_cast<int>(category.size()) + 1).second)
-      categories.push_back(
-          {{"id", category.at(name)}, {"name", name}, {"supercategory", "object"}});
-  if (options.trees)
-    for (const json& sp : m.at("legend").at("species").at("values")) {
-      const std::string name = sp.at("name");
-      if (category.emplace(name, static_cast<int>(category.size()) + 1).second)
-        categories.push_back(
-            {{"id", category.at(name)}, {"name", name}, {"supercategory", "tree"}});
-    }
+  for (const ClassName& c : class_names(m, names, options.trees)) {
+    category.emplace(c.name, static_cast<int>(category.size()) + 1);
+    categories.push_back(
+        {{"id", category.at(c.name)}, {"name", c.name}, {"supercategory", c.supercategory}});
+  }
   json images = json::array(), annotations = json::array();
   for (const json& image : m.at("images")) {
     const renderer::Film film = renderer::read_exr(set / image.at("path").get<std::string>());

@@ -15,10 +15,6 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 // bits).
 double half_radians(double degrees) { return 0.5 * degrees * std::numbers::pi / 180.0; }
 
-bool is_fisheye(Projection p) {
-  return p == Projection::fisheye_equidistant || p == Projection::fisheye_equisolid;
-}
-
 // Rotates the image axes clockwise about the optical axis (seen from behind the camera).
 void roll(CameraBasis& b, double degrees) {
   const double c = std::cos(degrees * kDegree), s = std::sin(degrees * kDegree);

@@ -17,6 +17,10 @@ enum class Projection : std::uint8_t {
 
 std::string_view projection_name(Projection p);
 
+inline bool is_fisheye(Projection p) {
+  return p == Projection::fisheye_equidistant || p == Projection::fisheye_equisolid;
+}
+
 // OpenCV's radial (k1, k2, k3) and tangential (p1, p2) coefficients, on normalised image
 // coordinates x = X / Z, y = Y / Z with y down (cv::projectPoints' model).
 struct Distortion {

@@ -86,8 +86,9 @@ nlohmann::json camera_json(const renderer::View& v, const Vec3& origin) {
 }
 
 // The EXR header's description of the image: what made it.
+// `camera`: camera_json of the view.
 renderer::ImageMetadata metadata(const Scenario& s, const renderer::View& v,
-                                 const renderer::Scene& scene) {
+                                 const renderer::Scene& scene, const nlohmann::json& camera) {
   const Vec3& sun = scene.sun.direction;
   renderer::ImageMetadata out = {
       {"version", LANDSIM_VERSION},
@@ -97,7 +98,7 @@ renderer::ImageMetadata metadata(const Scenario& s, const renderer::View& v,
       {"camera_position", vec_text(v.position + scene.origin)},
       {"camera_target", vec_text(v.target + scene.origin)},
       {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
-      {"camera", camera_json(v, scene.origin).dump()},
+      {"camera", camera.dump()},
       {"legend", detail::legend(s).dump()},
       {"scene_origin", vec_text(scene.origin)},
       {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
@@ -311,7 +312,9 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   const Scenario& s = run.scenario;
   const double time = s.render.frames[image.frame];
   const auto exr = run.options.out_dir / (image.stem + ".exr");
-  renderer::ImageMetadata meta = metadata(s, view, scene);
+  // The camera model, once, for the EXR, the georeferenced rasters and the manifest.
+  const nlohmann::json camera_model = camera_json(view, scene.origin);
+  renderer::ImageMetadata meta = metadata(s, view, scene, camera_model);
   meta.emplace_back("time_s", fmt::format("{}", time));
   meta.emplace_back("render_key", options.render_key);
   const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
@@ -329,7 +332,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   renderer::write_exr(film, exr, meta, &camera);
   renderer::write_preview_png(film, run.options.out_dir / (image.stem + ".png"), ev100);
   detail::write_geo_rasters(film, view, scene, s, run.options.out_dir, image.stem,
-                            camera_json(view, scene.origin).dump());
+                            camera_model.dump());
   report.exr = exr;
   report.view = view.name;
   report.frame_index = image.frame;
@@ -339,8 +342,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   report.spp = scene.settings.spp;
   report.exposure_ev100 = ev100;
   report.shared = run.shared();
-  WrittenImage out{report, manifest_entry(s.views[image.view], image.stem, image.frame, time,
-                                          camera_json(view, scene.origin))};
+  WrittenImage out{
+      report, manifest_entry(s.views[image.view], image.stem, image.frame, time, camera_model)};
   if (!objects.is_null()) out.manifest["objects"] = objects;
   return out;
 }

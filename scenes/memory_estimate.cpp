@@ -269,11 +269,7 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
           detail::make_tree_variant(s, static_cast<std::uint32_t>(k), 0, s.render.frames.front());
   });
   const bool degrade = s.render.degradation;
-  std::vector<renderer::View> views = foundation.views;
-  for (renderer::View& v : views) {
-    v.position -= origin;
-    v.target -= origin;
-  }
+  const std::vector<renderer::View> views = foundation.views_around(origin);
   std::vector<double> view_prototypes(views.size(), 0.0);
   for (std::size_t k = 0; k < s.species.size(); ++k) {
     if (!variant[k]) continue;

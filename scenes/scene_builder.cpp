@@ -295,11 +295,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.haze.base_height =
       grid.min_height() - scene.origin.z;  // the visibility holds at the lowest ground
   detail::warn_cameras_below_ground(scenario, foundation.views, grid);
-  for (renderer::View v : foundation.views) {
-    v.position -= scene.origin;
-    v.target -= scene.origin;
-    scene.views.push_back(std::move(v));
-  }
+  scene.views = foundation.views_around(scene.origin);
   scene.settings.spp = scenario.render.spp;
   scene.settings.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   scene.settings.max_bounces = scenario.render.max_bounces;

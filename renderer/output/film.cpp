@@ -57,29 +57,22 @@ void Film::set(int x, int y, const Vec3f& rgb, const PixelAovs& a) {
   coverage_[i] = a.coverage;
 }
 
-Vec3f Film::position(int x, int y) const {
+Vec3f Film::triple(const std::vector<float>& plane, int x, int y) const {
   const std::size_t i = 3 * index(x, y);
-  return {position_[i], position_[i + 1], position_[i + 2]};
+  return {plane[i], plane[i + 1], plane[i + 2]};
 }
 
-Vec3f Film::rgb(int x, int y) const {
-  const std::size_t i = 3 * index(x, y);
-  return {rgb_[i], rgb_[i + 1], rgb_[i + 2]};
-}
+Vec3f Film::position(int x, int y) const { return triple(position_, x, y); }
+
+Vec3f Film::rgb(int x, int y) const { return triple(rgb_, x, y); }
 
 float Film::luminance(int x, int y) const {
   const Vec3f c = rgb(x, y);
   return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
-Vec3f Film::normal(int x, int y) const {
-  const std::size_t i = 3 * index(x, y);
-  return {normal_[i], normal_[i + 1], normal_[i + 2]};
-}
+Vec3f Film::normal(int x, int y) const { return triple(normal_, x, y); }
 
-Vec3f Film::albedo(int x, int y) const {
-  const std::size_t i = 3 * index(x, y);
-  return {albedo_[i], albedo_[i + 1], albedo_[i + 2]};
-}
+Vec3f Film::albedo(int x, int y) const { return triple(albedo_, x, y); }
 
 }  // namespace landsim::renderer

@@ -95,6 +95,8 @@ class Film {
   const std::vector<float>& coverage_data() const { return coverage_; }
 
  private:
+  // Pixel (x, y) of an interleaved three-value plane (rgb, normal, albedo, position).
+  Vec3f triple(const std::vector<float>& plane, int x, int y) const;
   std::size_t index(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
            static_cast<std::size_t>(x);

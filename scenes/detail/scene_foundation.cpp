@@ -39,6 +39,15 @@ double SceneFoundation::bytes() const {
   return total;
 }
 
+std::vector<renderer::View> SceneFoundation::views_around(const Vec3& origin) const {
+  std::vector<renderer::View> out = views;
+  for (renderer::View& v : out) {
+    v.position -= origin;
+    v.target -= origin;
+  }
+  return out;
+}
+
 SceneFoundation lay_foundation(const Scenario& s) {
   terrain::ElevationGrid grid = terrain::load_elevation(s.terrain.elevation, s.terrain.dem);
   const FeatureMapSettings f = s.featuremaps.value_or(FeatureMapSettings{});

@@ -28,6 +28,8 @@ struct SceneFoundation {
   std::optional<featuremaps::VegetationMap> map;  // empty without feature maps or covers
   // The scenario's views placed on the grid (scenes/view_placement.h), terrain coordinates.
   std::vector<renderer::View> views;
+  // The same views in the scene frame around `origin`.
+  std::vector<renderer::View> views_around(const Vec3& origin) const;
   // No grass blade stands on road or water.
   bool blocks_grass(double x, double y) const {
     return rasters[0].covers(x, y) || rasters[1].covers(x, y);

@@ -1,11 +1,13 @@
 #include "scenes/detail/view_reader.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <regex>
 
 #include "core/input_error.h"
 #include "params/table_reader.h"
+#include "renderer/camera.h"
 #include "renderer/lens_distortion.h"
 
 namespace landsim::scenes::detail {
@@ -13,14 +15,11 @@ namespace {
 
 using params::Range;
 using params::TableReader;
+using renderer::is_fisheye;
 using renderer::Projection;
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 const Range kCoordinate{-1e12, 1e12};
-
-bool is_fisheye(Projection p) {
-  return p == Projection::fisheye_equidistant || p == Projection::fisheye_equisolid;
-}
 
 // Refuses `key` where the projection has no use for it.
 void only_for(TableReader& r, std::string_view key, bool applies, const std::string& which) {
@@ -203,13 +202,12 @@ void read_intrinsics(TableReader& r, ViewSettings& v) {
 
 // The distorted normalised radius of the frame's farthest corner.
 double frame_radius(const ViewSettings& v) {
-  const double fy = 0.5 * v.height / std::tan(0.5 * v.fov_y_deg * kDegree);
-  const double fx = fy * v.lens.fx_over_fy;
-  const double cx = 0.5 * v.width + v.lens.principal_x, cy = 0.5 * v.height + v.lens.principal_y;
+  // K in OpenCV's convention: the frame's corners are half a pixel outside the outer centres.
+  const std::array<double, 9> k = renderer::Camera(v).intrinsics();
   double r = 0.0;
-  for (const double x : {0.0, double(v.width)})
-    for (const double y : {0.0, double(v.height)})
-      r = std::max(r, std::hypot((x - cx) / fx, (y - cy) / fy));
+  for (const double x : {-0.5, v.width - 0.5})
+    for (const double y : {-0.5, v.height - 0.5})
+      r = std::max(r, std::hypot((x - k[2]) / k[0], (y - k[5]) / k[4]));
   return r;
 }
 
