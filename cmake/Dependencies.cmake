@@ -11,6 +11,7 @@ find_package(spdlog REQUIRED)
 find_package(fmt REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(assimp REQUIRED)
+find_package(kissfft CONFIG REQUIRED COMPONENTS SHARED float)  # the sensor optics' FFT (BSD-3-Clause)
 # OpenImageIO 2.4's CMake config requires OpenCV headers; OpenColorIO 2.1 ships pkg-config only.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET OpenColorIO)

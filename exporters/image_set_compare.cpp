@@ -118,10 +118,12 @@ void compare_layers(const renderer::Film& a, const renderer::Film& b, ImageDiffe
 }
 
 bool passes(const ImageDifference& d, const CompareOptions& o) {
-  return !d.size_mismatch && d.luminance_mean_rel_diff <= o.max_mean_diff &&
-         d.luminance_region_max_rel_diff <= o.max_region_diff &&
-         d.depth_mean_rel_diff <= o.max_layer_diff && d.object_mismatch <= o.max_layer_diff &&
-         d.species_mismatch <= o.max_layer_diff && d.normal_mean_angle_deg <= o.max_normal_deg;
+  const bool luminance = o.statistical ? d.noise.within_noise
+                                       : d.luminance_mean_rel_diff <= o.max_mean_diff &&
+                                             d.luminance_region_max_rel_diff <= o.max_region_diff;
+  return !d.size_mismatch && luminance && d.depth_mean_rel_diff <= o.max_layer_diff &&
+         d.object_mismatch <= o.max_layer_diff && d.species_mismatch <= o.max_layer_diff &&
+         d.normal_mean_angle_deg <= o.max_normal_deg;
 }
 
 nlohmann::json to_json(const ImageDifference& d) {
@@ -136,6 +138,13 @@ nlohmann::json to_json(const ImageDifference& d) {
           {"normal_mean_angle_deg", d.normal_mean_angle_deg},
           {"object_mismatch", d.object_mismatch},
           {"species_mismatch", d.species_mismatch},
+          {"noise_test", d.noise.available
+                             ? nlohmann::json{{"image_z", d.noise.image_z},
+                                              {"region_max_z", d.noise.region_max_z},
+                                              {"image_threshold", d.noise.image_threshold},
+                                              {"region_threshold", d.noise.region_threshold},
+                                              {"within_noise", d.noise.within_noise}}
+                             : nlohmann::json()},
           {"pass", d.pass}};
 }
 
@@ -163,6 +172,12 @@ SetComparison compare_image_sets(const std::filesystem::path& a, const std::file
     if (!d.size_mismatch) {
       compare_luminance(fa, fb, d);
       compare_layers(fa, fb, d);
+      d.noise = noise_test(fa, fb, options.alpha);
+      if (options.statistical && !d.noise.available)
+        throw InputError(fmt::format(
+            "{} or {}: no variance layer (Y.variance) to test against noise: render both with "
+            "this landsim and at least 2 spp, or compare without --statistical",
+            (a / d.path_a).string(), (b / d.path_b).string()));
     }
     d.pass = passes(d, options);
     c.images.push_back(d);

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "exporters/noise_test.h"
+
 namespace landsim::exporters {
 
 struct ImageDifference {
@@ -23,6 +25,9 @@ struct ImageDifference {
   double normal_mean_angle_deg = 0.0;          // mean angle between the normals where both have one
   double object_mismatch = 0.0;                // fraction of pixels whose object class differs
   double species_mismatch = 0.0;               // fraction of pixels whose species differs
+  // Whether the luminance differs by more than the two renders' noise (both need their
+  // variance layers).
+  NoiseTest noise;
   bool pass = false;
 };
 
@@ -31,6 +36,10 @@ struct CompareOptions {
   double max_region_diff = 0.05;  // worst region's luminance, relative
   double max_layer_diff = 0.01;   // depth (relative), object and species (fraction of pixels)
   double max_normal_deg = 1.0;    // mean normal angle
+  // The noise test's significance level; with `statistical` it, not the relative
+  // thresholds above, decides the luminance's verdict.
+  double alpha = 0.001;
+  bool statistical = false;
 };
 
 struct SetComparison {

@@ -5,19 +5,25 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
+#include <numbers>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/process_memory.h"
+#include "renderer/atmosphere/downwelling.h"
 #include "renderer/camera.h"
 #include "renderer/output/exposure.h"
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
 #include "renderer/output/object_truth.h"
+#include "renderer/spectra/colour_matching.h"
+#include "renderer/spectra/spectral_colour.h"
 #include "scenes/detail/geo_rasters.h"
 #include "scenes/detail/legend.h"
 #include "scenes/memory_estimate.h"
 #include "scenes/scene_builder.h"
+#include "scenes/sensor_output.h"
 
 namespace landsim::scenes {
 namespace {
@@ -205,6 +211,67 @@ nlohmann::json saved_json(const std::filesystem::path& exr, const std::string& a
   return nullptr;
 }
 
+// The downwelling irradiance of an image (docs/SENSOR.md), at the height of what the image's
+// centre pixel sees (the haze's base where it sees sky): RGB (lux-scaled; Y is illuminance in
+// lux), every band (W m-2) and sensor channel (photons s-1 m-2), sun and sky apart in RGB.
+struct Irradiance {
+  Vec3f rgb;
+  std::vector<double> bands;  // the scene's bands in order (channels included)
+  nlohmann::json json;
+};
+
+Irradiance image_irradiance(const renderer::Scene& scene, const renderer::Film& film) {
+  const Vec3f centre = film.position(film.width() / 2, film.height() / 2);
+  const double z = std::isfinite(centre.z) ? centre.z : scene.haze.base_height;
+  const renderer::Downwelling d = renderer::downwelling_irradiance(scene, z);
+  const renderer::Spectrum total = d.total();
+  Irradiance out;
+  out.rgb = renderer::spectrum_to_rgb(total);
+  const Vec3f direct = renderer::spectrum_to_rgb(d.direct);
+  const Vec3f diffuse = renderer::spectrum_to_rgb(d.diffuse);
+  const auto rgb_json = [](const Vec3f& c) { return nlohmann::json::array({c.x, c.y, c.z}); };
+  nlohmann::json bands = nlohmann::json::object();
+  for (const renderer::SpectralBand& b : scene.bands) {
+    double e = 0.0;
+    for (int k = 0; k < renderer::kSpectrumBins; ++k)
+      e += static_cast<double>(b.weight[k]) * total[k];
+    out.bands.push_back(e);
+    bands[renderer::band_layer(b.name)] = e;
+  }
+  out.json = {{"height_m", z + scene.origin.z},
+              {"rgb", rgb_json(out.rgb)},
+              {"illuminance_lux", renderer::rec709_luminance(Vec3(out.rgb))},
+              {"direct_rgb", rgb_json(direct)},
+              {"diffuse_rgb", rgb_json(diffuse)},
+              {"layers", bands},
+              {"unit", "rgb: lux-scaled Rec. 709; band.*: W m-2; photons.*: photons s-1 m-2"}};
+  return out;
+}
+
+// The reflectance-factor layers pi L / E (docs/SENSOR.md): "reflectance.<layer>" for R, G, B
+// and every band and channel layer; 0 where E is 0.
+void add_reflectance(renderer::Film& film, const Irradiance& e) {
+  const float pi = std::numbers::pi_v<float>;
+  const std::size_t n = film.pixel_count();
+  const std::vector<float>& rgb = film.rgb_data();
+  for (int c = 0; c < 3; ++c) {
+    std::vector<float> plane(n, 0.0f);
+    if (e.rgb[c] > 0.0f)
+      for (std::size_t i = 0; i < n; ++i)
+        plane[i] = pi * rgb[3 * i + static_cast<std::size_t>(c)] / e.rgb[c];
+    film.add_band(std::string("reflectance.") + "RGB"[c], std::move(plane));
+  }
+  const int layers = film.band_count();  // before the ones added below
+  for (int b = 0; b < layers && static_cast<std::size_t>(b) < e.bands.size(); ++b) {
+    std::vector<float> plane(n, 0.0f);
+    const double eb = e.bands[static_cast<std::size_t>(b)];
+    if (eb > 0.0)
+      for (std::size_t i = 0; i < n; ++i)
+        plane[i] = static_cast<float>(std::numbers::pi * film.band_data(b)[i] / eb);
+    film.add_band("reflectance." + renderer::band_layer(film.band_name(b)), std::move(plane));
+  }
+}
+
 // The image names of a set: <view> for a single frame, <view>_f<index> for several.
 std::string image_stem(const std::string& view, std::size_t frame, std::size_t frames) {
   return frames == 1 ? view : fmt::format("{}_f{:04d}", view, frame);
@@ -259,6 +326,9 @@ bool already_finished(const SetRun& run, const Image& image) {
   const std::filesystem::path exr = dir / (image.stem + ".exr");
   if (!std::filesystem::exists(exr) || !std::filesystem::exists(dir / (image.stem + ".png")))
     return false;
+  const auto& sensor = run.scenario.views[image.view].sensor;
+  if (sensor && !std::filesystem::exists(dir / sensor_image_name(image.stem, *sensor)))
+    return false;
   renderer::ImageMetadata meta;
   try {
     meta = renderer::read_exr_metadata(exr);
@@ -305,9 +375,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   const renderer::View& view = scene.views[image.view];
   const renderer::RenderOptions options = render_options(run, view, image, first);
   ImageReport report;
-  const renderer::Film film = run.shared()
-                                  ? run.options.shared->render(renderer, view, options, report)
-                                  : renderer.render(view, options, &report.stats);
+  renderer::Film film = run.shared() ? run.options.shared->render(renderer, view, options, report)
+                                     : renderer.render(view, options, &report.stats);
   if (!run.writer()) return std::nullopt;
   const Scenario& s = run.scenario;
   const double time = s.render.frames[image.frame];
@@ -322,6 +391,18 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   // viewer can reproduce the PNG from the EXR.
   const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
   meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
+  // What lights the ground, and the reflectance factors it gives.
+  const Irradiance irradiance = image_irradiance(scene, film);
+  meta.emplace_back("irradiance", irradiance.json.dump());
+  if (s.render.reflectance) add_reflectance(film, irradiance);
+  // The sensor's digital numbers beside the EXR (docs/SENSOR.md).
+  const ViewSettings& settings = s.views[image.view];
+  nlohmann::json sensor;
+  if (settings.sensor) {
+    sensor = write_sensor_image(film, *settings.sensor, run.options.out_dir, image.stem,
+                                {detail::map_geotransform(view, scene.origin), scene.crs_wkt});
+    meta.emplace_back("sensor", sensor.dump());
+  }
   // Truth about the scene objects, in the manifest and (for resume) in the EXR.
   nlohmann::json objects;
   if (!scene.objects.empty()) {
@@ -345,6 +426,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   WrittenImage out{
       report, manifest_entry(s.views[image.view], image.stem, image.frame, time, camera_model)};
   if (!objects.is_null()) out.manifest["objects"] = objects;
+  out.manifest["irradiance"] = irradiance.json;
+  if (!sensor.is_null()) out.manifest["sensor"] = sensor;
   return out;
 }
 
@@ -409,6 +492,9 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
                                           scenario.render.frames[image.frame],
                                           saved_json(exr, "camera")));
         if (!scenario.objects.empty()) manifest.back()["objects"] = saved_json(exr, "objects");
+        manifest.back()["irradiance"] = saved_json(exr, "irradiance");
+        if (scenario.views[image.view].sensor)
+          manifest.back()["sensor"] = saved_json(exr, "sensor");
         ++result.skipped;
         continue;
       }

@@ -224,6 +224,18 @@ double object_bytes(const Scenario& s, VariantCache* keep) {
   return bytes + static_cast<double>(s.objects.size()) * 2.0 * mm::kEmbreeInstance;
 }
 
+// A film pixel with its bands, the sensor's channels and the layers derived when writing
+// (reflectance: RGB, bands and channels), and the sensor's work on a view: each channel's
+// plane through the optics and its digital numbers, and one FFT's two complex buffers (with
+// their margins) at a time.
+static double film_pixel_bytes(const Scenario& s) {
+  const double bands = static_cast<double>(s.bands.size());
+  const double channels = s.sensor ? static_cast<double>(s.sensor->model.channels.size()) : 0.0;
+  const double reflectance = s.render.reflectance ? 3.0 + bands + channels : 0.0;
+  const double sensor = channels > 0.0 ? channels * (4.0 + 2.0) + 2.0 * 8.0 * 1.2 : 0.0;
+  return mm::kFilmPixel + mm::kFilmBandPixel * (bands + channels + reflectance) + sensor;
+}
+
 MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   MemoryEstimate e;
   e.scenario = s.source;
@@ -308,8 +320,7 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
     // Each drawn patch: its Embree instance, top-level record and frame (the blade filter's).
     const double grass =
         static_cast<double>(patches) * (mm::kEmbreeInstance + mm::kTopLevelRecord + 48.0);
-    const double film = static_cast<double>(views[v].width) * views[v].height *
-                        (mm::kFilmPixel + mm::kFilmBandPixel * static_cast<double>(s.bands.size()));
+    const double film = static_cast<double>(views[v].width) * views[v].height * film_pixel_bytes(s);
     if (view_prototypes[v] + grass + film > largest_view) {
       largest_view = view_prototypes[v] + grass + film;
       p.view_prototypes = view_prototypes[v];

@@ -12,6 +12,7 @@
 #include "featuremaps/cover.h"
 #include "featuremaps/vegetation_map.h"
 #include "renderer/scene.h"
+#include "renderer/sensor/sensor_model.h"
 #include "renderer/spectra/sensor_band.h"
 #include "terrain/dem_loader.h"
 #include "trees/species.h"
@@ -46,6 +47,9 @@ struct ViewSettings : renderer::View {
   bool has_position = true;   // align = "grid" may leave the position to the grid's centre
   bool aims_at_point = true;  // `target` was given (else the axis is a direction)
   bool has_size = true;       // align = "grid" may leave width and height to the grid
+  // The sensor of this view ([sensor] with the view's own `sensor` table over it); empty
+  // when the scenario has no [sensor].
+  std::optional<renderer::SensorModel> sensor;
 };
 
 // Every scenario key's default is declared once: here, or, where the renderer has the
@@ -70,6 +74,8 @@ struct RenderSection {
   // Georeferenced rasters beside each EXR (docs/OUTPUTS.md "GeoTIFF and ENVI").
   bool geotiff = false;
   bool envi = false;
+  // Reflectance-factor layers pi L / E (docs/SENSOR.md): for RGB, every band and channel.
+  bool reflectance = false;
 };
 
 struct WindSettings {
@@ -184,6 +190,14 @@ struct BandSettings {
   std::string description;  // "box 630-690 nm", or "response " and the response file's path
   std::vector<renderer::ResponsePoint> response;
 };
+// [sensor] (docs/SENSOR.md): the camera's sensor; its channels are rendered as photon
+// radiance layers, and each view's digital numbers written beside its EXR.
+struct SensorSettings {
+  renderer::SensorModel model;
+  std::vector<std::vector<renderer::ResponsePoint>> responses;  // per channel
+  std::vector<std::string> keys;  // the keys [sensor] gives (a view's table overrides them)
+};
+
 // Bands per image set (renderer/transport/integrator.h kMaxBands).
 inline constexpr int kMaxSensorBands = 8;
 
@@ -207,6 +221,7 @@ struct Scenario {
   WindSettings wind;
   std::vector<ObjectSettings> objects;
   std::vector<BandSettings> bands;
+  std::optional<SensorSettings> sensor;
 };
 
 // Limit on frames per scenario (an image set is views x frames images).
@@ -227,6 +242,10 @@ Scenario load_scenario(const std::filesystem::path& file,
 // `source` names the text in messages; relative paths resolve against `base_dir`.
 Scenario parse_scenario(std::string_view text, const std::string& source,
                         const std::string& base_dir, const std::vector<std::string>& sets = {});
+
+// A file holding a [sensor] table (`landsim sense --sensor`, docs/SENSOR.md), read as a
+// scenario's; other tables are refused. Throws InputError.
+SensorSettings load_sensor(const std::filesystem::path& file);
 
 // Checks an image size (also used for command-line overrides); throws InputError.
 void check_image_size(int width, int height, const std::string& where);

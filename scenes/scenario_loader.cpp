@@ -13,6 +13,7 @@
 #include "scenes/scenario.h"
 
 #include "scenes/detail/scenario_overrides.h"
+#include "scenes/detail/sensor_reader.h"
 #include "scenes/detail/view_reader.h"
 #include "scenes/sensor_bands.h"
 #include "scenes/solar_position.h"
@@ -168,7 +169,8 @@ renderer::Haze read_haze(const toml::table& root, const std::string& file) {
   return h;
 }
 
-std::vector<ViewSettings> read_views(const toml::table& root, const std::string& file) {
+std::vector<ViewSettings> read_views(const toml::table& root, const std::string& file,
+                                     const std::optional<SensorSettings>& sensor) {
   const toml::node* n = root.get("views");
   if (n == nullptr) throw InputError(file + ": at least one [[views]] table is required");
   const toml::array* a = n->as_array();
@@ -184,7 +186,7 @@ std::vector<ViewSettings> read_views(const toml::table& root, const std::string&
     const auto name = a->get(i)->as_table()->get("name");
     const std::optional<std::string> text = name ? name->value<std::string>() : std::nullopt;
     const std::string path = text ? "views \"" + *text + "\"" : "views[" + std::to_string(i) + "]";
-    views.push_back(detail::read_view(*a->get(i)->as_table(), path, file));
+    views.push_back(detail::read_view(*a->get(i)->as_table(), path, file, sensor));
     const TableReader located(*a->get(i)->as_table(), path, file);
     views.back().location = located.location(a->get(i)->as_table()->get("position"));
     if (!names.insert(views.back().name).second) {
@@ -251,6 +253,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.degradation = r.boolean("degradation", s.degradation);
   s.quality = r.number("quality", Range{0.0, 1.0, true, false}, s.quality);
   s.max_memory = r.byte_size("max_memory");
+  s.reflectance = r.boolean("reflectance", s.reflectance);
   read_formats(r, s);
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");
@@ -694,31 +697,7 @@ std::vector<BandSettings> read_bands(const toml::table& root, const std::string&
                          b.name + ")");
     if (!names.insert(b.name).second)
       r.fail("name", "the name '" + b.name + "' is used by another band");
-    const bool has_file = r.has("response");
-    const bool has_box = r.has("centre") || r.has("width");
-    if (has_file == has_box)
-      r.fail(has_file ? "centre" : "response",
-             "give either response (a CSV file of wavelength, response) or centre and width "
-             "(a box, nm)");
-    if (has_file) {
-      const std::string path = resolve(base_dir, r.string("response"));
-      const std::optional<std::string> text = terrain::read_text_file(path);
-      if (!text)
-        r.fail("response", "cannot read " + path + " (expected a CSV of wavelength, response)");
-      b.response = parse_band_response(*text, path);
-      b.description = "response " + path;
-    } else {
-      const double centre =
-          r.number("centre", Range{renderer::kFirstWavelength, renderer::kLastWavelength});
-      const double width = r.number("width", Range{0.0, 640.0, true});
-      if (centre - 0.5 * width < renderer::kFirstWavelength - 1e-9 ||
-          centre + 0.5 * width > renderer::kLastWavelength + 1e-9)
-        r.fail("width", fmt::format("the box {}-{} nm leaves 380-1020 nm, where landsim's "
-                                    "spectra are",
-                                    centre - 0.5 * width, centre + 0.5 * width));
-      b.response = renderer::box_response(centre, width);
-      b.description = fmt::format("box {}-{} nm", centre - 0.5 * width, centre + 0.5 * width);
-    }
+    b.response = detail::read_response(r, base_dir, b.description);
     r.finish();
     out.push_back(std::move(b));
   }
@@ -728,7 +707,7 @@ std::vector<BandSettings> read_bands(const toml::table& root, const std::string&
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
       "terrain", "sun",  "views", "render", "featuremaps", "species", "grass",
-      "ground",  "wind", "sky",   "haze",   "objects",     "bands"};
+      "ground",  "wind", "sky",   "haze",   "objects",     "bands",   "sensor"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
@@ -737,7 +716,7 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
         ": unknown table or key '" + std::string(key.str()) + "'" +
         params::did_you_mean(key.str(), std::vector<std::string>(kKnown.begin(), kKnown.end())) +
         " (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
-        "haze, views, render, objects, bands)");
+        "haze, views, render, objects, bands, sensor)");
   }
 }
 
@@ -808,19 +787,48 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
                        std::to_string(s.species[i].bit) +
                        " grows nowhere: give it a cover (\"everywhere\", a fraction, a "
                        "rectangle or a polygon) or add [featuremaps] vegetation or classes");
-  s.views = read_views(root, source);
+  // Bands before the sensor, the sensor before the views: the channels share the bands'
+  // layers, and each view may override the sensor.
+  s.bands = read_bands(root, source, base_dir);
+  s.sensor = detail::read_sensor(root, source, base_dir, s.bands.size());
+  s.views = read_views(root, source, s.sensor);
   s.render = read_render(sub_table(root, "render", source, false), source);
   s.wind = read_wind(sub_table(root, "wind", source, false), source);
   s.sky = read_sky(sub_table(root, "sky", source, false), source);
   s.haze = read_haze(root, source);
   s.objects = read_objects(root, source, base_dir);
-  s.bands = read_bands(root, source, base_dir);
   return s;
 }
 
 bool has_cover(const Scenario& s) {
   return std::any_of(s.species.begin(), s.species.end(), [](const auto& k) { return k.cover; }) ||
          std::any_of(s.grass.begin(), s.grass.end(), [](const auto& g) { return g.cover; });
+}
+
+SensorSettings load_sensor(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file))
+    throw InputError(file.string() + ": cannot open sensor file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  toml::table root;
+  try {
+    root = toml::parse(text.str(), file.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(params::parse_error_message(e, file.string()));
+  }
+  for (auto&& [key, value] : root)
+    if (key.str() != "sensor") {
+      const auto& b = key.source().begin;
+      throw InputError(
+          fmt::format("{}:{}:{}: unknown table or key '{}' (a sensor file holds "
+                      "[sensor] alone)",
+                      file.string(), b.line, b.column, key.str()));
+    }
+  std::optional<SensorSettings> s =
+      detail::read_sensor(root, file.string(), file.parent_path().string(), 0);
+  if (!s) throw InputError(file.string() + ": no [sensor] table");
+  return *s;
 }
 
 Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& sets) {

@@ -1,5 +1,7 @@
 #include "scenes/scene_builder.h"
 
+#include "scenes/sensor_output.h"
+
 #include "renderer/camera.h"
 
 #include "renderer/spectra/vegetation_optics.h"
@@ -303,6 +305,11 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.degradation = scenario.render.degradation;
   for (const BandSettings& b : scenario.bands)
     scene.bands.push_back(renderer::sensor_band(b.name, b.response));
+  // The sensor's channels, in photons (docs/SENSOR.md), after the bands.
+  if (scenario.sensor)
+    for (std::size_t c = 0; c < scenario.sensor->responses.size(); ++c)
+      scene.bands.push_back(renderer::photon_band(
+          photon_layer(scenario.sensor->model.channels[c].name), scenario.sensor->responses[c]));
   if (map && !scenario.species.empty())
     add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
   // Objects after the trees: each clears the trunks within its radius.

@@ -35,6 +35,13 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
   cmd->add_option("--max-normal-deg", args.max_normal_deg, "Largest mean normal angle, degrees")
       ->check(CLI::Range(0.0, 180.0))
       ->capture_default_str();
+  cmd->add_option("--alpha", args.alpha,
+                  "Significance level of the noise test (both sets' variance layers)")
+      ->check(CLI::Range(1e-12, 0.5))
+      ->capture_default_str();
+  cmd->add_flag("--statistical", args.statistical,
+                "Judge luminance by the noise test (a difference beyond both renders' Monte "
+                "Carlo noise) instead of --max-mean-diff and --max-region-diff");
   cmd->add_flag("--json", args.json, "Print the report as one JSON object on stdout");
   return cmd;
 }
@@ -45,6 +52,8 @@ int run_compare(const CompareArgs& args) {
   o.max_region_diff = args.max_region_diff;
   o.max_layer_diff = args.max_layer_diff;
   o.max_normal_deg = args.max_normal_deg;
+  o.alpha = args.alpha;
+  o.statistical = args.statistical;
   const exporters::SetComparison c = exporters::compare_image_sets(args.set_a, args.set_b, o);
   if (!args.out.empty()) exporters::write_compare_reports(c, o, args.set_a, args.set_b, args.out);
   std::size_t failed = 0;
@@ -52,6 +61,16 @@ int run_compare(const CompareArgs& args) {
   if (args.json) {
     std::cout << exporters::comparison_json(c) << "\n";
   } else {
+    for (const exporters::ImageDifference& d : c.images)
+      if (d.noise.available)
+        std::cout << fmt::format(
+            "{} f{}: {} (image z = {:.2f}, worst region z = {:.2f}; limits "
+            "{:.2f} and {:.2f} at alpha {})\n",
+            d.view, d.frame,
+            d.noise.within_noise ? "within the renders' noise"
+                                 : "differs by more than the renders' noise",
+            d.noise.image_z, d.noise.region_max_z, d.noise.image_threshold,
+            d.noise.region_threshold, args.alpha);
     for (const exporters::ImageDifference& d : c.images)
       if (!d.pass)
         std::cout << fmt::format(

@@ -17,6 +17,8 @@ struct CompareArgs {
   double max_region_diff = 0.05;
   double max_layer_diff = 0.01;
   double max_normal_deg = 1.0;
+  double alpha = 0.001;
+  bool statistical = false;
   bool json = false;
 };
 

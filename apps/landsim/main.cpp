@@ -30,6 +30,7 @@
 #include "params/table_reader.h"
 #include "plate_command.h"
 #include "render_command.h"
+#include "sense_command.h"
 #include "tree_command.h"
 
 namespace {
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
       cmd::command(app, cmd::add_crosscheck_command, cmd::run_crosscheck),
       cmd::command(app, cmd::add_compare_command, cmd::run_compare),
       cmd::command(app, cmd::add_annotate_command, cmd::run_annotate),
+      cmd::command(app, cmd::add_sense_command, cmd::run_sense),
       cmd::command(app, cmd::add_featuremap_command, cmd::run_featuremap_build),
       cmd::command(app, cmd::add_discover_command, cmd::run_discover),
       cmd::command(app, cmd::add_grow_command, cmd::run_grow),

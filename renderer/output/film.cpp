@@ -19,6 +19,7 @@ Film::Film(int width, int height, std::vector<std::string> band_names)
       target_(pixel_count()),
       coverage_(pixel_count()),
       position_(3 * pixel_count(), kNoPosition),
+      variance_(pixel_count()),
       band_names_(std::move(band_names)),
       bands_(band_names_.size(), std::vector<float>(pixel_count())) {}
 
@@ -33,6 +34,12 @@ bool Film::order_bands(const std::vector<std::string>& names) {
   bands_ = std::move(ordered);
   band_names_ = names;
   return true;
+}
+
+void Film::add_band(std::string name, std::vector<float> plane) {
+  plane.resize(pixel_count());
+  band_names_.push_back(std::move(name));
+  bands_.push_back(std::move(plane));
 }
 
 void Film::set_bands(int x, int y, const float* bands) {

@@ -36,7 +36,8 @@ struct PixelAovs {
 class Film {
  public:
   // `band_names`: the sensor bands (renderer/scene.h SpectralBand) the film also holds, one
-  // plane each, in band radiance (W m^-2 sr^-1).
+  // plane each, in band radiance (W m^-2 sr^-1); a name with a '.' is a layer of its own
+  // ("photons.<channel>", "reflectance.<band>": image_output.h band_layer).
   Film(int width, int height, std::vector<std::string> band_names = {});
 
   int width() const { return width_; }
@@ -46,6 +47,8 @@ class Film {
   void set(int x, int y, const Vec3f& rgb, const PixelAovs& aovs);
   // The pixel's band radiances, band_count() of them.
   void set_bands(int x, int y, const float* bands);
+  // Another plane, `plane` holding pixel_count() values (derived layers: reflectance).
+  void add_band(std::string name, std::vector<float> plane);
   int band_count() const { return static_cast<int>(band_names_.size()); }
   const std::string& band_name(int b) const { return band_names_[static_cast<std::size_t>(b)]; }
   const std::vector<std::string>& band_names() const { return band_names_; }
@@ -67,6 +70,11 @@ class Film {
   std::uint32_t instance(int x, int y) const { return instance_[index(x, y)]; }
   std::uint32_t level(int x, int y) const { return level_[index(x, y)]; }
   std::uint32_t target(int x, int y) const { return target_[index(x, y)]; }
+  // The variance of the pixel's luminance estimate (the sample variance of its samples'
+  // luminance over the sample count), (cd/m2)^2: its standard error squared, for telling a
+  // difference from Monte Carlo noise (docs/SENSOR.md "Noise of the render").
+  float luminance_variance(int x, int y) const { return variance_[index(x, y)]; }
+  void set_luminance_variance(int x, int y, float v) { variance_[index(x, y)] = v; }
   float coverage(int x, int y) const { return coverage_[index(x, y)]; }
   Vec3f position(int x, int y) const;
 
@@ -92,6 +100,8 @@ class Film {
   std::vector<float>& position_data() { return position_; }
   const std::vector<float>& position_data() const { return position_; }
   std::vector<float>& coverage_data() { return coverage_; }
+  std::vector<float>& variance_data() { return variance_; }
+  const std::vector<float>& variance_data() const { return variance_; }
   const std::vector<float>& coverage_data() const { return coverage_; }
 
  private:
@@ -106,7 +116,7 @@ class Film {
   int height_;
   std::vector<float> rgb_, depth_, normal_, albedo_;
   std::vector<std::uint32_t> object_, species_, instance_, level_, target_;
-  std::vector<float> coverage_, position_;
+  std::vector<float> coverage_, position_, variance_;
   std::vector<std::string> band_names_;
   std::vector<std::vector<float>> bands_;  // per band, a plane
 };

@@ -83,17 +83,19 @@ struct Channel {
   bool required;  // in every landsim EXR (coverage came later: zero when absent)
 };
 constexpr Channel kChannels[] = {
-    {"R", false, true},         {"G", false, true},        {"B", false, true},
-    {"Z", false, true},         {"N.X", false, true},      {"N.Y", false, true},
-    {"N.Z", false, true},       {"albedo.R", false, true}, {"albedo.G", false, true},
-    {"albedo.B", false, true},  {"object", true, true},    {"species", true, true},
-    {"instance", true, true},   {"lod", true, true},       {"target", true, true},
-    {"coverage", false, false}, {"P.X", false, false},     {"P.Y", false, false},
-    {"P.Z", false, false}};
+    {"R", false, true},         {"G", false, true},          {"B", false, true},
+    {"Z", false, true},         {"N.X", false, true},        {"N.Y", false, true},
+    {"N.Z", false, true},       {"albedo.R", false, true},   {"albedo.G", false, true},
+    {"albedo.B", false, true},  {"object", true, true},      {"species", true, true},
+    {"instance", true, true},   {"lod", true, true},         {"target", true, true},
+    {"coverage", false, false}, {"P.X", false, false},       {"P.Y", false, false},
+    {"P.Z", false, false},      {"Y.variance", false, false}};
 
 // Sensor bands are channels of their own: "band." and the band's name.
 constexpr std::string_view kBandPrefix = "band.";
-std::string band_channel(const std::string& name) { return std::string(kBandPrefix) + name; }
+// Derived planes the film holds as bands, under their own layer names.
+constexpr std::string_view kLayerPrefixes[] = {"photons.", "reflectance."};
+std::string band_channel(const std::string& name) { return band_layer(name); }
 
 // The frame buffer for every channel of `film` (const_cast: OpenEXR's Slice wants a
 // non-const pointer even for writing).
@@ -119,6 +121,7 @@ Imf::FrameBuffer frame_buffer(Film& film) {
   add_slice(fb, "P.X", Imf::FLOAT, film.position_data(), 3, 0, w);
   add_slice(fb, "P.Y", Imf::FLOAT, film.position_data(), 3, 1, w);
   add_slice(fb, "P.Z", Imf::FLOAT, film.position_data(), 3, 2, w);
+  add_slice(fb, "Y.variance", Imf::FLOAT, film.variance_data(), 1, 0, w);
   for (int b = 0; b < film.band_count(); ++b)
     add_slice(fb, band_channel(film.band_name(b)).c_str(), Imf::FLOAT, film.band_data(b), 1, 0, w);
   return fb;
@@ -132,6 +135,10 @@ Imath::M44f to_m44(const std::array<float, 16>& m) {
 }  // namespace
 
 const char* ocio_config_text() { return kOcioConfig; }
+
+std::string band_layer(const std::string& name) {
+  return name.find('.') != std::string::npos ? name : std::string(kBandPrefix) + name;
+}
 
 void write_exr(const Film& film, const std::filesystem::path& path, const ImageMetadata& metadata,
                const CameraMatrices* camera, bool compressed) {
@@ -196,6 +203,8 @@ Film read_exr(const std::filesystem::path& path, ImageMetadata* metadata) {
   for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it) {
     const std::string name = it.name();
     if (name.rfind(kBandPrefix, 0) == 0) bands.push_back(name.substr(kBandPrefix.size()));
+    for (const std::string_view prefix : kLayerPrefixes)
+      if (name.rfind(prefix, 0) == 0) bands.push_back(name);
   }
   Film film(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1, std::move(bands));
   for (const Channel& c : kChannels) {

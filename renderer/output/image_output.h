@@ -29,7 +29,10 @@ inline constexpr const char* kRadianceUnit =
     "scene-linear Rec. 709 radiance; Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance in cd/m2";
 
 // Sensor bands' layers ("band.<name>"): band radiance, the integral of spectral radiance
-// times the band's response.
+// times the band's response. A film's band whose name holds a '.' is a layer by that name:
+// a sensor channel's photon radiance ("photons.<channel>", photons s-1 m-2 sr-1) or a
+// reflectance factor ("reflectance.<band>", docs/SENSOR.md).
+std::string band_layer(const std::string& band_name);
 inline constexpr const char* kBandUnit = "W m-2 sr-1";
 // Channels: R, G, B (radiance, kRadianceUnit); Y (luminance, cd/m2); Z (depth, metres, infinity for
 // sky); N.X, N.Y, N.Z (normal); albedo.R, albedo.G, albedo.B; object, species, instance, lod

@@ -18,6 +18,15 @@ struct ResponsePoint {
 // step). Its weight per bin is the integral of the response over the bin, in nm.
 SpectralBand sensor_band(std::string name, const std::vector<ResponsePoint>& points);
 
+// A sensor channel's band in photons (docs/SENSOR.md): per bin the integral of the response
+// times lambda / (h c), so that the band of a spectral radiance (W m^-2 sr^-1 nm^-1) is its
+// photon radiance, photons s^-1 m^-2 sr^-1, the quantity a detector counts.
+SpectralBand photon_band(std::string name, const std::vector<ResponsePoint>& points);
+
+// The response's centroid (its weighted mean wavelength), nm: the wavelength a channel's
+// diffraction is evaluated at. Zero for a response that is zero everywhere.
+double centroid_wavelength(const std::vector<ResponsePoint>& points);
+
 // A box: response 1 from centre - width / 2 to centre + width / 2, 0 elsewhere.
 std::vector<ResponsePoint> box_response(double centre_nm, double width_nm);
 

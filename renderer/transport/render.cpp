@@ -15,6 +15,7 @@
 #include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
 #include "renderer/output/image_output.h"
+#include "renderer/spectra/colour_matching.h"
 #include "renderer/transport/comparable_tracer.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/path_tracer.h"
@@ -75,6 +76,15 @@ class TargetTally {
   std::size_t size_ = 0;
 };
 
+// The variance of a mean of n samples from their sum and sum of squares: the unbiased
+// sample variance over n (0 for a single sample, which says nothing of its noise).
+float mean_variance(double sum, double squares, int n) {
+  if (n < 2) return 0.0f;
+  const double count = n, mean = sum / count;
+  const double sample_variance = std::max(0.0, (squares - count * mean * mean) / (count - 1.0));
+  return static_cast<float>(sample_variance / count);
+}
+
 // A sample of a pixel no ray leaves: black, and "none" in every truth layer.
 PathSample outside_the_image() {
   PathSample s;
@@ -98,6 +108,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
                          static_cast<std::uint64_t>(x);
       Vec3f sum{};
       std::array<float, kMaxBands> band_sum{};
+      double luminance_sum = 0.0, luminance_squares = 0.0;  // for the variance
       FirstHit first;
       PixelAovs aovs;
       TargetTally targets;
@@ -107,6 +118,9 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
         const std::optional<Ray> ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
         const PathSample sample = ray ? tracer.trace(*ray, rng, mask) : outside_the_image();
         sum += sample.radiance;
+        const double y_sample = rec709_luminance(Vec3(sample.radiance));
+        luminance_sum += y_sample;
+        luminance_squares += y_sample * y_sample;
         for (int b = 0; b < film.band_count(); ++b)
           band_sum[static_cast<std::size_t>(b)] += sample.bands[static_cast<std::size_t>(b)];
         rays += sample.rays;
@@ -128,6 +142,8 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       aovs.coverage = targets.fraction(settings.spp);
       const float inverse_spp = 1.0f / static_cast<float>(settings.spp);
       film.set(x, y, sum * inverse_spp, aovs);
+      film.set_luminance_variance(x, y,
+                                  mean_variance(luminance_sum, luminance_squares, settings.spp));
       for (float& b : band_sum) b *= inverse_spp;
       film.set_bands(x, y, band_sum.data());
     }
@@ -291,9 +307,9 @@ Film make_film(const Scene& scene, const View& view) {
 }
 
 // A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
-// species, instance, level, target, then coverage and position (float bits): 19 words per
-// pixel, then the bands (float bits).
-constexpr std::size_t kWordsPerPixel = 19;
+// species, instance, level, target, then coverage, position and the luminance variance
+// (float bits): 20 words per pixel, then the bands (float bits).
+constexpr std::size_t kWordsPerPixel = 20;
 
 std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   const TileGrid grid = tile_grid(film.width(), film.height());
@@ -302,12 +318,26 @@ std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   for (int tile = first; tile < last; ++tile)
     for_each_tile_pixel(grid, tile, film.width(), film.height(), [&](int x, int y) {
       const Vec3f c = film.rgb(x, y), n = film.normal(x, y), a = film.albedo(x, y);
-      words.insert(
-          words.end(),
-          {bits(c.x), bits(c.y), bits(c.z), bits(film.depth(x, y)), bits(n.x), bits(n.y), bits(n.z),
-           bits(a.x), bits(a.y), bits(a.z), film.object(x, y), film.species(x, y),
-           film.instance(x, y), film.level(x, y), film.target(x, y), bits(film.coverage(x, y)),
-           bits(film.position(x, y).x), bits(film.position(x, y).y), bits(film.position(x, y).z)});
+      words.insert(words.end(), {bits(c.x),
+                                 bits(c.y),
+                                 bits(c.z),
+                                 bits(film.depth(x, y)),
+                                 bits(n.x),
+                                 bits(n.y),
+                                 bits(n.z),
+                                 bits(a.x),
+                                 bits(a.y),
+                                 bits(a.z),
+                                 film.object(x, y),
+                                 film.species(x, y),
+                                 film.instance(x, y),
+                                 film.level(x, y),
+                                 film.target(x, y),
+                                 bits(film.coverage(x, y)),
+                                 bits(film.position(x, y).x),
+                                 bits(film.position(x, y).y),
+                                 bits(film.position(x, y).z),
+                                 bits(film.luminance_variance(x, y))});
       for (int b = 0; b < film.band_count(); ++b) words.push_back(bits(film.band(x, y, b)));
     });
   return words;
@@ -333,6 +363,7 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
       aovs.coverage = f(k + 15);
       aovs.position = {f(k + 16), f(k + 17), f(k + 18)};
       film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
+      film.set_luminance_variance(x, y, f(k + 19));
       std::array<float, kMaxBands> bands{};
       for (int b = 0; b < film.band_count(); ++b)
         bands[static_cast<std::size_t>(b)] = f(k + kWordsPerPixel + static_cast<std::size_t>(b));

@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "renderer/camera.h"
+#include "renderer/output/image_output.h"
 #include "terrain/raster_io.h"
 
 namespace landsim::scenes::detail {
@@ -94,9 +95,19 @@ void write_geo_rasters(const renderer::Film& film, const renderer::View& view,
   values.rows = film.height();
   values.bands = {
       {"R", r.data(), {}}, {"G", g.data(), {}}, {"B", bl.data(), {}}, {"Y", y.data(), {}}};
-  for (int b = 0; b < film.band_count(); ++b)
-    values.bands.push_back({"band." + film.band_name(b), film.band_data(b).data(),
-                            centre_wavelength(s.bands[static_cast<std::size_t>(b)])});
+  // The film's planes: the bands, then the sensor's channels, then derived layers.
+  const std::size_t bands = s.bands.size(),
+                    channels = s.sensor ? s.sensor->model.channels.size() : 0;
+  for (int b = 0; b < film.band_count(); ++b) {
+    const auto i = static_cast<std::size_t>(b);
+    std::optional<double> wavelength;
+    if (i < bands)
+      wavelength = centre_wavelength(s.bands[i]);
+    else if (i < bands + channels)
+      wavelength = s.sensor->model.channels[i - bands].wavelength_nm;
+    values.bands.push_back(
+        {renderer::band_layer(film.band_name(b)), film.band_data(b).data(), wavelength});
+  }
   values.bands.push_back({"Z", film.depth_data().data(), {}});
   values.bands.push_back({"coverage", film.coverage_data().data(), {}});
   values.bands.push_back({"world_x", world[0].data(), {}});

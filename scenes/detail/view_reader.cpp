@@ -9,6 +9,7 @@
 #include "params/table_reader.h"
 #include "renderer/camera.h"
 #include "renderer/lens_distortion.h"
+#include "scenes/detail/sensor_reader.h"
 
 namespace landsim::scenes::detail {
 namespace {
@@ -249,7 +250,8 @@ void read_aperture(TableReader& r, ViewSettings& v) {
 
 }  // namespace
 
-ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file) {
+ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file,
+                       const std::optional<SensorSettings>& sensor) {
   TableReader r(t, path, file);
   ViewSettings v;
   v.name = r.string("name");
@@ -266,6 +268,7 @@ ViewSettings read_view(const toml::table& t, const std::string& path, const std:
   read_intrinsics(r, v);
   read_distortion(r, v);
   read_aperture(r, v);
+  v.sensor = read_view_sensor(r, sensor, v);
   r.finish();
   return v;
 }

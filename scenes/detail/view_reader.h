@@ -5,12 +5,15 @@
 // Include from .cpp files only (toml++ is a heavy header).
 #include <toml++/toml.h>
 
+#include <optional>
 #include <string>
 
 #include "scenes/scenario.h"
 
 namespace landsim::scenes::detail {
 
-ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file);
+// `sensor`: the scenario's [sensor], which the view's own `sensor` table overrides.
+ViewSettings read_view(const toml::table& t, const std::string& path, const std::string& file,
+                       const std::optional<SensorSettings>& sensor);
 
 }  // namespace landsim::scenes::detail
