@@ -181,7 +181,10 @@ struct SpectralBand {
 
 struct RenderSettings {
   int spp = 16;
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 1;  // the Monte Carlo sampling's
+  // Seeds where each pixel's first sample falls (the truth layers are taken from it): the
+  // scene's seed, so that another sampling seed keeps them; empty: `seed`.
+  std::optional<std::uint64_t> truth_seed;
   int max_bounces = 4;
   // The preview PNG's exposure value at ISO 100; empty: automatic (renderer/output/exposure.h).
   // The EXR stays in cd/m2 either way.

@@ -11,14 +11,13 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/process_memory.h"
-#include "renderer/atmosphere/downwelling.h"
 #include "renderer/camera.h"
 #include "renderer/output/exposure.h"
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
 #include "renderer/output/object_truth.h"
+#include "renderer/output/reflectance.h"
 #include "renderer/spectra/colour_matching.h"
-#include "renderer/spectra/spectral_colour.h"
 #include "scenes/detail/geo_rasters.h"
 #include "scenes/detail/legend.h"
 #include "scenes/memory_estimate.h"
@@ -211,65 +210,30 @@ nlohmann::json saved_json(const std::filesystem::path& exr, const std::string& a
   return nullptr;
 }
 
-// The downwelling irradiance of an image (docs/SENSOR.md), at the height of what the image's
-// centre pixel sees (the haze's base where it sees sky): RGB (lux-scaled; Y is illuminance in
-// lux), every band (W m-2) and sensor channel (photons s-1 m-2), sun and sky apart in RGB.
-struct Irradiance {
-  Vec3f rgb;
-  std::vector<double> bands;  // the scene's bands in order (channels included)
-  nlohmann::json json;
-};
-
-Irradiance image_irradiance(const renderer::Scene& scene, const renderer::Film& film) {
-  const Vec3f centre = film.position(film.width() / 2, film.height() / 2);
-  const double z = std::isfinite(centre.z) ? centre.z : scene.haze.base_height;
-  const renderer::Downwelling d = renderer::downwelling_irradiance(scene, z);
-  const renderer::Spectrum total = d.total();
-  Irradiance out;
-  out.rgb = renderer::spectrum_to_rgb(total);
-  const Vec3f direct = renderer::spectrum_to_rgb(d.direct);
-  const Vec3f diffuse = renderer::spectrum_to_rgb(d.diffuse);
-  const auto rgb_json = [](const Vec3f& c) { return nlohmann::json::array({c.x, c.y, c.z}); };
-  nlohmann::json bands = nlohmann::json::object();
-  for (const renderer::SpectralBand& b : scene.bands) {
-    double e = 0.0;
-    for (int k = 0; k < renderer::kSpectrumBins; ++k)
-      e += static_cast<double>(b.weight[k]) * total[k];
-    out.bands.push_back(e);
-    bands[renderer::band_layer(b.name)] = e;
-  }
-  out.json = {{"height_m", z + scene.origin.z},
-              {"rgb", rgb_json(out.rgb)},
-              {"illuminance_lux", renderer::rec709_luminance(Vec3(out.rgb))},
-              {"direct_rgb", rgb_json(direct)},
-              {"diffuse_rgb", rgb_json(diffuse)},
-              {"layers", bands},
-              {"unit", "rgb: lux-scaled Rec. 709; band.*: W m-2; photons.*: photons s-1 m-2"}};
-  return out;
+// The image's irradiance as the manifest and the EXR give it (docs/SENSOR.md).
+nlohmann::json irradiance_json(const renderer::ImageIrradiance& e, const renderer::Scene& scene) {
+  const auto rgb = [](const Vec3f& c) { return nlohmann::json::array({c.x, c.y, c.z}); };
+  nlohmann::json layers = nlohmann::json::object();
+  for (std::size_t b = 0; b < scene.bands.size(); ++b)
+    layers[renderer::band_layer(scene.bands[b].name)] = e.layers[b];
+  return {{"height_m", e.height + scene.origin.z},
+          {"rgb", rgb(e.rgb)},
+          {"illuminance_lux", renderer::rec709_luminance(Vec3(e.rgb))},
+          {"direct_rgb", rgb(e.direct_rgb)},
+          {"diffuse_rgb", rgb(e.diffuse_rgb)},
+          {"layers", layers},
+          {"unit", "rgb: lux-scaled Rec. 709; band.*: W m-2; photons.*: photons s-1 m-2"}};
 }
 
-// The reflectance-factor layers pi L / E (docs/SENSOR.md): "reflectance.<layer>" for R, G, B
-// and every band and channel layer; 0 where E is 0.
-void add_reflectance(renderer::Film& film, const Irradiance& e) {
-  const float pi = std::numbers::pi_v<float>;
-  const std::size_t n = film.pixel_count();
-  const std::vector<float>& rgb = film.rgb_data();
-  for (int c = 0; c < 3; ++c) {
-    std::vector<float> plane(n, 0.0f);
-    if (e.rgb[c] > 0.0f)
-      for (std::size_t i = 0; i < n; ++i)
-        plane[i] = pi * rgb[3 * i + static_cast<std::size_t>(c)] / e.rgb[c];
-    film.add_band(std::string("reflectance.") + "RGB"[c], std::move(plane));
-  }
-  const int layers = film.band_count();  // before the ones added below
-  for (int b = 0; b < layers && static_cast<std::size_t>(b) < e.bands.size(); ++b) {
-    std::vector<float> plane(n, 0.0f);
-    const double eb = e.bands[static_cast<std::size_t>(b)];
-    if (eb > 0.0)
-      for (std::size_t i = 0; i < n; ++i)
-        plane[i] = static_cast<float>(std::numbers::pi * film.band_data(b)[i] / eb);
-    film.add_band("reflectance." + renderer::band_layer(film.band_name(b)), std::move(plane));
-  }
+// The manifest entry of an image already written, from what its EXR keeps.
+nlohmann::json saved_entry(const Scenario& s, std::size_t view, const std::string& stem,
+                           std::size_t frame, const std::filesystem::path& exr) {
+  nlohmann::json entry = manifest_entry(s.views[view], stem, frame, s.render.frames[frame],
+                                        saved_json(exr, "camera"));
+  if (!s.objects.empty()) entry["objects"] = saved_json(exr, "objects");
+  entry["irradiance"] = saved_json(exr, "irradiance");
+  if (s.views[view].sensor) entry["sensor"] = saved_json(exr, "sensor");
+  return entry;
 }
 
 // The image names of a set: <view> for a single frame, <view>_f<index> for several.
@@ -392,9 +356,10 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
   meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
   // What lights the ground, and the reflectance factors it gives.
-  const Irradiance irradiance = image_irradiance(scene, film);
-  meta.emplace_back("irradiance", irradiance.json.dump());
-  if (s.render.reflectance) add_reflectance(film, irradiance);
+  const renderer::ImageIrradiance irradiance = renderer::image_irradiance(scene, film);
+  const nlohmann::json irradiance_entry = irradiance_json(irradiance, scene);
+  meta.emplace_back("irradiance", irradiance_entry.dump());
+  if (s.render.reflectance) renderer::add_reflectance(film, irradiance);
   // The sensor's digital numbers beside the EXR (docs/SENSOR.md).
   const ViewSettings& settings = s.views[image.view];
   nlohmann::json sensor;
@@ -426,7 +391,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   WrittenImage out{
       report, manifest_entry(s.views[image.view], image.stem, image.frame, time, camera_model)};
   if (!objects.is_null()) out.manifest["objects"] = objects;
-  out.manifest["irradiance"] = irradiance.json;
+  out.manifest["irradiance"] = irradiance_entry;
   if (!sensor.is_null()) out.manifest["sensor"] = sensor;
   return out;
 }
@@ -488,13 +453,7 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
       // Shared renders would all have to agree: finished images are skipped in one process.
       if (options.resume && !run.shared() && already_finished(run, image)) {
         const auto exr = out_dir / (image.stem + ".exr");
-        manifest.push_back(manifest_entry(scenario.views[image.view], image.stem, image.frame,
-                                          scenario.render.frames[image.frame],
-                                          saved_json(exr, "camera")));
-        if (!scenario.objects.empty()) manifest.back()["objects"] = saved_json(exr, "objects");
-        manifest.back()["irradiance"] = saved_json(exr, "irradiance");
-        if (scenario.views[image.view].sensor)
-          manifest.back()["sensor"] = saved_json(exr, "sensor");
+        manifest.push_back(saved_entry(scenario, image.view, image.stem, image.frame, exr));
         ++result.skipped;
         continue;
       }
@@ -552,9 +511,11 @@ std::vector<std::string> check_image_set(const Scenario& scenario,
       const std::string stem = image_stem(vs.name, f, frames.size());
       for (const char* ext : {".exr", ".png"})
         if (!std::filesystem::exists(out_dir / (stem + ext))) missing.push_back(stem + ext);
+      if (vs.sensor && !std::filesystem::exists(out_dir / sensor_image_name(stem, *vs.sensor)))
+        missing.push_back(sensor_image_name(stem, *vs.sensor));
       if (missing.empty())
-        entries.push_back(manifest_entry(vs, stem, f, frames[f],
-                                         saved_json(out_dir / (stem + ".exr"), "camera")));
+        entries.push_back(saved_entry(scenario, static_cast<std::size_t>(&vs - scenario.views.data()),
+                                      stem, f, out_dir / (stem + ".exr")));
     }
   if (missing.empty()) write_manifest(out_dir / "manifest.json", scenario, entries);
   return missing;

@@ -300,6 +300,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.views = foundation.views_around(scene.origin);
   scene.settings.spp = scenario.render.spp;
   scene.settings.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
+  scene.settings.truth_seed = scenario.render.seed;
   scene.settings.max_bounces = scenario.render.max_bounces;
   scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;

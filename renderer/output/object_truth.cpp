@@ -126,8 +126,8 @@ Footprints footprints(const Scene& scene, const View& view, bool centre_first) {
       if (!near[pixel]) continue;
       std::vector<FootprintHit>& hits = out[pixel];
       for (int s = 0; s < spp; ++s) {
-        const CounterRng rng(scene.settings.seed, pixel, static_cast<std::uint64_t>(s));
-        const std::optional<Ray> ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
+        const std::optional<Ray> ray = sample_ray(camera, camera_ray_rng(scene.settings, pixel, s),
+                                                  x, y, centre_first && s == 0);
         if (!ray) continue;
         const auto hit = objects.intersect(*ray, 0.0f, std::numeric_limits<float>::infinity());
         if (!hit || hit->object_index < 0) continue;

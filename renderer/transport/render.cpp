@@ -115,7 +115,8 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       const std::uint32_t mask = pixel_ray_mask(pixel);
       for (int s = 0; s < settings.spp; ++s) {
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
-        const std::optional<Ray> ray = sample_ray(camera, rng, x, y, centre_first && s == 0);
+        const std::optional<Ray> ray =
+            sample_ray(camera, camera_ray_rng(settings, pixel, s), x, y, centre_first && s == 0);
         const PathSample sample = ray ? tracer.trace(*ray, rng, mask) : outside_the_image();
         sum += sample.radiance;
         const double y_sample = rec709_luminance(Vec3(sample.radiance));
@@ -155,6 +156,11 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
 constexpr int kTilesPerWave = 64;
 
 }  // namespace
+
+CounterRng camera_ray_rng(const RenderSettings& settings, std::uint64_t pixel, int s) {
+  const std::uint64_t seed = s == 0 ? settings.truth_seed.value_or(settings.seed) : settings.seed;
+  return {seed, pixel, static_cast<std::uint64_t>(s)};
+}
 
 std::optional<Ray> sample_ray(const Camera& camera, const CounterRng& rng, int x, int y,
                               bool centre) {

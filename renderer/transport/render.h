@@ -103,6 +103,10 @@ class ViewRenderer {
 };
 
 int tile_count(const View& view);
+// The generator of sample `s`'s camera ray in `pixel` (the paths take the sampling seed's):
+// the first sample's from the truth seed, the others' from the sampling seed.
+CounterRng camera_ray_rng(const RenderSettings& settings, std::uint64_t pixel, int s);
+
 // The camera ray of pixel (x, y)'s sample drawn by `rng` (its dimensions 0 and 1 jitter it);
 // `centre`: through the pixel's centre. The first sample (rng's sample 0) is the one the
 // AOVs record, and object truth (renderer/output/object_truth.h) traces it again. Empty

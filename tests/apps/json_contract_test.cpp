@@ -146,9 +146,21 @@ TEST(JsonContract, Crosscheck) {
 TEST(JsonContract, Compare) {
   TempDir dir;
   const auto set = dir / "set";
-  ASSERT_EQ(testing::run_landsim("render --spp 1 --width 32 --out " + set.string(), dir).exit_code,
+  // Two samples: the variance layer, and so the noise test's keys.
+  ASSERT_EQ(testing::run_landsim("render --spp 2 --width 32 --out " + set.string(), dir).exit_code,
             0);
   expect_contract("compare", set.string() + " " + set.string(), dir);
+}
+
+TEST(JsonContract, Sense) {
+  TempDir dir;
+  const auto set = dir / "set";
+  ASSERT_EQ(testing::run_landsim("render --spp 1 --width 32 --set sensor.adc_bits=12 --out " +
+                                     set.string(),
+                                 dir)
+                .exit_code,
+            0);
+  expect_contract("sense", set.string() + " --noise-seed 3", dir);
 }
 
 TEST(JsonContract, Annotate) {

@@ -181,3 +181,43 @@ TEST(Renderer, ProgressReachesOne) {
 
 }  // namespace
 }  // namespace landsim::renderer
+
+namespace landsim::renderer {
+namespace {
+
+// The variance layer (the variance of each pixel's mean luminance) predicts how much renders
+// with other seeds scatter: over the image, the layer's mean against the sample variance of
+// eight renders' luminance, pixel by pixel.
+TEST(Renderer, VarianceLayerPredictsTheScatterBetweenSeeds) {
+  Scene scene = testing::ridge_scene();
+  scene.settings.spp = 4;
+  constexpr int kRenders = 8;
+  std::vector<Film> films;
+  for (int seed = 1; seed <= kRenders; ++seed) {
+    scene.settings.seed = static_cast<std::uint64_t>(seed);
+    films.push_back(Renderer(scene).render(scene.views[0], {}));
+  }
+  double predicted = 0.0, observed = 0.0;
+  const Film& f0 = films[0];
+  for (int y = 0; y < f0.height(); ++y)
+    for (int x = 0; x < f0.width(); ++x) {
+      double sum = 0.0, squares = 0.0;
+      for (const Film& f : films) {
+        sum += f.luminance(x, y);
+        squares += static_cast<double>(f.luminance(x, y)) * f.luminance(x, y);
+        predicted += f.luminance_variance(x, y);
+      }
+      const double mean = sum / kRenders;
+      observed += (squares - kRenders * mean * mean) / (kRenders - 1);
+    }
+  predicted /= kRenders;
+  ASSERT_GT(observed, 0.0);
+  EXPECT_NEAR(predicted / observed, 1.0, 0.15) << predicted << " against " << observed;
+  // One sample says nothing of its noise: no variance.
+  scene.settings.spp = 1;
+  const Film single = Renderer(scene).render(scene.views[0], {});
+  for (const float v : single.variance_data()) ASSERT_EQ(v, 0.0f);
+}
+
+}  // namespace
+}  // namespace landsim::renderer

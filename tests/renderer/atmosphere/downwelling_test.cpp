@@ -1,0 +1,77 @@
+// The downwelling irradiance (docs/SENSOR.md "Irradiance and reflectance"): the sun's beam on a
+// horizontal surface and the sky's hemisphere, through the haze above the surface.
+#include "renderer/atmosphere/downwelling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "renderer/atmosphere/sky.h"
+#include "renderer/spectra/spectral_colour.h"
+
+namespace landsim::renderer {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+Scene sunny(double elevation_deg) {
+  Scene s;
+  s.sun.direction = {0.0, -std::cos(elevation_deg * kDeg), std::sin(elevation_deg * kDeg)};
+  s.sun.irradiance = sun_irradiance(s.sky, elevation_deg, s.sun.angular_radius);
+  return s;
+}
+
+TEST(Downwelling, SunOnTheHorizontalAndTheSkysHemisphere) {
+  const Scene s = sunny(35.0);
+  const Downwelling e = downwelling_irradiance(s, 0.0);
+  const SkyModel sky(s.sky, s.sun, s.ground.plain_albedo());
+  // The beam: the sun's irradiance times the sine of its elevation, bin by bin.
+  for (int k = 0; k < kSpectrumBins; ++k)
+    EXPECT_NEAR(e.direct[k], sky.sun_spectral_irradiance()[k] * std::sin(35.0 * kDeg),
+                1e-4 * sky.sun_spectral_irradiance()[k]);
+  // The sky: its spectral radiance x cos(theta) over the hemisphere, by another quadrature
+  // (midpoints of one-degree steps in theta and phi).
+  Spectrum want;
+  for (int i = 0; i < 90; ++i) {
+    const double theta = (i + 0.5) * kDeg;
+    for (int j = 0; j < 360; ++j) {
+      const double phi = (j + 0.5) * kDeg;
+      const Vec3f d(
+          Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+      want += sky.spectral_radiance(d) *
+              static_cast<float>(std::cos(theta) * std::sin(theta) * kDeg * kDeg);
+    }
+  }
+  for (int k = 0; k < kSpectrumBins; k += 3)
+    EXPECT_NEAR(e.diffuse[k] / want[k], 1.0, 0.005) << k;
+  // ...and about the sky model's own RGB integral (the RGB and spectral fits differ a little).
+  const Vec3f diffuse = spectrum_to_rgb(e.diffuse), model = sky.horizontal_irradiance();
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(diffuse[c] / model[c], 1.0, 0.06) << c;
+}
+
+TEST(Downwelling, HazeDimsTheBeamByItsOpticalDepth) {
+  Scene s = sunny(30.0);
+  const Downwelling clear = downwelling_irradiance(s, 100.0);
+  s.haze.enabled = true;
+  s.haze.visibility = 5000.0;
+  s.haze.scale_height = 800.0;
+  s.haze.base_height = 0.0;
+  const Downwelling hazy = downwelling_irradiance(s, 100.0);
+  // Extinction 3.912 / V at the base, falling with e^(-z / H): from z up along the sun, the
+  // optical depth is 3.912 / V x H x e^(-z / H) / sin(elevation).
+  const double depth = 3.912 / 5000.0 * 800.0 * std::exp(-100.0 / 800.0) / std::sin(30.0 * kDeg);
+  for (int k = 0; k < kSpectrumBins; k += 5)
+    EXPECT_NEAR(hazy.direct[k] / clear.direct[k], std::exp(-depth), 1e-4) << k;
+  // Higher up there is less haze above.
+  EXPECT_GT(downwelling_irradiance(s, 1500.0).direct[10], hazy.direct[10]);
+}
+
+TEST(Downwelling, NoBeamFromASunBelowTheHorizon) {
+  Scene s = sunny(20.0);
+  s.sun.direction.z = -s.sun.direction.z;
+  EXPECT_EQ(max_component(downwelling_irradiance(s, 0.0).direct), 0.0f);
+}
+
+}  // namespace
+}  // namespace landsim::renderer
