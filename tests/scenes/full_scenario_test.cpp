@@ -351,9 +351,27 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "[[views]]\nname = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n"
       "cells_per_pixel = 2\n[render]\nformats = [\"exr\", \"geotiff\"]\nsampling_seed = 9\n";
   EXPECT_EQ(load_scenario(f.dir.write("cameras.toml", cameras)).views.size(), 5u);
+  // The sensor's keys (docs/SENSOR.md); iso in a second sensor, gain and iso being exclusive.
+  const std::string sensor_view =
+      "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +
+      "\"\n[sun]\nelevation = 30\nazimuth = 200\n"
+      "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\ntarget = [300.0, 400.0, 150.0]\n"
+      "sensor = { exposure_time = 0.002 }\n[render]\nreflectance = true\n";
+  const std::string sensor = sensor_view +
+                             "[sensor]\nchannels = \"xyz\"\nquantum_efficiency = 0.5\n"
+                             "pixel_pitch = 4.0\nexposure_time = \"auto\"\nf_number = 5.6\n"
+                             "transmittance = 0.9\ngain = 1.5\nfull_well = 20000\n"
+                             "read_noise = 3.0\ndark_current = 10\nadc_bits = 14\n"
+                             "black_level = 64\nblur_sigma = 1.0\nnoise_seed = 7\n";
+  const Scenario with_sensor = load_scenario(f.dir.write("sensor.toml", sensor));
+  EXPECT_DOUBLE_EQ(*with_sensor.views[0].sensor->exposure_time_s, 0.002);
+  EXPECT_EQ(with_sensor.views[0].sensor->black_level_dn, 64);
+  const std::string iso = sensor_view + "[sensor]\niso = 400\n";
+  EXPECT_DOUBLE_EQ(*load_scenario(f.dir.write("iso.toml", iso)).sensor->model.iso, 400.0);
   const std::string text =
       f.text() + landsim::testing::read_file(source_file("scenes/examples/default.toml")) +
-      landsim::testing::read_file(source_file("scenes/examples/kagwene_cameras.toml")) + cameras;
+      landsim::testing::read_file(source_file("scenes/examples/kagwene_cameras.toml")) + cameras +
+      sensor + iso;
   for (const std::string& k : documented) {
     EXPECT_NE(text.find("\n" + k + " ="), std::string::npos)
         << "documented key '" << k << "' is set by no test scenario";

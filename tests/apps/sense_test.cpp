@@ -1,0 +1,120 @@
+// `landsim render` with [sensor] and `landsim sense` (docs/SENSOR.md): digital numbers beside
+// each EXR, the sensor model, irradiance and reflectance in the manifest and the EXR; sense
+// reproduces the render's numbers, re-noises them with another seed, and refuses a sensor
+// whose channels were not rendered.
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "tests/support/run_program.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim {
+namespace {
+
+using testing::TempDir;
+
+constexpr const char* kSensorSets =
+    "--spp 2 --width 48 --set sensor.adc_bits=12 --set sensor.exposure_time=0.0004 "
+    "--set render.reflectance=true";
+
+std::vector<std::uint16_t> digital_numbers(const std::filesystem::path& tif, int& channels) {
+  auto in = OIIO::ImageInput::open(tif.string());
+  EXPECT_TRUE(in) << tif;
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  channels = spec.nchannels;
+  EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT16);
+  std::vector<std::uint16_t> dn(static_cast<std::size_t>(spec.width) * spec.height * channels);
+  EXPECT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT16, dn.data()));
+  return dn;
+}
+
+TEST(CliSense, RenderWritesDigitalNumbersAndSenseReproducesThem) {
+  TempDir dir;
+  const auto set = dir / "set";
+  const auto r =
+      testing::run_landsim(std::string("render ") + kSensorSets + " --out " + set.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto manifest = nlohmann::json::parse(testing::read_file(set / "manifest.json"));
+  const auto& image = manifest["images"][0];
+  const auto& sensor = image["sensor"];
+  EXPECT_EQ(sensor["path"], "crater_dn.tif");
+  EXPECT_DOUBLE_EQ(sensor["exposure_time_used_s"].get<double>(), 0.0004);
+  ASSERT_EQ(sensor["channels"].size(), 3u);
+  EXPECT_EQ(sensor["channels"][1]["layer"], "photons.G");
+  EXPECT_GT(sensor["channels"][1]["mtf50_cycles_per_pixel"].get<double>(), 0.1);
+  EXPECT_GT(image["irradiance"]["illuminance_lux"].get<double>(), 1000.0);
+  EXPECT_TRUE(image["irradiance"]["layers"].contains("photons.R"));
+  // The EXR holds the photon and reflectance layers and the sensor it was rendered with.
+  Imf::InputFile exr((set / "crater.exr").c_str());
+  for (const char* layer : {"photons.R", "reflectance.R", "reflectance.photons.B", "Y.variance"})
+    EXPECT_NE(exr.header().channels().findChannel(layer), nullptr) << layer;
+  EXPECT_NE(exr.header().findTypedAttribute<Imf::StringAttribute>("landsim/sensor"), nullptr);
+  EXPECT_NE(exr.header().findTypedAttribute<Imf::StringAttribute>("landsim/irradiance"), nullptr);
+  int channels = 0;
+  const std::vector<std::uint16_t> rendered = digital_numbers(set / "crater_dn.tif", channels);
+  EXPECT_EQ(channels, 3);
+  std::uint16_t brightest = 0;
+  for (const std::uint16_t v : rendered) brightest = std::max(brightest, v);
+  EXPECT_GT(brightest, 100);
+  EXPECT_LE(brightest, 4095);
+  // The same sensor and seed: the same numbers, without tracing.
+  ASSERT_EQ(testing::run_landsim("sense " + set.string(), dir).exit_code, 0);
+  EXPECT_EQ(digital_numbers(set / "crater_dn.tif", channels), rendered);
+  // Another noise seed: other numbers, the manifest says which seed.
+  const auto again = testing::run_landsim("sense " + set.string() + " --noise-seed 5", dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(digital_numbers(set / "crater_dn.tif", channels), rendered);
+  const auto after = nlohmann::json::parse(testing::read_file(set / "manifest.json"));
+  EXPECT_EQ(after["images"][0]["sensor"]["noise_seed"], 5);
+}
+
+TEST(CliSense, RefusesChannelsNotRenderedAndSetsWithoutASensor) {
+  TempDir dir;
+  const auto set = dir / "set";
+  ASSERT_EQ(
+      testing::run_landsim(std::string("render ") + kSensorSets + " --out " + set.string(), dir)
+          .exit_code,
+      0);
+  const auto xyz = dir.write("xyz.toml", "[sensor]\nchannels = \"xyz\"\n");
+  const auto r = testing::run_landsim("sense " + set.string() + " --sensor " + xyz.string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("channel X was not rendered (its channels: R, G, B)"), std::string::npos)
+      << r.err;
+  const auto bad = dir.write("bad.toml", "[sensor]\nread_noise = -1\n");
+  const auto b = testing::run_landsim("sense " + set.string() + " --sensor " + bad.string(), dir);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("bad.toml:2"), std::string::npos) << b.err;
+  const auto plain = dir / "plain";
+  ASSERT_EQ(
+      testing::run_landsim("render --spp 1 --width 32 --out " + plain.string(), dir).exit_code, 0);
+  const auto p = testing::run_landsim("sense " + plain.string(), dir);
+  EXPECT_EQ(p.exit_code, 2);
+  EXPECT_NE(p.err.find("rendered without [sensor]"), std::string::npos) << p.err;
+}
+
+TEST(CliCompare, StatisticalCallsAnotherSamplingSeedNoise) {
+  TempDir dir;
+  const auto a = dir / "a", b = dir / "b";
+  ASSERT_EQ(testing::run_landsim("render --spp 4 --width 64 --out " + a.string(), dir).exit_code,
+            0);
+  ASSERT_EQ(testing::run_landsim(
+                "render --spp 4 --width 64 --set render.sampling_seed=2 --out " + b.string(), dir)
+                .exit_code,
+            0);
+  const auto r = testing::run_landsim(
+      "compare " + a.string() + " " + b.string() + " --statistical --max-layer-diff 0", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("within the renders' noise"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace landsim
