@@ -2,12 +2,14 @@
 // as contents, soil spectra, and the NDVI example's canopy and bare soil.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/input_error.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/camera.h"
+#include "renderer/output/reflectance.h"
 #include "renderer/transport/plain.h"
 #include "renderer/transport/render.h"
 #include "scenes/scenario.h"
@@ -18,13 +20,6 @@
 namespace landsim::scenes {
 namespace {
 
-// Band-weighted mean of a spectrum (reflectance) or its integral (radiance).
-double band_sum(const renderer::Spectrum& s, const renderer::SpectralBand& b) {
-  double sum = 0.0;
-  for (int k = 0; k < renderer::kSpectrumBins; ++k) sum += b.weight[k] * s[k];
-  return sum;
-}
-
 Scenario ndvi_example(int width, int height, int spp) {
   Scenario s = load_scenario(landsim::testing::source_file("scenes/examples/ndvi.toml"));
   s.views[0].width = width;
@@ -34,26 +29,24 @@ Scenario ndvi_example(int width, int height, int spp) {
 }
 
 TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
-  // Band reflectance factors: pi x band radiance / band irradiance on a level surface (a white
-  // panel's radiance, renderer/spectral_render_test). Measured NDVI: dense forest 0.7-0.9,
+  // NDVI from the reflectance layers (pi x band radiance / the image's downwelling band
+  // irradiance, docs/SENSOR.md) the example asks for. Measured NDVI: dense forest 0.7-0.9,
   // bare soil 0.0-0.2.
-  const renderer::Scene scene = build_scene(ndvi_example(120, 80, 4));
+  const Scenario scenario = ndvi_example(120, 80, 4);
+  ASSERT_TRUE(scenario.render.reflectance);
+  const renderer::Scene scene = build_scene(scenario);
   ASSERT_EQ(scene.bands.size(), 4u);
   ASSERT_EQ(scene.bands[2].name, "red");
   ASSERT_EQ(scene.bands[3].name, "nir");
-  const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
-  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
-  renderer::Spectrum e =
-      sky.sun_spectral_irradiance() * static_cast<float>(normalize(scene.sun.direction).z);
-  constexpr double kStep = std::numbers::pi / 180.0;
-  for (int i = 0; i < 90; ++i)
-    for (int j = 0; j < 360; ++j) {
-      const double t = (i + 0.5) * kStep, p = (j + 0.5) * kStep;
-      e += sky.spectral_radiance(
-               Vec3f(Vec3{std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)})) *
-           static_cast<float>(std::cos(t) * std::sin(t) * kStep * kStep);
-    }
-  const double e_red = band_sum(e, scene.bands[2]), e_nir = band_sum(e, scene.bands[3]);
+  renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+  renderer::add_reflectance(film, renderer::image_irradiance(scene, film));
+  const auto layer = [&film](const std::string& name) {
+    const auto& names = film.band_names();
+    const auto it = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(it, names.end()) << name;
+    return static_cast<int>(it - names.begin());
+  };
+  const int red_layer = layer("reflectance.band.red"), nir_layer = layer("reflectance.band.nir");
   // Mean reflectance factors of the stand (everything seen west of x = 290 m: leaves, bark
   // and the ground in the gaps, as a sensor's pixel mixes them) and of the bare ground east
   // of x = 310 m. Where a pixel looks: its camera ray at the film's depth.
@@ -75,8 +68,8 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
       const int which =
           east < 290.0 ? 0 : (east > 310.0 && object == renderer::ObjectClass::ground ? 1 : -1);
       if (which < 0) continue;
-      red[which] += std::numbers::pi * film.band(x, y, 2) / e_red;
-      nir[which] += std::numbers::pi * film.band(x, y, 3) / e_nir;
+      red[which] += film.band(x, y, red_layer);
+      nir[which] += film.band(x, y, nir_layer);
       ++count[which];
     }
   ASSERT_GT(count[0], 1000);
