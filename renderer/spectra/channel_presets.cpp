@@ -9,7 +9,10 @@
 namespace landsim::renderer {
 namespace {
 
-// A response sampled every 5 nm over landsim's spectra, scaled to peak 1.
+// A response sampled every 5 nm over landsim's spectra, scaled to peak 1. The analytic fits'
+// tails below 1e-3 of the peak are zero (under 0.1% of the response): a response reaching into the near infrared would
+// make the path tracer keep paths alive for light no channel sees (its roulette weighs the
+// bins some output sees).
 std::vector<ResponsePoint> sampled(const std::function<double(double)>& f) {
   std::vector<ResponsePoint> points;
   double peak = 0.0;
@@ -17,7 +20,7 @@ std::vector<ResponsePoint> sampled(const std::function<double(double)>& f) {
     points.push_back({nm, std::max(0.0, f(nm))});
     peak = std::max(peak, points.back().response);
   }
-  for (ResponsePoint& p : points) p.response /= peak;
+  for (ResponsePoint& p : points) p.response = p.response < 1e-3 * peak ? 0.0 : p.response / peak;
   return points;
 }
 
