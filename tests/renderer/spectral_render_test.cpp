@@ -43,17 +43,8 @@ TEST(SpectralRender, WhitePlaneBandRadianceIsBandIrradianceOverPi) {
   // The irradiance on the plane, bin by bin: the sun's spectrum x sin(elevation), plus the
   // sky's radiance integrated over the upper hemisphere (midpoint rule, 1 degree steps).
   const SkyModel sky(s.sky, s.sun, s.ground.albedo);
-  Spectrum e = sky.sun_spectral_irradiance() * static_cast<float>(s.sun.direction.z);
-  for (int i = 0; i < 90; ++i) {
-    const double theta = (i + 0.5) * kDeg;
-    for (int j = 0; j < 360; ++j) {
-      const double phi = (j + 0.5) * kDeg;
-      const Vec3f d(
-          Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
-      e += sky.spectral_radiance(d) *
-           static_cast<float>(std::cos(theta) * std::sin(theta) * kDeg * kDeg);
-    }
-  }
+  const Spectrum e = sky.sun_spectral_irradiance() * static_cast<float>(s.sun.direction.z) +
+                     testing::sky_hemisphere_irradiance(sky);
   for (int b = 0; b < 3; ++b) {
     double want = 0.0;
     for (int k = 0; k < kSpectrumBins; ++k) want += s.bands[b].weight[k] * e[k];

@@ -1,10 +1,32 @@
 #pragma once
 // Small synthetic scenes for renderer tests.
+#include <cmath>
+
 #include "renderer/scene.h"
 #include "terrain/elevation_grid.h"
 #include "terrain/ground_mesh.h"
 
 namespace landsim::renderer::testing {
+
+// The irradiance the sky alone gives a horizontal surface, bin by bin: its spectral radiance
+// x cos(theta) over the upper hemisphere, by the midpoint rule in one-degree steps of theta
+// and phi (an independent quadrature for tests of the renderer's own).
+template <class Sky>
+Spectrum sky_hemisphere_irradiance(const Sky& sky) {
+  constexpr double kDeg = 3.14159265358979323846 / 180.0;
+  Spectrum e;
+  for (int i = 0; i < 90; ++i) {
+    const double theta = (i + 0.5) * kDeg;
+    for (int j = 0; j < 360; ++j) {
+      const double phi = (j + 0.5) * kDeg;
+      const Vec3f d(
+          Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+      e += sky.spectral_radiance(d) *
+           static_cast<float>(std::cos(theta) * std::sin(theta) * kDeg * kDeg);
+    }
+  }
+  return e;
+}
 
 // A flat square of ground, `half` metres each way from the origin, at height `z`.
 inline terrain::GroundMesh flat_ground(double half, float z = 0.0f) {

@@ -9,6 +9,7 @@
 
 #include "renderer/atmosphere/sky.h"
 #include "renderer/spectra/spectral_colour.h"
+#include "tests/renderer/test_scenes.h"
 
 namespace landsim::renderer {
 namespace {
@@ -32,19 +33,8 @@ TEST(Downwelling, SunOnTheHorizontalAndTheSkysHemisphere) {
                 1e-4 * sky.sun_spectral_irradiance()[k]);
   // The sky: its spectral radiance x cos(theta) over the hemisphere, by another quadrature
   // (midpoints of one-degree steps in theta and phi).
-  Spectrum want;
-  for (int i = 0; i < 90; ++i) {
-    const double theta = (i + 0.5) * kDeg;
-    for (int j = 0; j < 360; ++j) {
-      const double phi = (j + 0.5) * kDeg;
-      const Vec3f d(
-          Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
-      want += sky.spectral_radiance(d) *
-              static_cast<float>(std::cos(theta) * std::sin(theta) * kDeg * kDeg);
-    }
-  }
-  for (int k = 0; k < kSpectrumBins; k += 3)
-    EXPECT_NEAR(e.diffuse[k] / want[k], 1.0, 0.005) << k;
+  const Spectrum want = testing::sky_hemisphere_irradiance(sky);
+  for (int k = 0; k < kSpectrumBins; k += 3) EXPECT_NEAR(e.diffuse[k] / want[k], 1.0, 0.005) << k;
   // ...and about the sky model's own RGB integral (the RGB and spectral fits differ a little).
   const Vec3f diffuse = spectrum_to_rgb(e.diffuse), model = sky.horizontal_irradiance();
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(diffuse[c] / model[c], 1.0, 0.06) << c;

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/atmosphere/sky.h"
+#include "renderer/transport/render.h"
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -55,7 +58,8 @@ TEST(Optics, PreservesAFlatFieldAndTheTotal) {
   for (const float v : point) total += v;
   const auto encircled = [&](double r_px) {
     const double v = kPi * r_px * m.pixel_pitch_um / (0.55 * m.f_number);
-    return 1000.0 * (1.0 - std::pow(std::cyl_bessel_j(0.0, v), 2) - std::pow(std::cyl_bessel_j(1.0, v), 2));
+    return 1000.0 *
+           (1.0 - std::pow(std::cyl_bessel_j(0.0, v), 2) - std::pow(std::cyl_bessel_j(1.0, v), 2));
   };
   EXPECT_GT(total, encircled(40.5));
   EXPECT_LT(total, encircled(40.5 * std::sqrt(2.0)));
@@ -137,6 +141,42 @@ TEST(Optics, SlantedEdgeMtf50MatchesTheModel) {
   ASSERT_LT(model, 0.35);
   EXPECT_NEAR(measured_mtf50(image, kSide, kSlope) / model, 1.0, 0.05)
       << measured_mtf50(image, kSide, kSlope) << " against " << model;
+}
+
+// A path-traced edge: flat ground, dark west of the line x = 0.1 y and bright east of it (two
+// materials meeting exactly on the line), seen straight down through an orthographic camera
+// of 0.1 m pixels; its luminance through the optics.
+TEST(Optics, RenderedSlantedEdgeMtf50MatchesTheModel) {
+  constexpr float kHalf = 100.0f, kSlope = 0.1f;
+  Scene s;
+  terrain::GroundMesh& g = s.ground.mesh;
+  g.vertices = {{-kHalf, -kHalf, 0}, {-kSlope * kHalf, -kHalf, 0}, {kHalf, -kHalf, 0},
+                {kHalf, kHalf, 0},   {kSlope * kHalf, kHalf, 0},   {-kHalf, kHalf, 0}};
+  g.normals.assign(g.vertices.size(), Vec3f{0, 0, 1});
+  g.indices = {0, 1, 4, 0, 4, 5, 1, 2, 3, 1, 3, 4};
+  s.ground.albedo = {0.05f, 0.05f, 0.05f};
+  s.ground.materials = {GroundMaterial{{0.8f, 0.8f, 0.8f}, false}};
+  s.ground.triangle_material = {0, 0, 1, 1};
+  s.ground.plain = false;
+  s.sun.direction = normalize(Vec3{0.2, -0.3, 0.9});
+  s.sun.irradiance = sun_irradiance(s.sky, 64.0, s.sun.angular_radius);
+  s.settings.spp = 64;
+  View v{"edge", {0.0, 0.0, 50.0}, {0.0, 0.0, 0.0}, 40.0, 128, 128};
+  v.lens.projection = Projection::orthographic;
+  v.lens.extent_width = v.lens.extent_height = 12.8;
+  s.views.push_back(v);
+  const Film film = Renderer(s).render(s.views[0], {});
+  std::vector<float> image(film.pixel_count());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      image[static_cast<std::size_t>(y * film.width() + x)] = film.luminance(x, y);
+  // North up: the line runs from the image's centre to the right going up, x - 64 = -0.1
+  // (y - 64) in pixels.
+  const SensorModel m = sharp_lens();
+  apply_optics(image, 128, 128, 550.0, m);
+  const double model = mtf50(550.0, m);
+  EXPECT_NEAR(measured_mtf50(image, 128, -kSlope) / model, 1.0, 0.05)
+      << measured_mtf50(image, 128, -kSlope) << " against " << model;
 }
 
 }  // namespace
