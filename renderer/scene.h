@@ -185,6 +185,12 @@ struct RenderSettings {
   // Seeds where each pixel's first sample falls (the truth layers are taken from it): the
   // scene's seed, so that another sampling seed keeps them; empty: `seed`.
   std::optional<std::uint64_t> truth_seed;
+  // Adaptive sampling (docs/PERFORMANCE.md "Adaptive sampling"): above 0, a pixel stops once
+  // the standard error of its luminance is at most this fraction of its mean, checked after
+  // `min_spp` samples and every kAdaptiveBatch after; `spp` is then the most a pixel takes.
+  // 0: every pixel takes `spp` samples.
+  double noise_threshold = 0.0;
+  int min_spp = 16;
   int max_bounces = 4;
   // The preview PNG's exposure value at ISO 100; empty: automatic (renderer/output/exposure.h).
   // The EXR stays in cd/m2 either way.

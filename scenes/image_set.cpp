@@ -114,6 +114,7 @@ renderer::ImageMetadata metadata(const Scenario& s, const renderer::View& v,
                                             s.haze.scale_height)
                               : std::string("none")},
       {"spp", std::to_string(s.render.spp)},
+      {"noise_threshold", fmt::format("{}", s.render.noise_threshold)},
       {"seed", std::to_string(s.render.seed)},
       {"sampling_seed", std::to_string(scene.settings.seed)}};
   // What each band layer measures: its box or response file.
@@ -228,8 +229,8 @@ nlohmann::json irradiance_json(const renderer::ImageIrradiance& e, const rendere
 // The manifest entry of an image already written, from what its EXR keeps.
 nlohmann::json saved_entry(const Scenario& s, std::size_t view, const std::string& stem,
                            std::size_t frame, const std::filesystem::path& exr) {
-  nlohmann::json entry = manifest_entry(s.views[view], stem, frame, s.render.frames[frame],
-                                        saved_json(exr, "camera"));
+  nlohmann::json entry =
+      manifest_entry(s.views[view], stem, frame, s.render.frames[frame], saved_json(exr, "camera"));
   if (!s.objects.empty()) entry["objects"] = saved_json(exr, "objects");
   entry["irradiance"] = saved_json(exr, "irradiance");
   if (s.views[view].sensor) entry["sensor"] = saved_json(exr, "sensor");
@@ -514,8 +515,9 @@ std::vector<std::string> check_image_set(const Scenario& scenario,
       if (vs.sensor && !std::filesystem::exists(out_dir / sensor_image_name(stem, *vs.sensor)))
         missing.push_back(sensor_image_name(stem, *vs.sensor));
       if (missing.empty())
-        entries.push_back(saved_entry(scenario, static_cast<std::size_t>(&vs - scenario.views.data()),
-                                      stem, f, out_dir / (stem + ".exr")));
+        entries.push_back(saved_entry(scenario,
+                                      static_cast<std::size_t>(&vs - scenario.views.data()), stem,
+                                      f, out_dir / (stem + ".exr")));
     }
   if (missing.empty()) write_manifest(out_dir / "manifest.json", scenario, entries);
   return missing;

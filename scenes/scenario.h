@@ -57,6 +57,9 @@ struct ViewSettings : renderer::View {
 // field's value as its default.
 struct RenderSection {
   int spp = renderer::RenderSettings{}.spp;
+  // Adaptive sampling: `spp` the most a pixel takes (renderer/scene.h RenderSettings).
+  double noise_threshold = renderer::RenderSettings{}.noise_threshold;
+  std::optional<int> min_spp;  // empty: 16, or spp when that is fewer
   std::uint64_t seed = renderer::RenderSettings{}.seed;
   // Seeds the Monte Carlo sampling alone (pixel jitter, light paths); the scene (placement,
   // variants, grass, ground detail) stays the `seed`'s. Empty: the `seed`.

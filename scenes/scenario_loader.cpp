@@ -241,6 +241,12 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   TableReader r(t, "render", file);
   RenderSection s;
   s.spp = static_cast<int>(r.integer("spp", 1, kMaxSpp, s.spp));
+  s.noise_threshold = r.number("noise_threshold", Range{0.0, 1.0}, s.noise_threshold);
+  if (r.has("min_spp")) {
+    if (!(s.noise_threshold > 0.0))
+      r.fail("min_spp", "is for adaptive sampling: give noise_threshold (above 0) too");
+    s.min_spp = static_cast<int>(r.integer("min_spp", 1, s.spp));
+  }
   s.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT64_MAX, s.seed));
   if (r.has("sampling_seed"))
     s.sampling_seed = static_cast<std::uint64_t>(r.integer("sampling_seed", 0, INT64_MAX));

@@ -19,11 +19,12 @@ inline constexpr double kEmbreeInstance = 353.0;     // geometry object, transfo
 // The renderer's own record of a top-level entry (what it is, which level) and of an
 // instance's level blend.
 inline constexpr double kTopLevelRecord = 12.0 + 24.0;
-// A film pixel: colour, depth, normal, albedo, five id planes, coverage, position and the
-// luminance variance (20 four-byte values, 80 bytes), and the copies the EXR writer and the
-// preview hold while writing (measured 70 bytes in all at the peak of a 3840 x 2160 render
-// before coverage, position and variance; their 20 bytes are counted, not measured).
-inline constexpr double kFilmPixel = 90.0;
+// A film pixel: colour, depth, normal, albedo, five id planes, coverage, position, the
+// luminance variance and the samples taken (21 four-byte values, 84 bytes), and the copies
+// the EXR writer and the preview hold while writing (measured 70 bytes in all at the peak of
+// a 3840 x 2160 render before coverage, position, variance and samples; their 24 bytes are
+// counted, not measured).
+inline constexpr double kFilmPixel = 94.0;
 // Each sensor band adds a four-byte plane (written to the EXR from the film itself).
 inline constexpr double kFilmBandPixel = 4.0;
 // The image module's libraries (OpenImageIO, OpenColorIO and theirs), resident once loaded:

@@ -17,6 +17,7 @@ Film::Film(int width, int height, std::vector<std::string> band_names)
       instance_(pixel_count(), kNoId),
       level_(pixel_count()),
       target_(pixel_count()),
+      samples_(pixel_count()),
       coverage_(pixel_count()),
       position_(3 * pixel_count(), kNoPosition),
       variance_(pixel_count()),

@@ -75,6 +75,9 @@ class Film {
   // difference from Monte Carlo noise (docs/SENSOR.md "Noise of the render").
   float luminance_variance(int x, int y) const { return variance_[index(x, y)]; }
   void set_luminance_variance(int x, int y, float v) { variance_[index(x, y)] = v; }
+  // The samples the pixel took (every pixel the same but under adaptive sampling).
+  std::uint32_t samples(int x, int y) const { return samples_[index(x, y)]; }
+  void set_samples(int x, int y, std::uint32_t n) { samples_[index(x, y)] = n; }
   float coverage(int x, int y) const { return coverage_[index(x, y)]; }
   Vec3f position(int x, int y) const;
 
@@ -102,6 +105,8 @@ class Film {
   std::vector<float>& coverage_data() { return coverage_; }
   std::vector<float>& variance_data() { return variance_; }
   const std::vector<float>& variance_data() const { return variance_; }
+  std::vector<std::uint32_t>& samples_data() { return samples_; }
+  const std::vector<std::uint32_t>& samples_data() const { return samples_; }
   const std::vector<float>& coverage_data() const { return coverage_; }
 
  private:
@@ -115,7 +120,7 @@ class Film {
   int width_;
   int height_;
   std::vector<float> rgb_, depth_, normal_, albedo_;
-  std::vector<std::uint32_t> object_, species_, instance_, level_, target_;
+  std::vector<std::uint32_t> object_, species_, instance_, level_, target_, samples_;
   std::vector<float> coverage_, position_, variance_;
   std::vector<std::string> band_names_;
   std::vector<std::vector<float>> bands_;  // per band, a plane

@@ -83,13 +83,13 @@ struct Channel {
   bool required;  // in every landsim EXR (coverage came later: zero when absent)
 };
 constexpr Channel kChannels[] = {
-    {"R", false, true},         {"G", false, true},          {"B", false, true},
-    {"Z", false, true},         {"N.X", false, true},        {"N.Y", false, true},
-    {"N.Z", false, true},       {"albedo.R", false, true},   {"albedo.G", false, true},
-    {"albedo.B", false, true},  {"object", true, true},      {"species", true, true},
-    {"instance", true, true},   {"lod", true, true},         {"target", true, true},
-    {"coverage", false, false}, {"P.X", false, false},       {"P.Y", false, false},
-    {"P.Z", false, false},      {"Y.variance", false, false}};
+    {"R", false, true},         {"G", false, true},           {"B", false, true},
+    {"Z", false, true},         {"N.X", false, true},         {"N.Y", false, true},
+    {"N.Z", false, true},       {"albedo.R", false, true},    {"albedo.G", false, true},
+    {"albedo.B", false, true},  {"object", true, true},       {"species", true, true},
+    {"instance", true, true},   {"lod", true, true},          {"target", true, true},
+    {"coverage", false, false}, {"P.X", false, false},        {"P.Y", false, false},
+    {"P.Z", false, false},      {"Y.variance", false, false}, {"spp", true, false}};
 
 // Sensor bands are channels of their own: "band." and the band's name.
 constexpr std::string_view kBandPrefix = "band.";
@@ -122,6 +122,7 @@ Imf::FrameBuffer frame_buffer(Film& film) {
   add_slice(fb, "P.Y", Imf::FLOAT, film.position_data(), 3, 1, w);
   add_slice(fb, "P.Z", Imf::FLOAT, film.position_data(), 3, 2, w);
   add_slice(fb, "Y.variance", Imf::FLOAT, film.variance_data(), 1, 0, w);
+  add_slice(fb, "spp", Imf::UINT, film.samples_data(), 1, 0, w);
   for (int b = 0; b < film.band_count(); ++b)
     add_slice(fb, band_channel(film.band_name(b)).c_str(), Imf::FLOAT, film.band_data(b), 1, 0, w);
   return fb;

@@ -85,6 +85,21 @@ float mean_variance(double sum, double squares, int n) {
   return static_cast<float>(sample_variance / count);
 }
 
+// Adaptive sampling checks a pixel's convergence every this many samples after its minimum.
+constexpr int kAdaptiveBatch = 4;
+
+// Whether a pixel with `s` samples taken (their luminance's sum and sum of squares) may stop:
+// adaptive sampling on, at least min_spp (and 2) samples, at a batch boundary, and its
+// luminance's standard error at most noise_threshold of its mean. Only the pixel's own
+// samples decide, so the image is the same on any thread count and across resume.
+bool converged(const RenderSettings& settings, int s, double sum, double squares) {
+  if (!(settings.noise_threshold > 0.0) || s < std::max(settings.min_spp, 2)) return false;
+  if ((s - settings.min_spp) % kAdaptiveBatch != 0) return false;
+  const double mean = sum / s;
+  const double standard_error = std::sqrt(static_cast<double>(mean_variance(sum, squares, s)));
+  return standard_error <= settings.noise_threshold * std::abs(mean);
+}
+
 // A sample of a pixel no ray leaves: black, and "none" in every truth layer.
 PathSample outside_the_image() {
   PathSample s;
@@ -113,7 +128,10 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       PixelAovs aovs;
       TargetTally targets;
       const std::uint32_t mask = pixel_ray_mask(pixel);
+      int n = 0;  // samples taken
       for (int s = 0; s < settings.spp; ++s) {
+        if (converged(settings, s, luminance_sum, luminance_squares)) break;
+        n = s + 1;
         const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
         const std::optional<Ray> ray =
             sample_ray(camera, camera_ray_rng(settings, pixel, s), x, y, centre_first && s == 0);
@@ -140,11 +158,11 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       if (first.species >= 0) aovs.species = static_cast<std::uint32_t>(first.species);
       aovs.level = first.level;
       aovs.target = targets.most();
-      aovs.coverage = targets.fraction(settings.spp);
-      const float inverse_spp = 1.0f / static_cast<float>(settings.spp);
+      aovs.coverage = targets.fraction(n);
+      const float inverse_spp = 1.0f / static_cast<float>(n);
       film.set(x, y, sum * inverse_spp, aovs);
-      film.set_luminance_variance(x, y,
-                                  mean_variance(luminance_sum, luminance_squares, settings.spp));
+      film.set_luminance_variance(x, y, mean_variance(luminance_sum, luminance_squares, n));
+      film.set_samples(x, y, static_cast<std::uint32_t>(n));
       for (float& b : band_sum) b *= inverse_spp;
       film.set_bands(x, y, band_sum.data());
     }
@@ -314,8 +332,8 @@ Film make_film(const Scene& scene, const View& view) {
 
 // A tile's pixels, row by row: RGB, depth, normal, albedo (float bits), then object,
 // species, instance, level, target, then coverage, position and the luminance variance
-// (float bits): 20 words per pixel, then the bands (float bits).
-constexpr std::size_t kWordsPerPixel = 20;
+// (float bits), then the samples taken: 21 words per pixel, then the bands (float bits).
+constexpr std::size_t kWordsPerPixel = 21;
 
 std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
   const TileGrid grid = tile_grid(film.width(), film.height());
@@ -343,7 +361,8 @@ std::vector<std::uint32_t> pack_tiles(const Film& film, int first, int last) {
                                  bits(film.position(x, y).x),
                                  bits(film.position(x, y).y),
                                  bits(film.position(x, y).z),
-                                 bits(film.luminance_variance(x, y))});
+                                 bits(film.luminance_variance(x, y)),
+                                 film.samples(x, y)});
       for (int b = 0; b < film.band_count(); ++b) words.push_back(bits(film.band(x, y, b)));
     });
   return words;
@@ -370,6 +389,7 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
       aovs.position = {f(k + 16), f(k + 17), f(k + 18)};
       film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
       film.set_luminance_variance(x, y, f(k + 19));
+      film.set_samples(x, y, words[k + 20]);
       std::array<float, kMaxBands> bands{};
       for (int b = 0; b < film.band_count(); ++b)
         bands[static_cast<std::size_t>(b)] = f(k + kWordsPerPixel + static_cast<std::size_t>(b));

@@ -356,7 +356,8 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +
       "\"\n[sun]\nelevation = 30\nazimuth = 200\n"
       "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\ntarget = [300.0, 400.0, 150.0]\n"
-      "sensor = { exposure_time = 0.002 }\n[render]\nreflectance = true\n";
+      "sensor = { exposure_time = 0.002 }\n[render]\nreflectance = true\nnoise_threshold = "
+      "0.05\nmin_spp = 8\n";
   const std::string sensor = sensor_view +
                              "[sensor]\nchannels = \"xyz\"\nquantum_efficiency = 0.5\n"
                              "pixel_pitch = 4.0\nexposure_time = \"auto\"\nf_number = 5.6\n"

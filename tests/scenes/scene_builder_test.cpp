@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/input_error.h"
 #include "core/input_warnings.h"
 #include "renderer/transport/render.h"
 #include "tests/support/temp_dir.h"
@@ -154,6 +155,35 @@ TEST(SceneBuilder, TheSamplingSeedChangesTheNoiseNotTheScene) {
   const renderer::Film a = renderer::Renderer(plain).render(plain.views[0], {});
   const renderer::Film b = renderer::Renderer(other).render(other.views[0], {});
   EXPECT_NE(a.rgb_data(), b.rgb_data());
+}
+
+// [render] noise_threshold and min_spp reach the renderer; min_spp needs the threshold and
+// stays within spp.
+TEST(SceneBuilder, AdaptiveSamplingKeys) {
+  const std::string data = landsim::testing::source_file("data").string();
+  const auto text = [&](const std::string& render) {
+    return "[terrain]\nelevation = \"" + data +
+           "/terrain/volcano.asc\"\n[sun]\nelevation = 40\nazimuth = 200\n[[views]]\nname = "
+           "\"v\"\nposition = [300.0, 560.0, 170.0]\ntarget = [300.0, 700.0, 120.0]\nwidth = "
+           "32\nheight = 24\n[render]\n" +
+           render;
+  };
+  const renderer::Scene adaptive = build_scene(
+      parse_scenario(text("spp = 256\nnoise_threshold = 0.05\nmin_spp = 32\n"), "a.toml", "."));
+  EXPECT_DOUBLE_EQ(adaptive.settings.noise_threshold, 0.05);
+  EXPECT_EQ(adaptive.settings.min_spp, 32);
+  EXPECT_EQ(build_scene(parse_scenario(text("spp = 8\n"), "b.toml", ".")).settings.min_spp, 8);
+  const auto refused = [&](const std::string& render, const std::string& what) {
+    try {
+      parse_scenario(text(render), "c.toml", ".");
+      ADD_FAILURE() << "accepted " << render;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  refused("min_spp = 4\n", "give noise_threshold");
+  refused("spp = 16\nnoise_threshold = 0.1\nmin_spp = 32\n", "min_spp");
+  refused("noise_threshold = 2\n", "noise_threshold");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -217,6 +218,45 @@ TEST(Renderer, VarianceLayerPredictsTheScatterBetweenSeeds) {
   scene.settings.spp = 1;
   const Film single = Renderer(scene).render(scene.views[0], {});
   for (const float v : single.variance_data()) ASSERT_EQ(v, 0.0f);
+}
+
+// Adaptive sampling: each pixel stops once its luminance's standard error is at most the
+// threshold's share of its mean, after min_spp samples and in batches of 4; the samples layer
+// says how many it took; the same image on one and two threads; off, every pixel takes spp.
+TEST(Renderer, AdaptiveSamplingStopsConvergedPixels) {
+  Scene scene = testing::ridge_scene();
+  scene.settings.spp = 64;
+  const Film uniform = Renderer(scene).render(scene.views[0], {});
+  for (const std::uint32_t n : uniform.samples_data()) ASSERT_EQ(n, 64u);
+  scene.settings.noise_threshold = 0.02;
+  scene.settings.min_spp = 8;
+  RenderOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const Film a = Renderer(scene).render(scene.views[0], one);
+  const Film b = Renderer(scene).render(scene.views[0], two);
+  EXPECT_EQ(a.rgb_data(), b.rgb_data());
+  EXPECT_EQ(a.samples_data(), b.samples_data());
+  std::uint32_t fewest = 64, most = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      const std::uint32_t n = a.samples(x, y);
+      fewest = std::min(fewest, n);
+      most = std::max(most, n);
+      ASSERT_GE(n, 8u);
+      ASSERT_LE(n, 64u);
+      ASSERT_TRUE(n == 64u || (n - 8u) % 4u == 0u) << n;  // at a batch boundary or the cap
+      // A pixel that stopped early met the threshold; one that went on to the cap might not.
+      if (n < 64u) {
+        const double se = std::sqrt(static_cast<double>(a.luminance_variance(x, y)));
+        EXPECT_LE(se, 0.02 * a.luminance(x, y) * 1.0001) << x << "," << y;
+      }
+    }
+  EXPECT_EQ(fewest, 8u);  // the sky and the smooth slopes stop at once
+  EXPECT_GT(most, 8u);    // the noisier pixels go on
+  // The first sample, and so the truth layers, are the uniform render's.
+  EXPECT_EQ(a.object_data(), uniform.object_data());
+  EXPECT_EQ(a.depth_data(), uniform.depth_data());
 }
 
 }  // namespace
