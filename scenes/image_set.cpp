@@ -334,6 +334,28 @@ renderer::RenderOptions render_options(const SetRun& run, const renderer::View& 
 
 // Renders one image (with the other processes when shared) and, on the writing process,
 // writes its EXR and preview; empty on the others.
+// What an image gets beyond its radiance and truth (docs/SENSOR.md): the downwelling
+// irradiance, the reflectance layers (added to `film`) and the sensor's digital numbers
+// (written beside it); their entries go to `meta` and, returned, to the manifest.
+nlohmann::json add_light_and_sensor(const SetRun& run, const renderer::Scene& scene,
+                                    const Image& image, renderer::Film& film,
+                                    renderer::ImageMetadata& meta) {
+  nlohmann::json entries = nlohmann::json::object();
+  const renderer::ImageIrradiance irradiance = renderer::image_irradiance(scene, film);
+  entries["irradiance"] = irradiance_json(irradiance, scene);
+  meta.emplace_back("irradiance", entries["irradiance"].dump());
+  if (run.scenario.render.reflectance) renderer::add_reflectance(film, irradiance);
+  const std::optional<renderer::SensorModel>& sensor = run.scenario.views[image.view].sensor;
+  if (sensor) {
+    const renderer::View& view = scene.views[image.view];
+    entries["sensor"] =
+        write_sensor_image(film, *sensor, run.options.out_dir, image.stem,
+                           {detail::map_geotransform(view, scene.origin), scene.crs_wkt});
+    meta.emplace_back("sensor", entries["sensor"].dump());
+  }
+  return entries;
+}
+
 std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scene& scene,
                                          const renderer::Renderer& renderer, const Image& image,
                                          bool first) {
@@ -356,19 +378,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   // viewer can reproduce the PNG from the EXR.
   const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
   meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
-  // What lights the ground, and the reflectance factors it gives.
-  const renderer::ImageIrradiance irradiance = renderer::image_irradiance(scene, film);
-  const nlohmann::json irradiance_entry = irradiance_json(irradiance, scene);
-  meta.emplace_back("irradiance", irradiance_entry.dump());
-  if (s.render.reflectance) renderer::add_reflectance(film, irradiance);
-  // The sensor's digital numbers beside the EXR (docs/SENSOR.md).
-  const ViewSettings& settings = s.views[image.view];
-  nlohmann::json sensor;
-  if (settings.sensor) {
-    sensor = write_sensor_image(film, *settings.sensor, run.options.out_dir, image.stem,
-                                {detail::map_geotransform(view, scene.origin), scene.crs_wkt});
-    meta.emplace_back("sensor", sensor.dump());
-  }
+  const nlohmann::json light_and_sensor = add_light_and_sensor(run, scene, image, film, meta);
   // Truth about the scene objects, in the manifest and (for resume) in the EXR.
   nlohmann::json objects;
   if (!scene.objects.empty()) {
@@ -392,8 +402,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   WrittenImage out{
       report, manifest_entry(s.views[image.view], image.stem, image.frame, time, camera_model)};
   if (!objects.is_null()) out.manifest["objects"] = objects;
-  out.manifest["irradiance"] = irradiance_entry;
-  if (!sensor.is_null()) out.manifest["sensor"] = sensor;
+  out.manifest.update(light_and_sensor);
   return out;
 }
 
