@@ -154,7 +154,8 @@ nlohmann::json write_sensor_image(const renderer::Film& film, const renderer::Se
   const std::vector<std::vector<float>> planes = optical_planes(film, m, stem);
   std::vector<const std::vector<float>*> pointers;
   for (const auto& p : planes) pointers.push_back(&p);
-  const double exposure = m.exposure_time_s.value_or(renderer::auto_exposure_time(pointers, m));
+  const double exposure =
+      m.exposure_time_s ? *m.exposure_time_s : renderer::auto_exposure_time(pointers, m);
   std::vector<std::vector<std::uint16_t>> dn;
   for (std::size_t c = 0; c < planes.size(); ++c)
     dn.push_back(renderer::digitise(planes[c], w, h, exposure, m, stem, static_cast<int>(c)));
