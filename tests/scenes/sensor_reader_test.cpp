@@ -58,8 +58,9 @@ TEST(SensorReader, ChannelsFromBoxesAndFiles) {
   const landsim::testing::TempDir dir;
   std::ofstream(dir / "nir.csv") << "wavelength,response\n780,0\n800,1\n880,1\n900,0\n";
   const std::string text = scenario_text(
-      "", "[sensor]\nchannels = [{name = \"red\", centre = 660, width = 60}, {name = \"nir\", "
-          "response = \"nir.csv\"}]\nadc_bits = 12");
+      "",
+      "[sensor]\nchannels = [{name = \"red\", centre = 660, width = 60}, {name = \"nir\", "
+      "response = \"nir.csv\"}]\nadc_bits = 12");
   const Scenario s = parse_scenario(text, (dir / "s.toml").string(), dir.path().string());
   const auto& c = s.sensor->model.channels;
   ASSERT_EQ(c.size(), 2u);
@@ -75,23 +76,25 @@ TEST(SensorReader, AViewOverridesAnyKeyButTheChannels) {
   const renderer::SensorModel& m = *s.views[0].sensor;
   EXPECT_DOUBLE_EQ(*m.exposure_time_s, 0.002);
   EXPECT_EQ(m.noise_seed, 9u);
-  EXPECT_DOUBLE_EQ(m.read_noise_e, 3.0);           // [sensor]'s
+  EXPECT_DOUBLE_EQ(m.read_noise_e, 3.0);                     // [sensor]'s
   EXPECT_DOUBLE_EQ(*s.sensor->model.exposure_time_s, 0.01);  // unchanged for other views
-  EXPECT_NE(error_of("sensor = { channels = \"xyz\" }", "[sensor]").find("the channels are the scene's"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("sensor = { channels = \"xyz\" }", "[sensor]").find("the channels are the scene's"),
+      std::string::npos);
   EXPECT_NE(error_of("sensor = { noise_seed = 2 }", "").find("lacks"), std::string::npos);
 }
 
 TEST(SensorReader, TheLensSharesItsFNumberAndPitch) {
-  const Scenario s = parse("focal_length = 50\npixel_pitch = 4.5\nf_number = 5.6\nfocus_distance = 500",
-                           "[sensor]");
+  const Scenario s = parse(
+      "focal_length = 50\npixel_pitch = 4.5\nf_number = 5.6\nfocus_distance = 500", "[sensor]");
   EXPECT_DOUBLE_EQ(s.views[0].sensor->f_number, 5.6);
   EXPECT_NEAR(s.views[0].sensor->pixel_pitch_um, 4.5, 1e-9);
-  const std::string f = error_of(
-      "focal_length = 50\npixel_pitch = 4.5\nf_number = 5.6\nfocus_distance = 500",
-      "[sensor]\nf_number = 8");
+  const std::string f =
+      error_of("focal_length = 50\npixel_pitch = 4.5\nf_number = 5.6\nfocus_distance = 500",
+               "[sensor]\nf_number = 8");
   EXPECT_NE(f.find("f_number 8 differs from the view's lens"), std::string::npos) << f;
-  const std::string p = error_of("focal_length = 50\npixel_pitch = 4.5", "[sensor]\npixel_pitch = 3");
+  const std::string p =
+      error_of("focal_length = 50\npixel_pitch = 4.5", "[sensor]\npixel_pitch = 3");
   EXPECT_NE(p.find("pixel_pitch 3 um differs"), std::string::npos) << p;
 }
 
@@ -108,16 +111,31 @@ TEST(SensorReader, RefusalsNameTheKey) {
   refused("[sensor]\nexposure_time = -1", "exposure_time");
   refused("[sensor]\nexposure_time = \"fast\"", "\"auto\" or seconds");
   refused("[sensor]\nquantum_efficiency = 1.5", "quantum_efficiency");
-  refused("[sensor]\nchannels = [{name = \"a\", centre = 500, width = 20}, {name = \"b\", "
-          "centre = 600, width = 20}]\nadc_bits = 8",
-          "holds 1, 3 or 4 channels");
-  refused("[sensor]\nchannels = [{name = \"a\", centre = 500, width = 20}, {name = \"a\", "
-          "centre = 600, width = 20}]",
-          "used twice");
+  refused(
+      "[sensor]\nchannels = [{name = \"a\", centre = 500, width = 20}, {name = \"b\", "
+      "centre = 600, width = 20}]\nadc_bits = 8",
+      "holds 1, 3 or 4 channels");
+  refused(
+      "[sensor]\nchannels = [{name = \"a\", centre = 500, width = 20}, {name = \"a\", "
+      "centre = 600, width = 20}]",
+      "used twice");
   std::string bands;
   for (int i = 0; i < 6; ++i)
     bands += "[[bands]]\nname = \"b" + std::to_string(i) + "\"\ncentre = 600\nwidth = 10\n";
   refused(bands + "[sensor]", "at most 8 layers");
+}
+
+// The worked example of docs/SENSOR.md: its lens gives the sensor its pitch, [sensor] the rest.
+TEST(SensorReader, TheCameraExampleLoads) {
+  const Scenario s =
+      load_scenario(landsim::testing::source_file("scenes/examples/camera_1km.toml"));
+  ASSERT_EQ(s.views.size(), 1u);
+  const renderer::SensorModel& m = *s.views[0].sensor;
+  EXPECT_NEAR(m.pixel_pitch_um, 3.45, 1e-9);
+  EXPECT_DOUBLE_EQ(m.f_number, 4.0);
+  EXPECT_DOUBLE_EQ(*m.exposure_time_s, 0.001);
+  EXPECT_EQ(m.adc_bits, 12);
+  EXPECT_TRUE(s.render.reflectance);
 }
 
 }  // namespace
