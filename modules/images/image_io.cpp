@@ -12,6 +12,7 @@
 #include <exception>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -25,10 +26,30 @@ constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.
 // allocated for it.
 constexpr long long kMaxValues = 1LL << 28;
 
+// OpenImageIO's errors, one per line as each layer adds its own (a truncated PNG: "Read error:
+// hit end of file", "PNG read error: IDAT: ...", "PNG library error"), made one line: the
+// caller puts the file's name in front of a single message.
+std::string one_line(const std::string& errors) {
+  std::vector<std::string> lines;
+  std::istringstream text(errors);
+  for (std::string line; std::getline(text, line);)
+    if (!line.empty()) lines.push_back(line);
+  std::string out;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    // A line another one repeats within itself says nothing more.
+    bool repeated = false;
+    for (std::size_t j = 0; j < lines.size(); ++j)
+      repeated = repeated || (j != i && lines[j].size() > lines[i].size() &&
+                              lines[j].find(lines[i]) != std::string::npos);
+    if (!repeated) out += (out.empty() ? "" : "; ") + lines[i];
+  }
+  return out;
+}
+
 bool probe(const std::string& path, int& width, int& height, int& channels, std::string& error) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) {
-    error = OIIO::geterror();
+    error = one_line(OIIO::geterror());
     if (error.empty()) error = "not an image file OpenImageIO reads";
     return false;
   }
@@ -60,7 +81,7 @@ bool read(const std::string& path, bool to_linear, FloatImage& image, std::strin
   OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(path), true);
   OIIO::ImageBuf buf(path);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-    error = buf.geterror();
+    error = one_line(buf.geterror());
     return false;
   }
   // The file's own format (the buffer holds floats once read with the FLOAT conversion).
@@ -68,7 +89,7 @@ bool read(const std::string& path, bool to_linear, FloatImage& image, std::strin
                        buf.nativespec().format.basetype != OIIO::TypeDesc::HALF;
   if (to_linear && encoded) buf = OIIO::ImageBufAlgo::colorconvert(buf, "sRGB", "linear");
   if (buf.has_error()) {
-    error = buf.geterror();
+    error = one_line(buf.geterror());
     return false;
   }
   const OIIO::ImageSpec& spec = buf.spec();
@@ -78,7 +99,7 @@ bool read(const std::string& path, bool to_linear, FloatImage& image, std::strin
   image.display_referred = encoded;
   image.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
   if (!buf.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-    error = buf.geterror();
+    error = one_line(buf.geterror());
     return false;
   }
   return true;

@@ -87,5 +87,20 @@ TEST(ImageOutput, PreviewPngIsSrgbEncoded) {
   EXPECT_NEAR(px[(2 * 5 + 2) * 3 + 1], 231, 1);
 }
 
+// The image module's errors reach the user as one line: a truncated PNG's read error comes
+// from three layers (the reader, libpng, OpenImageIO), each repeating the last.
+TEST(ImageOutput, ImageModuleErrorsAreOneLine) {
+  const landsim::testing::TempDir dir;
+  const auto path = dir / "whole.png";
+  write_preview_png(test_film(), path, 0.0);
+  const std::string bytes = landsim::testing::read_file(path);
+  const auto truncated = dir.write("truncated.png", bytes.substr(0, bytes.size() / 2));
+  FloatImage image;
+  std::string error;
+  ASSERT_FALSE(image_io().read(truncated.string(), false, image, error));
+  EXPECT_FALSE(error.empty());
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace landsim::renderer
