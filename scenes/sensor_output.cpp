@@ -189,15 +189,31 @@ nlohmann::json read_json_file(const std::filesystem::path& path) {
   return j;
 }
 
-// The sensor the image was rendered with (its EXR's "sensor" attribute), if any.
-std::optional<renderer::SensorModel> rendered_sensor(const renderer::ImageMetadata& meta,
-                                                     const std::string& source) {
-  for (const auto& [key, value] : meta)
-    if (key == "sensor") {
-      const nlohmann::json j = nlohmann::json::parse(value, nullptr, false);
-      if (j.is_discarded()) throw InputError(source + ": its sensor attribute is not JSON");
-      return sensor_from_json(j, source);
+// The sensor an image was rendered with and where its digital numbers sit (its EXR's "sensor"
+// attribute: the entry write_sensor_image made).
+struct RenderedSensor {
+  renderer::SensorModel model;
+  SensorPlacement placement;
+};
+
+std::optional<RenderedSensor> rendered_sensor(const renderer::ImageMetadata& meta,
+                                              const std::string& source) {
+  for (const auto& [key, value] : meta) {
+    if (key != "sensor") continue;
+    const nlohmann::json j = nlohmann::json::parse(value, nullptr, false);
+    if (j.is_discarded() || !j.is_object())
+      throw InputError(source + ": its sensor attribute is not a JSON object");
+    RenderedSensor out{sensor_from_json(j, source), {}};
+    try {
+      if (j.contains("geotransform"))
+        out.placement.geotransform = j["geotransform"].get<std::array<double, 6>>();
+      out.placement.crs_wkt = j.value("crs_wkt", std::string());
+    } catch (const std::exception& e) {
+      throw InputError(source + ": its sensor attribute's placement is not landsim's (" + e.what() +
+                       ")");
     }
+    return out;
+  }
   return std::nullopt;
 }
 
@@ -223,11 +239,6 @@ void check_channels(const renderer::SensorModel& wanted, const renderer::SensorM
   }
 }
 
-std::optional<std::array<double, 6>> geotransform_of(const nlohmann::json& j) {
-  if (!j.contains("geotransform")) return std::nullopt;
-  return j["geotransform"].get<std::array<double, 6>>();
-}
-
 }  // namespace
 
 std::vector<std::filesystem::path> sense_image_set(const std::filesystem::path& dir,
@@ -247,19 +258,18 @@ std::vector<std::filesystem::path> sense_image_set(const std::filesystem::path& 
     } catch (const std::exception& e) {
       throw InputError(exr.string() + ": cannot read the image: " + e.what());
     }
-    const std::optional<renderer::SensorModel> rendered = rendered_sensor(meta, exr.string());
-    if (!rendered && !options.sensor)
+    // Only a set rendered with a sensor holds the photon layers any sensor reads.
+    const std::optional<RenderedSensor> rendered = rendered_sensor(meta, exr.string());
+    if (!rendered)
       throw InputError(exr.string() +
                        ": rendered without [sensor] (no photon layers): render "
                        "the set with a [sensor] table");
-    renderer::SensorModel m = options.sensor.value_or(*rendered);
-    if (options.sensor && rendered) check_channels(m, *rendered, exr.string());
+    renderer::SensorModel m = options.sensor ? *options.sensor : rendered->model;
+    if (options.sensor) check_channels(m, rendered->model, exr.string());
     if (options.noise_seed) m.noise_seed = *options.noise_seed;
     if (options.exposure_time_s) m.exposure_time_s = *options.exposure_time_s;
-    const nlohmann::json before = entry.value("sensor", nlohmann::json::object());
-    SensorPlacement placement{geotransform_of(before), before.value("crs_wkt", std::string())};
     const std::string stem = std::filesystem::path(exr_name).stem().string();
-    entry["sensor"] = write_sensor_image(film, m, dir, stem, placement);
+    entry["sensor"] = write_sensor_image(film, m, dir, stem, rendered->placement);
     written.push_back(dir / entry["sensor"]["path"].get<std::string>());
   }
   write_file_atomically(manifest_path, manifest.dump(2) + "\n");

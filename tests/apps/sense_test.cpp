@@ -99,6 +99,10 @@ TEST(CliSense, RefusesChannelsNotRenderedAndSetsWithoutASensor) {
   const auto p = testing::run_landsim("sense " + plain.string(), dir);
   EXPECT_EQ(p.exit_code, 2);
   EXPECT_NE(p.err.find("rendered without [sensor]"), std::string::npos) << p.err;
+  // Another sensor cannot stand in for photon layers the set never rendered.
+  const auto q = testing::run_landsim("sense " + plain.string() + " --sensor " + xyz.string(), dir);
+  EXPECT_EQ(q.exit_code, 2);
+  EXPECT_NE(q.err.find("rendered without [sensor]"), std::string::npos) << q.err;
 }
 
 TEST(CliCompare, StatisticalCallsAnotherSamplingSeedNoise) {
