@@ -11,24 +11,20 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "renderer/output/image_output.h"
+#include "scenes/image_set.h"
 
 namespace landsim::exporters {
 namespace {
 
 using nlohmann::json;
 
-json read_manifest(const std::filesystem::path& set) {
-  const std::filesystem::path file = set / "manifest.json";
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(file.string() +
-                     ": cannot read it (expected a folder written by landsim render)");
-  json j = json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.contains("images") || !j.at("images").is_array() ||
-      !j.contains("legend"))
-    throw InputError(file.string() +
-                     ": not a landsim manifest with a legend (expected \"images\" and "
-                     "\"legend\"; render the set again with this version)");
+// The set's manifest, which must carry the legend annotations name their classes from.
+json read_annotated_manifest(const std::filesystem::path& set) {
+  json j = scenes::read_manifest(set);
+  if (!j.contains("legend"))
+    throw InputError((set / "manifest.json").string() +
+                     ": a landsim manifest without a legend (render the set again with this "
+                     "version)");
   return j;
 }
 
@@ -308,7 +304,7 @@ std::vector<std::uint32_t> coco_rle(const std::vector<std::uint8_t>& mask, int w
 AnnotationSummary write_annotations(const std::filesystem::path& set,
                                     const std::filesystem::path& out,
                                     const AnnotationOptions& options) {
-  const json m = read_manifest(set);
+  const json m = read_annotated_manifest(set);
   AnnotationSummary summary;
   try {
     switch (options.format) {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 
@@ -13,6 +12,7 @@
 #include "core/input_error.h"
 #include "renderer/output/film.h"
 #include "renderer/output/image_output.h"
+#include "scenes/image_set.h"
 
 namespace landsim::exporters {
 namespace {
@@ -31,14 +31,7 @@ std::string label(const std::string& view, int frame) { return fmt::format("{} f
 std::map<std::pair<std::string, int>, Entry> manifest(
     const std::filesystem::path& dir, std::vector<std::pair<std::string, int>>& order) {
   const std::filesystem::path file = dir / "manifest.json";
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(file.string() +
-                     ": cannot read it (expected a folder written by landsim "
-                     "render, with its manifest.json)");
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.contains("images") || !j["images"].is_array())
-    throw InputError(file.string() + ": not a landsim manifest (expected an \"images\" array)");
+  const nlohmann::json j = scenes::read_manifest(dir);
   std::map<std::pair<std::string, int>, Entry> out;
   for (const nlohmann::json& image : j["images"]) {
     if (!image.is_object() || !image.contains("path") || !image["path"].is_string() ||
@@ -76,7 +69,7 @@ void compare_luminance(const renderer::Film& a, const renderer::Film& b, ImageDi
       const double la = a.luminance(x, y), lb = b.luminance(x, y);
       sum_a += la;
       sum_b += lb;
-      const auto r = static_cast<std::size_t>(y * kRegions / h * kRegions + x * kRegions / w);
+      const auto r = static_cast<std::size_t>(region_index(x, y, w, h, kRegions));
       ra[r] += la;
       rb[r] += lb;
     }
@@ -172,7 +165,7 @@ SetComparison compare_image_sets(const std::filesystem::path& a, const std::file
     if (!d.size_mismatch) {
       compare_luminance(fa, fb, d);
       compare_layers(fa, fb, d);
-      d.noise = noise_test(fa, fb, options.alpha);
+      d.noise = noise_test(fa, fb, options.alpha, kRegions);
       if (options.statistical && !d.noise.available)
         throw InputError(fmt::format(
             "{} or {}: no variance layer (Y.variance) to test against noise: render both with "

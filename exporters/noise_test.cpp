@@ -46,7 +46,7 @@ NoiseTest noise_test(const renderer::Film& a, const renderer::Film& b, double al
       // The pixels' estimates are independent: variances of a sum add.
       const double d = static_cast<double>(a.luminance(x, y)) - b.luminance(x, y);
       const double v = static_cast<double>(a.luminance_variance(x, y)) + b.luminance_variance(x, y);
-      Difference& r = region[static_cast<std::size_t>(y * regions / h * regions + x * regions / w)];
+      Difference& r = region[static_cast<std::size_t>(region_index(x, y, w, h, regions))];
       image.sum += d;
       image.variance += v;
       r.sum += d;

@@ -21,6 +21,12 @@ struct NoiseTest {
 NoiseTest noise_test(const renderer::Film& a, const renderer::Film& b, double alpha = 0.001,
                      int regions = 8);
 
+// The region pixel (x, y) of a width x height image falls in when it is cut into `regions` x
+// `regions` (row-major): the regions `landsim compare` reports the worst of.
+inline int region_index(int x, int y, int width, int height, int regions) {
+  return y * regions / height * regions + x * regions / width;
+}
+
 // The |z| a two-sided test at `alpha` rejects beyond: the standard normal's 1 - alpha / 2
 // quantile.
 double normal_quantile_two_sided(double alpha);

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 
 #include "core/atomic_file.h"
@@ -509,6 +510,19 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
   if (run.writer() && !options.task_index)
     write_manifest(out_dir / "manifest.json", scenario, manifest);
   return result;
+}
+
+nlohmann::json read_manifest(const std::filesystem::path& dir) {
+  const std::filesystem::path file = dir / "manifest.json";
+  std::ifstream in(file);
+  if (!in)
+    throw InputError(file.string() +
+                     ": cannot read it (expected a folder written by landsim render, with its "
+                     "manifest.json)");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("images") || !j["images"].is_array())
+    throw InputError(file.string() + ": not a landsim manifest (expected an \"images\" array)");
+  return j;
 }
 
 std::vector<std::string> check_image_set(const Scenario& scenario,

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "renderer/transport/render.h"
 #include "scenes/scenario.h"
 
@@ -79,5 +81,9 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
 // missing. Returns the missing files.
 std::vector<std::string> check_image_set(const Scenario& scenario,
                                          const std::filesystem::path& out_dir);
+
+// The manifest.json of the image set in `dir`, as the tools that read a set take it (compare,
+// annotate, sense): an object with an "images" array. Throws InputError naming the file.
+nlohmann::json read_manifest(const std::filesystem::path& dir);
 
 }  // namespace landsim::scenes

@@ -3,15 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 
+#include "core/fnv_hash.h"
 #include "core/input_error.h"
 #include "featuremaps/placement.h"
 #include "params/table_reader.h"
 #include "scenes/scenario.h"
 
+#include "scenes/detail/relative_path.h"
 #include "scenes/detail/scenario_overrides.h"
 #include "scenes/detail/sensor_reader.h"
 #include "scenes/detail/view_reader.h"
@@ -22,17 +23,12 @@
 namespace landsim::scenes {
 namespace {
 
+using detail::resolve;
 using params::Range;
 using params::TableReader;
 
 constexpr Range kUnit{0.0, 1.0};
 constexpr Range kPositive{0.0, 1e12, true};
-
-std::string resolve(const std::string& base_dir, const std::string& path) {
-  const std::filesystem::path p(path);
-  if (p.is_absolute() || base_dir.empty()) return p.lexically_normal().string();
-  return (std::filesystem::path(base_dir) / p).lexically_normal().string();
-}
 
 Vec3f to_vec3f(const Vec3& v) { return Vec3f(v); }
 
@@ -691,18 +687,12 @@ std::vector<BandSettings> read_bands(const toml::table& root, const std::string&
   const toml::array* a = tables(root, "bands", file);
   if (a == nullptr) return out;
   std::set<std::string> names;
-  static const std::regex kName("[A-Za-z0-9_-]{1,32}");
   for (std::size_t i = 0; i < a->size(); ++i) {
     TableReader r(*a->get(i)->as_table(), "bands[" + std::to_string(i) + "]", file);
     if (i >= static_cast<std::size_t>(kMaxSensorBands))
       r.fail("name", "at most " + std::to_string(kMaxSensorBands) + " bands per image set");
     BandSettings b;
-    b.name = r.string("name");
-    if (!std::regex_match(b.name, kName))
-      r.fail("name", "expected 1-32 letters, digits, '_' or '-' (it names the EXR layer band." +
-                         b.name + ")");
-    if (!names.insert(b.name).second)
-      r.fail("name", "the name '" + b.name + "' is used by another band");
+    b.name = detail::read_layer_name(r, "band.", names, "is used by another band");
     b.response = detail::read_response(r, base_dir, b.description);
     r.finish();
     out.push_back(std::move(b));
@@ -758,12 +748,8 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   refuse_unknown_tables(root, source);
   Scenario s;
   s.source = source;
-  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a over the text and the overrides
-  const auto add = [&hash](std::string_view part) {
-    for (const char c : part) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-  };
-  add(text);
-  for (const std::string& set : sets) add("\n--set " + set);
+  std::uint64_t hash = fnv1a(text);  // over the text and the overrides
+  for (const std::string& set : sets) hash = fnv1a("\n--set " + set, hash);
   s.text_hash = fmt::format("{:016x}", hash);
   s.terrain = read_terrain(sub_table(root, "terrain", source, true), source, base_dir);
   s.sun = read_sun(sub_table(root, "sun", source, true), source);

@@ -4,7 +4,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
@@ -13,6 +12,8 @@
 #include "renderer/output/image_output.h"
 #include "renderer/sensor/digitiser.h"
 #include "renderer/sensor/optics.h"
+#include "scenes/detail/geo_rasters.h"
+#include "scenes/image_set.h"
 #include "terrain/raster_io.h"
 
 namespace landsim::scenes {
@@ -64,7 +65,8 @@ void write_png(const std::vector<std::vector<std::uint16_t>>& dn, int w, int h,
 
 void write_tiff(const std::vector<std::vector<std::uint16_t>>& dn, int w, int h,
                 const renderer::SensorModel& m, const SensorPlacement& placement,
-                const std::string& model, const std::filesystem::path& path) {
+                const std::string& model, const std::filesystem::path& dir,
+                const std::string& name) {
   terrain::OutputRaster r;
   r.driver = "GTiff";
   r.cols = w;
@@ -75,11 +77,7 @@ void write_tiff(const std::vector<std::vector<std::uint16_t>>& dn, int w, int h,
   r.geotransform = placement.geotransform;
   r.crs_wkt = placement.crs_wkt;
   r.metadata = {{"landsim_sensor", model}, {"unit", "digital numbers"}};
-  AtomicFile out(path);
-  std::string error;
-  if (!terrain::raster_io().write_raster(out.temp_path().string(), r, error))
-    throw std::runtime_error("writing " + path.string() + " failed: " + error);
-  out.commit();
+  detail::write_raster_file(r, dir, name);
 }
 
 }  // namespace
@@ -174,20 +172,11 @@ nlohmann::json write_sensor_image(const renderer::Film& film, const renderer::Se
   if (png)
     write_png(dn, w, h, dir / file);
   else
-    write_tiff(dn, w, h, m, placement, entry.dump(), dir / file);
+    write_tiff(dn, w, h, m, placement, entry.dump(), dir, stem + "_dn");
   return entry;
 }
 
 namespace {
-
-nlohmann::json read_json_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot open (expected an image set's manifest)");
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || !j.contains("images") || !j["images"].is_array())
-    throw InputError(path.string() + ": not an image set's manifest (no \"images\" array)");
-  return j;
-}
 
 // The sensor an image was rendered with and where its digital numbers sit (its EXR's "sensor"
 // attribute: the entry write_sensor_image made).
@@ -244,7 +233,7 @@ void check_channels(const renderer::SensorModel& wanted, const renderer::SensorM
 std::vector<std::filesystem::path> sense_image_set(const std::filesystem::path& dir,
                                                    const SenseOptions& options) {
   const std::filesystem::path manifest_path = dir / "manifest.json";
-  nlohmann::json manifest = read_json_file(manifest_path);
+  nlohmann::json manifest = read_manifest(dir);
   std::vector<std::filesystem::path> written;
   for (nlohmann::json& entry : manifest["images"]) {
     if (!entry.contains("path") || !entry["path"].is_string())

@@ -95,7 +95,6 @@ constexpr Channel kChannels[] = {
 constexpr std::string_view kBandPrefix = "band.";
 // Derived planes the film holds as bands, under their own layer names.
 constexpr std::string_view kLayerPrefixes[] = {"photons.", "reflectance."};
-std::string band_channel(const std::string& name) { return band_layer(name); }
 
 // The frame buffer for every channel of `film` (const_cast: OpenEXR's Slice wants a
 // non-const pointer even for writing).
@@ -124,7 +123,7 @@ Imf::FrameBuffer frame_buffer(Film& film) {
   add_slice(fb, "Y.variance", Imf::FLOAT, film.variance_data(), 1, 0, w);
   add_slice(fb, "spp", Imf::UINT, film.samples_data(), 1, 0, w);
   for (int b = 0; b < film.band_count(); ++b)
-    add_slice(fb, band_channel(film.band_name(b)).c_str(), Imf::FLOAT, film.band_data(b), 1, 0, w);
+    add_slice(fb, band_layer(film.band_name(b)).c_str(), Imf::FLOAT, film.band_data(b), 1, 0, w);
   return fb;
 }
 
@@ -149,7 +148,7 @@ void write_exr(const Film& film, const std::filesystem::path& path, const ImageM
   for (const Channel& c : kChannels)
     header.channels().insert(c.name, Imf::Channel(c.id ? Imf::UINT : Imf::FLOAT));
   for (const std::string& name : film.band_names())
-    header.channels().insert(band_channel(name), Imf::Channel(Imf::FLOAT));
+    header.channels().insert(band_layer(name), Imf::Channel(Imf::FLOAT));
   if (film.band_count() > 0) header.insert("landsim/band_unit", Imf::StringAttribute(kBandUnit));
   for (const auto& [key, value] : metadata)
     header.insert("landsim/" + key, Imf::StringAttribute(value));

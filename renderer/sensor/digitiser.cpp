@@ -7,15 +7,10 @@
 #include <cmath>
 #include <random>
 
+#include "core/fnv_hash.h"
+
 namespace landsim::renderer {
 namespace {
-
-// FNV-1a 64 of a string: the image's part of the noise seed.
-std::uint64_t text_hash(const std::string& s) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const char c : s) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-  return h;
-}
 
 // The electrons one pixel collects: Poisson of the mean (photons and dark charge arrive
 // independently), read noise added, the well's limits.
@@ -57,7 +52,7 @@ std::vector<std::uint16_t> digitise(const std::vector<float>& photons, int width
   std::vector<std::uint16_t> dn(photons.size());
   const double gain = gain_e_per_dn(m);
   const double top = max_dn(m);
-  const std::uint64_t image_key = text_hash(image);
+  const std::uint64_t image_key = fnv1a(image);  // the image's part of the noise seed
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y) {
       std::seed_seq seed{

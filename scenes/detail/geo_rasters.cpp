@@ -44,8 +44,10 @@ std::array<std::vector<float>, 3> world_planes(const renderer::Film& film) {
           plane(film.position_data(), 3, 2)};
 }
 
-// Writes `r` to dir/name.<ext> under a temporary name; ENVI's header moves with its data.
-void write(OutputRaster r, const std::filesystem::path& dir, const std::string& name) {
+}  // namespace
+
+void write_raster_file(const terrain::OutputRaster& r, const std::filesystem::path& dir,
+                       const std::string& name) {
   const bool envi = r.driver == "ENVI";
   const std::filesystem::path path = dir / (name + (envi ? ".img" : ".tif"));
   AtomicFile out(path);
@@ -59,8 +61,6 @@ void write(OutputRaster r, const std::filesystem::path& dir, const std::string& 
   }
   out.commit();
 }
-
-}  // namespace
 
 std::optional<std::array<double, 6>> map_geotransform(const renderer::View& view,
                                                       const Vec3& origin) {
@@ -133,8 +133,8 @@ void write_geo_rasters(const renderer::Film& film, const renderer::View& view,
   for (const char* driver : {"GTiff", "ENVI"}) {
     if (std::string(driver) == "GTiff" ? !s.render.geotiff : !s.render.envi) continue;
     values.driver = ids.driver = driver;
-    write(values, dir, stem);
-    write(ids, dir, stem + "_ids");
+    write_raster_file(values, dir, stem);
+    write_raster_file(ids, dir, stem + "_ids");
   }
 }
 

@@ -12,6 +12,7 @@
 #include "renderer/output/film.h"
 #include "renderer/scene.h"
 #include "scenes/scenario.h"
+#include "terrain/raster_io.h"
 
 namespace landsim::scenes::detail {
 
@@ -19,6 +20,12 @@ namespace landsim::scenes::detail {
 // coordinates); empty for views that are not maps.
 std::optional<std::array<double, 6>> map_geotransform(const renderer::View& view,
                                                       const Vec3& origin);
+
+// Writes `r` (driver "GTiff" or "ENVI") to dir/name.tif or dir/name.img (+ .hdr) under a
+// temporary name, renamed when complete; throws std::runtime_error naming the file when GDAL
+// fails.
+void write_raster_file(const terrain::OutputRaster& r, const std::filesystem::path& dir,
+                       const std::string& name);
 
 // Writes the formats `s.render` asks for (nothing without geotiff or envi), with `camera`
 // (the camera model as the manifest's JSON) in the metadata; throws std::runtime_error

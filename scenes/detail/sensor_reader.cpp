@@ -10,6 +10,7 @@
 
 #include "core/input_error.h"
 #include "renderer/spectra/channel_presets.h"
+#include "scenes/detail/relative_path.h"
 #include "scenes/sensor_bands.h"
 #include "terrain/raster_files.h"
 
@@ -18,12 +19,6 @@ namespace {
 
 using params::Range;
 using params::TableReader;
-
-std::string resolve(const std::string& base_dir, const std::string& path) {
-  const std::filesystem::path p(path);
-  if (p.is_absolute() || base_dir.empty()) return p.lexically_normal().string();
-  return (std::filesystem::path(base_dir) / p).lexically_normal().string();
-}
 
 // "auto" (empty) or seconds.
 std::optional<double> read_exposure_time(TableReader& r, std::optional<double> fallback) {
@@ -90,13 +85,8 @@ void read_channels(TableReader& r, const std::string& base_dir, SensorSettings& 
   }
   if (!n->is_array()) r.fail_at(*n, "channels", "expected " + expected);
   std::set<std::string> names;
-  static const std::regex kName("[A-Za-z0-9_-]{1,32}");
   for (TableReader& c : r.tables("channels")) {
-    const std::string name = c.string("name");
-    if (!std::regex_match(name, kName))
-      c.fail("name", "expected 1-32 letters, digits, '_' or '-' (it names the EXR layer photons." +
-                         name + ")");
-    if (!names.insert(name).second) c.fail("name", "the name '" + name + "' is used twice");
+    const std::string name = read_layer_name(c, "photons.", names, "is used twice");
     std::string description;
     std::vector<renderer::ResponsePoint> response = read_response(c, base_dir, description);
     c.finish();
@@ -106,6 +96,17 @@ void read_channels(TableReader& r, const std::string& base_dir, SensorSettings& 
 }
 
 }  // namespace
+
+std::string read_layer_name(TableReader& r, const std::string& layer, std::set<std::string>& taken,
+                            const std::string& duplicate) {
+  static const std::regex kName("[A-Za-z0-9_-]{1,32}");
+  std::string name = r.string("name");
+  if (!std::regex_match(name, kName))
+    r.fail("name", "expected 1-32 letters, digits, '_' or '-' (it names the EXR layer " + layer +
+                       name + ")");
+  if (!taken.insert(name).second) r.fail("name", "the name '" + name + "' " + duplicate);
+  return name;
+}
 
 std::vector<renderer::ResponsePoint> read_response(TableReader& r, const std::string& base_dir,
                                                    std::string& description) {

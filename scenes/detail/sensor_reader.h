@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,12 @@
 #include "scenes/scenario.h"
 
 namespace landsim::scenes::detail {
+
+// A band's or channel's `name`: 1-32 letters, digits, '_' or '-' (it names the EXR layer
+// `layer` + name) and not in `taken` (else refused: "the name '<name>' " + `duplicate`); it is
+// added to `taken`.
+std::string read_layer_name(params::TableReader& r, const std::string& layer,
+                            std::set<std::string>& taken, const std::string& duplicate);
 
 // `response` (a CSV of wavelength, response, relative to `base_dir`) or `centre` and `width`
 // (a box, nm); `description` says which ("box 630-690 nm", "response <path>").
