@@ -18,15 +18,11 @@ using terrain::CellType;
 using terrain::OutputBand;
 using terrain::OutputRaster;
 
-// A band's centre wavelength: its response's weighted mean.
+// A band's centre wavelength: its response's centroid, as the sensor's channels have theirs.
 std::optional<double> centre_wavelength(const BandSettings& b) {
-  double sum = 0.0, weighted = 0.0;
-  for (const renderer::ResponsePoint& p : b.response) {
-    sum += p.response;
-    weighted += p.response * p.wavelength_nm;
-  }
-  if (sum <= 0.0) return std::nullopt;
-  return weighted / sum;
+  const double nm = renderer::centroid_wavelength(b.response);
+  if (nm <= 0.0) return std::nullopt;
+  return nm;
 }
 
 // One plane of a film's interleaved data (stride values a pixel).
