@@ -10,9 +10,9 @@ namespace landsim::renderer {
 namespace {
 
 // A response sampled every 5 nm over landsim's spectra, scaled to peak 1. The analytic fits'
-// tails below 1e-3 of the peak are zero (under 0.1% of the response): a response reaching into the near infrared would
-// make the path tracer keep paths alive for light no channel sees (its roulette weighs the
-// bins some output sees).
+// tails below 1e-3 of the peak are zero (under 0.1% of the response), as a real filter's
+// would be; the path tracer's roulette ignores such tails of any response anyway
+// (transport/path_tracer.cpp seen_bins).
 std::vector<ResponsePoint> sampled(const std::function<double(double)>& f) {
   std::vector<ResponsePoint> points;
   double peak = 0.0;

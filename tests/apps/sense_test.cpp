@@ -105,6 +105,32 @@ TEST(CliSense, RefusesChannelsNotRenderedAndSetsWithoutASensor) {
   EXPECT_NE(q.err.find("rendered without [sensor]"), std::string::npos) << q.err;
 }
 
+// The rays a render traced, from its --json report.
+double rays_of(const testing::ProgramResult& r) {
+  const auto image = nlohmann::json::parse(r.out)["images"][0];
+  return image["seconds"].get<double>() * image["rays_per_second"].get<double>();
+}
+
+// A channel whose response has a faint near-infrared tail (1e-4 of its peak) traces the same
+// paths as one without it: the path tracer's roulette ignores bins an output barely weighs.
+TEST(CliSense, AFaintResponseTailCostsNoRays) {
+  TempDir dir;
+  dir.write("clean.csv", "nm,response\n500,0\n520,1\n600,1\n620,0\n");
+  dir.write("tail.csv",
+            "nm,response\n500,0\n520,1\n600,1\n620,0\n800,0\n820,0.0001\n900,0.0001\n920,0\n");
+  const auto render = [&](const std::string& csv) {
+    const std::string set =
+        "'sensor.channels=[{name=\"g\", response=\"" + (dir / csv).string() + "\"}]'";
+    return testing::run_landsim(
+        "render --spp 2 --width 64 --json --set " + set + " --out " + (dir / csv).string() + ".set",
+        dir);
+  };
+  const auto clean = render("clean.csv"), tail = render("tail.csv");
+  ASSERT_EQ(clean.exit_code, 0) << clean.err;
+  ASSERT_EQ(tail.exit_code, 0) << tail.err;
+  EXPECT_NEAR(rays_of(tail) / rays_of(clean), 1.0, 1e-6);
+}
+
 TEST(CliCompare, StatisticalCallsAnotherSamplingSeedNoise) {
   TempDir dir;
   const auto a = dir / "a", b = dir / "b";
