@@ -24,11 +24,20 @@ class ModuleError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Where modules are looked for: $LANDSIM_MODULE_DIR when set, else the running program's
-// own folder (the build writes programs and modules to one folder).
+// The folder a library embedding landsim keeps the modules in (the Python package's own
+// folder: the running program there is python3); empty: none.
+inline std::filesystem::path& embedded_module_directory() {
+  static std::filesystem::path dir;
+  return dir;
+}
+
+// Where modules are looked for: $LANDSIM_MODULE_DIR when set, else the embedding library's
+// folder when one is set, else the running program's own folder (the build writes programs
+// and modules to one folder).
 inline std::filesystem::path module_directory() {
   if (const char* dir = std::getenv("LANDSIM_MODULE_DIR"); dir != nullptr && *dir != '\0')
     return dir;
+  if (!embedded_module_directory().empty()) return embedded_module_directory();
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   return ec ? std::filesystem::path(".") : exe.parent_path();

@@ -13,7 +13,7 @@ namespace {
 constexpr const char* kVirtualRoot = "/vsimem/landsim";
 }  // namespace
 
-Scenario default_scenario(const std::vector<std::string>& sets) {
+ScenarioText default_scenario_text() {
   const std::string root = kVirtualRoot;
   terrain::mount_memory_file(root + "/data/terrain/volcano.asc", kVolcanoAsc);
   terrain::mount_memory_file(root + "/data/featuremaps/volcano_landcover.asc",
@@ -21,8 +21,11 @@ Scenario default_scenario(const std::vector<std::string>& sets) {
   terrain::mount_memory_file(root + "/data/species/quaking_aspen.toml", kQuakingAspenToml);
   terrain::mount_memory_file(root + "/data/species/ca_black_oak.toml", kCaBlackOakToml);
   terrain::mount_memory_file(root + "/scenes/examples/volcano_classes.toml", kVolcanoClassesToml);
-  return parse_scenario(kDefaultScenarioToml, kDefaultScenarioName, root + "/scenes/examples",
-                        sets);
+  return {std::string(kDefaultScenarioToml), kDefaultScenarioName, root + "/scenes/examples"};
+}
+
+Scenario default_scenario(const std::vector<std::string>& sets) {
+  return parse_scenario(default_scenario_text(), sets);
 }
 
 }  // namespace landsim::scenes

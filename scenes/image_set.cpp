@@ -271,6 +271,8 @@ struct SetRun {
   Clock::time_point start;
   bool shared() const { return options.shared != nullptr; }
   bool writer() const { return options.shared == nullptr || options.shared->writer; }
+  // This process writes the set's files (else it renders into memory or for another).
+  bool writes_files() const { return writer() && options.write_files; }
 };
 
 struct WrittenImage {
@@ -315,15 +317,17 @@ renderer::RenderOptions render_options(const SetRun& run, const renderer::View& 
   // The output directory appears once the scene is built and tracing starts: a render
   // refused or failed before that leaves nothing behind.
   options.started = [&run, first] {
-    if (run.writer()) std::filesystem::create_directories(run.options.out_dir);
+    if (run.writes_files()) std::filesystem::create_directories(run.options.out_dir);
     if (first) spdlog::info("first pixel after {:.2f} s", seconds_since(run.start));
   };
-  options.progress = [name = view.name, time, view_start = Clock::now()](double p) {
+  options.progress = [name = view.name, time, view_start = Clock::now(), &run,
+                      stem = image.stem](double p) {
     const double elapsed = seconds_since(view_start);
     spdlog::info("{} t={}s: {:3.0f}%, {:.0f} s left", name, time, 100.0 * p,
                  elapsed / p * (1.0 - p));
+    if (run.options.progress) run.options.progress(stem, p);
   };
-  if (s.render.checkpoint_seconds > 0.0 && run.writer()) {
+  if (s.render.checkpoint_seconds > 0.0 && run.writes_files()) {
     options.checkpoint = run.options.out_dir / (image.stem + ".checkpoint.exr");
     options.checkpoint_seconds = s.render.checkpoint_seconds;
   }
@@ -347,7 +351,7 @@ nlohmann::json add_light_and_sensor(const SetRun& run, const renderer::Scene& sc
   meta.emplace_back("irradiance", entries["irradiance"].dump());
   if (run.scenario.render.reflectance) renderer::add_reflectance(film, irradiance);
   const std::optional<renderer::SensorModel>& sensor = run.scenario.views[image.view].sensor;
-  if (sensor) {
+  if (sensor && run.writes_files()) {
     const renderer::View& view = scene.views[image.view];
     entries["sensor"] =
         write_sensor_image(film, *sensor, run.options.out_dir, image.stem,
@@ -387,10 +391,12 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
                            scene.origin);
     meta.emplace_back("objects", objects.dump());
   }
-  renderer::write_exr(film, exr, meta, &camera);
-  renderer::write_preview_png(film, run.options.out_dir / (image.stem + ".png"), ev100);
-  detail::write_geo_rasters(film, view, scene, s, run.options.out_dir, image.stem,
-                            camera_model.dump());
+  if (run.writes_files()) {
+    renderer::write_exr(film, exr, meta, &camera);
+    renderer::write_preview_png(film, run.options.out_dir / (image.stem + ".png"), ev100);
+    detail::write_geo_rasters(film, view, scene, s, run.options.out_dir, image.stem,
+                              camera_model.dump());
+  }
   report.exr = exr;
   report.view = view.name;
   report.frame_index = image.frame;
@@ -404,6 +410,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
       report, manifest_entry(s.views[image.view], image.stem, image.frame, time, camera_model)};
   if (!objects.is_null()) out.manifest["objects"] = objects;
   out.manifest.update(light_and_sensor);
+  if (run.options.keep)
+    run.options.keep({report, std::move(film), std::move(meta), out.manifest.dump()});
   return out;
 }
 
@@ -457,12 +465,12 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
   // A later image that fails (its scene, its file) leaves the images already written with a
   // manifest that says the set is unfinished.
   const auto unfinished = [&] {
-    if (run.writer() && !options.task_index && !manifest.empty())
+    if (run.writes_files() && !options.task_index && !manifest.empty())
       write_manifest(out_dir / "manifest.json", scenario, manifest, false);
   };
   for (const Image& image : images) try {
       // Shared renders would all have to agree: finished images are skipped in one process.
-      if (options.resume && !run.shared() && already_finished(run, image)) {
+      if (options.resume && options.write_files && !run.shared() && already_finished(run, image)) {
         const auto exr = out_dir / (image.stem + ".exr");
         manifest.push_back(saved_entry(scenario, image.view, image.stem, image.frame, exr));
         ++result.skipped;
@@ -507,7 +515,7 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
   spdlog::info("peak memory {:.0f} MB (estimated {:.0f} MB)",
                static_cast<double>(peak_resident_bytes()) / 1e6,
                static_cast<double>(estimate.total_bytes()) / 1e6);
-  if (run.writer() && !options.task_index)
+  if (run.writes_files() && !options.task_index)
     write_manifest(out_dir / "manifest.json", scenario, manifest);
   return result;
 }

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "renderer/output/image_output.h"
 #include "renderer/transport/render.h"
 #include "scenes/scenario.h"
 
@@ -43,8 +44,24 @@ struct SharedRender {
       render;
 };
 
+// An image kept in memory (ImageSetOptions::keep): what its EXR would hold and its manifest
+// entry.
+struct RenderedImage {
+  ImageReport report;
+  renderer::Film film;               // with its derived layers (reflectance)
+  renderer::ImageMetadata metadata;  // the EXR's "landsim/<key>" attributes
+  std::string manifest_entry;        // JSON
+};
+
 struct ImageSetOptions {
   std::filesystem::path out_dir = "out";
+  // false: nothing is written (no EXR, preview, rasters, sensor image, checkpoint or
+  // manifest) and each image goes to `keep` instead (the Python module's render). A sensor's
+  // digital numbers are then not made: its photon layers are in the film.
+  bool write_files = true;
+  std::function<void(RenderedImage&&)> keep;
+  // Called with an image's name and the fraction of it done, from one thread at a time.
+  std::function<void(const std::string& image, double fraction)> progress;
   // Keep finished images of this very scenario in out_dir and continue from checkpoints.
   bool resume = false;
   // Render only this image of the set (frame-major: frame x views + view); no manifest.

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -405,6 +406,32 @@ void check_memory_budget(const MemoryEstimate& estimate, std::size_t budget_byte
       "rendered (the estimate: `landsim info`; docs/PERFORMANCE.md \"Memory budget\")",
       estimate.scenario, mb(static_cast<double>(total)), budget_source,
       mb(static_cast<double>(budget_bytes)), largest));
+}
+
+nlohmann::json estimate_json(const Scenario& scenario, const MemoryEstimate& e) {
+  const auto count = [](double n) { return static_cast<std::size_t>(std::llround(n)); };
+  nlohmann::json per_species = nlohmann::json::object();
+  std::size_t instances = 0;  // the sum of the species' rounded counts
+  for (const auto& [name, n] : e.instances_per_species) {
+    per_species[name] = count(n);
+    instances += count(n);
+  }
+  nlohmann::json parts = nlohmann::json::object();
+  for (const MemoryPart& p : e.parts) parts[p.id] = p.bytes;
+  parts["program"] = e.program_bytes;
+  return {{"instances", instances},
+          {"instances_per_species", per_species},
+          {"unique_variants", e.unique_variants},
+          {"triangles_stored", count(e.triangles_stored)},
+          {"triangles_instanced", count(e.triangles_instanced)},
+          {"grass_tiles", e.grass_tiles},
+          {"grass_patches_drawn", e.grass_patches_drawn},
+          {"memory_estimate_bytes", e.total_bytes()},
+          {"memory_parts_bytes", parts},
+          // The image set: what a job array needs to size itself.
+          {"views", scenario.views.size()},
+          {"frames", scenario.render.frames.size()},
+          {"images", scenario.views.size() * scenario.render.frames.size()}};
 }
 
 }  // namespace landsim::scenes

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "scenes/scenario.h"
 #include "scenes/variant_cache.h"
 
@@ -38,6 +40,10 @@ struct MemoryEstimate {
   std::size_t grass_tiles = 0;
   std::size_t grass_patches_drawn = 0;  // by the view that draws the most
 };
+
+// The estimate as `landsim info --json` and the Python module's `info` give it
+// (docs/JSON.md "info").
+nlohmann::json estimate_json(const Scenario& scenario, const MemoryEstimate& e);
 
 // Loads the terrain and feature map and generates one variant per species; places nothing.
 // The variants are left in `keep`, when given, for build_scene to reuse.

@@ -237,6 +237,19 @@ inline constexpr int kMaxSpp = 1 << 20;
 // Wind and gust speeds (Weber & Penn section 4.7), in [wind] and on tree's command line alike.
 inline constexpr double kMaxWindSpeed = 100.0;
 
+// A scenario's text and where its relative paths resolve: what the Python module keeps to
+// change keys (`Scenario.set`) and to write the scenario back out (`to_toml`).
+struct ScenarioText {
+  std::string text;
+  std::string source;    // names the text in messages (a path, or "<default scenario>")
+  std::string base_dir;  // relative paths resolve against it
+};
+// InputError naming the file when it cannot be read.
+ScenarioText read_scenario_text(const std::filesystem::path& file);
+Scenario parse_scenario(const ScenarioText& t, const std::vector<std::string>& sets = {});
+// The scenario's TOML with `sets` applied, as parse_scenario reads it; InputError as there.
+std::string scenario_toml(const ScenarioText& t, const std::vector<std::string>& sets = {});
+
 // Throws InputError naming file:line:column, the key and what was expected. `sets` are
 // "key=value" overrides applied before reading (`--set`, scenes/detail/scenario_overrides):
 // the same validation, messages naming the override; they count in the scenario's hash.

@@ -823,14 +823,35 @@ SensorSettings load_sensor(const std::filesystem::path& file) {
   return *s;
 }
 
-Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& sets) {
+ScenarioText read_scenario_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file)) {
     throw InputError(file.string() + ": cannot open scenario file");
   }
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scenario(text.str(), file.string(), file.parent_path().string(), sets);
+  return {text.str(), file.string(), file.parent_path().string()};
+}
+
+Scenario parse_scenario(const ScenarioText& t, const std::vector<std::string>& sets) {
+  return parse_scenario(t.text, t.source, t.base_dir, sets);
+}
+
+std::string scenario_toml(const ScenarioText& t, const std::vector<std::string>& sets) {
+  toml::table root;
+  try {
+    root = toml::parse(t.text, t.source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(params::parse_error_message(e, t.source));
+  }
+  detail::apply_overrides(root, sets);
+  std::ostringstream out;
+  out << root << "\n";
+  return out.str();
+}
+
+Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& sets) {
+  return parse_scenario(read_scenario_text(file), sets);
 }
 
 }  // namespace landsim::scenes

@@ -8,7 +8,8 @@ PACKAGES="build-essential cmake ninja-build pkg-config ccache git \
   libgdal-dev gdal-bin libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev \
   libtbb-dev libassimp-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libpugixml-dev libkissfft-dev \
   povray povray-includes embree-tools bc clang-format openmpi-bin libopenmpi-dev \
-  fonts-dejavu-core python3 clang libclang-rt-14-dev"
+  fonts-dejavu-core python3 clang libclang-rt-14-dev \
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-openimageio"
 
 missing=""
 for p in $PACKAGES; do

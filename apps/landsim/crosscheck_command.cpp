@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "exporters/crosscheck.h"
 #include "scenario_input.h"
+#include "scenes/render_choices.h"
 #include "scenes/scene_builder.h"
 
 namespace landsim::app {
@@ -52,7 +53,7 @@ CLI::App* add_crosscheck_command(CLI::App& app, CrosscheckArgs& args) {
 
 int run_crosscheck(const CrosscheckArgs& args) {
   scenes::Scenario s = scenario_or_default(args.scenario, args.sets);
-  override_view_sizes(s, args.width, args.height);
+  scenes::override_view_sizes(s, args.width, args.height);
   const renderer::Scene scene = scenes::build_scene(s);
   exporters::CrosscheckOptions o;
   o.out_dir = args.out;

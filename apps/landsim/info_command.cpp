@@ -26,30 +26,7 @@ int run_info(const InfoArgs& args) {
   const scenes::MemoryEstimate e = scenes::estimate_memory(scenario);
   const auto count = [](double n) { return static_cast<std::size_t>(std::llround(n)); };
   if (args.json) {
-    nlohmann::json per_species = nlohmann::json::object();
-    std::size_t instances = 0;  // the sum of the species' rounded counts
-    for (const auto& [name, n] : e.instances_per_species) {
-      per_species[name] = count(n);
-      instances += count(n);
-    }
-    nlohmann::json parts = nlohmann::json::object();
-    for (const scenes::MemoryPart& p : e.parts) parts[p.id] = p.bytes;
-    parts["program"] = e.program_bytes;
-    std::cout << nlohmann::json{{"instances", instances},
-                                {"instances_per_species", per_species},
-                                {"unique_variants", e.unique_variants},
-                                {"triangles_stored", count(e.triangles_stored)},
-                                {"triangles_instanced", count(e.triangles_instanced)},
-                                {"grass_tiles", e.grass_tiles},
-                                {"grass_patches_drawn", e.grass_patches_drawn},
-                                {"memory_estimate_bytes", e.total_bytes()},
-                                {"memory_parts_bytes", parts},
-                                // The image set: what a job array needs to size itself.
-                                {"views", scenario.views.size()},
-                                {"frames", scenario.render.frames.size()},
-                                {"images", scenario.views.size() * scenario.render.frames.size()}}
-                     .dump()
-              << "\n";
+    std::cout << scenes::estimate_json(scenario, e).dump() << "\n";
     return 0;
   }
   std::cout << fmt::format("{}\n  trees (expected)    {}\n", scenario.source, count(e.instances));

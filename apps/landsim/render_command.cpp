@@ -15,6 +15,7 @@
 #include "renderer/transport/render.h"
 #include "scenario_input.h"
 #include "scenes/image_set.h"
+#include "scenes/render_choices.h"
 #ifdef LANDSIM_HAVE_MPI
 #include "distributed_render.h"
 #endif
@@ -24,22 +25,11 @@ namespace {
 
 // Command-line values win over the scenario's; a lone --width or --height keeps the aspect.
 void apply_overrides(scenes::Scenario& s, const RenderArgs& args) {
-  if (args.spp) s.render.spp = *args.spp;
-  if (args.threads) s.render.threads = *args.threads;
-  override_view_sizes(s, args.width, args.height);
-  if (!args.view.empty()) {
-    std::string names;
-    for (const auto& v : s.views) {
-      if (v.name == args.view) {
-        const scenes::ViewSettings chosen = v;
-        s.views = {chosen};
-        return;
-      }
-      names += (names.empty() ? "" : ", ") + v.name;
-    }
-    throw InputError("--view: no view named \"" + args.view + "\" in " + s.source +
-                     " (views: " + names + ")");
-  }
+  scenes::apply_render_choices(s, {.spp = args.spp,
+                                   .threads = args.threads,
+                                   .width = args.width,
+                                   .height = args.height,
+                                   .view = args.view});
 }
 
 }  // namespace

@@ -37,25 +37,6 @@ void add_size_options(CLI::App& cmd, std::optional<int>& width, std::optional<in
       ->check(CLI::Range(1, scenes::kMaxImageSide));
 }
 
-void override_view_sizes(scenes::Scenario& s, std::optional<int> width, std::optional<int> height) {
-  for (scenes::ViewSettings& v : s.views) {
-    const double aspect = static_cast<double>(v.width) / v.height;
-    const int old_height = v.height;
-    if (width) v.width = *width;
-    if (height) v.height = *height;
-    if (width && !height) v.height = std::max(1, static_cast<int>(std::lround(v.width / aspect)));
-    if (height && !width) v.width = std::max(1, static_cast<int>(std::lround(v.height * aspect)));
-    scenes::check_image_size(v.width, v.height, "--width/--height");
-    // The same picture in more or fewer pixels: pixel lengths of the lens scale with the
-    // height (angles and extents stay); a grid-aligned map takes the size as given.
-    const double scale = static_cast<double>(v.height) / old_height;
-    v.lens.fisheye_focal *= scale;
-    v.lens.principal_x *= scale;
-    v.lens.principal_y *= scale;
-    if (width || height) v.has_size = true;
-  }
-}
-
 void add_spp_option(CLI::App& cmd, int& spp, const std::string& help) {
   cmd.add_option("--spp", spp, help)->check(CLI::Range(1, scenes::kMaxSpp))->capture_default_str();
 }

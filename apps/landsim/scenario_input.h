@@ -33,9 +33,6 @@ void add_spp_option(CLI::App& cmd, int& spp, const std::string& help = "Samples 
 
 // --width and --height (each optional) for commands that render a scenario's views.
 void add_size_options(CLI::App& cmd, std::optional<int>& width, std::optional<int>& height);
-// Command-line sizes win over the scenario's; a lone --width or --height keeps each view's
-// aspect ratio. InputError for an explosive size.
-void override_view_sizes(scenes::Scenario& s, std::optional<int> width, std::optional<int> height);
 
 // The index of the view named `name` (empty: the first); InputError naming the views' file.
 std::size_t view_index(const scenes::Scenario& s, const std::string& name);

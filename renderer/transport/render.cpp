@@ -250,13 +250,15 @@ int ViewRenderer::tile_count() const { return tile_grid(view_).count(); }
 Film ViewRenderer::new_film() const { return make_film(scene_, view_); }
 
 std::uint64_t ViewRenderer::render_tiles(int first, int last, Film& film,
-                                         const std::function<void()>& tile_done) const {
+                                         const std::function<void()>& tile_done,
+                                         const std::function<bool()>& cut) const {
   const TileGrid grid = tile_grid(view_);
   std::atomic<std::uint64_t> rays{0};
   state_->arena->execute([&] {
     tbb::parallel_for(
         tbb::blocked_range<int>(first, last, 1), [&](const tbb::blocked_range<int>& r) {
           for (int tile = r.begin(); tile != r.end(); ++tile) {
+            if (cut && cut()) return;
             rays += render_tile(*state_->tracer, state_->camera, view_, scene_.settings, tile, grid,
                                 options_.centre_first_sample, film);
             if (tile_done) tile_done();
@@ -292,17 +294,25 @@ Film Renderer::render(const View& view, const RenderOptions& options, RenderStat
   // Waves of tiles in a fixed order: between waves the film is a consistent snapshot.
   for (int wave = first_tile; wave < count; wave += kTilesPerWave) {
     const int wave_end = std::min(wave + kTilesPerWave, count);
-    rays += tiles.render_tiles(wave, wave_end, film, tile_done);
-    const bool stop = wave_end < count && options.stop && options.stop(wave_end);
+    // A stop asked for within the wave cuts it short (Ctrl-C answered within a tile's
+    // time); the wave then counts as not begun, and a resume renders it again.
+    std::atomic<bool> cut{false};
+    const auto cut_short = [&] {
+      if (!cut && options.stop && options.stop(tiles_done.load())) cut = true;
+      return cut.load();
+    };
+    rays += tiles.render_tiles(wave, wave_end, film, tile_done, cut_short);
+    const bool stop = cut || (wave_end < count && options.stop && options.stop(wave_end));
+    const int finished = cut ? wave : wave_end;
     const auto now = std::chrono::steady_clock::now();
-    if (!options.checkpoint.empty() && wave_end < count &&
+    if (!options.checkpoint.empty() && finished < count &&
         (stop || std::chrono::duration<double>(now - last_checkpoint).count() >= interval)) {
-      write_checkpoint(options, film, wave_end);
+      write_checkpoint(options, film, finished);
       last_checkpoint = now;
       interval = options.checkpoint_seconds;
     }
     if (stop)
-      throw RenderInterrupted("render stopped after " + std::to_string(wave_end) + " tiles");
+      throw RenderInterrupted("render stopped after " + std::to_string(finished) + " tiles");
   }
   if (!options.checkpoint.empty()) {
     std::error_code ignored;

@@ -41,8 +41,9 @@ struct RenderOptions {
   // The first sample of each pixel at its centre (for comparisons with renderers that
   // sample pixel centres), so the AOVs describe the centre.
   bool centre_first_sample = false;
-  // Asked between waves of tiles with the number of tiles done: true stops the render as if
-  // killed, after writing the checkpoint (when one is set). `landsim render` asks whether
+  // Asked before each tile and between waves of tiles with the number of tiles done, from any
+  // worker thread: true stops the render as if killed, within a tile's time, after writing
+  // the checkpoint (when one is set) of the waves finished. `landsim render` asks whether
   // SIGTERM or SIGINT arrived (a batch system's time limit, Ctrl-C).
   std::function<bool(int tiles_done)> stop;
 };
@@ -90,9 +91,11 @@ class ViewRenderer {
   // An empty film of the view, with the scene's bands (make_film).
   Film new_film() const;
   // Renders tiles [first, last) into `film`; tile_done (if set) is called after each tile,
-  // from any worker thread. Returns the rays traced.
+  // from any worker thread. Tiles not yet begun when `cut` (if set) returns true are left
+  // out. Returns the rays traced.
   std::uint64_t render_tiles(int first, int last, Film& film,
-                             const std::function<void()>& tile_done = {}) const;
+                             const std::function<void()>& tile_done = {},
+                             const std::function<bool()>& cut = {}) const;
 
  private:
   struct State;

@@ -1,0 +1,123 @@
+"""landsim.render and landsim.render_set: the program's images, in memory and on disk."""
+import json
+import threading
+import time
+import _thread
+
+import numpy as np
+import pytest
+
+import landsim
+from conftest import read_exr, run_cli
+
+
+def render_with_cli(out, *args):
+    run_cli("render", "--out", str(out), "--spp", "2", "--width", "96", "--height", "54",
+            "--set", "sun.elevation=30", *args)
+
+
+def test_render_arrays_equal_the_exr_the_program_writes(tmp_path, small_default):
+    image = landsim.render(small_default.set("sun.elevation", 30))
+    render_with_cli(tmp_path, "--view", "crater")
+    exr = read_exr(tmp_path / "crater.exr")
+    assert set(exr) == set(image.layers)
+    for name, channel in exr.items():
+        mine = image.layers[name]
+        assert mine.dtype == channel.dtype, name
+        assert np.array_equal(mine, channel, equal_nan=True), name
+    # The shaped views are the same planes.
+    assert np.array_equal(image.rgb[:, :, 1], exr["G"])
+    assert np.array_equal(image.depth, exr["Z"])
+    assert np.array_equal(image.object, exr["object"])
+    manifest = json.loads((tmp_path / "manifest.json").read_text())["images"][0]
+    mine = image.manifest
+    for key in ("view", "camera", "irradiance"):
+        assert mine[key] == manifest[key], key
+    assert image.metadata["scenario_hash"] == small_default.hash
+
+
+def test_render_is_the_same_on_one_thread_and_two(small_default):
+    one = landsim.render(small_default, threads=1)
+    two = landsim.render(small_default, threads=2)
+    assert np.array_equal(one.rgb, two.rgb)
+    assert np.array_equal(one.layers["instance"], two.layers["instance"])
+
+
+def test_render_arguments_win_over_the_scenario(small_default):
+    image = landsim.render(small_default, width=48, spp=1)
+    assert (image.width, image.height) == (48, 27)
+    assert image.spp == 1
+    with pytest.raises(landsim.ScenarioError) as e:
+        landsim.render(small_default, view="nowhere")
+    assert "crater" in str(e.value)
+
+
+def test_render_set_writes_what_the_program_writes(tmp_path, small_default):
+    mine, theirs = tmp_path / "python", tmp_path / "cli"
+    done = landsim.render_set(small_default.set("sun.elevation", 30), mine)
+    render_with_cli(theirs)
+    assert [i["view"] for i in done["images"]] == ["crater"]
+    for name in ("crater.exr", "crater.png", "manifest.json"):
+        assert (mine / name).exists(), name
+    a, b = read_exr(mine / "crater.exr"), read_exr(theirs / "crater.exr")
+    for name in b:
+        assert np.array_equal(a[name], b[name], equal_nan=True), name
+
+
+def test_the_gil_is_released_while_rendering(small_default):
+    ticks = []
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks.append(1)
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    landsim.render(small_default.set("render.spp", 16), width=192)
+    stop.set()
+    counter.join()
+    assert len(ticks) > 20
+
+
+def test_progress_is_reported_on_the_calling_thread(small_default):
+    seen = []
+    caller = threading.get_ident()
+    landsim.render(small_default.set("render.spp", 8), width=192,
+                   progress=lambda image, f: seen.append((image, f, threading.get_ident())))
+    assert seen, "no progress reported"
+    assert all(image == "crater" and 0 < f <= 1 and t == caller for image, f, t in seen)
+    assert seen[-1][1] == 1.0
+
+
+def test_an_exception_in_progress_stops_the_render(small_default):
+    class Enough(Exception):
+        pass
+
+    def stop(image, fraction):
+        raise Enough()
+
+    start = time.monotonic()
+    with pytest.raises(Enough):
+        landsim.render(small_default.set("render.spp", 4096), width=160, progress=stop)
+    # The first report comes after 5% of the tiles, the stop within a tile of it.
+    assert time.monotonic() - start < 30
+
+
+def test_ctrl_c_cancels_a_set_cleanly_and_resume_finishes_it(tmp_path, small_default):
+    slow = small_default.copy().set("render.spp", 4096).set("views.0.width", 320).set(
+        "views.0.height", 180)
+    timer = threading.Timer(1.0, _thread.interrupt_main)
+    timer.start()
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        landsim.render_set(slow, tmp_path)
+    timer.cancel()
+    # The full render would take minutes; the stop comes within a tile (about a second).
+    assert time.monotonic() - start < 20
+    assert not (tmp_path / "manifest.json").exists()
+    assert not (tmp_path / "crater.exr").exists()
+    # The same set, quick, renders into the folder afterwards.
+    done = landsim.render_set(small_default, tmp_path)
+    assert len(done["images"]) == 1 and (tmp_path / "manifest.json").exists()
