@@ -16,6 +16,7 @@
 #include "renderer/materials/grass_patch.h"
 #include "renderer/output/exposure.h"
 #include "renderer/spectra/colour_matching.h"
+#include "renderer/transport/bsdf.h"
 
 namespace landsim::exporters {
 namespace {
@@ -191,12 +192,10 @@ void write_objects(fmt::ostream& out, const renderer::Scene& scene) {
     out.print("// object {}\nunion {{\n", sanitize_for_pov(o.name));
     for (const auto& [m, indices] : object_by_material(scene.object_prototypes[o.prototype])) {
       const renderer::ObjectMaterial& mat = o.materials[m];
-      const float alpha = std::max(mat.roughness * mat.roughness, 0.01f);
-      const Vec3f diffuse = mat.base_colour * (1.0f - mat.metallic);
-      const Vec3f f0 =
-          Vec3f{0.04f, 0.04f, 0.04f} * (1.0f - mat.metallic) + mat.base_colour * mat.metallic;
+      const renderer::ObjectLobes lobes = renderer::object_lobes(mat, mat.base_colour);
       out.print("  object {{ LS_Object_{}_{} LS_ObjectTexture({}, {:.6g}, {:.6g}) }}\n",
-                o.prototype, m, colour_vector(diffuse), max_component(f0), alpha * alpha);
+                o.prototype, m, colour_vector(lobes.diffuse), max_component(lobes.specular),
+                lobes.alpha * lobes.alpha);
     }
     std::array<float, 12> m{};
     for (std::size_t k = 0; k < 12; ++k) m[k] = static_cast<float>(o.transform[k]);

@@ -48,7 +48,7 @@ PathSample ComparableTracer::trace(const Ray& ray, const CounterRng& rng,
   SurfaceMaterial m = surface_material(scene_, *hit, v);
   m.transmittance = {};  // POV-Ray's leaves are opaque
   out.first = first_hit(scene_, *hit, v, m);
-  const float fresnel = water_fresnel(m, ray.direction, v.ng);
+  const float fresnel = Bsdf(m, v.frame()).fresnel(ray.direction);
   const std::uint32_t dim = kFirstBounceDim;
   Vec3f direct = sample_sun(scene_, embree_, sun_direction_, v, m, rng.uniform(dim + kSun0),
                             rng.uniform(dim + kSun1), out.rays)

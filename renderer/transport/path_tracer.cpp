@@ -25,16 +25,6 @@ constexpr int kRouletteAfter = 1;
 // measurement: 0.2 adds 3% to the noise of the forest benchmark, 0.5 adds 20%.
 constexpr float kShadowRouletteFraction = 0.2f;
 
-// Cosine-weighted direction about n (pdf cos / pi), Malley's method.
-Vec3f sample_cosine(const Vec3f& n, float u1, float u2) {
-  const float r = std::sqrt(u1);
-  const float phi = 2.0f * kPi * u2;
-  const float z = std::sqrt(std::max(0.0f, 1.0f - u1));
-  Vec3f t, b;
-  orthonormal_basis(n, t, b);
-  return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * z);
-}
-
 float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
 
 // 1 in the bins some output sees (the colour-matching functions, or a band), 0 elsewhere. A
@@ -95,16 +85,15 @@ bool PathTracer::occluded(const Ray& ray, std::uint32_t mask) const {
   return embree_.occluded(ray, 0.0f, kInfinity, mask) || plain_hit(plain_, ray).has_value();
 }
 
-Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
-                               const SpectralMaterial& s, float u1, float u2,
-                               const Spectrum& throughput, float u_roulette,
+Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
+                               float u1, float u2, const Spectrum& throughput, float u_roulette,
                                std::uint32_t& rays) const {
   // As sample_sun (renderer/transport/surface.h) with the spectral material: one direction in the
   // disc.
   const Vec3f l =
       sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
   bool front = false;
-  const Spectrum f = reflected_light(s, m, v, l, front);
+  const Spectrum f = bsdf.eval(s, l, front);
   if (max_component(f) <= 0.0f) return {};
   const Spectrum light = f * sun_spectrum_;
   const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
@@ -116,37 +105,15 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const SurfaceMaterial& m,
                                Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance)));
 }
 
-// The probability of sampling the glossy coat rather than the diffuse base: the coat's
-// Fresnel reflectance toward the viewer against what the base reflects of the rest.
-static float coat_probability(const ShadingPoint& v, const SurfaceMaterial& m) {
-  const float coat = max_component(schlick_fresnel(m.specular, dot(v.n, v.wo)));
-  const float base = max_component(m.reflectance) * (1.0f - coat);
-  return std::clamp(coat / std::max(coat + base, 1e-6f), 0.1f, 0.9f);
-}
-
-float PathTracer::bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m,
-                           const Vec3f& dir) const {
-  if (m.glossy()) {
-    const float c = coat_probability(v, m);
-    return c * ggx_pdf(m.alpha, v.n, v.wo, dir) + (1.0f - c) * std::max(0.0f, dot(v.n, dir)) / kPi;
-  }
-  const float r = max_component(m.reflectance), t = max_component(m.transmittance);
-  if (r + t <= 0.0f) return 0.0f;
-  const float c = dot(v.n, dir);
-  return (c > 0.0f ? r / (r + t) : t / (r + t)) * std::abs(c) / kPi;
-}
-
-Spectrum PathTracer::sky_light(const ShadingPoint& v, const SurfaceMaterial& m,
-                               const SpectralMaterial& s, float u1, float u2,
-                               const Spectrum& throughput, float u_roulette,
+Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
+                               float u1, float u2, const Spectrum& throughput, float u_roulette,
                                std::uint32_t& rays) const {
   float pdf = 0.0f;
   const Vec3f l = sky_.sample(u1, u2, pdf);
   bool front = false;
-  const Spectrum f = reflected_light(s, m, v, l, front);
+  const Spectrum f = bsdf.eval(s, l, front);
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
-  const Spectrum light =
-      f * sky_.spectral_radiance(l) * (power_heuristic(pdf, bsdf_pdf(v, m, l)) / pdf);
+  const Spectrum light = f * sky_.spectral_radiance(l) * (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
   const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
   ++rays;
@@ -251,70 +218,31 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     const ShadingPoint v = shading_point(ray, *hit, mask);
     const SurfaceMaterial m = surface_material(scene_, *hit, v);
     const SpectralMaterial sm = spectral_material(m);
+    const Bsdf bsdf(m, v.frame());
     if (bounce == 0) out.first = first_hit(scene_, *hit, v, m);
-    const float fresnel = water_fresnel(m, ray.direction, v.ng);
+    const float fresnel = bsdf.fresnel(ray.direction);
     // The roulette sees what reaches the pixel: the throughput and the water's share.
     const Spectrum seen = throughput * (1.0f - fresnel);
-    Spectrum direct = sun_light(v, m, sm, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1), seen,
-                                rng.uniform(dim + kSunRoulette), out.rays);
-    direct += sky_light(v, m, sm, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
+    Spectrum direct = sun_light(v, bsdf, sm, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1),
+                                seen, rng.uniform(dim + kSunRoulette), out.rays);
+    direct += sky_light(v, bsdf, sm, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
                         rng.uniform(dim + kSkyRoulette), out.rays);
     radiance += seen * direct;
 
-    if (m.water && rng.uniform(dim + kFresnel) < fresnel) {
-      // Mirror reflection off the water's (geometric) surface, chosen with probability F.
-      const Vec3f mirrored = ray.direction - v.ng * (2.0f * dot(ray.direction, v.ng));
-      ray = {offset_point(v, v.ng), normalize(mirrored)};
-      last_specular = true;
-      continue;
-    }
-    if (m.glossy()) {
-      // Coat or base, chosen by coat_probability; the weight is f cos / (the mixture's pdf),
-      // which bsdf_pdf also gives the sky's MIS.
-      const float choice = rng.uniform(dim + kChoice);
-      const float c = coat_probability(v, m);
-      const bool coat = choice < c;
-      const float u = std::min(coat ? choice / c : (choice - c) / (1.0f - c), 0.99999994f);
-      const Vec3f next = coat ? ggx_sample(m.alpha, v.n, v.wo, u, rng.uniform(dim + kDir))
-                              : sample_cosine(v.n, u, rng.uniform(dim + kDir));
-      bool front = false;
-      const Spectrum f = reflected_light(sm, m, v, next, front);
-      const float pdf = bsdf_pdf(v, m, next);
-      if (!front || pdf <= 0.0f || max_component(f) <= 0.0f) break;
-      throughput = throughput * f / pdf;
-      last_pdf = pdf;
-      last_specular = false;
-      if (bounce >= kRouletteAfter) {
-        const float survive = std::clamp(importance(throughput), 0.05f, 1.0f);
-        if (rng.uniform(dim + kRoulette) >= survive) break;
-        throughput = throughput / survive;
-      }
-      ray = {offset_point(v, v.ng), next};
-      continue;
-    }
-    // Lambertian reflection or (two-sided surfaces) transmission, chosen in proportion to
-    // their strength; cosine sampling makes the weight the chosen coefficient / probability.
-    const float r = max_component(m.reflectance), tr = max_component(m.transmittance);
-    if (r + tr <= 0.0f) break;
-    const float p_reflect = r / (r + tr);
-    const float choice = rng.uniform(dim + kChoice);
-    const bool reflect = choice < p_reflect;
-    // The choice's own random number, rescaled, also places the direction.
-    const float u = reflect ? choice / p_reflect : (choice - p_reflect) / (1.0f - p_reflect);
-    const Vec3f next =
-        sample_cosine(reflect ? v.n : -v.n, std::min(u, 0.99999994f), rng.uniform(dim + kDir));
-    if (dot(next, reflect ? v.ng : -v.ng) <= 0.0f)
-      break;  // shading normal pointed it into the surface
-    throughput =
-        throughput * (reflect ? sm.reflectance / p_reflect : sm.transmittance / (1.0f - p_reflect));
-    last_pdf = bsdf_pdf(v, m, next);
-    last_specular = false;
+    const BsdfSample next = bsdf.sample(
+        sm, ray.direction, fresnel,
+        {rng.uniform(dim + kFresnel), rng.uniform(dim + kChoice), rng.uniform(dim + kDir)});
+    if (next.kind == BsdfSample::Kind::absorbed) break;
+    ray = {offset_point(v, next.side), next.direction};
+    last_specular = next.kind == BsdfSample::Kind::mirror;
+    if (last_specular) continue;
+    throughput = throughput * next.factor / next.divisor;
+    last_pdf = next.pdf;
     if (bounce >= kRouletteAfter) {
       const float survive = std::clamp(importance(throughput), 0.05f, 1.0f);
       if (rng.uniform(dim + kRoulette) >= survive) break;
       throughput = throughput / survive;
     }
-    ray = {offset_point(v, reflect ? v.ng : -v.ng), next};
   }
   finish(out, radiance);
   return out;

@@ -34,11 +34,11 @@ class PathTracer : public Integrator {
  private:
   // Light at a vertex, as the path's `throughput` so far will see it (the throughput
   // decides the shadow ray's roulette; it is not applied to the result).
-  Spectrum sun_light(const ShadingPoint& v, const SurfaceMaterial& m, const SpectralMaterial& s,
-                     float u1, float u2, const Spectrum& throughput, float u_roulette,
+  Spectrum sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
+                     float u2, const Spectrum& throughput, float u_roulette,
                      std::uint32_t& rays) const;
-  Spectrum sky_light(const ShadingPoint& v, const SurfaceMaterial& m, const SpectralMaterial& s,
-                     float u1, float u2, const Spectrum& throughput, float u_roulette,
+  Spectrum sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
+                     float u2, const Spectrum& throughput, float u_roulette,
                      std::uint32_t& rays) const;
   // Sunlight scattered toward the viewer by haze along a segment; `t` may be infinite.
   // `depth`: the segment's optical depth.
@@ -52,7 +52,6 @@ class PathTracer : public Integrator {
   // What the roulettes weigh a spectrum by: its largest bin among those an output sees (the
   // near infrared keeps a canopy's paths alive; without a band there it is not worth it).
   float importance(const Spectrum& s) const { return max_component(s * seen_bins_); }
-  float bsdf_pdf(const ShadingPoint& v, const SurfaceMaterial& m, const Vec3f& dir) const;
   // The sun, sky and ground colours of `settings`' bands, and the RGB, from a path's spectrum.
   void finish(PathSample& out, const Spectrum& radiance) const;
 

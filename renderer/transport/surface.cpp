@@ -19,19 +19,18 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
-// A scene object's mesh material (glTF's metallic-roughness model): metals colour their
-// coat and have no diffuse part; dielectrics reflect 4% at normal incidence.
+// A scene object's mesh material: a diffuse base under a GGX coat (object_lobes).
 SurfaceMaterial object_material(const Scene& scene, const Hit& hit) {
   const ObjectInstance& object = scene.objects[static_cast<std::size_t>(hit.object_index)];
   const ObjectPrototype& proto = scene.object_prototypes[object.prototype];
   const ObjectMaterial& mat = object.materials[proto.triangle_material[hit.primitive]];
   Vec3f base = mat.base_colour;
   if (mat.texture) base = base * mat.texture->colour(hit.u, hit.v);
-  const float metal = mat.metallic;
+  const ObjectLobes lobes = object_lobes(mat, base);
   SurfaceMaterial m;
-  m.reflectance = base * (1.0f - metal);
-  m.specular = Vec3f{0.04f, 0.04f, 0.04f} * (1.0f - metal) + base * metal;
-  m.alpha = std::max(mat.roughness * mat.roughness, kMinGlossyAlpha);
+  m.reflectance = lobes.diffuse;
+  m.specular = lobes.specular;
+  m.alpha = lobes.alpha;
   return m;
 }
 
@@ -82,20 +81,6 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
   return {proto.bark_albedo, {}};
 }
 
-SpectralMaterial spectral_material(const SurfaceMaterial& m) {
-  SpectralMaterial s;
-  if (m.optics) {
-    const Spectrum factor = reflectance_spectrum(m.optics_factor);
-    s.reflectance = m.optics->reflectance * factor;
-    s.transmittance = m.optics->transmittance * factor;
-  } else {
-    s.reflectance = reflectance_spectrum(m.reflectance);
-    if (m.two_sided()) s.transmittance = reflectance_spectrum(m.transmittance);
-  }
-  if (m.glossy()) s.specular = reflectance_spectrum(m.specular);
-  return s;
-}
-
 ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask) {
   const Vec3f p = ray.origin + ray.direction * hit.t;
   ShadingPoint v{p,    hit.shading_normal, hit.geometric_normal,
@@ -112,63 +97,6 @@ FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
   const Vec3f albedo = m.reflectance + m.transmittance + (m.glossy() ? m.specular : Vec3f{});
   return {hit.t,        v.n,     albedo,    hit.object,
           hit.instance, species, hit.level, static_cast<std::uint32_t>(hit.object_index + 1)};
-}
-
-// cos / pi toward `l`, or 0 when the light cannot arrive from there (behind an opaque
-// surface, or between the shading and geometric normals); `front` tells the side.
-static float lambert_weight(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng,
-                            const Vec3f& l, bool& front) {
-  const float cos_n = dot(n, l);
-  front = cos_n > 0.0f && dot(ng, l) > 0.0f;
-  const bool back = m.two_sided() && cos_n < 0.0f && dot(ng, l) < 0.0f;
-  return front || back ? std::abs(cos_n) / kPi : 0.0f;
-}
-
-Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
-              bool& front) {
-  const float w = lambert_weight(m, n, ng, l, front);
-  if (w == 0.0f) return {};
-  return (front ? m.reflectance : m.transmittance) * w;
-}
-
-Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m, const ShadingPoint& v,
-                         const Vec3f& l, bool& front) {
-  if (!m.glossy()) {
-    const float w = lambert_weight(m, v.n, v.ng, l, front);
-    if (w == 0.0f) return {};
-    return (front ? s.reflectance : s.transmittance) * w;
-  }
-  front = dot(v.n, l) > 0.0f && dot(v.ng, l) > 0.0f;
-  if (!front) return {};
-  // As the RGB reflected_light: the base under what the coat lets through, plus the coat.
-  const Vec3f h = normalize(v.wo + l);
-  const float weight = schlick_weight(dot(v.wo, h));
-  const float lobe = ggx_lobe(m.alpha, v.n, v.wo, l);
-  const float diffuse = dot(v.n, l) / kPi;
-  Spectrum out;
-  for (int k = 0; k < kSpectrumBins; ++k) {
-    const float fresnel = s.specular[k] + (1.0f - s.specular[k]) * weight;
-    out[k] = s.reflectance[k] * (1.0f - fresnel) * diffuse + fresnel * lobe;
-  }
-  return out;
-}
-
-Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l,
-                      bool& front) {
-  if (!m.glossy()) return lambert(m, v.n, v.ng, l, front);
-  front = dot(v.n, l) > 0.0f && dot(v.ng, l) > 0.0f;
-  if (!front) return {};
-  // The diffuse base sees what the coat lets through, at the half vector's angle.
-  const Vec3f h = normalize(v.wo + l);
-  const Vec3f through = Vec3f{1.0f, 1.0f, 1.0f} - schlick_fresnel(m.specular, dot(v.wo, h));
-  return m.reflectance * through * (dot(v.n, l) / kPi) +
-         ggx_reflection(m.specular, m.alpha, v.n, v.wo, l);
-}
-
-float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng) {
-  if (!m.water) return 0.0f;
-  const float c = std::clamp(-dot(direction, ng), 0.0f, 1.0f);
-  return 0.02f + 0.98f * std::pow(1.0f - c, 5.0f);
 }
 
 float hit_error(const Vec3f& origin, float t, const Vec3f& p) {
@@ -202,7 +130,7 @@ SunSample sample_sun(const Scene& scene, const EmbreeScene& embree, const Vec3f&
                      std::uint32_t& rays, const Vec3f& throughput, const ShadowRoulette& roulette) {
   const Vec3f l = sample_cone(sun_direction, static_cast<float>(scene.sun.angular_radius), u1, u2);
   bool front = false;
-  const Vec3f f = reflected_light(m, v, l, front);
+  const Vec3f f = Bsdf(m, v.frame()).eval(l, front);
   if (max_component(f) <= 0.0f) return {};
   const Vec3f light = f * scene.sun.irradiance;
   const float weight = shadow_roulette_weight(max_component(throughput * light), roulette);

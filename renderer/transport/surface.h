@@ -1,41 +1,17 @@
 #pragma once
-// A surface point as the integrators shade it: its material (Lambertian, two-sided for leaves
-// and grass, a Fresnel mirror for water), its normals facing the incoming ray, and sunlight
-// arriving there. Shared by PathTracer and ComparableTracer, so that both see the same
-// surfaces and the same sun sample.
+// A surface point as the integrators shade it: its material (renderer/transport/bsdf.h), its
+// normals facing the incoming ray, and sunlight arriving there. Shared by PathTracer and
+// ComparableTracer, so that both see the same surfaces and the same sun sample.
 #include <cstdint>
 
 #include "core/vec3.h"
 #include "renderer/acceleration/embree_scene.h"
 #include "renderer/camera.h"
 #include "renderer/scene.h"
+#include "renderer/transport/bsdf.h"
 #include "renderer/transport/shadow_roulette.h"
 
 namespace landsim::renderer {
-
-// What a surface does with light: Lambertian reflection, plus (leaves, grass) Lambertian
-// transmission to the other side, or (scene objects) a GGX glossy coat over the diffuse part.
-struct SurfaceMaterial {
-  Vec3f reflectance;
-  Vec3f transmittance;  // zero for opaque surfaces
-  bool water = false;   // adds a Fresnel mirror (Schlick, F0 = 0.02) over the diffuse part
-  Vec3f
-      specular{};  // the coat's normal reflectance F0; zero: no coat (renderer/transport/glossy.h)
-  float alpha = 0.0f;  // the coat's GGX roughness
-  // The material's own spectra (leaves, grass, soils), which the colours above summarise:
-  // the spectral material is these times the upsampled `optics_factor` (the variation, tint
-  // or vigour that multiplied the colours). Null: the colours upsampled.
-  const SpectralOptics* optics = nullptr;
-  Vec3f optics_factor{1.0f, 1.0f, 1.0f};
-  bool two_sided() const { return max_component(transmittance) > 0.0f; }
-  bool glossy() const { return max_component(specular) > 0.0f; }
-};
-
-// The path tracer's view of a SurfaceMaterial: per wavelength bin.
-struct SpectralMaterial {
-  Spectrum reflectance, transmittance, specular;
-};
-SpectralMaterial spectral_material(const SurfaceMaterial& m);
 
 struct ShadingPoint {
   Vec3f p;             // on the surface
@@ -44,6 +20,7 @@ struct ShadingPoint {
   std::uint32_t mask;  // the pixel's ray mask (stochastic level of detail)
   Vec3f wo{};          // toward where the ray came from
   float error = 0.0f;  // bound on p's floating-point error, metres (hit_error)
+  ShadingFrame frame() const { return {n, ng, wo}; }
 };
 
 // A bound on the floating-point error of a hit point origin + t x direction as Embree finds
@@ -64,23 +41,6 @@ ShadingPoint shading_point(const Ray& ray, const Hit& hit, std::uint32_t mask);
 struct FirstHit;
 FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
                    const SurfaceMaterial& m);
-
-// f x cos for light arriving from `l`: reflection on the viewer's side, transmission from
-// the far side; `front` tells which side to leave from.
-Vec3f lambert(const SurfaceMaterial& m, const Vec3f& n, const Vec3f& ng, const Vec3f& l,
-              bool& front);
-
-// f x cos for light arriving from `l` and leaving toward v.wo: lambert() for every material
-// but glossy ones, which add the coat's GGX lobe and dim the diffuse part by what the coat
-// reflects.
-Vec3f reflected_light(const SurfaceMaterial& m, const ShadingPoint& v, const Vec3f& l, bool& front);
-
-// The same per wavelength bin, for the path tracer: `s` is spectral_material(m).
-Spectrum reflected_light(const SpectralMaterial& s, const SurfaceMaterial& m, const ShadingPoint& v,
-                         const Vec3f& l, bool& front);
-
-// The Fresnel reflectance of water seen along `direction` (0 for other materials).
-float water_fresnel(const SurfaceMaterial& m, const Vec3f& direction, const Vec3f& ng);
 
 // Pushes the shading point off its surface toward `side` (a geometric normal) by its error
 // bound, so that rays leaving it do not hit the same surface again, and no further: a larger
