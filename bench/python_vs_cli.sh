@@ -11,7 +11,8 @@ OTHER=${3:-}
 LANDSIM="$BUILD/bin/landsim"
 PY=/usr/bin/python3
 OUT=$(mktemp -d)
-trap 'rm -rf "$OUT"' EXIT
+TIMES=$(mktemp)
+trap 'rm -rf "$OUT" "$TIMES"' EXIT
 ARGS="--spp 16 --width 640"
 wall() {  # command...: prints the wall seconds
   start=$(date +%s.%N)
@@ -29,9 +30,9 @@ landsim.render_set(landsim.Scenario.default(), '$OUT/py', spp=16, width=640)")"
 import landsim
 landsim.render(landsim.Scenario.default(), spp=16, width=640)")"
   if [ -n "$OTHER" ]; then echo "other_cli $(wall "$OTHER" render $ARGS --out "$OUT/other")"; fi
-done | tee "$OUT/times.txt"
+done | tee "$TIMES"
 echo "medians of $RUNS runs (s):"
 for name in cli python_set python_render other_cli; do
-  grep "^$name " "$OUT/times.txt" | cut -d' ' -f2 | sort -n |
+  grep "^$name " "$TIMES" | cut -d' ' -f2 | sort -n |
     awk -v n="$name" '{v[NR]=$1} END {if (NR) printf "  %-14s %.2f\n", n, v[int((NR+1)/2)]}'
 done
