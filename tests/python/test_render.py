@@ -100,9 +100,10 @@ def test_an_exception_in_progress_stops_the_render(small_default):
 
     start = time.monotonic()
     with pytest.raises(Enough):
-        landsim.render(small_default.set("render.spp", 4096), width=160, progress=stop)
-    # The first report comes after 5% of the tiles, the stop within a tile of it.
-    assert time.monotonic() - start < 30
+        landsim.render(small_default.set("render.spp", 4096), width=320, progress=stop)
+    # The whole render would take minutes (320 x 180 x 4096 samples); the first report comes
+    # after 5% of the tiles and the stop within a tile of it.
+    assert time.monotonic() - start < 60
 
 
 def test_ctrl_c_cancels_a_set_cleanly_and_resume_finishes_it(tmp_path, small_default):
@@ -114,8 +115,8 @@ def test_ctrl_c_cancels_a_set_cleanly_and_resume_finishes_it(tmp_path, small_def
     with pytest.raises(KeyboardInterrupt):
         landsim.render_set(slow, tmp_path)
     timer.cancel()
-    # The full render would take minutes; the stop comes within a tile (about a second).
-    assert time.monotonic() - start < 20
+    # The whole render would take minutes; the stop comes within a tile (about a second).
+    assert time.monotonic() - start < 60
     assert not (tmp_path / "manifest.json").exists()
     assert not (tmp_path / "crater.exr").exists()
     # The same set, quick, renders into the folder afterwards.
