@@ -2,10 +2,16 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
 
 #include <string>
 #include <vector>
 
+#include "core/input_error.h"
 #include "renderer/output/image_output.h"
 
 namespace py = pybind11;
@@ -80,6 +86,60 @@ py::dict layers(const py::object& self) {
 
 py::object json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+std::string attribute(const renderer::ImageMetadata& meta, const std::string& key) {
+  for (const auto& [k, v] : meta)
+    if (k == key) return v;
+  return {};
+}
+
+// An EXR landsim wrote, as the image `render` would have returned; `entry` is its manifest
+// entry (JSON) when the set's manifest lists it.
+renderer::Film read_film(const std::filesystem::path& path, renderer::ImageMetadata& meta) {
+  try {
+    return renderer::read_exr(path, &meta);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    throw InputError(what.find(path.string()) == std::string::npos ? path.string() + ": " + what
+                                                                   : what);
+  }
+}
+
+scenes::RenderedImage read_image(const std::filesystem::path& path, std::string entry = "{}") {
+  renderer::ImageMetadata meta;
+  renderer::Film film = read_film(path, meta);
+  scenes::RenderedImage image{{}, std::move(film), std::move(meta), std::move(entry)};
+  scenes::ImageReport& r = image.report;
+  r.exr = path;
+  r.view = attribute(image.metadata, "view");
+  r.width = image.film.width();
+  r.height = image.film.height();
+  const auto number = [&](const char* key) {
+    const std::string v = attribute(image.metadata, key);
+    return v.empty() ? 0.0 : std::strtod(v.c_str(), nullptr);
+  };
+  r.time_s = number("time_s");
+  r.spp = static_cast<int>(number("spp"));
+  r.exposure_ev100 = number("exposure_ev100");
+  return image;
+}
+
+// Every image the manifest of the set in `dir` lists, with its entry.
+std::vector<scenes::RenderedImage> read_image_set(const std::filesystem::path& dir) {
+  const nlohmann::json manifest = scenes::read_manifest(dir);
+  std::vector<scenes::RenderedImage> images;
+  for (const nlohmann::json& entry : manifest["images"]) {
+    if (!entry.is_object() || !entry.contains("path") || !entry["path"].is_string())
+      throw InputError((dir / "manifest.json").string() +
+                       ": an image entry without a \"path\" (expected a landsim manifest)");
+    scenes::RenderedImage image = read_image(dir / entry["path"].get<std::string>(), entry.dump());
+    image.report.frame_index = entry.value("frame_index", std::size_t{0});
+    images.push_back(std::move(image));
+  }
+  return images;
+}
+
 }  // namespace
 
 void bind_image(py::module_& m) {
@@ -149,11 +209,26 @@ in manifest.json; metadata the EXR's landsim/ attributes.)")
                                d["rays_per_second"] = s.rays_per_second();
                                return d;
                              })
+      .def(
+          "save",
+          [](const RenderedImage& i, const std::filesystem::path& path) {
+            renderer::write_exr(i.film, path, i.metadata);
+          },
+          py::arg("path"),
+          "Writes the image as an EXR with every layer and attribute (landsim.read_image reads "
+          "it back).")
       .def("__repr__", [](const RenderedImage& i) {
         return "<landsim.Image " + i.report.view + " frame " +
                std::to_string(i.report.frame_index) + ", " + std::to_string(i.film.width()) +
                " x " + std::to_string(i.film.height()) + ">";
       });
+  m.def(
+      "read_image", [](const std::filesystem::path& path) { return read_image(path); },
+      py::arg("path"),
+      "An EXR landsim wrote (landsim render, render_set, Image.save) as a landsim.Image; "
+      "ScenarioError for a file that is not one.");
+  m.def("read_image_set", &read_image_set, py::arg("dir"),
+        "Every image of an image set (its manifest.json), each with its manifest entry.");
 }
 
 }  // namespace landsim::python

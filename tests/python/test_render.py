@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import landsim
-from conftest import read_exr, run_cli
+from conftest import read_exr, run_cli, source_path
 
 
 def render_with_cli(out, *args):
@@ -122,3 +122,38 @@ def test_ctrl_c_cancels_a_set_cleanly_and_resume_finishes_it(tmp_path, small_def
     # The same set, quick, renders into the folder afterwards.
     done = landsim.render_set(small_default, tmp_path)
     assert len(done["images"]) == 1 and (tmp_path / "manifest.json").exists()
+
+
+def test_a_stored_set_reads_back_as_the_images_render_returns(tmp_path, small_default):
+    landsim.render_set(small_default, tmp_path)
+    images = landsim.read_image_set(tmp_path)
+    assert [i.view for i in images] == ["crater"]
+    stored, fresh = images[0], landsim.render(small_default)
+    assert set(stored.layers) == set(fresh.layers)
+    for name, array in fresh.layers.items():
+        assert np.array_equal(stored.layers[name], array, equal_nan=True), name
+    assert stored.manifest["view"] == "crater" and "irradiance" in stored.manifest
+    assert stored.metadata["scenario_hash"] == small_default.hash
+    assert stored.spp == fresh.spp == 2
+
+
+def test_an_image_saves_and_reads_back_with_its_bands(tmp_path):
+    ndvi = landsim.Scenario.load(source_path("scenes", "examples", "ndvi.toml"))
+    image = landsim.render(ndvi, spp=1, width=64)
+    assert any(name.startswith("band.") for name in image.layers)
+    image.save(tmp_path / "again.exr")
+    back = landsim.read_image(tmp_path / "again.exr")
+    assert set(back.layers) == set(image.layers)
+    for name, array in image.layers.items():
+        assert np.array_equal(back.layers[name], array, equal_nan=True), name
+
+
+def test_a_file_that_is_not_a_landsim_image_is_refused_by_name(tmp_path):
+    bad = tmp_path / "notes.exr"
+    bad.write_text("not an image")
+    with pytest.raises(landsim.ScenarioError) as e:
+        landsim.read_image(bad)
+    assert "notes.exr" in str(e.value)
+    with pytest.raises(landsim.ScenarioError) as e:
+        landsim.read_image_set(tmp_path)
+    assert "manifest.json" in str(e.value)
