@@ -16,6 +16,7 @@
 #include "core/input_error.h"
 #include "core/process_memory.h"
 #include "featuremaps/placement.h"
+#include "renderer/acceleration/level_ladder.h"
 #include "renderer/acceleration/memory_model.h"
 #include "renderer/materials/grass_patch.h"
 #include "renderer/output/image_io.h"
@@ -108,7 +109,7 @@ GroundSize ground_size(const Scenario& s, const terrain::ElevationGrid& grid,
 // terrain) and, per view, the distance from the camera to its nearest cell.
 struct SpeciesExtent {
   double area = 0.0;
-  std::vector<double> nearest;  // per view, metres
+  std::vector<double> nearest, farthest;  // per view, metres
 };
 
 std::vector<SpeciesExtent> species_extents(const Scenario& s,
@@ -116,7 +117,10 @@ std::vector<SpeciesExtent> species_extents(const Scenario& s,
                                            const featuremaps::VegetationMap& map,
                                            const terrain::ElevationGrid& grid) {
   std::vector<SpeciesExtent> extent(s.species.size());
-  for (SpeciesExtent& e : extent) e.nearest.assign(views.size(), 1e300);
+  for (SpeciesExtent& e : extent) {
+    e.nearest.assign(views.size(), 1e300);
+    e.farthest.assign(views.size(), 0.0);
+  }
   const terrain::GeoTransform& t = map.transform();
   const double cell_area = t.cell_size_x * t.cell_size_y;
   const double half_diagonal = 0.5 * std::hypot(t.cell_size_x, t.cell_size_y);
@@ -132,28 +136,43 @@ std::vector<SpeciesExtent> species_extents(const Scenario& s,
         if (s.species[k].bit != *bit) continue;
         extent[k].area += cell_area;
         for (std::size_t v = 0; v < views.size(); ++v) {
-          const double d = length(Vec3{x, y, *z} - views[v].position) - half_diagonal;
-          extent[k].nearest[v] = std::min(extent[k].nearest[v], std::max(d, 1.0));
+          const double d = length(Vec3{x, y, *z} - views[v].position);
+          extent[k].nearest[v] = std::min(extent[k].nearest[v], std::max(d - half_diagonal, 1.0));
+          extent[k].farthest[v] = std::max(extent[k].farthest[v], d + half_diagonal);
         }
       }
     }
   return extent;
 }
 
-// Primitives Embree holds for a variant drawn down to range r2 (Weber & Penn section 5): the
-// detail of its nearest tree. Farther trees use lower levels, which share the buffers and
-// add smaller BVHs (kFartherLevels).
-double embree_level_bytes(const renderer::TreePrototype& p, std::optional<double> r2) {
-  const trees::TreeDetail detail =
-      r2 ? trees::tree_detail(p.geometry, *r2, p.degradation) : trees::full_detail(p.geometry);
+// Primitives Embree holds for one level of a variant: its BVH over what the level draws
+// of the shared buffers (renderer/acceleration/level_ladder.h drawn_group).
+double embree_level_bytes(const renderer::TreePrototype& p, const trees::TreeDetail& detail) {
   double bytes = 0.0;
   for (int g = 0; g < trees::kGroupCount; ++g) {
-    const trees::GroupDetail& d = detail.groups[static_cast<std::size_t>(g)];
-    bytes += d.triangles * mm::kEmbreeTreeTriangle;
-    const double far = static_cast<double>(d.far_only_end - d.far_only_first);
-    bytes += far * (g == static_cast<int>(trees::Group::leaves) ? mm::kEmbreeDisc
-                                                                : mm::kEmbreeCurveSegment);
+    const auto group = static_cast<trees::Group>(g);
+    const renderer::DrawnGroup n = renderer::drawn_group(
+        p.geometry.group(group), group, detail.groups[static_cast<std::size_t>(g)]);
+    bytes += n.triangles * mm::kEmbreeTreeTriangle;
+    bytes += static_cast<double>(n.far_end - n.far_first) *
+             (group == trees::Group::leaves ? mm::kEmbreeDisc : mm::kEmbreeCurveSegment);
   }
+  return bytes;
+}
+
+// A view's levels of a variant whose trees stand from `nearest` to `farthest` metres from
+// it: every level the Embree scene builds for ranges between (Weber & Penn section 5's
+// detail at each anchor step of the ladder), or full detail without degradation. At fine
+// pixels the near steps keep nearly every primitive, so several near-full levels add up.
+double view_levels_bytes(const renderer::TreePrototype& p, const renderer::View& view,
+                         double nearest, double farthest, bool degrade) {
+  if (!degrade) return embree_level_bytes(p, trees::full_detail(p.geometry));
+  const auto r2 = [&](double d) {
+    return view.detail_range_scale * renderer::calibrated_view_range(view, d);
+  };
+  double bytes = 0.0;
+  for (const trees::TreeDetail& d : renderer::drawn_level_details(p, r2(nearest), r2(farthest)))
+    bytes += embree_level_bytes(p, d);
   return bytes;
 }
 
@@ -165,8 +184,6 @@ double variants_in_use(double n, int v) { return v * (1.0 - std::pow(1.0 - 1.0 /
 // masks (renderer/acceleration/stochastic_lod.h); the rest take one. Measured on the calibration
 // scenes (bench/memory.sh): 1.000 to 1.001 entries per tree.
 constexpr double kEntriesPerDegradedTree = 1.0;
-// The levels below a degraded variant's nearest one: each smaller than the last.
-constexpr double kFartherLevels = 1.5;
 // Generating a variant holds its skeleton and the mesher's working arrays besides the
 // geometry it returns (measured on the calibration scenes).
 constexpr double kGenerationOverhead = 0.2;
@@ -294,12 +311,9 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
     p.scene_variants += used * size.bytes;
     e.triangles_stored += used * size.triangles;
     e.triangles_instanced += trees[k] * size.triangles;
-    for (std::size_t v = 0; v < views.size(); ++v) {
-      const double r2 = views[v].detail_range_scale *
-                        renderer::calibrated_view_range(views[v], extent[k].nearest[v]);
-      view_prototypes[v] += used * (degrade ? kFartherLevels * embree_level_bytes(*variant[k], r2)
-                                            : embree_level_bytes(*variant[k], std::nullopt));
-    }
+    for (std::size_t v = 0; v < views.size(); ++v)
+      view_prototypes[v] += used * view_levels_bytes(*variant[k], views[v], extent[k].nearest[v],
+                                                     extent[k].farthest[v], degrade);
   }
   p.build_extra += kGenerationOverhead * p.scene_variants;
   p.scene_instances = e.instances * sizeof(renderer::TreeInstance);

@@ -1,5 +1,7 @@
 #include "renderer/acceleration/detail/prototype_levels.h"
 
+#include "renderer/acceleration/level_ladder.h"
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -53,36 +55,13 @@ RTCBuffer float4_buffer(RTCDevice device, const std::vector<Vec3f>& points,
   return b;
 }
 
-// What a level draws of one group in Embree: triangles (a prefix) and a range of far
-// primitives. Level 2 and deeper stems (twigs, 3-point rings) are drawn as their own tubes
-// where the paper draws lines: Embree intersects a thin three-sided tube faster than a round
-// curve (measured on the forest benchmark: curves for twigs cost a third more render time,
-// docs/DEGRADATION.md), and the tubes are the prefix already stored.
-struct Drawn {
-  std::uint32_t triangles = 0, far_first = 0, far_end = 0;
-};
-
-Drawn drawn(const trees::GroupGeometry& g, trees::Group group, const trees::GroupDetail& d) {
-  if (group == trees::Group::level2 || group == trees::Group::level3plus)
-    return {g.triangles_in_prefix(std::max(d.polygon_items, d.far_items)), 0, 0};
-  return {d.triangles, d.far_only_first, d.far_only_end};
-}
-
 }  // namespace
 
 PrototypeLevels::PrototypeLevels(RTCDevice device, const TreePrototype& prototype, bool degradation)
     : device_(device), prototype_(&prototype), degradation_(degradation) {
   step_level_.fill(-1);
   if (!degradation) return;  // every instance is drawn at full detail: no anchors to find
-  const trees::GroupGeometry& leaves = prototype.geometry.group(trees::Group::leaves);
-  for (int step = 0; step < kDetailSteps; ++step) {
-    const std::size_t polygons =
-        detail_for_step(step).groups[static_cast<std::size_t>(trees::Group::leaves)].polygon_items;
-    // Where leaves are discs only, widening keeps every level's area, so octaves (odd steps)
-    // suffice: half the levels' BVHs, the blend spans the rest.
-    anchor_[static_cast<std::size_t>(step)] =
-        polygons == leaves.item_count || (polygons == 0 && step % 2 == 1);
-  }
+  anchor_ = anchor_steps(prototype);
 }
 
 LevelBlend PrototypeLevels::blend_for(double r2, std::optional<std::uint64_t> one_level_key) {
@@ -120,11 +99,7 @@ PrototypeLevels::~PrototypeLevels() {
 
 const trees::TreeDetail& PrototypeLevels::detail_for_step(int step) {
   std::optional<trees::TreeDetail>& d = step_detail_[static_cast<std::size_t>(step)];
-  if (!d) {
-    const trees::TreeGeometry& g = prototype_->geometry;
-    d = degradation_ && step > 0 ? trees::tree_detail(g, step_r2(step), prototype_->degradation)
-                                 : trees::full_detail(g);
-  }
+  if (!d) d = step_detail(*prototype_, degradation_ ? step : 0);
   return *d;
 }
 
@@ -148,7 +123,7 @@ PrototypeLevels::Buffers PrototypeLevels::make_buffers() const {
     GroupBuffers& b = buffers[index];
     std::uint32_t triangles = 0, far_end = 0;
     for (const trees::TreeDetail& d : details_) {
-      const Drawn n = drawn(g, static_cast<trees::Group>(k), d.groups[index]);
+      const DrawnGroup n = drawn_group(g, static_cast<trees::Group>(k), d.groups[index]);
       triangles = std::max(triangles, n.triangles);
       far_end = std::max(far_end, n.far_end);
     }
@@ -211,7 +186,7 @@ void PrototypeLevels::build_level(const Buffers& buffers, const trees::TreeDetai
     const auto group = static_cast<trees::Group>(k);
     const trees::GroupGeometry& g = prototype_->geometry.groups[index];
     const trees::GroupDetail& d = detail.groups[index];
-    const Drawn n = drawn(g, group, d);
+    const DrawnGroup n = drawn_group(g, group, d);
     const GroupBuffers& b = buffers[index];
     if (n.triangles > 0) {
       RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
