@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/counter_rng.h"
 #include "core/vec3.h"
 #include "renderer/camera_model.h"
 #include "renderer/materials/ground_shading.h"
@@ -191,6 +192,9 @@ struct RenderSettings {
   // 0: every pixel takes `spp` samples.
   double noise_threshold = 0.0;
   int min_spp = 16;
+  // How each pixel's samples draw their numbers (core/counter_rng.h; docs/PERFORMANCE.md
+  // "Sampler").
+  SampleSequence sampler = SampleSequence::independent;
   int max_bounces = 4;
   // The preview PNG's exposure value at ISO 100; empty: automatic (renderer/output/exposure.h).
   // The EXR stays in cd/m2 either way.

@@ -61,6 +61,7 @@ struct RenderSection {
   double noise_threshold = renderer::RenderSettings{}.noise_threshold;
   std::optional<int> min_spp;  // empty: 16, or spp when that is fewer
   std::uint64_t seed = renderer::RenderSettings{}.seed;
+  SampleSequence sampler = renderer::RenderSettings{}.sampler;
   // Seeds the Monte Carlo sampling alone (pixel jitter, light paths); the scene (placement,
   // variants, grass, ground detail) stays the `seed`'s. Empty: the `seed`.
   std::optional<std::uint64_t> sampling_seed;

@@ -302,6 +302,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   scene.settings.truth_seed = scenario.render.seed;
   scene.settings.noise_threshold = scenario.render.noise_threshold;
+  scene.settings.sampler = scenario.render.sampler;
   // At most spp, which --spp may have lowered after the file was read.
   scene.settings.min_spp = std::min(
       scenario.render.spp, scenario.render.min_spp.value_or(renderer::RenderSettings{}.min_spp));

@@ -132,7 +132,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       for (int s = 0; s < settings.spp; ++s) {
         if (converged(settings, s, luminance_sum, luminance_squares)) break;
         n = s + 1;
-        const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s));
+        const CounterRng rng(settings.seed, pixel, static_cast<std::uint64_t>(s), settings.sampler);
         const std::optional<Ray> ray =
             sample_ray(camera, camera_ray_rng(settings, pixel, s), x, y, centre_first && s == 0);
         const PathSample sample = ray ? tracer.trace(*ray, rng, mask) : outside_the_image();
@@ -177,7 +177,7 @@ constexpr int kTilesPerWave = 64;
 
 CounterRng camera_ray_rng(const RenderSettings& settings, std::uint64_t pixel, int s) {
   const std::uint64_t seed = s == 0 ? settings.truth_seed.value_or(settings.seed) : settings.seed;
-  return {seed, pixel, static_cast<std::uint64_t>(s)};
+  return {seed, pixel, static_cast<std::uint64_t>(s), settings.sampler};
 }
 
 std::optional<Ray> sample_ray(const Camera& camera, const CounterRng& rng, int x, int y,

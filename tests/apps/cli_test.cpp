@@ -1262,7 +1262,7 @@ TEST(Cli, MisspeltNamesSuggestTheClosest) {
   EXPECT_EQ(k.exit_code, 2);
   EXPECT_NE(k.err.find("[render] unknown key 'sede' (did you mean 'seed'?)"), std::string::npos)
       << k.err;
-  const auto far = dir.write("f.toml", scenario("", "", "spp = 1\nsampels = 3"));
+  const auto far = dir.write("f.toml", scenario("", "", "spp = 1\nqwxzv = 3"));
   const Result f = run("info " + far.string(), dir);
   EXPECT_EQ(f.err.find("did you mean"), std::string::npos) << f.err;
   const auto species = dir.write("s.toml", "core = \"weber_penn\"\nLeafScal = 0.2\n");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <vector>
 
 namespace landsim {
 namespace {
@@ -50,6 +51,48 @@ TEST(CounterRng, NeighbouringPixelsAreNotCorrelated) {
   std::set<float> values;
   for (std::uint64_t k = 0; k < 1000; ++k) values.insert(CounterRng(0, k, 0).uniform(0));
   EXPECT_GT(values.size(), 990u);
+}
+
+// Padded Owen-scrambled Sobol: a pixel's 16 samples put one point in every elementary
+// interval of area 1/16 of each pair of dimensions (4 x 4, 16 x 1, 1 x 16, 2 x 8, 8 x 2).
+TEST(CounterRng, SobolPairsAreStratifiedOverAPixelsSamples) {
+  for (std::uint64_t pixel : {0u, 17u, 123456u})
+    for (std::uint32_t pair : {0u, 1u, 6u, 2147450880u /* the lens's */}) {
+      for (int columns : {1, 2, 4, 8, 16}) {
+        const int rows = 16 / columns;
+        std::set<int> cells;
+        for (int s = 0; s < 16; ++s) {
+          const CounterRng rng(5, pixel, static_cast<std::uint64_t>(s), SampleSequence::sobol);
+          const float u = rng.uniform(2 * pair), v = rng.uniform(2 * pair + 1);
+          ASSERT_GE(u, 0.0f);
+          ASSERT_LT(v, 1.0f);
+          cells.insert(static_cast<int>(u * columns) * rows + static_cast<int>(v * rows));
+        }
+        EXPECT_EQ(cells.size(), 16u) << "pixel " << pixel << " pair " << pair << " " << columns;
+      }
+    }
+}
+
+// Pairs take the samples in orders of their own, and pixels scramble differently: no two
+// pairs or pixels see the same points.
+TEST(CounterRng, SobolPairsAndPixelsAreDecorrelated) {
+  const auto order = [](std::uint64_t pixel, std::uint32_t dimension) {
+    std::vector<int> strata;
+    for (int s = 0; s < 16; ++s)
+      strata.push_back(static_cast<int>(
+          16.0f * CounterRng(5, pixel, static_cast<std::uint64_t>(s), SampleSequence::sobol)
+                      .uniform(dimension)));
+    return strata;
+  };
+  EXPECT_NE(order(3, 0), order(3, 2));
+  EXPECT_NE(order(3, 2), order(3, 4));
+  EXPECT_NE(order(3, 0), order(4, 0));
+  // Over many pixels each dimension is uniform.
+  double sum = 0.0;
+  for (std::uint64_t k = 0; k < 20000; ++k)
+    sum +=
+        CounterRng(1, k, k % 16, SampleSequence::sobol).uniform(static_cast<std::uint32_t>(k % 40));
+  EXPECT_NEAR(sum / 20000.0, 0.5, 0.01);
 }
 
 }  // namespace

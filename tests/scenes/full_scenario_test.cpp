@@ -349,8 +349,11 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "[[views]]\nname = \"pixels\"\nposition = [300.0, 400.0, 600.0]\n"
       "projection = \"orthographic\"\npixel_size = 2.0\n"
       "[[views]]\nname = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n"
-      "cells_per_pixel = 2\n[render]\nformats = [\"exr\", \"geotiff\"]\nsampling_seed = 9\n";
-  EXPECT_EQ(load_scenario(f.dir.write("cameras.toml", cameras)).views.size(), 5u);
+      "cells_per_pixel = 2\n[render]\nformats = [\"exr\", \"geotiff\"]\nsampling_seed = 9\n"
+      "sampler = \"sobol\"\n";
+  const Scenario with_cameras = load_scenario(f.dir.write("cameras.toml", cameras));
+  EXPECT_EQ(with_cameras.views.size(), 5u);
+  EXPECT_EQ(with_cameras.render.sampler, SampleSequence::sobol);
   // The sensor's keys (docs/SENSOR.md); iso in a second sensor, gain and iso being exclusive.
   const std::string sensor_view =
       "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +

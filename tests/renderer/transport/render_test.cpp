@@ -97,6 +97,38 @@ TEST(Renderer, BitIdenticalForAnyThreadCount) {
             0);
 }
 
+// Padded Sobol samples (core/counter_rng.h): the same bits on any thread count, and the
+// same image as independent samples within their noise (the mean over the frame agrees, the
+// pixels differ).
+TEST(Renderer, SobolSamplesAreDeterministicAndUnbiased) {
+  Scene scene = testing::ridge_scene();
+  scene.settings.spp = 16;
+  const Film independent = Renderer(scene).render(scene.views[0], {});
+  scene.settings.sampler = SampleSequence::sobol;
+  const Renderer renderer(scene);
+  RenderOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const Film a = renderer.render(scene.views[0], one);
+  const Film b = renderer.render(scene.views[0], two);
+  EXPECT_EQ(
+      std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
+      0);
+  double mean_a = 0.0, mean_i = 0.0, variance = 0.0;
+  int differ = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      mean_a += a.luminance(x, y);
+      mean_i += independent.luminance(x, y);
+      variance += a.luminance_variance(x, y) + independent.luminance_variance(x, y);
+      differ += a.luminance(x, y) != independent.luminance(x, y) ? 1 : 0;
+    }
+  const double n = static_cast<double>(a.pixel_count());
+  // The difference of the frame means against its standard error (the pixels' variances).
+  EXPECT_LT(std::abs(mean_a - mean_i) / n, 4.0 * std::sqrt(variance) / n);
+  EXPECT_GT(differ, static_cast<int>(n / 2));
+}
+
 // Straight down the ridge with a fisheye and a thin-lens camera: outside the fisheye's
 // circle no ray leaves (black, object "none", infinite depth), and both render the same bits
 // on one and two threads (the lens positions are the samples' own random numbers).
