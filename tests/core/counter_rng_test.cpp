@@ -66,7 +66,8 @@ TEST(CounterRng, SobolPairsAreStratifiedOverAPixelsSamples) {
           const float u = rng.uniform(2 * pair), v = rng.uniform(2 * pair + 1);
           ASSERT_GE(u, 0.0f);
           ASSERT_LT(v, 1.0f);
-          cells.insert(static_cast<int>(u * columns) * rows + static_cast<int>(v * rows));
+          cells.insert(static_cast<int>(u * static_cast<float>(columns)) * rows +
+                       static_cast<int>(v * static_cast<float>(rows)));
         }
         EXPECT_EQ(cells.size(), 16u) << "pixel " << pixel << " pair " << pair << " " << columns;
       }
