@@ -21,6 +21,15 @@ float lambert_weight(const SurfaceMaterial& m, const ShadingFrame& f, const Vec3
   return front || back ? std::abs(cos_n) / kPi : 0.0f;
 }
 
+// Lambertian reflection or transmission toward `l` in RGB or per wavelength bin.
+template <class Colour>
+Colour lambert(const SurfaceMaterial& m, const ShadingFrame& f, const Vec3f& l, bool& front,
+               const Colour& reflectance, const Colour& transmittance) {
+  const float w = lambert_weight(m, f, l, front);
+  if (w == 0.0f) return {};
+  return (front ? reflectance : transmittance) * w;
+}
+
 }  // namespace
 
 SpectralMaterial spectral_material(const SurfaceMaterial& m) {
@@ -44,11 +53,7 @@ ObjectLobes object_lobes(const ObjectMaterial& material, const Vec3f& base) {
 }
 
 Vec3f Bsdf::eval(const Vec3f& l, bool& front) const {
-  if (!m_.glossy()) {
-    const float w = lambert_weight(m_, f_, l, front);
-    if (w == 0.0f) return {};
-    return (front ? m_.reflectance : m_.transmittance) * w;
-  }
+  if (!m_.glossy()) return lambert(m_, f_, l, front, m_.reflectance, m_.transmittance);
   front = dot(f_.n, l) > 0.0f && dot(f_.ng, l) > 0.0f;
   if (!front) return {};
   // The diffuse base sees what the coat lets through, at the half vector's angle.
@@ -59,11 +64,7 @@ Vec3f Bsdf::eval(const Vec3f& l, bool& front) const {
 }
 
 Spectrum Bsdf::eval(const SpectralMaterial& s, const Vec3f& l, bool& front) const {
-  if (!m_.glossy()) {
-    const float w = lambert_weight(m_, f_, l, front);
-    if (w == 0.0f) return {};
-    return (front ? s.reflectance : s.transmittance) * w;
-  }
+  if (!m_.glossy()) return lambert(m_, f_, l, front, s.reflectance, s.transmittance);
   front = dot(f_.n, l) > 0.0f && dot(f_.ng, l) > 0.0f;
   if (!front) return {};
   // As the RGB eval: the base under what the coat lets through, plus the coat.

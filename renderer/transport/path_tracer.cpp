@@ -229,9 +229,10 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
                         rng.uniform(dim + kSkyRoulette), out.rays);
     radiance += seen * direct;
 
-    const BsdfSample next = bsdf.sample(
-        sm, ray.direction, fresnel,
-        {rng.uniform(dim + kFresnel), rng.uniform(dim + kChoice), rng.uniform(dim + kDir)});
+    // The mirror's number only where there is a mirror (water): a number costs a hash.
+    const BsdfSample next = bsdf.sample(sm, ray.direction, fresnel,
+                                        {fresnel > 0.0f ? rng.uniform(dim + kFresnel) : 1.0f,
+                                         rng.uniform(dim + kChoice), rng.uniform(dim + kDir)});
     if (next.kind == BsdfSample::Kind::absorbed) break;
     ray = {offset_point(v, next.side), next.direction};
     last_specular = next.kind == BsdfSample::Kind::mirror;
