@@ -78,6 +78,16 @@ TOML
       "$(for i in $(seq 1 99); do printf '[0, 0, 2, 1], '; done)"
   done
 } > "$W/strokes.toml"
+# Self-organising internodes that multiply: fast (shoots of 20 metamers in a 20 m brush) and
+# slow (a 15 m brush crawling up, the tree filling it over some 70 steps).
+stroke_species() {  # stroke_species FILE MAX_SHOOT RADIUS1 RADIUS2 TOP PER_STEP MARKERS AGE
+  printf 'core = "self_organizing"\n[growth]\nsteps = 300\ninternode_length = 0.12\n' > "$1"
+  printf '[vigour]\nmax_shoot = %s\n[[stroke]]\npoints = [[0, 0, 0.4, %s], [0, 0, %s, %s]]\n' \
+    "$2" "$3" "$5" "$4" >> "$1"
+  printf 'points_per_step = %s\nmarkers_per_step = %s\nmax_age = %s\n' "$6" "$7" "$8" >> "$1"
+}
+stroke_species "$W/internodes_fast.toml" 20 10 20 40 0.1 100000 150
+stroke_species "$W/internodes_slow.toml" 3 15 15 30 0.01 50000 100
 sed 's/^spacing = .*//' data/species/graph_rooted.toml > "$W/roots.toml"
 python3 - "$W/roots.toml" <<'PY'
 import re, sys
@@ -102,4 +112,6 @@ run "reference garbage" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c2" 
 run "pov includes itself" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c3" --pov "$W/self.pov"
 run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"
 run "strokes of 3e7 markers" "$BIN/landsim" tree "$W/strokes.toml"
+run "internodes multiply fast" "$BIN/landsim" tree "$W/internodes_fast.toml"
+run "internodes multiply slowly" "$BIN/landsim" tree "$W/internodes_slow.toml"
 run "graph [roots] too fine" "$BIN/landsim" tree "$W/roots.toml"

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "trees/self_organizing/plant.h"
+#include "trees/self_organizing/reach_mask.h"
 #include "trees/self_organizing/sparse_grid.h"
 
 namespace landsim::trees::self_organizing {
@@ -15,9 +16,11 @@ std::vector<BudSpace> allocate_markers(const std::vector<Vec3>& markers,
   std::vector<BudSpace> space(positions.size());
   if (positions.empty()) return space;
   const SparseGrid grid(positions, 0.5 * radius);  // 5^3 half-size cells cover less than 3^3
+  const ReachMask reach(positions, radius);
   const double cos_half = std::cos(0.5 * angle);
   std::vector<Vec3> sum(positions.size(), Vec3{0, 0, 0});
   for (const Vec3& m : markers) {
+    if (!reach.may_reach(m)) continue;
     std::uint32_t owner = kNone;
     double nearest = radius * radius;
     grid.for_each_near(m, radius, [&](std::uint32_t b) {

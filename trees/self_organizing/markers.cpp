@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "trees/self_organizing/reach_mask.h"
 #include "trees/self_organizing/sparse_grid.h"
 
 namespace landsim::trees::self_organizing {
@@ -35,8 +36,9 @@ std::size_t MarkerSet::consume(const std::vector<Vec3>& buds, double radius) {
   const std::size_t before = points_.size();
   if (buds.empty()) return 0;
   const SparseGrid grid(buds, radius);
+  const ReachMask reach(buds, radius);
   keep_if([&](std::size_t i) {
-    return !grid.any_near(points_[i], radius, [&](std::uint32_t b) {
+    return !reach.may_reach(points_[i]) || !grid.any_near(points_[i], radius, [&](std::uint32_t b) {
       const Vec3 d = buds[b] - points_[i];
       return dot(d, d) < radius * radius;
     });

@@ -251,6 +251,7 @@ bool Parameters::confined_out(const Vec3& p, int step) const {
 
 Parameters read_parameters(params::TableReader& root, const std::string& source) {
   Parameters p;
+  p.source = source;
   read_growth(root.table("growth"), p);
   read_space(root.table("space"), p.space);
   read_light(root.table("light"), p.light);

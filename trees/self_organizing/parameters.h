@@ -148,10 +148,13 @@ struct Parameters {
   std::vector<Lasso> lassos;  // of the whole tree or of parts, each from its step
   std::vector<BrushStroke> strokes;
   std::vector<Pruning> prunings;
-  std::vector<GrowthPhase> phases;       // by ascending from_step
-  std::vector<Bend> bends;               // edits of the grown tree, in order (bending.h)
-  std::size_t max_internodes = 1000000;  // growth beyond this is refused (InputError)
-  std::size_t max_markers = 20000000;    // markers held at once beyond this: refused too
+  std::vector<GrowthPhase> phases;  // by ascending from_step
+  std::vector<Bend> bends;          // edits of the grown tree, in order (bending.h)
+  // Growth beyond this is refused (InputError): a tree of 250,000 internodes is ten times the
+  // largest shipped species and some 5 million triangles; the refusal costs at most ~250 MB.
+  std::size_t max_internodes = 250000;
+  std::size_t max_markers = 20000000;  // markers held at once beyond this: refused too
+  std::string source;                  // the species file, for errors found while growing
 };
 
 // The core's own tables of a species file (docs/SPECIES.md); throws InputError naming the

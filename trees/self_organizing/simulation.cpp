@@ -142,10 +142,9 @@ class Simulation {
                          p_.space.autonomous_markers, s, marker_rng_, markers_);
     }
     if (markers_.size() > p_.max_markers)
-      throw InputError("self-organising growth would hold more than " +
+      throw InputError(where() + "self-organising growth would hold more than " +
                        std::to_string(p_.max_markers) + " markers at step " + std::to_string(s) +
-                       ": lower space.autonomous_markers or the strokes' markers_per_step and "
-                       "max_age");
+                       ": lower " + marker_keys());
   }
 
   // Q = b * L^kappa for every bud: light feeds the resource; space only decides which buds
@@ -181,31 +180,56 @@ class Simulation {
     for (std::size_t b = 0; b < buds.size(); ++b)
       if (space[b].markers > 0 && selected(buds[b])) v_max = std::max(v_max, vigour_of(buds[b]));
     if (!(v_max > 0.0)) return 0;
-    int grown = 0;
+    std::vector<int> metamers(buds.size(), 0);
+    std::size_t allotted = 0;
     for (std::size_t b = 0; b < buds.size(); ++b) {
       const Internode& n = plant_[buds[b].internode];
       if (space[b].markers == 0 || !n.alive ||
           (buds[b].lateral ? !n.lateral_bud : !n.terminal_bud) || !selected(buds[b]))
         continue;
-      const int metamers =
-          static_cast<int>(std::floor(vigour_of(buds[b]) / v_max * p_.vigour.max_shoot));
-      if (metamers <= 0) continue;
+      metamers[b] = static_cast<int>(std::floor(vigour_of(buds[b]) / v_max * p_.vigour.max_shoot));
+      allotted += static_cast<std::size_t>(std::max(metamers[b], 0));
+    }
+    // Refused before the step grows what it has allotted, not after: an exploding tree's
+    // last step is most of its growth (time and memory; docs/RELIABILITY.md).
+    if (plant_.size() + allotted > p_.max_internodes)
+      refuse_internodes(s, plant_.size() + allotted);
+    int grown = 0;
+    for (std::size_t b = 0; b < buds.size(); ++b) {
+      if (metamers[b] <= 0) continue;
       const std::size_t first = plant_.size();
-      const int added =
-          grow_shoot(plant_, p_, buds[b], metamers, space[b].direction, s, growth_rng_, shadows_);
+      const int added = grow_shoot(plant_, p_, buds[b], metamers[b], space[b].direction, s,
+                                   growth_rng_, shadows_);
       grown += added;
       if (added > 0 && selecting_ == phase_ && phase_ != nullptr && phase_->selective &&
           branch_root_ == kNone)
         branch_root_ = static_cast<std::uint32_t>(first);  // the selected bud's shoot
       for (std::size_t k = first; k < plant_.size(); ++k)
         plant_[static_cast<std::uint32_t>(k)].shoot_vigour = vigour_of(buds[b]);
-      if (plant_.size() > p_.max_internodes)
-        throw InputError("self-organising growth would exceed " +
-                         std::to_string(p_.max_internodes) + " internodes at step " +
-                         std::to_string(s) +
-                         ": lower growth.steps, vigour.max_shoot or the marker density");
     }
     return grown;
+  }
+
+  [[noreturn]] void refuse_internodes(int s, std::size_t allotted) const {
+    throw InputError(where() + "self-organising growth would exceed the limit of " +
+                     std::to_string(p_.max_internodes) + " internodes at step " +
+                     std::to_string(s) + " (its shoots would make " + std::to_string(allotted) +
+                     "): lower growth.steps, vigour.max_shoot or " + marker_keys());
+  }
+
+  std::string where() const { return base_.source.empty() ? "" : base_.source + ": "; }
+
+  // The keys of this species that supply markers: what feeds an exploding growth.
+  std::string marker_keys() const {
+    std::vector<std::string> keys;
+    if (!base_.strokes.empty()) keys.push_back("the strokes' markers_per_step and max_age");
+    if (base_.envelope.kind != EnvelopeKind::none) keys.push_back("envelope.density");
+    if (!base_.lassos.empty()) keys.push_back("the lassos' density");
+    if (base_.space.autonomous_markers > 0) keys.push_back("space.autonomous_markers");
+    std::string out;
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      out += (k == 0 ? "" : k + 1 == keys.size() ? " or " : ", ") + keys[k];
+    return out.empty() ? "the markers" : out;
   }
 
   double vigour_of(const BudRef& bud) const {

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "core/input_error.h"
 #include "trees/self_organizing/generator.h"
+#include "trees/species.h"
 
 namespace landsim::trees::self_organizing {
 namespace {
@@ -142,6 +145,31 @@ TEST(SelfOrganizing, GrowthBeyondTheInternodeLimitIsRefused) {
   p.max_internodes = 1000000;
   p.max_markers = 5000;  // and too many markers at once
   EXPECT_THROW(grow(p, 1), InputError);
+}
+
+// A brush painting 100,000 markers a step through a 20 m sphere, shoots of 20 metamers: the
+// internodes multiply every step. Refused at the step whose shoots would pass the limit,
+// before they grow (a second and ~200 MB in a Release build; it was 6 s and 835 MB at the
+// old 10^6 limit, refused after growing), naming the file, the limit and the keys.
+TEST(SelfOrganizing, AnExplodingSpeciesIsRefusedNamingItsFileLimitAndKeys) {
+  const Species species = parse_species_toml(
+      "core = \"self_organizing\"\nname = \"hostile\"\n[growth]\nsteps = 300\n"
+      "internode_length = 0.12\n[vigour]\nmax_shoot = 20\n[[stroke]]\n"
+      "points = [[0, 0, 0.4, 10], [0, 0, 40, 20]]\npoints_per_step = 0.1\n"
+      "markers_per_step = 100000\nmax_age = 150\n",
+      "hostile.toml");
+  ASSERT_EQ(std::get<Parameters>(species.parameters).max_internodes, 250000u);
+  try {
+    generate(species, TreeOptions{});
+    FAIL() << "grew";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("hostile.toml: ", 0), 0u) << m;
+    EXPECT_NE(m.find("limit of 250000 internodes at step "), std::string::npos) << m;
+    EXPECT_NE(m.find("its shoots would make "), std::string::npos) << m;
+    for (const char* key : {"growth.steps", "vigour.max_shoot", "markers_per_step", "max_age"})
+      EXPECT_NE(m.find(key), std::string::npos) << key << " in " << m;
+  }
 }
 
 TEST(SelfOrganizing, SkeletonHasOneStemPerAxisAndLeavesOnYoungShoots) {
