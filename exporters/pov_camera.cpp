@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -89,10 +92,17 @@ class Lexer {
   }
 
   Token number() {
-    std::size_t used = 0;
-    const double v = std::stod(s_.substr(i_, 64), &used);
-    Token t{Token::number, s_.substr(i_, used), v, line_};
-    i_ += used;
+    const std::string text = s_.substr(i_, 64);
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(text.c_str(), &end);
+    const auto used = static_cast<std::size_t>(end - text.c_str());
+    // Underflow reads as (nearly) zero, as POV-Ray reads it; overflow is no number at all.
+    if (errno == ERANGE && std::abs(v) > 1.0)
+      throw InputError(fmt::format("{}:{}: the number {} is beyond a double's range", name_, line_,
+                                   text.substr(0, used)));
+    Token t{Token::number, text.substr(0, used), v, line_};
+    i_ += std::max<std::size_t>(used, 1);
     return t;
   }
 

@@ -228,7 +228,7 @@ bool parse_leaf_shape(const std::string& text, LeafShape& out) {
     out = {LeafShapeKind::oval, 6};
     return true;
   }
-  if (text.size() > 4 && text.rfind("disc", 0) == 0 &&
+  if (text.size() > 4 && text.size() <= 6 && text.rfind("disc", 0) == 0 &&  // disc1..disc64
       std::all_of(text.begin() + 4, text.end(),
                   [](unsigned char c) { return std::isdigit(c) != 0; })) {
     const int n = std::stoi(text.substr(4));

@@ -5,6 +5,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <charconv>
 #include <atomic>
 #include <bit>
 #include <chrono>
@@ -197,13 +198,16 @@ int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) 
     if (k == "render_key") key = v;
     if (k == "tiles_done") done = v;
   }
-  if (key != options.render_key || done.empty() || saved.width() != film.width() ||
+  int tiles_done = 0;
+  const auto [end, parsed] = std::from_chars(done.data(), done.data() + done.size(), tiles_done);
+  if (key != options.render_key || done.empty() || parsed != std::errc{} ||
+      end != done.data() + done.size() || saved.width() != film.width() ||
       saved.height() != film.height() || !saved.order_bands(film.band_names())) {
     spdlog::warn("{}: checkpoint of another render, starting afresh", options.checkpoint.string());
     return 0;
   }
   film = std::move(saved);
-  const int tiles = std::clamp(std::stoi(done), 0, tile_count);
+  const int tiles = std::clamp(tiles_done, 0, tile_count);
   spdlog::info("resuming {} after {} of {} tiles", options.checkpoint.string(), tiles, tile_count);
   return tiles;
 }

@@ -40,13 +40,19 @@ std::uint32_t little_endian_u32(const unsigned char* b) {
 // holding at least the bytes the buffer declares. data: uris are embedded; the GLB's own
 // binary chunk is buffer 0 without a uri.
 void check_gltf_json(const nlohmann::json& gltf, const fs::path& path, const std::string& where) {
-  const fs::path folder = fs::weakly_canonical(path).parent_path();
+  std::error_code resolved;
+  const fs::path folder = fs::weakly_canonical(path, resolved).parent_path();
+  if (resolved) refuse(where, path.string(), "cannot resolve its folder: " + resolved.message());
   const auto check_uri = [&](const std::string& kind, std::size_t i, const nlohmann::json& item,
                              std::uintmax_t* declared) {
     if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) return;
     const std::string uri = item["uri"].get<std::string>();
     if (uri.rfind("data:", 0) == 0) return;
-    const fs::path target = fs::weakly_canonical(folder / uri);
+    const fs::path target = fs::weakly_canonical(folder / uri, resolved);
+    if (resolved)  // a uri too long for a file name, or one the system cannot follow
+      refuse(where, path.string(),
+             fmt::format("{}[{}] uri \"{}\" is not a file beside the model ({})", kind, i,
+                         uri.substr(0, 80) + (uri.size() > 80 ? "..." : ""), resolved.message()));
     const auto [end, unused] = std::mismatch(folder.begin(), folder.end(), target.begin());
     if (fs::path(uri).is_absolute() || uri.find("://") != std::string::npos || end != folder.end())
       refuse(where, path.string(),

@@ -128,6 +128,8 @@ TEST(PovCamera, RefusesWhatAViewCannotMatchAtItsLine) {
       {"/* camera { }", "user.pov:1: a /* comment is never closed"},
       {"camera { right <1.5, 0, 0.5> }", "without look_at, right must be level"},
       {"camera { location 1 foo 2 }", "`foo` is not a camera item"},
+      // Found by pov_camera_fuzz (session 18): std::stod's out_of_range escaped as a crash.
+      {"camera {\n location 1e999 }", "user.pov:2: the number 1e999 is beyond a double's range"},
   };
   for (const auto& c : cases) {
     const std::string message = refusal(c.text);

@@ -402,6 +402,12 @@ TEST(SceneObjects, MeshFilesThatClaimMoreThanTheyHoldAreRefusedFromTheirHeader) 
       R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "short.bin", "byteLength": 36000000}]})");
   EXPECT_NE(e.find("declares byteLength 36000000 but the file holds 12 bytes"), std::string::npos)
       << e;
+  // Found by mesh_fuzz (session 18): a uri longer than a file name escaped as
+  // std::filesystem's error (a crash) instead of being refused.
+  e = refused("model/long.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" +
+                                     std::string(5000, 'a') + R"(", "byteLength": 4}]})");
+  EXPECT_NE(e.find("buffers[0] uri \"aaaa"), std::string::npos) << e;
+  EXPECT_NE(e.find("is not a file beside the model"), std::string::npos) << e;
 }
 
 // Many corners at one position: Assimp's smooth normals compare every pair (a 30,000-triangle

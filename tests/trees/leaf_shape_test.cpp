@@ -59,6 +59,8 @@ TEST(LeafShape, ParsesIndicesAndArbaroNames) {
   ASSERT_TRUE(parse_leaf_shape("palm", s));
   EXPECT_FALSE(parse_leaf_shape("fern", s));
   EXPECT_FALSE(parse_leaf_shape("disc0", s));
+  EXPECT_FALSE(parse_leaf_shape("disc65", s));
+  EXPECT_FALSE(parse_leaf_shape("disc99999999999", s));  // std::stoi's out_of_range escaped
   EXPECT_FALSE(parse_leaf_shape("9", s));
 }
 
