@@ -207,7 +207,7 @@ renderer::GroundShading ground_shading(const Scenario& s) {
     if (path.empty()) continue;
     auto& texture = read[path];
     try {
-      if (!texture) texture = renderer::load_bark_texture(path);
+      if (!texture) texture = renderer::load_bark_texture(path, "ground texture");
     } catch (const InputError& e) {
       throw InputError(s.ground.texture_locations[id] + ": [ground] textures: " + e.what());
     }

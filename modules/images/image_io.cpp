@@ -3,6 +3,8 @@
 // (core/module_loader.h).
 #include "renderer/output/image_io.h"
 
+#include "modules/images/library_noise.h"
+
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -46,7 +48,8 @@ std::string one_line(const std::string& errors) {
   return out;
 }
 
-bool probe(const std::string& path, int& width, int& height, int& channels, std::string& error) {
+bool probe_file(const std::string& path, int& width, int& height, int& channels,
+                std::string& error) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) {
     error = one_line(OIIO::geterror());
@@ -71,9 +74,9 @@ bool probe(const std::string& path, int& width, int& height, int& channels, std:
   return true;
 }
 
-bool read(const std::string& path, bool to_linear, FloatImage& image, std::string& error) {
+bool read_file(const std::string& path, bool to_linear, FloatImage& image, std::string& error) {
   int width = 0, height = 0, channels = 0;
-  if (!probe(path, width, height, channels, error)) return false;
+  if (!probe_file(path, width, height, channels, error)) return false;
   // OpenImageIO's shared image cache keeps each file's spec by name and re-reads it only when
   // the file's time stamp changes: a file rewritten within the same second (another image of
   // another size under the name) was read with the old spec, overrunning the buffer. Read
@@ -103,6 +106,16 @@ bool read(const std::string& path, bool to_linear, FloatImage& image, std::strin
     return false;
   }
   return true;
+}
+
+// The table's entries: the file's reading with libpng's own lines held back.
+bool probe(const std::string& path, int& width, int& height, int& channels, std::string& error) {
+  return images::without_library_noise(
+      [&] { return probe_file(path, width, height, channels, error); });
+}
+
+bool read(const std::string& path, bool to_linear, FloatImage& image, std::string& error) {
+  return images::without_library_noise([&] { return read_file(path, to_linear, image, error); });
 }
 
 bool display_transform(const char* config_yaml, float* rgb, int width, int height,

@@ -12,8 +12,9 @@ Vec3f BarkTexture::factor(float u, float v) const {
                          v * static_cast<float>(image_.height()) - 0.5f);
 }
 
-std::shared_ptr<const BarkTexture> load_bark_texture(const std::string& path) {
-  return std::make_shared<const BarkTexture>(load_texture_image(path, "bark texture"));
+std::shared_ptr<const BarkTexture> load_bark_texture(const std::string& path,
+                                                     const std::string& what) {
+  return std::make_shared<const BarkTexture>(load_texture_image(path, what));
 }
 
 }  // namespace landsim::renderer

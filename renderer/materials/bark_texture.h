@@ -22,7 +22,9 @@ class BarkTexture {
   TextureImage image_;  // linear, normalised
 };
 
-// Throws InputError naming the file when it cannot be read.
-std::shared_ptr<const BarkTexture> load_bark_texture(const std::string& path);
+// Throws InputError naming the file, and `what` it was read as, when it cannot be read
+// (the ground's textures are read as this type too).
+std::shared_ptr<const BarkTexture> load_bark_texture(const std::string& path,
+                                                     const std::string& what = "bark texture");
 
 }  // namespace landsim::renderer

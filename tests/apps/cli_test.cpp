@@ -155,6 +155,32 @@ TEST(Cli, AGroundTextureThatCannotBeReadExitsTwoAtItsEntry) {
   EXPECT_FALSE(has_files(out));
 }
 
+// A PNG whose header chunk fails its CRC: libpng's own handler printed "libpng error: IHDR:
+// CRC error" (twice: header probe and read) before landsim's message, and the message called
+// the ground's texture a bark texture. Now landsim's line is all the user reads.
+TEST(Cli, ABrokenPngTextureIsOneLineOfLandsimsOwn) {
+  TempDir dir;
+  const std::string ihdr_bad_crc = std::string("\x89PNG\r\n\x1a\n", 8) +
+                                   std::string("\0\0\0\x0dIHDR\0\0\0\x08\0\0\0\x08\x08\x02", 18) +
+                                   std::string(7, '\0');
+  const auto png = dir.write("soil.png", ihdr_bad_crc);
+  const auto file =
+      dir.write("texture.toml", scenario("", "", "spp = 1") + "[ground]\ntextures = { soil = \"" +
+                                    png.string() + "\" }\n");
+  const Result r = run("render " + file.string() + " --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.find("libpng"), std::string::npos) << r.err;
+  std::vector<std::string> said;  // every line but the progress's info lines
+  std::istringstream err(r.err);
+  for (std::string line; std::getline(err, line);)
+    if (line.rfind("landsim: info: ", 0) != 0) said.push_back(line);
+  ASSERT_EQ(said.size(), 1u) << r.err;
+  EXPECT_EQ(said[0].rfind("landsim: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("cannot read ground texture: PNG read error: IHDR: CRC error"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(Cli, BadContextRastersExitTwoAtTheirEntryAndWriteNothing) {
   TempDir dir;
   // An ESRI grid far from the volcano (which spans 0-610 m east, 0-870 m north).
