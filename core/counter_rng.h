@@ -1,6 +1,7 @@
 #pragma once
 // Counter-based random numbers: every value is a pure function of (seed, stream, index,
 // dimension), so a pixel's samples do not depend on which thread, tile or machine made them.
+#include <array>
 #include <bit>
 #include <cstdint>
 
@@ -90,21 +91,40 @@ class CounterRng {
       // same points). One hash per pair: its low half orders the samples (the pair's two
       // dimensions must take the same order), its high half seeds each dimension's scramble.
       const std::uint64_t pair = hash_combine(stream_, dimension >> 1);
-      const std::uint32_t index =
-          reverse_bits(laine_karras(reverse_bits(index_), static_cast<std::uint32_t>(pair)));
       const std::uint32_t seed =
           static_cast<std::uint32_t>(pair >> 32) ^ ((dimension & 1u) * 0x9e3779b9u);
-      const std::uint32_t bits = scrambled_sobol(index, dimension & 1u, seed);
-      return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f);  // top 24 bits
+      return unit(scrambled_sobol(shuffled_index(pair), dimension & 1u, seed));
     }
     const std::uint64_t bits = hash_combine(base_, dimension);
-    return static_cast<float>(bits >> 40) * (1.0f / 16777216.0f);  // top 24 bits
+    return unit(static_cast<std::uint32_t>(bits >> 32));
+  }
+
+  // The values of dimensions `first` and first + 1 (first even: a Sobol pair), equal to
+  // {uniform(first), uniform(first + 1)}; under Sobol the pair's hash and its shuffled index
+  // are computed once for both.
+  constexpr std::array<float, 2> uniform2(std::uint32_t first) const {
+    if (!sobol_ || (first & 1u) != 0) return {uniform(first), uniform(first + 1)};
+    const std::uint64_t pair = hash_combine(stream_, first >> 1);
+    const std::uint32_t index = shuffled_index(pair);
+    const auto seed = static_cast<std::uint32_t>(pair >> 32);
+    return {unit(scrambled_sobol(index, 0, seed)),
+            unit(scrambled_sobol(index, 1, seed ^ 0x9e3779b9u))};
   }
 
   // Next dimension, for code that consumes dimensions in order.
   float next() { return uniform(dimension_++); }
 
  private:
+  // The sample's index in the pair's own order (the pair hash's low half seeds it).
+  constexpr std::uint32_t shuffled_index(std::uint64_t pair) const {
+    return reverse_bits(laine_karras(reverse_bits(index_), static_cast<std::uint32_t>(pair)));
+  }
+
+  // The top 24 bits as a float in [0, 1).
+  static constexpr float unit(std::uint32_t bits) {
+    return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f);
+  }
+
   std::uint64_t base_;
   std::uint64_t stream_;  // the pixel's (Sobol: the scrambles' seed)
   std::uint32_t index_;   // the sample (Sobol: its index in the sequence)

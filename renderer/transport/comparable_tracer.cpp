@@ -1,5 +1,6 @@
 #include "renderer/transport/comparable_tracer.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -50,9 +51,8 @@ PathSample ComparableTracer::trace(const Ray& ray, const CounterRng& rng,
   out.first = first_hit(scene_, *hit, v, m);
   const float fresnel = Bsdf(m, v.frame()).fresnel(ray.direction);
   const std::uint32_t dim = kFirstBounceDim;
-  Vec3f direct = sample_sun(scene_, embree_, sun_direction_, v, m, rng.uniform(dim + kSun0),
-                            rng.uniform(dim + kSun1), out.rays)
-                     .light;
+  const std::array<float, 2> sun = rng.uniform2(dim + kSun0);
+  Vec3f direct = sample_sun(scene_, embree_, sun_direction_, v, m, sun[0], sun[1], out.rays).light;
   direct += m.reflectance * light_.ambient_irradiance * (1.0f / kPi);
   out.radiance += throughput * direct * (1.0f - fresnel);
   return out;

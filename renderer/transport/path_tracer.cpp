@@ -5,6 +5,7 @@
 #include "renderer/transport/glossy.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -223,16 +224,19 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     const float fresnel = bsdf.fresnel(ray.direction);
     // The roulette sees what reaches the pixel: the throughput and the water's share.
     const Spectrum seen = throughput * (1.0f - fresnel);
-    Spectrum direct = sun_light(v, bsdf, sm, rng.uniform(dim + kSun0), rng.uniform(dim + kSun1),
-                                seen, rng.uniform(dim + kSunRoulette), out.rays);
-    direct += sky_light(v, bsdf, sm, rng.uniform(dim + kSky0), rng.uniform(dim + kSky1), seen,
-                        rng.uniform(dim + kSkyRoulette), out.rays);
+    // Pairs of dimensions drawn together (one hash and one shuffle for both under Sobol).
+    const std::array<float, 2> sun = rng.uniform2(dim + kSun0), sky = rng.uniform2(dim + kSky0);
+    Spectrum direct =
+        sun_light(v, bsdf, sm, sun[0], sun[1], seen, rng.uniform(dim + kSunRoulette), out.rays);
+    direct +=
+        sky_light(v, bsdf, sm, sky[0], sky[1], seen, rng.uniform(dim + kSkyRoulette), out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.
-    const BsdfSample next = bsdf.sample(sm, ray.direction, fresnel,
-                                        {fresnel > 0.0f ? rng.uniform(dim + kFresnel) : 1.0f,
-                                         rng.uniform(dim + kChoice), rng.uniform(dim + kDir)});
+    const std::array<float, 2> lobe = rng.uniform2(dim + kChoice);  // choice, direction
+    const BsdfSample next =
+        bsdf.sample(sm, ray.direction, fresnel,
+                    {fresnel > 0.0f ? rng.uniform(dim + kFresnel) : 1.0f, lobe[0], lobe[1]});
     if (next.kind == BsdfSample::Kind::absorbed) break;
     ray = {offset_point(v, next.side), next.direction};
     last_specular = next.kind == BsdfSample::Kind::mirror;

@@ -5,9 +5,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <charconv>
+#include <array>
 #include <atomic>
 #include <bit>
+#include <charconv>
 #include <chrono>
 #include <mutex>
 
@@ -183,10 +184,13 @@ CounterRng camera_ray_rng(const RenderSettings& settings, std::uint64_t pixel, i
 
 std::optional<Ray> sample_ray(const Camera& camera, const CounterRng& rng, int x, int y,
                               bool centre) {
-  const float px = static_cast<float>(x) + (centre ? 0.5f : rng.uniform(0));
-  const float py = static_cast<float>(y) + (centre ? 0.5f : rng.uniform(1));
+  const std::array<float, 2> jitter =
+      centre ? std::array<float, 2>{0.5f, 0.5f} : rng.uniform2(0);  // dimensions 0 and 1
+  const float px = static_cast<float>(x) + jitter[0];
+  const float py = static_cast<float>(y) + jitter[1];
   if (!camera.has_aperture() || centre) return camera.ray(px, py);
-  return camera.ray(px, py, rng.uniform(detail::kLens0), rng.uniform(detail::kLens1));
+  const std::array<float, 2> lens = rng.uniform2(detail::kLens0);
+  return camera.ray(px, py, lens[0], lens[1]);
 }
 
 int resume_checkpoint(const RenderOptions& options, Film& film, int tile_count) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <set>
 #include <vector>
 
@@ -94,6 +95,20 @@ TEST(CounterRng, SobolPairsAndPixelsAreDecorrelated) {
     sum +=
         CounterRng(1, k, k % 16, SampleSequence::sobol).uniform(static_cast<std::uint32_t>(k % 40));
   EXPECT_NEAR(sum / 20000.0, 0.5, 0.01);
+}
+
+// A pair drawn together is the two dimensions drawn alone, bit for bit, under either sampler
+// and for odd first dimensions too (then not a Sobol pair: two separate draws).
+TEST(CounterRng, APairDrawnTogetherIsItsDimensionsDrawnAlone) {
+  for (const SampleSequence sequence : {SampleSequence::independent, SampleSequence::sobol})
+    for (std::uint64_t pixel : {0u, 99u, 4000000u})
+      for (std::uint64_t sample : {0u, 1u, 15u, 1000u})
+        for (std::uint32_t first : {0u, 1u, 2u, 14u, 27u, 0xFFFF0000u}) {
+          const CounterRng rng(11, pixel, sample, sequence);
+          const std::array<float, 2> pair = rng.uniform2(first);
+          EXPECT_EQ(pair[0], rng.uniform(first)) << first;
+          EXPECT_EQ(pair[1], rng.uniform(first + 1)) << first;
+        }
 }
 
 }  // namespace

@@ -26,4 +26,8 @@ enum Dim : std::uint32_t {
   kHazeRoulette
 };
 
+// Pairs drawn together (CounterRng::uniform2: one Sobol pair) start at an even dimension.
+static_assert(kFirstBounceDim % 2 == 0 && kDimsPerBounce % 2 == 0 && kLens0 % 2 == 0);
+static_assert(kSun0 % 2 == 0 && kSky0 % 2 == 0 && kChoice % 2 == 0 && kDir == kChoice + 1);
+
 }  // namespace landsim::renderer::detail

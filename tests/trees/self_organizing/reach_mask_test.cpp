@@ -23,7 +23,9 @@ TEST(ReachMask, NeverHidesABudWithinReachAndClearsFarPoints) {
   int cleared = 0;
   for (int k = 0; k < 20000; ++k) {
     const Vec3 p{rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-2, 6)};
-    if (any_within(buds, p, radius)) EXPECT_TRUE(mask.may_reach(p)) << k;
+    if (any_within(buds, p, radius)) {
+      EXPECT_TRUE(mask.may_reach(p)) << k;
+    }
     cleared += !mask.may_reach(p);
   }
   EXPECT_GT(cleared, 15000);  // most of the box is beyond reach: the mask must say so
