@@ -1,11 +1,16 @@
 #pragma once
-// A hash grid over a fixed set of points for radius queries when the points' extent is not
-// known in advance (buds of a growing tree): only occupied rows of cells are stored. Points
-// are sorted by row (y, z) and then by cell x, so a query reads one contiguous run per row
-// it overlaps: 9 hash lookups for a ball no wider than a cell, instead of 27.
+// A grid over a fixed set of points for radius queries when the points' extent is not known
+// in advance (buds of a growing tree): only occupied rows of cells are stored. Points are
+// sorted by row (y, z) and then by cell x, so a query reads one contiguous run per row it
+// overlaps: 9 row lookups for a ball no wider than a cell, instead of 27. The rows are found
+// in a dense table over the points' (y, z) bounds when it is small (a tree's crown: thousands
+// of rows), else by hash: the markers' passes ask for some 25 rows per marker per step, and
+// hash lookups were most of their time.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "core/vec3.h"
@@ -25,10 +30,13 @@ class SparseGrid {
     const std::int64_t z0 = cell_of(p.z - radius), z1 = cell_of(p.z + radius);
     for (std::int64_t z = z0; z <= z1; ++z)
       for (std::int64_t y = y0; y <= y1; ++y) {
-        const auto run = rows_.find(row_key(y, z));
-        if (run == rows_.end()) continue;
-        for (std::uint32_t k = run->second.first; k < run->second.second; ++k)
-          if (cell_x_[k] >= x0 && cell_x_[k] <= x1 && visit(order_[k])) return true;
+        const Run run = row(y, z);
+        // The row is sorted by cell x: start at x0 (a row across a crown holds many cells).
+        const auto* first =
+            std::lower_bound(cell_x_.data() + run.first, cell_x_.data() + run.second, x0);
+        for (auto k = static_cast<std::size_t>(first - cell_x_.data());
+             k < run.second && cell_x_[k] <= x1; ++k)
+          if (visit(order_[k])) return true;
       }
     return false;
   }
@@ -42,13 +50,27 @@ class SparseGrid {
   }
 
  private:
+  using Run = std::pair<std::uint32_t, std::uint32_t>;  // [first, last) in order_
+  static constexpr std::int64_t kMaxDenseRows = std::int64_t{1} << 22;
+
   std::int64_t cell_of(double v) const;
   static std::uint64_t row_key(std::int64_t y, std::int64_t z);
+  Run row(std::int64_t y, std::int64_t z) const {
+    if (dense_) {
+      if (y < y_lo_ || z < z_lo_ || y >= y_lo_ + ny_ || z >= z_lo_ + nz_) return {0, 0};
+      return dense_rows_[static_cast<std::size_t>((z - z_lo_) * ny_ + (y - y_lo_))];
+    }
+    const auto run = rows_.find(row_key(y, z));
+    return run == rows_.end() ? Run{0, 0} : run->second;
+  }
 
   double cell_;
   std::vector<std::uint32_t> order_;  // point indices sorted by row, cell x, then index
   std::vector<std::int64_t> cell_x_;  // per sorted point: its cell's x
-  std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> rows_;
+  bool dense_ = false;
+  std::int64_t y_lo_ = 0, z_lo_ = 0, ny_ = 0, nz_ = 0;
+  std::vector<Run> dense_rows_;                  // by (z - z_lo) * ny + (y - y_lo)
+  std::unordered_map<std::uint64_t, Run> rows_;  // when the dense table would be too big
 };
 
 }  // namespace landsim::trees::self_organizing
