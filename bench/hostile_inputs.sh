@@ -88,6 +88,7 @@ stroke_species() {  # stroke_species FILE MAX_SHOOT RADIUS1 RADIUS2 TOP PER_STEP
 }
 stroke_species "$W/internodes_fast.toml" 20 10 20 40 0.1 100000 150
 stroke_species "$W/internodes_slow.toml" 3 15 15 30 0.01 50000 100
+printf 'core = "self_organizing"\n[growth]\nsteps = 100\ninternode_length = 0.12\n[space]\nautonomous_markers = 100\n[vigour]\nmax_shoot = 20\n' > "$W/autonomous.toml"
 sed 's/^spacing = .*//' data/species/graph_rooted.toml > "$W/roots.toml"
 python3 - "$W/roots.toml" <<'PY'
 import re, sys
@@ -114,4 +115,5 @@ run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"
 run "strokes of 3e7 markers" "$BIN/landsim" tree "$W/strokes.toml"
 run "internodes multiply fast" "$BIN/landsim" tree "$W/internodes_fast.toml"
 run "internodes multiply slowly" "$BIN/landsim" tree "$W/internodes_slow.toml"
+run "autonomous markers multiply" "$BIN/landsim" tree "$W/autonomous.toml"
 run "graph [roots] too fine" "$BIN/landsim" tree "$W/roots.toml"

@@ -153,7 +153,7 @@ struct Parameters {
   // Growth beyond this is refused (InputError): a tree of 250,000 internodes is ten times the
   // largest shipped species and some 5 million triangles; the refusal costs at most ~250 MB.
   std::size_t max_internodes = 250000;
-  std::size_t max_markers = 20000000;  // markers held at once beyond this: refused too
+  std::size_t max_markers = 10000000;  // markers held at once beyond this (280 MB): refused
   std::string source;                  // the species file, for errors found while growing
 };
 

@@ -136,15 +136,22 @@ class Simulation {
     for (const BrushStroke& stroke : p_.strokes)
       add_stroke_markers(stroke, s, marker_rng_, markers_);
     if (p_.space.autonomous_markers > 0) {
+      // Refused before the buds drop them: a step's autonomous markers are known in advance.
+      const std::size_t coming =
+          positions.size() * static_cast<std::size_t>(p_.space.autonomous_markers);
+      if (markers_.size() + coming > p_.max_markers) refuse_markers(s, markers_.size() + coming);
       const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
       for (std::size_t b = 0; b < positions.size(); ++b)
         add_cone_markers(positions[b], directions[b], p_.space.perception_angle, radius,
                          p_.space.autonomous_markers, s, marker_rng_, markers_);
     }
-    if (markers_.size() > p_.max_markers)
-      throw InputError(where() + "self-organising growth would hold more than " +
-                       std::to_string(p_.max_markers) + " markers at step " + std::to_string(s) +
-                       ": lower " + marker_keys());
+    if (markers_.size() > p_.max_markers) refuse_markers(s, markers_.size());
+  }
+
+  [[noreturn]] void refuse_markers(int s, std::size_t held) const {
+    throw InputError(where() + "self-organising growth would hold more than the limit of " +
+                     std::to_string(p_.max_markers) + " markers at step " + std::to_string(s) +
+                     " (" + std::to_string(held) + "): lower " + marker_keys());
   }
 
   // Q = b * L^kappa for every bud: light feeds the resource; space only decides which buds

@@ -198,10 +198,10 @@ TEST(SelfOrganizingSpecies, StrokesOfTooManyMarkersAreRefusedBeforeGrowing) {
   // 100 steps of the brush, each marker living 300: 100 x 100000 = 1e7 at once per stroke.
   const std::string e = error_of(kHeader + "[growth]\nage = 200\n" + stroke + stroke + stroke);
   EXPECT_NE(e.find("so.toml:"), std::string::npos) << e;
-  EXPECT_NE(e.find("[stroke[2]] markers_per_step"), std::string::npos) << e;
-  EXPECT_NE(e.find("up to 3e+07 markers at once"), std::string::npos) << e;
-  // Two such strokes fit.
-  EXPECT_EQ(error_of(kHeader + "[growth]\nage = 200\n" + stroke + stroke), "");
+  EXPECT_NE(e.find("[stroke[1]] markers_per_step"), std::string::npos) << e;
+  EXPECT_NE(e.find("up to 2e+07 markers at once"), std::string::npos) << e;
+  // One such stroke fits the limit of 10^7.
+  EXPECT_EQ(error_of(kHeader + "[growth]\nage = 200\n" + stroke), "");
 }
 
 }  // namespace

@@ -172,6 +172,25 @@ TEST(SelfOrganizing, AnExplodingSpeciesIsRefusedNamingItsFileLimitAndKeys) {
   }
 }
 
+// A hundred autonomous markers per bud and shoots of 20 metamers: the markers multiply with
+// the buds. Refused before a step's buds drop them (it held 20 million, 1.3 GB, before the
+// old guard), naming the file, the limit and the key.
+TEST(SelfOrganizing, AutonomousMarkersAreRefusedBeforeTheBudsDropThem) {
+  const Species species = parse_species_toml(
+      "core = \"self_organizing\"\nname = \"auto\"\n[growth]\nsteps = 100\n"
+      "internode_length = 0.12\n[space]\nautonomous_markers = 100\n[vigour]\nmax_shoot = 20\n",
+      "auto.toml");
+  try {
+    generate(species, TreeOptions{});
+    FAIL() << "grew";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("auto.toml: ", 0), 0u) << m;
+    EXPECT_NE(m.find("more than the limit of 10000000 markers at step "), std::string::npos) << m;
+    EXPECT_NE(m.find("space.autonomous_markers"), std::string::npos) << m;
+  }
+}
+
 TEST(SelfOrganizing, SkeletonHasOneStemPerAxisAndLeavesOnYoungShoots) {
   const Parameters p = crown(EnvelopeKind::silhouette);
   GrowthStatistics stats;
