@@ -2,6 +2,8 @@
 // landsim the first time a scene object is read (core/module_loader.h).
 #include "scenes/mesh_io.h"
 
+#include <assimp/BaseImporter.h>
+#include <assimp/importerdesc.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -12,8 +14,11 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <sstream>
+#include <string>
 #include <tuple>
 #include <unordered_map>
+#include <vector>
 
 namespace landsim::scenes {
 namespace {
@@ -120,9 +125,29 @@ void append_mesh(const aiMesh& mesh, MeshData& out) {
   }
 }
 
+// When the importer for a file's extension declines it, Assimp tries every other importer it
+// has on the content: a ".gltf" that was no JSON reached its OpenGEX reader, which read past
+// its buffer (mesh_fuzz, session 18). landsim reads OBJ, PLY and glTF/GLB (docs/OBJECTS.md):
+// every other importer is unregistered, and deleted (the Importer no longer owns it).
+void keep_only_mesh_formats(Assimp::Importer& importer) {
+  std::vector<Assimp::BaseImporter*> others;
+  for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+    const aiImporterDesc* desc = importer.GetImporterInfo(i);
+    std::istringstream extensions(
+        desc != nullptr && desc->mFileExtensions != nullptr ? desc->mFileExtensions : "");
+    bool ours = false;
+    for (std::string e; extensions >> e;)
+      ours = ours || e == "obj" || e == "ply" || e == "gltf" || e == "glb";
+    if (!ours) others.push_back(importer.GetImporter(i));
+  }
+  for (Assimp::BaseImporter* other : others)
+    if (importer.UnregisterLoader(other) == aiReturn_SUCCESS) delete other;
+}
+
 bool read(const std::string& path, MeshData& mesh, std::string& error) {
   try {
     Assimp::Importer importer;
+    keep_only_mesh_formats(importer);
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, kSmoothingAngleDeg);
     // Points and lines are dropped; node transforms are applied (glTF scenes are trees of
     // nodes); validation refuses broken structures.

@@ -88,8 +88,10 @@ void check_gltf_json(const nlohmann::json& gltf, const fs::path& path, const std
 void check_glb(const fs::path& path, std::uintmax_t size, const std::string& where) {
   std::ifstream in(path, std::ios::binary);
   std::array<unsigned char, 12> header{};
-  if (!in.read(reinterpret_cast<char*>(header.data()), header.size())) return;  // Assimp says
-  if (std::memcmp(header.data(), "glTF", 4) != 0) return;
+  if (!in.read(reinterpret_cast<char*>(header.data()), header.size()) ||
+      std::memcmp(header.data(), "glTF", 4) != 0)
+    refuse(where, path.string(),
+           "a .glb file begins with the magic \"glTF\" and this one does not");
   const std::uint32_t length = little_endian_u32(&header[8]);
   if (length > size)
     refuse(where, path.string(),
@@ -117,7 +119,12 @@ void check_glb(const fs::path& path, std::uintmax_t size, const std::string& whe
 void check_gltf(const fs::path& path, const std::string& where) {
   std::ifstream in(path);
   const nlohmann::json gltf = nlohmann::json::parse(in, nullptr, false);
-  if (!gltf.is_discarded()) check_gltf_json(gltf, path, where);  // else Assimp says
+  // Not JSON: refused here, or Assimp would try its other formats' readers on it.
+  if (gltf.is_discarded())
+    refuse(where, path.string(),
+           "a .gltf file is JSON and this one is not (expected a glTF 2.0 document; the binary "
+           "form is .glb)");
+  check_gltf_json(gltf, path, where);
 }
 
 // The fewest bytes a PLY property takes: its binary size, or in ASCII one digit and a
@@ -143,6 +150,9 @@ void check_ply(const fs::path& path, std::uintmax_t size, const std::string& whe
   };
   std::vector<Element> elements;
   std::uintmax_t header = 0;
+  if (!std::getline(in, line) || (line != "ply" && line != "ply\r"))
+    refuse(where, path.string(), "a .ply file begins with the line \"ply\" and this one does not");
+  header += line.size() + 1;
   for (int lines = 0; std::getline(in, line) && lines < 10000; ++lines) {
     header += line.size() + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();

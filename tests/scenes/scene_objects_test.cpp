@@ -324,7 +324,21 @@ TEST(SceneObjects, BadMeshesAndPlacementsAreRefusedAtTheirEntry) {
   const std::string garbage = dir.write("garbage.ply", "this is not a mesh\n").string();
   std::string e = error_of(dir, scenario(terrain, object("x", garbage, 1090, 2100)));
   EXPECT_NE(e.find("s.toml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("[objects[0]] file: " + garbage + ": a .ply file begins with the line \"ply\""),
+            std::string::npos)
+      << e;
+  const std::string text = dir.write("garbage.obj", "this is not a mesh\n").string();
+  e = error_of(dir, scenario(terrain, object("x", text, 1090, 2100)));
   EXPECT_NE(e.find("[objects[0]] file: cannot read mesh"), std::string::npos) << e;
+  // Found by mesh_fuzz (session 18): a .gltf that is not JSON went on to Assimp's other
+  // readers, and its OpenGEX reader read past its buffer on this. Only landsim's formats are
+  // read now, and each must carry its format's signature.
+  const std::string opengex = dir.write("scene.gltf", "geometrynode{\n \"asse&J2").string();
+  e = error_of(dir, scenario(terrain, object("x", opengex, 1090, 2100)));
+  EXPECT_NE(e.find("a .gltf file is JSON and this one is not"), std::string::npos) << e;
+  const std::string no_magic = dir.write("scene.glb", std::string(40, 'x')).string();
+  e = error_of(dir, scenario(terrain, object("x", no_magic, 1090, 2100)));
+  EXPECT_NE(e.find("a .glb file begins with the magic \"glTF\""), std::string::npos) << e;
   // Vertices and no face.
   const std::string points = dir.write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n").string();
   e = error_of(dir, scenario(terrain, object("x", points, 1090, 2100)));
