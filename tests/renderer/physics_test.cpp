@@ -10,6 +10,7 @@
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
 #include "renderer/atmosphere/haze.h"
+#include "renderer/output/image_output.h"
 #include "renderer/transport/render.h"
 #include "terrain/ground_mesh.h"
 #include "tests/renderer/film_stats.h"
@@ -289,6 +290,33 @@ TEST(Physics, KilledAndResumedEqualsUninterrupted) {
   RenderStats fresh;
   Renderer(s).render(v, second, &fresh);
   EXPECT_GT(fresh.rays, stats.rays);  // it started again from tile 0
+}
+
+// A checkpoint whose tiles_done is no number an int holds (a damaged or foreign file) is a
+// checkpoint of another render: the render starts afresh (std::stoi's exception escaped).
+TEST(Physics, ACheckpointWithADamagedTileCountStartsAfresh) {
+  const Scene s = lit_ridge();
+  const View v{"v", {52.0, -60.0, 80.0}, {52.0, 50.0, 10.0}, 45.0, 80, 48};
+  landsim::testing::TempDir dir;
+  RenderOptions first;
+  first.checkpoint = dir / "v.checkpoint.exr";
+  first.render_key = "ridge";
+  first.stop = [](int tiles_done) { return tiles_done >= 4; };
+  EXPECT_THROW(Renderer(s).render(v, first), RenderInterrupted);
+  ASSERT_TRUE(std::filesystem::exists(first.checkpoint));
+  const Film saved = read_exr(first.checkpoint);
+  RenderOptions again = first;
+  again.stop = nullptr;
+  again.resume = true;
+  RenderStats whole;
+  Renderer(s).render(v, {}, &whole);
+  for (const char* damaged : {"99999999999", "lots", "12abc"}) {
+    write_exr(saved, first.checkpoint, {{"render_key", "ridge"}, {"tiles_done", damaged}}, nullptr,
+              false);
+    RenderStats resumed;
+    EXPECT_NO_THROW(Renderer(s).render(v, again, &resumed)) << damaged;
+    EXPECT_EQ(resumed.rays, whole.rays) << damaged;  // every tile traced again
+  }
 }
 
 }  // namespace
