@@ -6,13 +6,7 @@
 #   sh bench/adaptive.sh [BUILD_DIR]
 set -eu
 BUILD=${1:-build}
-LANDSIM="$BUILD/bin/landsim"
-ERROR="$BUILD/bin/image_error"
-OUT=$(mktemp -d)
-trap 'rm -rf "$OUT"' EXIT
-SIZE="--width 320"
-"$LANDSIM" render $SIZE --spp 1024 --set render.seed=1 --set render.sampling_seed=99 \
-  --out "$OUT/ref" > /dev/null 2>&1
+. "$(dirname "$0")/reference_render.sh"
 run() {  # name, extra arguments
   start=$(date +%s.%N)
   "$LANDSIM" render $SIZE "$@" --out "$OUT/img" > /dev/null 2>&1

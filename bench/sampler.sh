@@ -8,13 +8,7 @@
 set -eu
 BUILD=${1:-build}
 SEEDS=${2:-3}
-LANDSIM="$BUILD/bin/landsim"
-ERROR="$BUILD/bin/image_error"
-OUT=$(mktemp -d)
-trap 'rm -rf "$OUT"' EXIT
-SIZE="--width 320"
-"$LANDSIM" render $SIZE --spp 1024 --set render.seed=1 --set render.sampling_seed=99 \
-  --out "$OUT/ref" > /dev/null 2>&1
+. "$(dirname "$0")/reference_render.sh"
 for spp in 16 32 64; do
   for seed in $(seq "$SEEDS"); do
     for sampler in independent sobol; do

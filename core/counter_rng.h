@@ -76,8 +76,8 @@ class CounterRng {
   // One stream per (seed, key): key is, for a renderer, the pixel index; index the sample.
   constexpr CounterRng(std::uint64_t seed, std::uint64_t key, std::uint64_t index,
                        SampleSequence sequence = SampleSequence::independent)
-      : base_(hash_combine(hash_combine(mix64(seed), key), index)),
-        stream_(hash_combine(mix64(seed), key)),
+      : stream_(hash_combine(mix64(seed), key)),
+        base_(hash_combine(stream_, index)),
         index_(static_cast<std::uint32_t>(index)),
         sobol_(sequence == SampleSequence::sobol) {}
 
@@ -91,9 +91,7 @@ class CounterRng {
       // same points). One hash per pair: its low half orders the samples (the pair's two
       // dimensions must take the same order), its high half seeds each dimension's scramble.
       const std::uint64_t pair = hash_combine(stream_, dimension >> 1);
-      const std::uint32_t seed =
-          static_cast<std::uint32_t>(pair >> 32) ^ ((dimension & 1u) * 0x9e3779b9u);
-      return unit(scrambled_sobol(shuffled_index(pair), dimension & 1u, seed));
+      return sobol_component(pair, shuffled_index(pair), dimension & 1u);
     }
     const std::uint64_t bits = hash_combine(base_, dimension);
     return unit(static_cast<std::uint32_t>(bits >> 32));
@@ -106,9 +104,7 @@ class CounterRng {
     if (!sobol_ || (first & 1u) != 0) return {uniform(first), uniform(first + 1)};
     const std::uint64_t pair = hash_combine(stream_, first >> 1);
     const std::uint32_t index = shuffled_index(pair);
-    const auto seed = static_cast<std::uint32_t>(pair >> 32);
-    return {unit(scrambled_sobol(index, 0, seed)),
-            unit(scrambled_sobol(index, 1, seed ^ 0x9e3779b9u))};
+    return {sobol_component(pair, index, 0), sobol_component(pair, index, 1)};
   }
 
   // Next dimension, for code that consumes dimensions in order.
@@ -120,14 +116,23 @@ class CounterRng {
     return reverse_bits(laine_karras(reverse_bits(index_), static_cast<std::uint32_t>(pair)));
   }
 
+  // One component of the pair's scrambled point; the hash's high half seeds each component's
+  // scramble, the second's offset so the two differ.
+  static constexpr float sobol_component(std::uint64_t pair, std::uint32_t index,
+                                         std::uint32_t component) {
+    const std::uint32_t seed = static_cast<std::uint32_t>(pair >> 32) ^ (component * 0x9e3779b9u);
+    return unit(scrambled_sobol(index, component, seed));
+  }
+
   // The top 24 bits as a float in [0, 1).
   static constexpr float unit(std::uint32_t bits) {
     return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f);
   }
 
+  std::uint64_t stream_;  // the pixel's (Sobol: the scrambles' seed); declared first: base_
+                          // is made from it
   std::uint64_t base_;
-  std::uint64_t stream_;  // the pixel's (Sobol: the scrambles' seed)
-  std::uint32_t index_;   // the sample (Sobol: its index in the sequence)
+  std::uint32_t index_;  // the sample (Sobol: its index in the sequence)
   bool sobol_;
   std::uint32_t dimension_ = 0;
 };

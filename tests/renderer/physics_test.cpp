@@ -261,16 +261,25 @@ TEST(Physics, FirstCheckpointComesEarly) {
   }
 }
 
+// A render of `v` stopped after `tiles` tiles, its checkpoint in `dir` (key "ridge"); the
+// options to render it again.
+RenderOptions interrupted(const Scene& s, const View& v, const landsim::testing::TempDir& dir,
+                          int tiles) {
+  RenderOptions first;
+  first.checkpoint = dir / "v.checkpoint.exr";
+  first.render_key = "ridge";
+  first.stop = [tiles](int tiles_done) { return tiles_done >= tiles; };
+  EXPECT_THROW(Renderer(s).render(v, first), RenderInterrupted);
+  EXPECT_TRUE(std::filesystem::exists(first.checkpoint));
+  return first;
+}
+
 TEST(Physics, KilledAndResumedEqualsUninterrupted) {
   const Scene s = lit_ridge();
   const View v{"v", {52.0, -60.0, 80.0}, {52.0, 50.0, 10.0}, 45.0, 200, 120};  // 13 x 8 = 104 tiles
   const Film whole = Renderer(s).render(v, {});
   landsim::testing::TempDir dir;
-  RenderOptions first;
-  first.checkpoint = dir / "v.checkpoint.exr";
-  first.render_key = "ridge";
-  first.stop = [](int tiles_done) { return tiles_done >= 64; };
-  EXPECT_THROW(Renderer(s).render(v, first), RenderInterrupted);
+  RenderOptions first = interrupted(s, v, dir, 64);
   ASSERT_TRUE(std::filesystem::exists(first.checkpoint));
   RenderOptions second = first;
   second.stop = nullptr;
@@ -298,11 +307,7 @@ TEST(Physics, ACheckpointWithADamagedTileCountStartsAfresh) {
   const Scene s = lit_ridge();
   const View v{"v", {52.0, -60.0, 80.0}, {52.0, 50.0, 10.0}, 45.0, 80, 48};
   landsim::testing::TempDir dir;
-  RenderOptions first;
-  first.checkpoint = dir / "v.checkpoint.exr";
-  first.render_key = "ridge";
-  first.stop = [](int tiles_done) { return tiles_done >= 4; };
-  EXPECT_THROW(Renderer(s).render(v, first), RenderInterrupted);
+  const RenderOptions first = interrupted(s, v, dir, 4);
   ASSERT_TRUE(std::filesystem::exists(first.checkpoint));
   const Film saved = read_exr(first.checkpoint);
   RenderOptions again = first;
