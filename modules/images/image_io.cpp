@@ -8,10 +8,10 @@
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imagecache.h>
 #include <OpenImageIO/imageio.h>
 
 #include <exception>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -48,63 +48,69 @@ std::string one_line(const std::string& errors) {
   return out;
 }
 
-bool probe_file(const std::string& path, int& width, int& height, int& channels,
-                std::string& error) {
+// Opens the file and checks its header: pixels present, and no more values than landsim reads.
+std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::string& error) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) {
     error = one_line(OIIO::geterror());
     if (error.empty()) error = "not an image file OpenImageIO reads";
-    return false;
+    return nullptr;
   }
   const OIIO::ImageSpec& spec = in->spec();
-  width = spec.width;
-  height = spec.height;
-  channels = spec.nchannels;
-  in->close();
-  if (width <= 0 || height <= 0 || channels <= 0) {
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     error = "the header gives no pixels";
-    return false;
+    return nullptr;
   }
-  if (static_cast<long long>(width) * height * channels > kMaxValues) {
-    error = "the header declares " + std::to_string(width) + " x " + std::to_string(height) +
-            " pixels of " + std::to_string(channels) + " channels, more than the " +
-            std::to_string(kMaxValues) + " values landsim reads";
-    return false;
+  if (static_cast<long long>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
+    error = "the header declares " + std::to_string(spec.width) + " x " +
+            std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) +
+            " channels, more than the " + std::to_string(kMaxValues) + " values landsim reads";
+    return nullptr;
   }
+  return in;
+}
+
+bool probe_file(const std::string& path, int& width, int& height, int& channels,
+                std::string& error) {
+  const auto in = open_checked(path, error);
+  if (!in) return false;
+  width = in->spec().width;
+  height = in->spec().height;
+  channels = in->spec().nchannels;
   return true;
 }
 
+// Decodes straight into the caller's floats and converts them there: one buffer of the image's
+// size at the peak (through an ImageBuf, a copy and a converted copy made three). Read through
+// ImageInput, not OpenImageIO's shared image cache, which kept a file's spec by name and time
+// stamp and so read a file rewritten within the same second with the old spec (a heap overrun).
 bool read_file(const std::string& path, bool to_linear, FloatImage& image, std::string& error) {
-  int width = 0, height = 0, channels = 0;
-  if (!probe_file(path, width, height, channels, error)) return false;
-  // OpenImageIO's shared image cache keeps each file's spec by name and re-reads it only when
-  // the file's time stamp changes: a file rewritten within the same second (another image of
-  // another size under the name) was read with the old spec, overrunning the buffer. Read
-  // always what is on disk.
-  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(path), true);
-  OIIO::ImageBuf buf(path);
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-    error = one_line(buf.geterror());
+  const auto in = open_checked(path, error);
+  if (!in) return false;
+  OIIO::ImageSpec spec = in->spec();
+  // The file's own format: integers are display-referred (sRGB encoded), floats linear.
+  const bool encoded =
+      spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
+  image.pixels.assign(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels, 0.0f);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+    error = one_line(in->geterror());
+    if (error.empty()) error = "cannot decode the pixels";
+    image = FloatImage{};  // no half-decoded pixels for the caller
     return false;
   }
-  // The file's own format (the buffer holds floats once read with the FLOAT conversion).
-  const bool encoded = buf.nativespec().format.basetype != OIIO::TypeDesc::FLOAT &&
-                       buf.nativespec().format.basetype != OIIO::TypeDesc::HALF;
-  if (to_linear && encoded) buf = OIIO::ImageBufAlgo::colorconvert(buf, "sRGB", "linear");
-  if (buf.has_error()) {
-    error = one_line(buf.geterror());
-    return false;
+  if (to_linear && encoded) {
+    spec.set_format(OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf pixels(spec, image.pixels.data());  // wraps the floats, copies nothing
+    if (!OIIO::ImageBufAlgo::colorconvert(pixels, pixels, "sRGB", "linear")) {
+      error = one_line(pixels.geterror());
+      image = FloatImage{};
+      return false;
+    }
   }
-  const OIIO::ImageSpec& spec = buf.spec();
   image.width = spec.width;
   image.height = spec.height;
   image.channels = spec.nchannels;
   image.display_referred = encoded;
-  image.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
-  if (!buf.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-    error = one_line(buf.geterror());
-    return false;
-  }
   return true;
 }
 
