@@ -154,7 +154,11 @@ struct Parameters {
   // largest shipped species and some 5 million triangles; the refusal costs at most ~250 MB.
   std::size_t max_internodes = 250000;
   std::size_t max_markers = 10000000;  // markers held at once beyond this (280 MB): refused
-  std::string source;                  // the species file, for errors found while growing
+  // Autonomous markers the buds drop in one step beyond this: refused. 35 times the most a
+  // shipped species drops (57,354); the buds multiply each step, so the step before the
+  // refusal held a few times fewer and the refusal comes within a second.
+  std::size_t max_autonomous_markers = 2000000;
+  std::string source;  // the species file, for errors found while growing
 };
 
 // The core's own tables of a species file (docs/SPECIES.md); throws InputError naming the
