@@ -202,10 +202,13 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
       // The camera's own segment carries every pixel's haze veil: its sun ray is always
       // traced (rouletted, the veil's noise grew by 4%); later segments are short, their
       // rays rouletted.
-      const ShadowRoulette r =
-          bounce == 0 ? ShadowRoulette{} : roulette(rng.uniform(dim + kHazeRoulette));
-      radiance += throughput * haze_in_scatter(ray, t, depth, rng.uniform(dim + kHaze), throughput,
-                                               r, mask, out.rays);
+      // The scatter point and the roulette are one pair (one Sobol draw) past the first.
+      const std::array<float, 2> haze = bounce == 0
+                                            ? std::array<float, 2>{rng.uniform(dim + kHaze), 0.0f}
+                                            : rng.uniform2(dim + kHaze);
+      const ShadowRoulette r = bounce == 0 ? ShadowRoulette{} : roulette(haze[1]);
+      radiance +=
+          throughput * haze_in_scatter(ray, t, depth, haze[0], throughput, r, mask, out.rays);
       throughput = throughput * transmitted;
     }
     if (!hit) {
@@ -226,10 +229,9 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     const Spectrum seen = throughput * (1.0f - fresnel);
     // Pairs of dimensions drawn together (one hash and one shuffle for both under Sobol).
     const std::array<float, 2> sun = rng.uniform2(dim + kSun0), sky = rng.uniform2(dim + kSky0);
-    Spectrum direct =
-        sun_light(v, bsdf, sm, sun[0], sun[1], seen, rng.uniform(dim + kSunRoulette), out.rays);
-    direct +=
-        sky_light(v, bsdf, sm, sky[0], sky[1], seen, rng.uniform(dim + kSkyRoulette), out.rays);
+    const std::array<float, 2> shadow = rng.uniform2(dim + kSunRoulette);  // sun's, sky's
+    Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, shadow[0], out.rays);
+    direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, shadow[1], out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.

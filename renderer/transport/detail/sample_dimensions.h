@@ -18,16 +18,18 @@ enum Dim : std::uint32_t {
   kSky1,
   kChoice,
   kDir,
-  kRoulette,
-  kHaze,
-  kFresnel,
   kSunRoulette,  // shadow-ray roulette (renderer/transport/shadow_roulette.h)
   kSkyRoulette,
-  kHazeRoulette
+  kHaze,
+  kHazeRoulette,
+  kRoulette,
+  kFresnel
 };
 
 // Pairs drawn together (CounterRng::uniform2: one Sobol pair) start at an even dimension.
 static_assert(kFirstBounceDim % 2 == 0 && kDimsPerBounce % 2 == 0 && kLens0 % 2 == 0);
 static_assert(kSun0 % 2 == 0 && kSky0 % 2 == 0 && kChoice % 2 == 0 && kDir == kChoice + 1);
+static_assert(kSunRoulette % 2 == 0 && kSkyRoulette == kSunRoulette + 1);
+static_assert(kHaze % 2 == 0 && kHazeRoulette == kHaze + 1);
 
 }  // namespace landsim::renderer::detail
