@@ -11,6 +11,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -65,6 +66,19 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
     error = "the header declares " + std::to_string(spec.width) + " x " +
             std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) +
             " channels, more than the " + std::to_string(kMaxValues) + " values landsim reads";
+    return nullptr;
+  }
+  // An uncompressed file holds its pixels: a header claiming more bytes than the file has
+  // (a 257-byte TIFF claiming 29294 x 8 pixels of 778 channels, 729 MB) is refused before
+  // the pixels are allocated, instead of being read as zeros.
+  std::error_code size_error;
+  const auto file_bytes = std::filesystem::file_size(path, size_error);
+  if (spec.get_string_attribute("compression") == "none" && !size_error &&
+      spec.image_bytes() > file_bytes) {
+    error = "the header declares " + std::to_string(spec.width) + " x " +
+            std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) +
+            " channels uncompressed (" + std::to_string(spec.image_bytes()) +
+            " bytes), more than the file's " + std::to_string(file_bytes);
     return nullptr;
   }
   return in;

@@ -1,6 +1,7 @@
 #include "renderer/output/image_output.h"
 
 #include <cmath>
+#include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -100,6 +101,31 @@ TEST(ImageOutput, ImageModuleErrorsAreOneLine) {
   ASSERT_FALSE(image_io().read(truncated.string(), false, image, error));
   EXPECT_FALSE(error.empty());
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
+// An uncompressed image claiming more pixels than its file holds is refused from its header,
+// before anything is allocated for them (image_fuzz found a 257-byte TIFF read as 729 MB of
+// zeros); the whole file reads.
+TEST(ImageOutput, AnUncompressedImageLargerThanItsFileIsRefusedFromItsHeader) {
+  const landsim::testing::TempDir dir;
+  const auto path = dir / "whole.tif";
+  OIIO::ImageSpec spec(64, 48, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("compression", "none");
+  const std::vector<unsigned char> pixels(64 * 48 * 3, 128);
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out && out->open(path.string(), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+  out->close();
+  FloatImage image;
+  std::string error;
+  ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << error;
+  EXPECT_EQ(image.pixels.size(), pixels.size());
+  const std::string bytes = landsim::testing::read_file(path);
+  const auto cut = dir.write("cut.tif", bytes.substr(0, bytes.size() / 2));
+  int width = 0, height = 0, channels = 0;
+  ASSERT_FALSE(image_io().probe(cut.string(), width, height, channels, error));
+  EXPECT_NE(error.find("uncompressed (9216 bytes), more than the file's"), std::string::npos)
+      << error;
 }
 
 }  // namespace
