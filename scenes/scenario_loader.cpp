@@ -244,11 +244,10 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
     s.min_spp = static_cast<int>(r.integer("min_spp", 1, s.spp));
   }
   s.seed = static_cast<std::uint64_t>(r.integer("seed", 0, INT64_MAX, s.seed));
-  const bool sobol = s.sampler == SampleSequence::sobol;
-  s.sampler =
-      r.choice("sampler", {"independent", "sobol"}, sobol ? "sobol" : "independent") == "sobol"
-          ? SampleSequence::sobol
-          : SampleSequence::independent;
+  const char* sampler = s.sampler == SampleSequence::sobol ? "sobol" : "independent";
+  s.sampler = r.choice("sampler", {"independent", "sobol"}, sampler) == "sobol"
+                  ? SampleSequence::sobol
+                  : SampleSequence::independent;
   if (r.has("sampling_seed"))
     s.sampling_seed = static_cast<std::uint64_t>(r.integer("sampling_seed", 0, INT64_MAX));
   s.threads = static_cast<int>(r.integer("threads", 0, 1024, s.threads));

@@ -49,6 +49,12 @@ std::string one_line(const std::string& errors) {
   return out;
 }
 
+// "the header declares W x H pixels of C channels": what a refusal from the header quotes.
+std::string declared(const OIIO::ImageSpec& spec) {
+  return "the header declares " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+         " pixels of " + std::to_string(spec.nchannels) + " channels";
+}
+
 // Opens the file and checks its header: pixels present, and no more values than landsim reads.
 std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::string& error) {
   auto in = OIIO::ImageInput::open(path);
@@ -63,9 +69,8 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
     return nullptr;
   }
   if (static_cast<long long>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
-    error = "the header declares " + std::to_string(spec.width) + " x " +
-            std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) +
-            " channels, more than the " + std::to_string(kMaxValues) + " values landsim reads";
+    error =
+        declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
     return nullptr;
   }
   // An uncompressed file holds its pixels: a header claiming more bytes than the file has
@@ -75,9 +80,7 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
   const auto file_bytes = std::filesystem::file_size(path, size_error);
   if (spec.get_string_attribute("compression") == "none" && !size_error &&
       spec.image_bytes() > file_bytes) {
-    error = "the header declares " + std::to_string(spec.width) + " x " +
-            std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) +
-            " channels uncompressed (" + std::to_string(spec.image_bytes()) +
+    error = declared(spec) + " uncompressed (" + std::to_string(spec.image_bytes()) +
             " bytes), more than the file's " + std::to_string(file_bytes);
     return nullptr;
   }

@@ -139,12 +139,7 @@ class Simulation {
       // Refused before the buds drop them: a step's autonomous markers are known in advance.
       const std::size_t coming =
           positions.size() * static_cast<std::size_t>(p_.space.autonomous_markers);
-      if (coming > p_.max_autonomous_markers)
-        throw InputError(where() + "self-organising growth would drop " + std::to_string(coming) +
-                         " autonomous markers at step " + std::to_string(s) + " (" +
-                         std::to_string(positions.size()) + " buds), more than the limit of " +
-                         std::to_string(p_.max_autonomous_markers) +
-                         " a step: lower space.autonomous_markers or vigour.max_shoot");
+      if (coming > p_.max_autonomous_markers) refuse_autonomous(s, coming, positions.size());
       if (markers_.size() + coming > p_.max_markers) refuse_markers(s, markers_.size() + coming);
       const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
       for (std::size_t b = 0; b < positions.size(); ++b)
@@ -152,6 +147,14 @@ class Simulation {
                          p_.space.autonomous_markers, s, marker_rng_, markers_);
     }
     if (markers_.size() > p_.max_markers) refuse_markers(s, markers_.size());
+  }
+
+  [[noreturn]] void refuse_autonomous(int s, std::size_t coming, std::size_t buds) const {
+    throw InputError(where() + "self-organising growth would drop " + std::to_string(coming) +
+                     " autonomous markers at step " + std::to_string(s) + " (" +
+                     std::to_string(buds) + " buds), more than the limit of " +
+                     std::to_string(p_.max_autonomous_markers) +
+                     " a step: lower space.autonomous_markers or vigour.max_shoot");
   }
 
   [[noreturn]] void refuse_markers(int s, std::size_t held) const {
