@@ -4,6 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "trees/self_organizing/reach_mask.h"
 #include "trees/self_organizing/sparse_grid.h"
 
@@ -37,12 +40,20 @@ std::size_t MarkerSet::consume(const std::vector<Vec3>& buds, double radius) {
   if (buds.empty()) return 0;
   const SparseGrid grid(buds, radius);
   const ReachMask reach(buds, radius);
-  keep_if([&](std::size_t i) {
-    return !reach.may_reach(points_[i]) || !grid.any_near(points_[i], radius, [&](std::uint32_t b) {
-      const Vec3 d = buds[b] - points_[i];
-      return dot(d, d) < radius * radius;
-    });
-  });
+  // Which markers a bud takes, found on every core; then dropped in order.
+  std::vector<std::uint8_t> taken(points_.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points_.size(), 4096),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        const Vec3& p = points_[i];
+                        taken[i] =
+                            reach.may_reach(p) && grid.any_near(p, radius, [&](std::uint32_t b) {
+                              const Vec3 d = buds[b] - p;
+                              return dot(d, d) < radius * radius;
+                            });
+                      }
+                    });
+  keep_if([&](std::size_t i) { return taken[i] == 0; });
   return before - points_.size();
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <tuple>
 
+#include <tbb/parallel_sort.h>
+
 namespace landsim::trees::self_organizing {
 
 SparseGrid::SparseGrid(const std::vector<Vec3>& points, double cell) : cell_(cell) {
@@ -20,7 +22,9 @@ SparseGrid::SparseGrid(const std::vector<Vec3>& points, double cell) : cell_(cel
     y_lo_ = i == 0 ? y : std::min(y_lo_, y), y_hi = i == 0 ? y : std::max(y_hi, y);
     z_lo_ = i == 0 ? z : std::min(z_lo_, z), z_hi = i == 0 ? z : std::max(z_hi, z);
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+  // A total order (the index breaks ties): the same grid from the parallel sort on any
+  // number of cores.
+  tbb::parallel_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
     return std::tie(a.row, a.x, a.index) < std::tie(b.row, b.x, b.index);
   });
   order_.resize(entries.size());

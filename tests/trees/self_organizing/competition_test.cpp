@@ -7,6 +7,8 @@
 
 #include "trees/random.h"
 
+#include <tbb/task_arena.h>
+
 namespace landsim::trees::self_organizing {
 namespace {
 
@@ -33,7 +35,7 @@ TEST(Competition, MatchesABruteForceAssignment) {
     directions.push_back(
         normalize(Vec3{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)}));
   }
-  for (int m = 0; m < 2000; ++m)
+  for (int m = 0; m < 20000; ++m)  // several of the parallel search's chunks
     markers.push_back({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 5)});
   const double radius = 1.5, angle = 1.6;
   const auto space = allocate_markers(markers, positions, directions, radius, angle);
@@ -53,7 +55,34 @@ TEST(Competition, MatchesABruteForceAssignment) {
     EXPECT_EQ(space[b].markers, expected[b]) << b;
     total += space[b].markers;
   }
-  EXPECT_GT(total, 100);
+  EXPECT_GT(total, 1000);
+}
+
+// The owners are searched on every core; each bud's direction must still be the same sum in
+// the same order, to the bit, on one core as on two.
+TEST(Competition, TheSameBitsOnOneCoreAsOnTwo) {
+  Random rng(4, 0);
+  std::vector<Vec3> positions, directions, markers;
+  for (int b = 0; b < 400; ++b) {
+    positions.push_back({rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(0, 4)});
+    directions.push_back(
+        normalize(Vec3{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)}));
+  }
+  for (int m = 0; m < 200000; ++m)
+    markers.push_back({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 5)});
+  const auto on = [&](int cores) {
+    tbb::task_arena arena(cores);
+    return arena.execute(
+        [&] { return allocate_markers(markers, positions, directions, 1.5, 1.6); });
+  };
+  const std::vector<BudSpace> one = on(1), two = on(2);
+  int with_markers = 0;
+  for (std::size_t b = 0; b < positions.size(); ++b) {
+    EXPECT_EQ(one[b].markers, two[b].markers) << b;
+    EXPECT_EQ(one[b].direction, two[b].direction) << b;
+    with_markers += one[b].markers > 30 ? 1 : 0;
+  }
+  EXPECT_GT(with_markers, 100);  // many buds' sums span several chunks
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 #include "trees/self_organizing/generator.h"
 #include "trees/species.h"
 
+#include <tbb/task_arena.h>
+
 namespace landsim::trees::self_organizing {
 namespace {
 
@@ -58,6 +60,24 @@ TEST(SelfOrganizing, SameSeedSameTreeOtherSeedOtherTree) {
   for (std::uint32_t i = 0; i < std::min(a.size(), c.size()) && !differs; ++i)
     differs = !(a[i].tip == c[i].tip);
   EXPECT_TRUE(differs);
+}
+
+// The markers' passes and the bud grid's sort run on every core: the tree must be the same
+// bits on one.
+TEST(SelfOrganizing, TheSameTreeOnOneCoreAsOnTwo) {
+  Parameters p = crown(EnvelopeKind::silhouette);
+  p.envelope.density = 3000;  // some 60,000 markers: many chunks of the parallel passes
+  const auto on = [&](int cores) {
+    tbb::task_arena arena(cores);
+    return arena.execute([&] { return grow(p, 7); });
+  };
+  const Plant one = on(1), two = on(2);
+  ASSERT_GT(one.size(), 200u);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::uint32_t i = 0; i < one.size(); ++i) {
+    ASSERT_EQ(one[i].tip, two[i].tip) << i;
+    ASSERT_EQ(one[i].width, two[i].width) << i;
+  }
 }
 
 TEST(SelfOrganizing, ShootsFollowABrushStroke) {
