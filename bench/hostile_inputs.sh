@@ -58,9 +58,20 @@ def chunk(t, d):
 with open(f"{w}/huge.png", "wb") as f:  # a 100000 x 100000 reference, header only
     f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 100000, 100000, 8, 2, 0, 0, 0))
             + chunk(b"IDAT", b"\x78\x9c") + chunk(b"IEND", b""))
+def one_strip_tiff(tags, data):  # little-endian, one strip, every entry a LONG
+    tags = sorted(tags) + [(273, 8 + 2 + 12 * (len(tags) + 2) + 4), (279, len(data))]
+    ifd = struct.pack("<H", len(tags)) + b"".join(struct.pack("<HHII", t, 4, 1, v) for t, v in tags)
+    return b"II*\0" + struct.pack("<I", 8) + ifd + b"\0" * 4 + data
+with open(f"{w}/lzw.tif", "wb") as f:  # 16000 x 16000 grey LZW (256 M values) in 300 bytes
+    f.write(one_strip_tiff([(256, 16000), (257, 16000), (258, 8), (259, 5), (262, 1), (277, 1),
+                            (278, 16000)], b"\x80" * 200))
+with open(f"{w}/fax.tif", "wb") as f:  # CCITT fax of 314 channels (164 M values), 180 bytes
+    f.write(one_strip_tiff([(256, 8), (257, 65272), (258, 8), (259, 3), (262, 1), (277, 314),
+                            (278, 8)], b"\0" * 60))
 PY
 for m in zero.obj fan.obj huge.glb faces.ply outside.gltf; do scenario "mesh_$m" "$(object "$W/$m")"; done
 scenario plain ""
+for t in lzw fax; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t.tif")"; done
 printf 'camera { location <0, 1, -3> right x*image_width/image_height look_at <0, 0, 0> }\n#include "self.pov"\n' > "$W/self.pov"
 
 # Species.
@@ -109,6 +120,8 @@ for m in zero.obj fan.obj huge.glb faces.ply outside.gltf; do
   run "mesh $m" "$BIN/landsim" info "$W/mesh_$m.toml"
 done
 run "reference 100000^2 PNG" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c1" --reference "$W/huge.png"
+run "texture: LZW TIFF claiming 256M values" "$BIN/landsim" render "$W/texture_lzw.toml" --out "$W/t1"
+run "texture: fax TIFF of 314 channels" "$BIN/landsim" render "$W/texture_fax.toml" --out "$W/t2"
 run "reference garbage" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c2" --reference "$W/strokes.toml"
 run "pov includes itself" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c3" --pov "$W/self.pov"
 run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"

@@ -10,11 +10,13 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -52,7 +54,53 @@ std::string one_line(const std::string& errors) {
 // "the header declares W x H pixels of C channels": what a refusal from the header quotes.
 std::string declared(const OIIO::ImageSpec& spec) {
   return "the header declares " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-         " pixels of " + std::to_string(spec.nchannels) + " channels";
+         " pixels of " + std::to_string(spec.nchannels) +
+         (spec.nchannels == 1 ? " channel" : " channels");
+}
+
+// The most bytes of pixels (in the file's own sample format) one byte of these codecs can
+// decode to, with room to spare: deflate (PNG, TIFF and OpenEXR zip) at most 1032, TIFF's
+// LZW about 2560 (a full 12-bit table's longest strings), PackBits 64, baseline or
+// progressive JPEG 2048 (every 8 x 8 block's DC coefficient takes a bit, four channels),
+// OpenEXR's RLE 64, PIZ and PXR24 and B44 less than deflate. Codecs whose ratio has no such
+// bound (OpenEXR's DWA, TIFF's ZSTD and WebP, JPEG 2000, WebP, fax) keep only kMaxValues.
+constexpr double kMaxCompression = 4096.0;
+// Below this many bytes of pixels any header is believed (tiny files, generous ratios).
+constexpr double kBelievedBytes = 1 << 20;
+
+// The codec's name as OpenImageIO gives it ("zip", "dwaa:45" -> "dwaa").
+std::string codec(const OIIO::ImageSpec& spec) {
+  const std::string c = spec.get_string_attribute("compression");
+  return c.substr(0, c.find(':'));
+}
+
+bool ratio_bounded(const std::string& format, const std::string& c) {
+  if (format == "png" || format == "jpeg") return true;
+  if (format == "tiff")
+    return c == "lzw" || c == "zip" || c == "deflate" || c == "packbits" || c == "jpeg";
+  if (format == "openexr")
+    return c == "rle" || c == "zips" || c == "zip" || c == "piz" || c == "pxr24" || c == "b44" ||
+           c == "b44a";
+  return false;
+}
+
+// Why a compressed file cannot hold what its header declares, or "": more bytes of pixels
+// than its codec could decode from the whole file (a 179-byte LZW or fax TIFF claiming
+// hundreds of megabytes was allocated, then failed to decode). CCITT fax codes one-channel
+// bilevel images only (TIFF 6.0, sections 3 and 11): more channels is no image.
+std::string compressed_beyond_file(const OIIO::ImageInput& in, std::uintmax_t file_bytes,
+                                   const std::error_code& size_error) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const std::string c = codec(spec);
+  if (c.rfind("ccitt", 0) == 0 && spec.nchannels != 1)
+    return declared(spec) + " compressed as CCITT fax, which codes one channel";
+  if (size_error || !ratio_bounded(in.format_name(), c)) return "";
+  const auto bytes = static_cast<double>(spec.image_bytes());
+  if (bytes <= kBelievedBytes || bytes <= kMaxCompression * static_cast<double>(file_bytes))
+    return "";
+  return declared(spec) + " (" + std::to_string(spec.image_bytes()) + " bytes), more than " +
+         (c.empty() ? std::string(in.format_name()) : c) + " compression decodes from the file's " +
+         std::to_string(file_bytes) + " bytes";
 }
 
 // Opens the file and checks its header: pixels present, and no more values than landsim reads.
@@ -82,6 +130,11 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
       spec.image_bytes() > file_bytes) {
     error = declared(spec) + " uncompressed (" + std::to_string(spec.image_bytes()) +
             " bytes), more than the file's " + std::to_string(file_bytes);
+    return nullptr;
+  }
+  if (const std::string refusal = compressed_beyond_file(*in, file_bytes, size_error);
+      !refusal.empty()) {
+    error = refusal;
     return nullptr;
   }
   return in;

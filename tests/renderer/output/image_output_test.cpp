@@ -1,6 +1,10 @@
 #include "renderer/output/image_output.h"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -126,6 +130,78 @@ TEST(ImageOutput, AnUncompressedImageLargerThanItsFileIsRefusedFromItsHeader) {
   ASSERT_FALSE(image_io().probe(cut.string(), width, height, channels, error));
   EXPECT_NE(error.find("uncompressed (9216 bytes), more than the file's"), std::string::npos)
       << error;
+}
+
+// A little-endian TIFF of one strip holding `data`: the IFD's entries (tag, value) as LONGs,
+// in ascending tag order, then the strip's offset and byte count.
+std::string one_strip_tiff(std::vector<std::array<std::uint32_t, 2>> tags,
+                           const std::string& data) {
+  const auto entries = static_cast<std::uint32_t>(tags.size() + 2);
+  const std::uint32_t strip = 8 + 2 + 12 * entries + 4;
+  tags.push_back({273, strip});                                    // StripOffsets
+  tags.push_back({279, static_cast<std::uint32_t>(data.size())});  // StripByteCounts
+  std::string out("II*\0", 4);
+  const auto put = [&](std::uint32_t v, int bytes) {
+    for (int k = 0; k < bytes; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xff));
+  };
+  put(8, 4);
+  put(entries, 2);
+  for (const auto& [tag, value] : tags) {
+    put(tag, 2);
+    put(4, 2);  // LONG
+    put(1, 4);
+    put(value, 4);
+  }
+  put(0, 4);
+  return out + data;
+}
+
+// A few hundred bytes whose header claims hundreds of megabytes were allocated, then failed
+// to decode (image_fuzz, session 20): such headers are refused from the file's size.
+TEST(ImageOutput, ACompressedImageBeyondItsCodecsReachIsRefusedFromItsHeader) {
+  const landsim::testing::TempDir dir;
+  int width = 0, height = 0, channels = 0;
+  std::string error;
+  // 4000 x 4000 grey in LZW (16 MB) from 100 bytes: LZW decodes at most some 2,560 bytes a byte.
+  const auto lzw =
+      dir.write("lzw.tif",
+                one_strip_tiff(
+                    {{256, 4000}, {257, 4000}, {258, 8}, {259, 5}, {262, 1}, {277, 1}, {278, 4000}},
+                    std::string(100, '\x80')));
+  ASSERT_FALSE(image_io().probe(lzw.string(), width, height, channels, error));
+  EXPECT_NE(error.find("(16000000 bytes), more than lzw compression decodes from the file's"),
+            std::string::npos)
+      << error;
+  // CCITT fax with 314 channels: fax codes one-channel bilevel images only.
+  error.clear();
+  const auto fax = dir.write(
+      "fax.tif",
+      one_strip_tiff({{256, 8}, {257, 65272}, {258, 8}, {259, 3}, {262, 1}, {277, 314}, {278, 8}},
+                     std::string(20, '\0')));
+  ASSERT_FALSE(image_io().probe(fax.string(), width, height, channels, error));
+  EXPECT_NE(error.find("compressed as CCITT fax, which codes one channel"), std::string::npos)
+      << error;
+}
+
+// The bound must not refuse what the codec really does: 4096 x 4096 of one value, the most
+// compressible image there is, in LZW TIFF and PNG.
+TEST(ImageOutput, HighlyCompressedImagesWithinTheirCodecsReachAreRead) {
+  const landsim::testing::TempDir dir;
+  const std::vector<unsigned char> pixels(4096 * 4096, 7);
+  for (const char* name : {"flat.tif", "flat.png"}) {
+    const auto path = dir / name;
+    OIIO::ImageSpec spec(4096, 4096, 1, OIIO::TypeDesc::UINT8);
+    spec.attribute("compression", std::string(name).ends_with(".tif") ? "lzw" : "zip");
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+    out->close();
+    FloatImage image;
+    std::string error;
+    ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << name << ": " << error;
+    EXPECT_EQ(image.pixels.size(), pixels.size());
+    EXPECT_GT(pixels.size() / std::filesystem::file_size(path), 100u) << name;  // compressed
+  }
 }
 
 }  // namespace
