@@ -110,16 +110,23 @@ TEST(ImageOutput, ImageModuleErrorsAreOneLine) {
 // An uncompressed image claiming more pixels than its file holds is refused from its header,
 // before anything is allocated for them (image_fuzz found a 257-byte TIFF read as 729 MB of
 // zeros); the whole file reads.
+// Writes 8-bit `pixels` through OpenImageIO with the given compression; false if it cannot.
+bool write_8bit(const std::filesystem::path& path, int width, int height, int channels,
+                const char* compression, const std::vector<unsigned char>& pixels) {
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  spec.attribute("compression", compression);
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (!out || !out->open(path.string(), spec) ||
+      !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()))
+    return false;
+  return out->close();
+}
+
 TEST(ImageOutput, AnUncompressedImageLargerThanItsFileIsRefusedFromItsHeader) {
   const landsim::testing::TempDir dir;
   const auto path = dir / "whole.tif";
-  OIIO::ImageSpec spec(64, 48, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("compression", "none");
   const std::vector<unsigned char> pixels(64 * 48 * 3, 128);
-  auto out = OIIO::ImageOutput::create(path.string());
-  ASSERT_TRUE(out && out->open(path.string(), spec));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
-  out->close();
+  ASSERT_TRUE(write_8bit(path, 64, 48, 3, "none", pixels));
   FloatImage image;
   std::string error;
   ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << error;
@@ -190,12 +197,8 @@ TEST(ImageOutput, HighlyCompressedImagesWithinTheirCodecsReachAreRead) {
   const std::vector<unsigned char> pixels(4096 * 4096, 7);
   for (const char* name : {"flat.tif", "flat.png"}) {
     const auto path = dir / name;
-    OIIO::ImageSpec spec(4096, 4096, 1, OIIO::TypeDesc::UINT8);
-    spec.attribute("compression", std::string(name).ends_with(".tif") ? "lzw" : "zip");
-    auto out = OIIO::ImageOutput::create(path.string());
-    ASSERT_TRUE(out && out->open(path.string(), spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
-    out->close();
+    const char* codec = std::string(name).ends_with(".tif") ? "lzw" : "zip";
+    ASSERT_TRUE(write_8bit(path, 4096, 4096, 1, codec, pixels));
     FloatImage image;
     std::string error;
     ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << name << ": " << error;

@@ -27,16 +27,26 @@ TEST(Competition, AMarkerGoesToTheClosestBudWhoseConeHoldsIt) {
   EXPECT_EQ(space[2].direction, (Vec3{0, 0, 0}));
 }
 
-TEST(Competition, MatchesABruteForceAssignment) {
-  Random rng(9, 0);
+// Buds scattered with random directions among markers scattered around them.
+struct Field {
   std::vector<Vec3> positions, directions, markers;
-  for (int b = 0; b < 60; ++b) {
-    positions.push_back({rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(0, 4)});
-    directions.push_back(
+};
+Field random_field(std::uint64_t seed, int buds, int markers) {
+  Random rng(seed, 0);
+  Field f;
+  for (int b = 0; b < buds; ++b) {
+    f.positions.push_back({rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(0, 4)});
+    f.directions.push_back(
         normalize(Vec3{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)}));
   }
-  for (int m = 0; m < 20000; ++m)  // several of the parallel search's chunks
-    markers.push_back({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 5)});
+  for (int m = 0; m < markers; ++m)
+    f.markers.push_back({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 5)});
+  return f;
+}
+
+TEST(Competition, MatchesABruteForceAssignment) {
+  // 20,000 markers: several of the parallel search's chunks.
+  const auto [positions, directions, markers] = random_field(9, 60, 20000);
   const double radius = 1.5, angle = 1.6;
   const auto space = allocate_markers(markers, positions, directions, radius, angle);
   std::vector<int> expected(positions.size(), 0);
@@ -61,15 +71,7 @@ TEST(Competition, MatchesABruteForceAssignment) {
 // The owners are searched on every core; each bud's direction must still be the same sum in
 // the same order, to the bit, on one core as on two.
 TEST(Competition, TheSameBitsOnOneCoreAsOnTwo) {
-  Random rng(4, 0);
-  std::vector<Vec3> positions, directions, markers;
-  for (int b = 0; b < 400; ++b) {
-    positions.push_back({rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(0, 4)});
-    directions.push_back(
-        normalize(Vec3{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)}));
-  }
-  for (int m = 0; m < 200000; ++m)
-    markers.push_back({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 5)});
+  const auto [positions, directions, markers] = random_field(4, 400, 200000);
   const auto on = [&](int cores) {
     tbb::task_arena arena(cores);
     return arena.execute(
