@@ -71,15 +71,15 @@ TEST(Competition, MatchesABruteForceAssignment) {
 // The owners are searched on every core; each bud's direction must still be the same sum in
 // the same order, to the bit, on one core as on two.
 TEST(Competition, TheSameBitsOnOneCoreAsOnTwo) {
-  const auto [positions, directions, markers] = random_field(4, 400, 200000);
+  const Field f = random_field(4, 400, 200000);  // named, not bound: lambdas capture it
   const auto on = [&](int cores) {
     tbb::task_arena arena(cores);
     return arena.execute(
-        [&] { return allocate_markers(markers, positions, directions, 1.5, 1.6); });
+        [&] { return allocate_markers(f.markers, f.positions, f.directions, 1.5, 1.6); });
   };
   const std::vector<BudSpace> one = on(1), two = on(2);
   int with_markers = 0;
-  for (std::size_t b = 0; b < positions.size(); ++b) {
+  for (std::size_t b = 0; b < f.positions.size(); ++b) {
     EXPECT_EQ(one[b].markers, two[b].markers) << b;
     EXPECT_EQ(one[b].direction, two[b].direction) << b;
     with_markers += one[b].markers > 30 ? 1 : 0;
