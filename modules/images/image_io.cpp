@@ -10,6 +10,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <exception>
 #include <filesystem>
@@ -44,8 +45,10 @@ std::string one_line(const std::string& errors) {
     // A line another one repeats within itself says nothing more.
     bool repeated = false;
     for (std::size_t j = 0; j < lines.size(); ++j)
-      repeated = repeated || (j != i && lines[j].size() > lines[i].size() &&
-                              lines[j].find(lines[i]) != std::string::npos);
+      repeated = repeated ||
+                 (j != i && lines[j].size() > lines[i].size() &&
+                  lines[j].find(lines[i]) != std::string::npos) ||
+                 (j < i && lines[j] == lines[i]);  // said already
     if (!repeated) out += (out.empty() ? "" : "; ") + lines[i];
   }
   return out;
@@ -116,6 +119,10 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
     error = "the header gives no pixels";
     return nullptr;
   }
+  if (spec.depth > 1) {  // a volume: landsim's images are flat
+    error = "the header declares a volume of " + std::to_string(spec.depth) + " slices";
+    return nullptr;
+  }
   if (static_cast<long long>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
     error =
         declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
@@ -150,6 +157,40 @@ bool probe_file(const std::string& path, int& width, int& height, int& channels,
   return true;
 }
 
+// Rows decoded at a time: about 16 MiB of floats, whole tiles.
+int band_rows(const OIIO::ImageSpec& spec) {
+  const auto row_bytes = static_cast<double>(spec.width) * spec.nchannels * sizeof(float);
+  const int tile = std::max(spec.tile_height, 1);
+  const int tiles = std::max(1, static_cast<int>((16.0 * (1 << 20)) / (row_bytes * tile)));
+  return tile * tiles;
+}
+
+// Decodes the image a band of rows at a time into `pixels`, which grows as rows arrive: the
+// whole size is reserved (address space, no memory touched), so a header claiming far more
+// than the file holds fails at its first band having written that band only (a 20-byte WebP
+// claiming 3085 x 12337 pixels zero-filled 456 MB before the decoder gave up).
+bool decode_bands(OIIO::ImageInput& in, std::vector<float>& pixels) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const std::size_t row = static_cast<std::size_t>(spec.width) * spec.nchannels;
+  pixels.clear();
+  pixels.reserve(row * static_cast<std::size_t>(spec.height));
+  const int band = band_rows(spec);
+  for (int y = 0; y < spec.height; y += band) {
+    const int end = std::min(spec.height, y + band);
+    pixels.resize(row * static_cast<std::size_t>(end));
+    float* out = pixels.data() + row * static_cast<std::size_t>(y);
+    // Tiled files by whole tiles (OpenImageIO 2.4's read_scanlines divides by zero on them).
+    const bool read =
+        spec.tile_width > 0
+            ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y, spec.y + end, spec.z,
+                            spec.z + 1, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out)
+            : in.read_scanlines(0, 0, spec.y + y, spec.y + end, spec.z, 0, spec.nchannels,
+                                OIIO::TypeDesc::FLOAT, out);
+    if (!read) return false;
+  }
+  return true;
+}
+
 // Decodes straight into the caller's floats and converts them there: one buffer of the image's
 // size at the peak (through an ImageBuf, a copy and a converted copy made three). Read through
 // ImageInput, not OpenImageIO's shared image cache, which kept a file's spec by name and time
@@ -161,8 +202,7 @@ bool read_file(const std::string& path, bool to_linear, FloatImage& image, std::
   // The file's own format: integers are display-referred (sRGB encoded), floats linear.
   const bool encoded =
       spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
-  image.pixels.assign(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels, 0.0f);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+  if (!decode_bands(*in, image.pixels)) {
     error = one_line(in->geterror());
     if (error.empty()) error = "cannot decode the pixels";
     image = FloatImage{};  // no half-decoded pixels for the caller

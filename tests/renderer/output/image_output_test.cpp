@@ -107,9 +107,26 @@ TEST(ImageOutput, ImageModuleErrorsAreOneLine) {
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
-// An uncompressed image claiming more pixels than its file holds is refused from its header,
-// before anything is allocated for them (image_fuzz found a 257-byte TIFF read as 729 MB of
-// zeros); the whole file reads.
+// A lossless WebP of 20 bytes claiming 3085 x 12337 pixels (image_fuzz): OpenImageIO reports
+// the decoder's failure twice; the user reads it once.
+TEST(ImageOutput, AnErrorRepeatedByTheLibrarysLayersIsSaidOnce) {
+  const landsim::testing::TempDir dir;
+  const std::string bytes{
+      "\x2f\x0c\x0c\x0c\x0c\x0c\x0c\xf3\xf3\x0c\x0c\x00\x00\x00\x00\x00\xab\x2f\x2f\x2f", 20};
+  const auto path = dir.write("claims.webp", bytes);
+  FloatImage image;
+  std::string error;
+  ASSERT_FALSE(image_io().read(path.string(), false, image, error));
+  std::vector<std::string> clauses;
+  for (std::size_t at = 0, next = 0; at <= error.size(); at = next + 2) {
+    next = std::min(error.find("; ", at), error.size());
+    clauses.push_back(error.substr(at, next - at));
+  }
+  ASSERT_FALSE(clauses.front().empty()) << error;
+  for (std::size_t i = 0; i < clauses.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) EXPECT_NE(clauses[i], clauses[j]) << error;
+}
+
 // Writes 8-bit `pixels` through OpenImageIO with the given compression; false if it cannot.
 bool write_8bit(const std::filesystem::path& path, int width, int height, int channels,
                 const char* compression, const std::vector<unsigned char>& pixels) {
@@ -122,6 +139,9 @@ bool write_8bit(const std::filesystem::path& path, int width, int height, int ch
   return out->close();
 }
 
+// An uncompressed image claiming more pixels than its file holds is refused from its header,
+// before anything is allocated for them (image_fuzz found a 257-byte TIFF read as 729 MB of
+// zeros); the whole file reads.
 TEST(ImageOutput, AnUncompressedImageLargerThanItsFileIsRefusedFromItsHeader) {
   const landsim::testing::TempDir dir;
   const auto path = dir / "whole.tif";
@@ -204,6 +224,38 @@ TEST(ImageOutput, HighlyCompressedImagesWithinTheirCodecsReachAreRead) {
     ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << name << ": " << error;
     EXPECT_EQ(image.pixels.size(), pixels.size());
     EXPECT_GT(pixels.size() / std::filesystem::file_size(path), 100u) << name;  // compressed
+  }
+}
+
+// The module decodes a band of rows at a time; every pixel must still be where OpenImageIO's
+// own whole-image read puts it: scanline and tiled files (tiles 48 rows high: bands of
+// whole tiles), a data window that does not start at 0, several bands of 16 MiB each.
+TEST(ImageOutput, BandedDecodingReadsWhatTheFileHolds) {
+  const landsim::testing::TempDir dir;
+  const int width = 1500, height = 1100, channels = 4;  // 26 MB of floats: two bands
+  std::vector<float> pixels(static_cast<std::size_t>(width) * height * channels);
+  for (std::size_t i = 0; i < pixels.size(); ++i)
+    pixels[i] = static_cast<float>((i * 2654435761u) % 1000) / 1000.0f;
+  for (const char* name : {"lines.exr", "tiles.exr", "tiles.tif"}) {
+    const auto path = dir / name;
+    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+    spec.y = -37;  // the data window starts above the display window's origin
+    if (std::string(name).starts_with("tiles")) spec.tile_width = spec.tile_height = 48;
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec)) << name;
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data())) << name;
+    out->close();
+    auto in = OIIO::ImageInput::open(path.string());
+    ASSERT_TRUE(in) << name;
+    std::vector<float> whole(pixels.size());
+    ASSERT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, whole.data())) << name;
+    FloatImage image;
+    std::string error;
+    ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << name << ": " << error;
+    ASSERT_EQ(image.width, width);
+    ASSERT_EQ(image.height, height);
+    EXPECT_TRUE(image.pixels == whole) << name;
+    EXPECT_TRUE(whole == pixels) << name;  // the file held what was written
   }
 }
 
