@@ -119,10 +119,6 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
     error = "the header gives no pixels";
     return nullptr;
   }
-  if (spec.depth > 1) {  // a volume: landsim's images are flat
-    error = "the header declares a volume of " + std::to_string(spec.depth) + " slices";
-    return nullptr;
-  }
   if (static_cast<long long>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
     error =
         declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
@@ -180,6 +176,7 @@ bool decode_bands(OIIO::ImageInput& in, std::vector<float>& pixels) {
     pixels.resize(row * static_cast<std::size_t>(end));
     float* out = pixels.data() + row * static_cast<std::size_t>(y);
     // Tiled files by whole tiles (OpenImageIO 2.4's read_scanlines divides by zero on them).
+    // One slice: a volume's first (no reader landsim meets reports more).
     const bool read =
         spec.tile_width > 0
             ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y, spec.y + end, spec.z,
