@@ -210,6 +210,29 @@ TEST(ImageOutput, ACompressedImageBeyondItsCodecsReachIsRefusedFromItsHeader) {
       << error;
 }
 
+// OpenImageIO goes on past a strip it cannot decode, filling zeros, and reports success with
+// the errors on the side: such a file was read as zeros (image_fuzz: 178 bytes claiming 240 MB
+// of them). Its first failing band now ends the read, the first errors said and the rest
+// counted.
+TEST(ImageOutput, AnImageWhoseStripsFailToDecodeIsRefused) {
+  const landsim::testing::TempDir dir;
+  for (const std::uint32_t codec : {76u, 5u}) {  // a scheme libtiff lacks; LZW short of data
+    const auto path =
+        dir.write("strips.tif",
+                  one_strip_tiff(
+                      {{256, 8}, {257, 4096}, {258, 8}, {259, codec}, {262, 1}, {277, 1}, {278, 8}},
+                      std::string(64, '\x80')));
+    FloatImage image;
+    std::string error;
+    ASSERT_FALSE(image_io().read(path.string(), false, image, error)) << codec;
+    EXPECT_TRUE(image.pixels.empty());
+    EXPECT_NE(error.find("TIFFReadEncodedStrip failed reading line y=0"), std::string::npos)
+        << error;
+    EXPECT_NE(error.find(" more errors"), std::string::npos) << error;  // 511 strips fail
+    EXPECT_LT(error.size(), 600u) << error;
+  }
+}
+
 // The bound must not refuse what the codec really does: 4096 x 4096 of one value, the most
 // compressible image there is, in LZW TIFF and PNG.
 TEST(ImageOutput, HighlyCompressedImagesWithinTheirCodecsReachAreRead) {
