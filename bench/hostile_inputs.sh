@@ -68,12 +68,15 @@ with open(f"{w}/lzw.tif", "wb") as f:  # 16000 x 16000 grey LZW (256 M values) i
 with open(f"{w}/fax.tif", "wb") as f:  # CCITT fax of 314 channels (164 M values), 180 bytes
     f.write(one_strip_tiff([(256, 8), (257, 65272), (258, 8), (259, 3), (262, 1), (277, 314),
                             (278, 8)], b"\0" * 60))
+with open(f"{w}/unknown.tif", "wb") as f:  # a codec libtiff lacks, 8 x 65307 x 260 claimed
+    f.write(one_strip_tiff([(256, 8), (257, 65307), (258, 8), (259, 256), (262, 1), (277, 260),
+                            (278, 8)], b"\0" * 60))
 with open(f"{w}/claims.webp", "wb") as f:  # 20 bytes of lossless WebP claiming 3085 x 12337
     f.write(bytes.fromhex("2f0c0c0c0c0c0cf3f30c0c0000000000ab2f2f2f"))
 PY
 for m in zero.obj fan.obj huge.glb faces.ply outside.gltf; do scenario "mesh_$m" "$(object "$W/$m")"; done
 scenario plain ""
-for t in lzw.tif fax.tif claims.webp; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
+for t in lzw.tif fax.tif claims.webp unknown.tif; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
 printf 'camera { location <0, 1, -3> right x*image_width/image_height look_at <0, 0, 0> }\n#include "self.pov"\n' > "$W/self.pov"
 
 # Species.
@@ -125,6 +128,7 @@ run "reference 100000^2 PNG" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W
 run "texture: LZW TIFF claiming 256M values" "$BIN/landsim" render "$W/texture_lzw.tif.toml" --out "$W/t1"
 run "texture: fax TIFF of 314 channels" "$BIN/landsim" render "$W/texture_fax.tif.toml" --out "$W/t2"
 run "texture: WebP of 20 bytes claiming 38M pixels" "$BIN/landsim" render "$W/texture_claims.webp.toml" --out "$W/t3"
+run "texture: TIFF of an unknown codec, 136M values" "$BIN/landsim" render "$W/texture_unknown.tif.toml" --out "$W/t4"
 run "reference garbage" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c2" --reference "$W/strokes.toml"
 run "pov includes itself" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c3" --pov "$W/self.pov"
 run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"
