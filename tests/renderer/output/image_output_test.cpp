@@ -233,6 +233,24 @@ TEST(ImageOutput, AnImageWhoseStripsFailToDecodeIsRefused) {
   }
 }
 
+// A JPEG cut short read with its missing rows grey, libjpeg's "premature end" an error on the
+// side; it is refused like any file that fails to decode.
+TEST(ImageOutput, ATruncatedJpegIsRefused) {
+  const landsim::testing::TempDir dir;
+  const auto path = dir / "whole.jpg";
+  std::vector<unsigned char> pixels(64 * 64 * 3);
+  for (std::size_t i = 0; i < pixels.size(); ++i)
+    pixels[i] = static_cast<unsigned char>((i * 2654435761u) >> 24);  // noise: no tiny file
+  ASSERT_TRUE(write_8bit(path, 64, 64, 3, "jpeg", pixels));
+  FloatImage image;
+  std::string error;
+  ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << error;
+  const std::string bytes = landsim::testing::read_file(path);
+  const auto cut = dir.write("cut.jpg", bytes.substr(0, bytes.size() * 2 / 3));
+  ASSERT_FALSE(image_io().read(cut.string(), false, image, error));
+  EXPECT_NE(error.find("Premature end of JPEG file"), std::string::npos) << error;
+}
+
 // The bound must not refuse what the codec really does: 4096 x 4096 of one value, the most
 // compressible image there is, in LZW TIFF and PNG.
 TEST(ImageOutput, HighlyCompressedImagesWithinTheirCodecsReachAreRead) {
