@@ -98,13 +98,17 @@ bool ratio_bounded(const std::string& format, const std::string& c) {
 // Why a compressed file cannot hold what its header declares, or "": more bytes of pixels
 // than its codec could decode from the whole file (a 179-byte LZW or fax TIFF claiming
 // hundreds of megabytes was allocated, then failed to decode). CCITT fax codes one-channel
-// bilevel images only (TIFF 6.0, sections 3 and 11): more channels is no image.
+// bilevel images only (TIFF 6.0, sections 3 and 11): more channels or bits is no image (a
+// one-channel 32-bit one made libtiff's decoder ask for gigabytes).
 std::string compressed_beyond_file(const OIIO::ImageInput& in, std::uintmax_t file_bytes,
                                    const std::error_code& size_error) {
   const OIIO::ImageSpec& spec = in.spec();
   const std::string c = codec(spec);
-  if (c.rfind("ccitt", 0) == 0 && spec.nchannels != 1)
-    return declared(spec) + " compressed as CCITT fax, which codes one channel";
+  if (c.rfind("ccitt", 0) == 0 &&
+      (spec.nchannels != 1 || spec.get_int_attribute("oiio:BitsPerSample", 8) != 1))
+    return declared(spec) + " of " +
+           std::to_string(spec.get_int_attribute("oiio:BitsPerSample", 8)) +
+           " bits compressed as CCITT fax, which codes one channel of one bit";
   if (size_error || !ratio_bounded(in.format_name(), c)) return "";
   const auto bytes = static_cast<double>(spec.image_bytes());
   if (bytes <= kBelievedBytes || bytes <= kMaxCompression * static_cast<double>(file_bytes))

@@ -1,5 +1,6 @@
 #include "renderer/output/image_output.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -206,8 +207,17 @@ TEST(ImageOutput, ACompressedImageBeyondItsCodecsReachIsRefusedFromItsHeader) {
       one_strip_tiff({{256, 8}, {257, 65272}, {258, 8}, {259, 3}, {262, 1}, {277, 314}, {278, 8}},
                      std::string(20, '\0')));
   ASSERT_FALSE(image_io().probe(fax.string(), width, height, channels, error));
-  EXPECT_NE(error.find("compressed as CCITT fax, which codes one channel"), std::string::npos)
+  EXPECT_NE(error.find("compressed as CCITT fax, which codes one channel of one bit"),
+            std::string::npos)
       << error;
+  // One channel of 32 bits (image_fuzz: libtiff's fax decoder asked for gigabytes).
+  error.clear();
+  const auto wide = dir.write(
+      "wide.tif",
+      one_strip_tiff({{256, 8}, {257, 65288}, {258, 32}, {259, 3}, {262, 1}, {277, 1}, {278, 8}},
+                     std::string(20, '\0')));
+  ASSERT_FALSE(image_io().probe(wide.string(), width, height, channels, error));
+  EXPECT_NE(error.find("of 32 bits compressed as CCITT fax"), std::string::npos) << error;
 }
 
 // OpenImageIO goes on past a strip it cannot decode, filling zeros, and reports success with
@@ -266,6 +276,18 @@ TEST(ImageOutput, HighlyCompressedImagesWithinTheirCodecsReachAreRead) {
     EXPECT_EQ(image.pixels.size(), pixels.size());
     EXPECT_GT(pixels.size() / std::filesystem::file_size(path), 100u) << name;  // compressed
   }
+  // A blank fax page (CCITT group 4: one bit a row, whatever its width) reads too: the fax
+  // rule refuses only what fax cannot code.
+  const auto fax = dir.write(
+      "blank_g4.tif",
+      one_strip_tiff({{256, 1728}, {257, 64}, {258, 1}, {259, 4}, {262, 0}, {277, 1}, {278, 64}},
+                     std::string(8, '\xff') + std::string("\x00\x10\x01", 3)));
+  FloatImage page;
+  std::string error;
+  ASSERT_TRUE(image_io().read(fax.string(), false, page, error)) << error;
+  ASSERT_EQ(page.pixels.size(), 1728u * 64u);
+  EXPECT_TRUE(std::all_of(page.pixels.begin(), page.pixels.end(),
+                          [&](float v) { return v == page.pixels.front(); }));
 }
 
 // The module decodes a band of rows at a time; every pixel must still be where OpenImageIO's
