@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -85,6 +86,15 @@ std::string codec(const OIIO::ImageSpec& spec) {
   return c.substr(0, c.find(':'));
 }
 
+// TIFF compression schemes libtiff can decode (TIFF 6.0 and its registered extensions); any
+// other scheme fails at its first strip, after its strip buffer is allocated (a 186-byte TIFF
+// of scheme 31233 claiming one 408 MB strip).
+bool tiff_scheme_decodable(int scheme) {
+  constexpr int kSchemes[] = {1,     2,     3,     4,     5,     6,     7,     8,     32773, 32908,
+                              32909, 32946, 34661, 34676, 34677, 34712, 34887, 34925, 50000, 50001};
+  return std::find(std::begin(kSchemes), std::end(kSchemes), scheme) != std::end(kSchemes);
+}
+
 bool ratio_bounded(const std::string& format, const std::string& c) {
   if (format == "png" || format == "jpeg") return true;
   if (format == "tiff")
@@ -109,6 +119,10 @@ std::string compressed_beyond_file(const OIIO::ImageInput& in, std::uintmax_t fi
     return declared(spec) + " of " +
            std::to_string(spec.get_int_attribute("oiio:BitsPerSample", 8)) +
            " bits compressed as CCITT fax, which codes one channel of one bit";
+  const int scheme = spec.get_int_attribute("tiff:Compression", 1);
+  if (std::string(in.format_name()) == "tiff" && !tiff_scheme_decodable(scheme))
+    return declared(spec) + " compressed by TIFF scheme " + std::to_string(scheme) +
+           ", which libtiff does not decode";
   if (size_error || !ratio_bounded(in.format_name(), c)) return "";
   const auto bytes = static_cast<double>(spec.image_bytes());
   if (bytes <= kBelievedBytes || bytes <= kMaxCompression * static_cast<double>(file_bytes))

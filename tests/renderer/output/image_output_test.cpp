@@ -213,6 +213,12 @@ TEST(ImageOutput, ACompressedImageBeyondItsCodecsReachIsRefusedFromItsHeader) {
   error = refusal({{256, 8}, {257, 65288}, {258, 32}, {259, 3}, {262, 1}, {277, 1}, {278, 8}},
                   std::string(20, '\0'));
   EXPECT_NE(error.find("of 32 bits compressed as CCITT fax"), std::string::npos) << error;
+  // A scheme libtiff lacks, claiming one 408 MB strip (image_fuzz: over 2 GB under ASan).
+  error = refusal({{256, 16392}, {257, 8}, {258, 32}, {259, 31233}, {262, 1}, {277, 778}},
+                  std::string(20, '\0'));
+  EXPECT_NE(error.find("compressed by TIFF scheme 31233, which libtiff does not decode"),
+            std::string::npos)
+      << error;
 }
 
 // OpenImageIO goes on past a strip it cannot decode, filling zeros, and reports success with
@@ -221,7 +227,7 @@ TEST(ImageOutput, ACompressedImageBeyondItsCodecsReachIsRefusedFromItsHeader) {
 // counted.
 TEST(ImageOutput, AnImageWhoseStripsFailToDecodeIsRefused) {
   const landsim::testing::TempDir dir;
-  for (const std::uint32_t codec : {76u, 5u}) {  // a scheme libtiff lacks; LZW short of data
+  for (const std::uint32_t codec : {5u, 8u}) {  // LZW and deflate short of data
     const auto path =
         dir.write("strips.tif",
                   one_strip_tiff(
@@ -231,8 +237,7 @@ TEST(ImageOutput, AnImageWhoseStripsFailToDecodeIsRefused) {
     std::string error;
     ASSERT_FALSE(image_io().read(path.string(), false, image, error)) << codec;
     EXPECT_TRUE(image.pixels.empty());
-    EXPECT_NE(error.find("TIFFReadEncodedStrip failed reading line y=0"), std::string::npos)
-        << error;
+    EXPECT_NE(error.find("Strip failed reading line"), std::string::npos) << error;
     EXPECT_NE(error.find(" more errors"), std::string::npos) << error;  // 511 strips fail
     EXPECT_LT(error.size(), 600u) << error;
   }
