@@ -11,7 +11,6 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <iterator>
@@ -19,6 +18,7 @@
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -105,30 +105,37 @@ bool ratio_bounded(const std::string& format, const std::string& c) {
   return false;
 }
 
-// Why a compressed file cannot hold what its header declares, or "": more bytes of pixels
+// Why the file cannot hold what its header declares, or "": more bytes than an uncompressed
+// file has, or (compressed) more bytes of pixels
 // than its codec could decode from the whole file (a 179-byte LZW or fax TIFF claiming
 // hundreds of megabytes was allocated, then failed to decode). CCITT fax codes one-channel
 // bilevel images only (TIFF 6.0, sections 3 and 11): more channels or bits is no image (a
 // one-channel 32-bit one made libtiff's decoder ask for gigabytes).
-std::string compressed_beyond_file(const OIIO::ImageInput& in, std::uintmax_t file_bytes,
-                                   const std::error_code& size_error) {
+std::string beyond_file(const OIIO::ImageInput& in, const std::string& path) {
   const OIIO::ImageSpec& spec = in.spec();
-  const std::string c = codec(spec);
-  if (c.rfind("ccitt", 0) == 0 &&
-      (spec.nchannels != 1 || spec.get_int_attribute("oiio:BitsPerSample", 8) != 1))
-    return declared(spec) + " of " +
-           std::to_string(spec.get_int_attribute("oiio:BitsPerSample", 8)) +
+  const std::string c = codec(spec), format = in.format_name();
+  std::error_code size_error;
+  const auto file_bytes = std::filesystem::file_size(path, size_error);
+  // An uncompressed file holds its pixels: a header claiming more bytes than the file has
+  // (a 257-byte TIFF claiming 29294 x 8 pixels of 778 channels, 729 MB) is refused before
+  // the pixels are allocated, instead of being read as zeros.
+  if (c == "none" && !size_error && spec.image_bytes() > file_bytes)
+    return declared(spec) + " uncompressed (" + std::to_string(spec.image_bytes()) +
+           " bytes), more than the file's " + std::to_string(file_bytes);
+  const int bits = spec.get_int_attribute("oiio:BitsPerSample", 8);
+  if (c.rfind("ccitt", 0) == 0 && (spec.nchannels != 1 || bits != 1))
+    return declared(spec) + " of " + std::to_string(bits) +
            " bits compressed as CCITT fax, which codes one channel of one bit";
   const int scheme = spec.get_int_attribute("tiff:Compression", 1);
-  if (std::string(in.format_name()) == "tiff" && !tiff_scheme_decodable(scheme))
+  if (format == "tiff" && !tiff_scheme_decodable(scheme))
     return declared(spec) + " compressed by TIFF scheme " + std::to_string(scheme) +
            ", which libtiff does not decode";
-  if (size_error || !ratio_bounded(in.format_name(), c)) return "";
+  if (size_error || !ratio_bounded(format, c)) return "";
   const auto bytes = static_cast<double>(spec.image_bytes());
   if (bytes <= kBelievedBytes || bytes <= kMaxCompression * static_cast<double>(file_bytes))
     return "";
   return declared(spec) + " (" + std::to_string(spec.image_bytes()) + " bytes), more than " +
-         (c.empty() ? std::string(in.format_name()) : c) + " compression decodes from the file's " +
+         (c.empty() ? format : c) + " compression decodes from the file's " +
          std::to_string(file_bytes) + " bytes";
 }
 
@@ -150,20 +157,8 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
         declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
     return nullptr;
   }
-  // An uncompressed file holds its pixels: a header claiming more bytes than the file has
-  // (a 257-byte TIFF claiming 29294 x 8 pixels of 778 channels, 729 MB) is refused before
-  // the pixels are allocated, instead of being read as zeros.
-  std::error_code size_error;
-  const auto file_bytes = std::filesystem::file_size(path, size_error);
-  if (spec.get_string_attribute("compression") == "none" && !size_error &&
-      spec.image_bytes() > file_bytes) {
-    error = declared(spec) + " uncompressed (" + std::to_string(spec.image_bytes()) +
-            " bytes), more than the file's " + std::to_string(file_bytes);
-    return nullptr;
-  }
-  if (const std::string refusal = compressed_beyond_file(*in, file_bytes, size_error);
-      !refusal.empty()) {
-    error = refusal;
+  if (std::string refusal = beyond_file(*in, path); !refusal.empty()) {
+    error = std::move(refusal);
     return nullptr;
   }
   return in;

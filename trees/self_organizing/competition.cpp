@@ -3,9 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
+#include "trees/self_organizing/marker_pass.h"
 #include "trees/self_organizing/plant.h"
 #include "trees/self_organizing/reach_mask.h"
 #include "trees/self_organizing/sparse_grid.h"
@@ -45,14 +43,9 @@ std::vector<BudSpace> allocate_markers(const std::vector<Vec3>& markers,
   const double cos_half = std::cos(0.5 * angle);
   // Each marker's owner on every core (the search is nearly all of the time); the sums then
   // in marker order, so that the directions are the same bits on any number of cores.
-  std::vector<std::uint32_t> owners(markers.size(), kNone);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, markers.size(), 4096),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        if (reach.may_reach(markers[i]))
-                          owners[i] =
-                              owner_of(markers[i], positions, directions, grid, radius, cos_half);
-                    });
+  const std::vector<std::uint32_t> owners = per_marker(markers, kNone, [&](const Vec3& m) {
+    return reach.may_reach(m) ? owner_of(m, positions, directions, grid, radius, cos_half) : kNone;
+  });
   std::vector<Vec3> sum(positions.size(), Vec3{0, 0, 0});
   for (std::size_t i = 0; i < markers.size(); ++i) {
     const std::uint32_t owner = owners[i];

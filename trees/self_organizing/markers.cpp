@@ -4,9 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
+#include "trees/self_organizing/marker_pass.h"
 #include "trees/self_organizing/reach_mask.h"
 #include "trees/self_organizing/sparse_grid.h"
 
@@ -41,18 +39,13 @@ std::size_t MarkerSet::consume(const std::vector<Vec3>& buds, double radius) {
   const SparseGrid grid(buds, radius);
   const ReachMask reach(buds, radius);
   // Which markers a bud takes, found on every core; then dropped in order.
-  std::vector<std::uint8_t> taken(points_.size(), 0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points_.size(), 4096),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                        const Vec3& p = points_[i];
-                        taken[i] =
-                            reach.may_reach(p) && grid.any_near(p, radius, [&](std::uint32_t b) {
-                              const Vec3 d = buds[b] - p;
-                              return dot(d, d) < radius * radius;
-                            });
-                      }
-                    });
+  const std::vector<std::uint8_t> taken = per_marker(points_, std::uint8_t{0}, [&](const Vec3& p) {
+    return static_cast<std::uint8_t>(reach.may_reach(p) &&
+                                     grid.any_near(p, radius, [&](std::uint32_t b) {
+                                       const Vec3 d = buds[b] - p;
+                                       return dot(d, d) < radius * radius;
+                                     }));
+  });
   keep_if([&](std::size_t i) { return taken[i] == 0; });
   return before - points_.size();
 }
