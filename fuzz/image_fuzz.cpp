@@ -1,6 +1,7 @@
 // An image through the image module (OpenImageIO): object and ground textures, and
-// crosscheck's reference (header probe first, then the pixels), as PNG, EXR, TIFF or JPEG
-// chosen by the input's first byte.
+// crosscheck's reference (header probe first, then the pixels). The module finds the format
+// by content; the input's first byte picks the file's name (PNG, EXR, TIFF or JPEG) and
+// whether 8-bit values are linearised.
 #include "fuzz/fuzz_input.h"
 #include "renderer/output/image_io.h"
 

@@ -51,6 +51,17 @@ gdal_translate -q -of PNG -ot Byte -scale -outsize 8 8 data/terrain/volcano.asc 
 gdal_translate -q -of GTiff -outsize 8 8 data/terrain/volcano.asc "$B/seed.tif"
 seed '\000' "$B/seed.png" "$C/image_fuzz/seed.png"
 seed '\002' "$B/seed.tif" "$C/image_fuzz/seed.tif"
+# One small image in each other format the image module reads (it finds the format by content).
+/usr/bin/python3 - "$B" <<'PY'
+import sys, OpenImageIO as oiio
+for ext in ("exr", "jpg", "webp", "hdr", "bmp", "ppm", "tga"):
+    buf = oiio.ImageBuf(oiio.ImageSpec(8, 8, 3, "uint8"))
+    oiio.ImageBufAlgo.fill(buf, (0.1, 0.5, 0.9), (0.9, 0.2, 0.3), (0.0, 0.7, 0.1), (1.0, 1.0, 1.0))
+    buf.write(f"{sys.argv[1]}/seed.{ext}")
+PY
+for f in "$B"/seed.exr "$B"/seed.jpg "$B"/seed.webp "$B"/seed.hdr "$B"/seed.bmp "$B"/seed.ppm "$B"/seed.tga; do
+  seed '\001' "$f" "$C/image_fuzz/$(basename "$f")"
+done
 "$B/bin/landsim" export-pov scenes/examples/default.toml --out "$B/pov-seed" >/dev/null 2>&1 || true
 # The export's head (settings, camera, the first tree declarations): the camera reader lexes
 # the whole file, and the whole 2.6 MB scene would hold the fuzzer to a few inputs a second.

@@ -139,14 +139,40 @@ std::string beyond_file(const OIIO::ImageInput& in, const std::string& path) {
          std::to_string(file_bytes) + " bytes";
 }
 
-// Opens the file and checks its header: pixels present, and no more values than landsim reads.
-std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::string& error) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) {
-    error = one_line(OIIO::geterror());
-    if (error.empty()) error = "not an image file OpenImageIO reads";
+// The formats landsim reads, by OpenImageIO's names: photographs and scans for textures
+// (JPEG, PNG, TIFF, WebP), linear and high-range images (OpenEXR, Radiance HDR) and what
+// POV-Ray writes for a crosscheck (those and Targa, BMP, PPM). OpenImageIO has readers for
+// some thirty formats, and it hands a file to any whose signature matches; a reader outside
+// this list never sees the bytes (OpenImageIO 2.4's RLA reader never returned from a 797-byte
+// file of one pixel). Targa, the one without a signature, is asked last.
+constexpr const char* kFormats[] = {"openexr", "tiff", "png", "jpeg", "webp",
+                                    "hdr",     "bmp",  "pnm", "targa"};
+constexpr const char* kFormatNames =
+    "OpenEXR, TIFF, PNG, JPEG, WebP, Radiance HDR, BMP, PNM/PPM or Targa";
+
+// A reader of the file among kFormats, opened, or null with the reason in `error`.
+std::unique_ptr<OIIO::ImageInput> open_known(const std::string& path, std::string& error) {
+  if (!std::filesystem::is_regular_file(path)) {
+    error = "no such file";
     return nullptr;
   }
+  for (const char* format : kFormats) {
+    auto in = OIIO::ImageInput::create(format);
+    if (!in || !in->valid_file(path)) continue;
+    OIIO::ImageSpec spec;
+    if (in->open(path, spec)) return in;
+    error = one_line(in->geterror());
+    if (error.empty()) error = std::string("cannot open it as ") + in->format_name();
+    return nullptr;
+  }
+  error = std::string("not an image in a format landsim reads (") + kFormatNames + ")";
+  return nullptr;
+}
+
+// Opens the file and checks its header: pixels present, and no more values than landsim reads.
+std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::string& error) {
+  auto in = open_known(path, error);
+  if (!in) return nullptr;
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     error = "the header gives no pixels";

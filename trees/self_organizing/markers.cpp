@@ -4,10 +4,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "trees/self_organizing/marker_pass.h"
-#include "trees/self_organizing/reach_mask.h"
-#include "trees/self_organizing/sparse_grid.h"
-
 namespace landsim::trees::self_organizing {
 namespace {
 
@@ -20,34 +16,8 @@ Vec3 in_unit_ball(Random& rng) {
 
 }  // namespace
 
-template <typename Keep>
-void MarkerSet::keep_if(Keep&& keep) {
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < points_.size(); ++i)
-    if (keep(i)) points_[out] = points_[i], last_step_[out] = last_step_[i], ++out;
-  points_.resize(out);
-  last_step_.resize(out);
-}
-
 void MarkerSet::expire(int step) {
   keep_if([&](std::size_t i) { return last_step_[i] >= step; });
-}
-
-std::size_t MarkerSet::consume(const std::vector<Vec3>& buds, double radius) {
-  const std::size_t before = points_.size();
-  if (buds.empty()) return 0;
-  const SparseGrid grid(buds, radius);
-  const ReachMask reach(buds, radius);
-  // Which markers a bud takes, found on every core; then dropped in order.
-  const std::vector<std::uint8_t> taken = per_marker(points_, std::uint8_t{0}, [&](const Vec3& p) {
-    return static_cast<std::uint8_t>(reach.may_reach(p) &&
-                                     grid.any_near(p, radius, [&](std::uint32_t b) {
-                                       const Vec3 d = buds[b] - p;
-                                       return dot(d, d) < radius * radius;
-                                     }));
-  });
-  keep_if([&](std::size_t i) { return taken[i] == 0; });
-  return before - points_.size();
 }
 
 void add_envelope_markers(const Envelope& envelope, Random& rng, MarkerSet& markers) {

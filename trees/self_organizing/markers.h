@@ -19,15 +19,28 @@ class MarkerSet {
   void add(const Vec3& p, int last_step) { points_.push_back(p), last_step_.push_back(last_step); }
   // Drops markers whose life ended before `step`.
   void expire(int step);
-  // Drops markers closer than `radius` to any of `buds`; returns how many.
-  std::size_t consume(const std::vector<Vec3>& buds, double radius);
+  // Drops the markers i for which gone(i) (the consumed ones: competition.h), keeping the
+  // others' order.
+  template <typename Gone>
+  void drop(Gone&& gone) {
+    keep_if([&](std::size_t i) { return !gone(i); });
+  }
 
   const std::vector<Vec3>& points() const { return points_; }
   std::size_t size() const { return points_.size(); }
 
  private:
   template <typename Keep>
-  void keep_if(Keep&& keep);
+  void keep_if(Keep&& keep) {
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (keep(i)) {
+        if (out != i) points_[out] = points_[i], last_step_[out] = last_step_[i];
+        ++out;
+      }
+    points_.resize(out);
+    last_step_.resize(out);
+  }
 
   std::vector<Vec3> points_;
   std::vector<int> last_step_;

@@ -53,11 +53,12 @@ bool ReachMask::cell(const Vec3& p, std::int64_t& x, std::int64_t& y, std::int64
   return true;
 }
 
-bool ReachMask::may_reach(const Vec3& p) const {
-  if (all_) return true;
+std::uint64_t ReachMask::place(const Vec3& p) const {
+  if (all_) return 0;
   std::int64_t x = 0, y = 0, z = 0;
-  if (!cell(p, x, y, z)) return false;
-  return reach_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] != 0;
+  if (!cell(p, x, y, z)) return kOutOfReach;
+  const auto at = static_cast<std::uint64_t>((z * ny_ + y) * nx_ + x);
+  return reach_[at] != 0 ? at : kOutOfReach;
 }
 
 }  // namespace landsim::trees::self_organizing

@@ -17,7 +17,12 @@ class ReachMask {
   ReachMask(const std::vector<Vec3>& buds, double radius);
 
   // False only if no bud lies within `radius` of p.
-  bool may_reach(const Vec3& p) const;
+  bool may_reach(const Vec3& p) const { return place(p) != kOutOfReach; }
+
+  static constexpr std::uint64_t kOutOfReach = ~std::uint64_t{0};
+  // kOutOfReach where may_reach is false, else p's cell as a number ordered by z, y, then x
+  // (the buds' grid order): points sorted by it are searched near one another.
+  std::uint64_t place(const Vec3& p) const;
 
  private:
   static constexpr std::size_t kMaxCells = std::size_t{1} << 24;  // beyond: no mask, all pass

@@ -5,6 +5,9 @@
 #include <limits>
 #include <string>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "core/input_error.h"
 #include "trees/random.h"
 #include "trees/self_organizing/bending.h"
@@ -40,8 +43,6 @@ class Simulation {
     for (std::size_t b = 0; b < buds.size(); ++b)
       positions[b] = plant_[buds[b].internode].tip, directions[b] = plant_.bud_direction(buds[b]);
     add_markers(s, positions, directions);
-    const double l = p_.internode_length;
-    markers_.consume(positions, p_.space.occupancy * l);  // every bud, selected or not
     select_branch(buds);
     const std::vector<BudSpace> space = compete(buds, positions, directions);
     set_bud_light(buds, directions);
@@ -77,27 +78,17 @@ class Simulation {
     }
   }
 
-  // The buds of the selected branch (all buds outside selective growth) share the markers
-  // left after every bud's occupancy zone; the others get none.
+  // Every bud, selected or not, consumes the markers in its occupancy zone; the buds of the
+  // selected branch (all buds outside selective growth) share the markers left; the others get
+  // none.
   std::vector<BudSpace> compete(const std::vector<BudRef>& buds, const std::vector<Vec3>& positions,
-                                const std::vector<Vec3>& directions) const {
-    const double radius = (p_.space.occupancy + p_.space.perception) * p_.internode_length;
-    if (phase_ == nullptr || !phase_->selective)  // every bud competes: no copies
-      return allocate_markers(markers_.points(), positions, directions, radius,
-                              p_.space.perception_angle);
-    std::vector<std::size_t> rivals;
-    std::vector<Vec3> at, towards;
-    for (std::size_t b = 0; b < buds.size(); ++b) {
-      if (!selected(buds[b])) continue;
-      rivals.push_back(b);
-      at.push_back(positions[b]);
-      towards.push_back(directions[b]);
-    }
-    const std::vector<BudSpace> won =
-        allocate_markers(markers_.points(), at, towards, radius, p_.space.perception_angle);
-    std::vector<BudSpace> space(buds.size());
-    for (std::size_t k = 0; k < rivals.size(); ++k) space[rivals[k]] = won[k];
-    return space;
+                                const std::vector<Vec3>& directions) {
+    const double l = p_.internode_length;
+    std::vector<std::uint8_t> competing;  // empty: every bud competes
+    if (phase_ != nullptr && phase_->selective)
+      for (const BudRef& b : buds) competing.push_back(selected(b) ? 1 : 0);
+    return claim_markers(markers_, {positions, directions, competing}, p_.space.occupancy * l,
+                         (p_.space.occupancy + p_.space.perception) * l, p_.space.perception_angle);
   }
 
   // TreeSketch's selective mode: when a selective phase begins, the bud nearest its point
@@ -165,16 +156,23 @@ class Simulation {
 
   // Q = b * L^kappa for every bud: light feeds the resource; space only decides which buds
   // can use theirs (docs/SELF_ORGANIZING.md).
+  // Each bud on its own (on every core: a bud writes only its own field of its internode).
   void set_bud_light(const std::vector<BudRef>& buds, const std::vector<Vec3>& directions) {
-    for (std::size_t b = 0; b < buds.size(); ++b) {
-      Internode& n = plant_[buds[b].internode];
-      // Gravimorphism is the lateral buds' (TreeSketch: "lateral buds depending on their
-      // orientation on horizontal or slanted parent axes"); a terminal bud continues its axis.
-      const double b_grav =
-          buds[b].lateral ? gravimorphism(p_.gravimorphism, n.direction, directions[b]) : 1.0;
-      const double q = b_grav * std::pow(shadows_.exposure(n.tip), p_.light.sensitivity);
-      (buds[b].lateral ? n.lateral_light : n.terminal_light) = q;
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, buds.size(), 2048),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t b = r.begin(); b != r.end(); ++b)
+                          set_light(buds[b], directions[b]);
+                      });
+  }
+
+  void set_light(const BudRef& bud, const Vec3& direction) {
+    Internode& n = plant_[bud.internode];
+    // Gravimorphism is the lateral buds' (TreeSketch: "lateral buds depending on their
+    // orientation on horizontal or slanted parent axes"); a terminal bud continues its axis.
+    const double b_grav =
+        bud.lateral ? gravimorphism(p_.gravimorphism, n.direction, direction) : 1.0;
+    const double q = b_grav * std::pow(shadows_.exposure(n.tip), p_.light.sensitivity);
+    (bud.lateral ? n.lateral_light : n.terminal_light) = q;
   }
 
   void shed(int s) {

@@ -25,6 +25,13 @@ class SparseGrid {
   // caller tests the exact distance. Stops early, returning true, when visit returns true.
   template <typename Visit>
   bool any_near(const Vec3& p, double radius, Visit&& visit) const {
+    return any_slot_near(p, radius, [&](std::uint32_t k) { return visit(order_[k]); });
+  }
+
+  // As any_near, but visit(k) gets the point's slot in the grid's order (order()[k] is its
+  // index): a caller keeping the points' data in slot order reads each row's run contiguously.
+  template <typename Visit>
+  bool any_slot_near(const Vec3& p, double radius, Visit&& visit) const {
     const std::int64_t x0 = cell_of(p.x - radius), x1 = cell_of(p.x + radius);
     const std::int64_t y0 = cell_of(p.y - radius), y1 = cell_of(p.y + radius);
     const std::int64_t z0 = cell_of(p.z - radius), z1 = cell_of(p.z + radius);
@@ -36,10 +43,13 @@ class SparseGrid {
             std::lower_bound(cell_x_.data() + run.first, cell_x_.data() + run.second, x0);
         for (auto k = static_cast<std::size_t>(first - cell_x_.data());
              k < run.second && cell_x_[k] <= x1; ++k)
-          if (visit(order_[k])) return true;
+          if (visit(static_cast<std::uint32_t>(k))) return true;
       }
     return false;
   }
+
+  // The points' indices in slot order.
+  const std::vector<std::uint32_t>& order() const { return order_; }
 
   template <typename Visit>
   void for_each_near(const Vec3& p, double radius, Visit&& visit) const {

@@ -322,5 +322,43 @@ TEST(ImageOutput, BandedDecodingReadsWhatTheFileHolds) {
   }
 }
 
+// The formats landsim reads are found by their contents whatever the file's name (a texture
+// saved as "bark.img"), and read whole; a format outside them is refused by name before any of
+// its reader runs (OpenImageIO 2.4's RLA reader hung on a 797-byte file of one pixel).
+TEST(ImageOutput, TheFormatsLandsimReadsAreFoundByContentAndNoOthersAreRead) {
+  const landsim::testing::TempDir dir;
+  std::vector<unsigned char> pixels(6 * 4 * 3);
+  for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<unsigned char>(i * 10);
+  for (const char* ext : {"exr", "tif", "png", "jpg", "webp", "hdr", "bmp", "ppm", "tga"}) {
+    const auto written = dir / (std::string("image.") + ext);
+    ASSERT_TRUE(write_8bit(written, 6, 4, 3, "", pixels)) << ext;
+    const auto renamed = dir.write(std::string(ext) + ".img", landsim::testing::read_file(written));
+    FloatImage image;
+    std::string error;
+    ASSERT_TRUE(image_io().read(renamed.string(), false, image, error)) << ext << ": " << error;
+    EXPECT_EQ(image.width, 6) << ext;
+    EXPECT_EQ(image.height, 4) << ext;
+    EXPECT_EQ(image.channels, 3) << ext;
+    // The lossless 8-bit formats give back every value.
+    if (std::string(ext) == "png" || std::string(ext) == "tif" || std::string(ext) == "bmp" ||
+        std::string(ext) == "ppm" || std::string(ext) == "tga")
+      for (std::size_t i = 0; i < pixels.size(); ++i)
+        ASSERT_NEAR(image.pixels[i], pixels[i] / 255.0f, 1e-6f) << ext << " value " << i;
+  }
+  for (const char* ext : {"rla", "sgi", "fits", "dpx"}) {
+    const auto path = dir / (std::string("other.") + ext);
+    ASSERT_TRUE(write_8bit(path, 6, 4, 3, "", pixels)) << ext;
+    FloatImage image;
+    std::string error;
+    int width = 0, height = 0, channels = 0;
+    EXPECT_FALSE(image_io().probe(path.string(), width, height, channels, error)) << ext;
+    EXPECT_NE(error.find("not an image in a format landsim reads (OpenEXR, TIFF"),
+              std::string::npos)
+        << ext << ": " << error;
+    EXPECT_FALSE(image_io().read(path.string(), false, image, error)) << ext;
+    EXPECT_TRUE(image.pixels.empty()) << ext;
+  }
+}
+
 }  // namespace
 }  // namespace landsim::renderer

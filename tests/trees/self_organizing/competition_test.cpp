@@ -87,5 +87,53 @@ TEST(Competition, TheSameBitsOnOneCoreAsOnTwo) {
   EXPECT_GT(with_markers, 100);  // many buds' sums span several chunks
 }
 
+// One pass makes both rules: the markers within any bud's occupancy sphere are consumed (and
+// no others); the rest are shared exactly as the competition alone shares them.
+TEST(Competition, AClaimConsumesTheOccupiedMarkersAndSharesTheRest) {
+  const Field f = random_field(7, 80, 30000);  // several of the parallel pass's chunks
+  const double occupancy = 0.6, radius = 1.5, angle = 1.6;
+  const auto occupied = [&](const Vec3& m) {
+    for (const Vec3& b : f.positions)
+      if (length(m - b) < occupancy) return true;
+    return false;
+  };
+  MarkerSet markers;
+  std::vector<Vec3> left;
+  for (const Vec3& m : f.markers) {
+    markers.add(m, MarkerSet::kForever);
+    if (!occupied(m)) left.push_back(m);
+  }
+  const std::vector<std::uint8_t> every;
+  const auto space =
+      claim_markers(markers, {f.positions, f.directions, every}, occupancy, radius, angle);
+  EXPECT_GT(f.markers.size() - left.size(), 1000u);  // many consumed
+  EXPECT_EQ(markers.points(), left);                 // those, and in their order
+  const auto shared = allocate_markers(left, f.positions, f.directions, radius, angle);
+  int total = 0;
+  for (std::size_t b = 0; b < f.positions.size(); ++b) {
+    EXPECT_EQ(space[b].markers, shared[b].markers) << b;
+    EXPECT_EQ(space[b].direction, shared[b].direction) << b;
+    total += space[b].markers;
+  }
+  EXPECT_GT(total, 1000);
+}
+
+// Outside the selected branch a bud still consumes the markers around it but owns none: they
+// go to the nearest competing bud whose cone holds them.
+TEST(Competition, ABudThatDoesNotCompeteConsumesButOwnsNothing) {
+  const std::vector<Vec3> positions{{0, 0, 0}, {2, 0, 0}};
+  const std::vector<Vec3> directions{{1, 0, 0}, {-1, 0, 0}};
+  const std::vector<std::uint8_t> competing{0, 1};
+  MarkerSet markers;
+  for (const Vec3& m : {Vec3{0.2, 0, 0}, Vec3{0.8, 0, 0}, Vec3{1.3, 0, 0}})
+    markers.add(m, MarkerSet::kForever);
+  const auto space =
+      claim_markers(markers, {positions, directions, competing}, 0.5, 3.0, std::numbers::pi / 2);
+  EXPECT_EQ(markers.size(), 2u);  // 0.2 lay in bud 0's occupancy sphere
+  EXPECT_EQ(space[0].markers, 0);
+  EXPECT_EQ(space[1].markers, 2);  // 0.8 is nearer bud 0, which does not compete
+  EXPECT_EQ(space[1].direction, (Vec3{-1, 0, 0}));
+}
+
 }  // namespace
 }  // namespace landsim::trees::self_organizing

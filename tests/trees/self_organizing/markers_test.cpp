@@ -8,31 +8,6 @@
 namespace landsim::trees::self_organizing {
 namespace {
 
-TEST(Markers, ThoseInsideAnyOccupancySphereAreConsumedAndNoOthers) {
-  Random rng(3, 0);
-  MarkerSet markers;
-  std::vector<Vec3> all;
-  for (int k = 0; k < 30000; ++k) {  // several of the parallel pass's chunks
-    const Vec3 p{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2)};
-    markers.add(p, MarkerSet::kForever);
-    all.push_back(p);
-  }
-  const std::vector<Vec3> buds{{0, 0, 0}, {1, 1, 0}, {-1.5, 0.5, 1}};
-  const double r = 0.6;
-  const auto near_a_bud = [&](const Vec3& p) {
-    for (const Vec3& b : buds)
-      if (length(p - b) < r) return true;
-    return false;
-  };
-  std::size_t expected_left = 0;
-  for (const Vec3& p : all) expected_left += near_a_bud(p) ? 0 : 1;
-  const std::size_t consumed = markers.consume(buds, r);
-  EXPECT_EQ(markers.size(), expected_left);
-  EXPECT_EQ(consumed, all.size() - expected_left);
-  EXPECT_GT(consumed, 1000u);
-  for (const Vec3& p : markers.points()) EXPECT_FALSE(near_a_bud(p));
-}
-
 TEST(Markers, EnvelopeMarkersFillItAtItsDensity) {
   Envelope e;
   e.kind = EnvelopeKind::ellipsoid;

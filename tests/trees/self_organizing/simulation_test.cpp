@@ -182,7 +182,7 @@ std::string growth_refusal(const std::string& text, const std::string& file) {
 // before they grow (a second and ~200 MB in a Release build; it was 6 s and 835 MB at the
 // old 10^6 limit, refused after growing), naming the file, the limit and the keys.
 TEST(SelfOrganizing, AnExplodingSpeciesIsRefusedNamingItsFileLimitAndKeys) {
-  ASSERT_EQ(Parameters{}.max_internodes, 250000u);
+  ASSERT_EQ(Parameters{}.max_internodes, 100000u);
   const std::string m = growth_refusal(
       "core = \"self_organizing\"\nname = \"hostile\"\n[growth]\nsteps = 300\n"
       "internode_length = 0.12\n[vigour]\nmax_shoot = 20\n[[stroke]]\n"
@@ -190,7 +190,7 @@ TEST(SelfOrganizing, AnExplodingSpeciesIsRefusedNamingItsFileLimitAndKeys) {
       "markers_per_step = 100000\nmax_age = 150\n",
       "hostile.toml");
   EXPECT_EQ(m.rfind("hostile.toml: ", 0), 0u) << m;
-  EXPECT_NE(m.find("limit of 250000 internodes at step "), std::string::npos) << m;
+  EXPECT_NE(m.find("limit of 100000 internodes at step "), std::string::npos) << m;
   EXPECT_NE(m.find("its shoots would make "), std::string::npos) << m;
   for (const char* key : {"growth.steps", "vigour.max_shoot", "markers_per_step", "max_age"})
     EXPECT_NE(m.find(key), std::string::npos) << key << " in " << m;
