@@ -3,6 +3,7 @@
 // (core/module_loader.h).
 #include "renderer/output/image_io.h"
 
+#include "modules/images/exr_header.h"
 #include "modules/images/library_noise.h"
 
 #include <OpenColorIO/OpenColorIO.h>
@@ -159,6 +160,10 @@ std::unique_ptr<OIIO::ImageInput> open_known(const std::string& path, std::strin
   for (const char* format : kFormats) {
     auto in = OIIO::ImageInput::create(format);
     if (!in || !in->valid_file(path)) continue;
+    if (in->format_name() == std::string("openexr")) {
+      error = images::exr_attribute_beyond_file(path);
+      if (!error.empty()) return nullptr;
+    }
     OIIO::ImageSpec spec;
     if (in->open(path, spec)) return in;
     error = one_line(in->geterror());
