@@ -214,17 +214,19 @@ int band_rows(const OIIO::ImageSpec& spec) {
 }
 
 // Decodes the image a band of rows at a time into `pixels`, which grows as rows arrive: the
-// whole size is reserved (address space, no memory touched), so a header claiming far more
-// than the file holds fails at its first band having written that band only (a 20-byte WebP
-// claiming 3085 x 12337 pixels zero-filled 456 MB before the decoder gave up).
+// whole size is reserved once the first band has decoded (address space, no memory touched;
+// no copy as the rows arrive), so a header claiming far more than the file holds fails at its
+// first band having written that band only (a 20-byte WebP claiming 3085 x 12337 pixels
+// zero-filled 456 MB before the decoder gave up). Reserved only then: most broken files fail
+// at the first band, and under the sanitizers a reservation costs its shadow memory.
 bool decode_bands(OIIO::ImageInput& in, std::vector<float>& pixels) {
   const OIIO::ImageSpec& spec = in.spec();
   const std::size_t row = static_cast<std::size_t>(spec.width) * spec.nchannels;
   pixels.clear();
-  pixels.reserve(row * static_cast<std::size_t>(spec.height));
   const int band = band_rows(spec);
   for (int y = 0; y < spec.height; y += band) {
     const int end = std::min(spec.height, y + band);
+    if (y == band) pixels.reserve(row * static_cast<std::size_t>(spec.height));
     pixels.resize(row * static_cast<std::size_t>(end));
     float* out = pixels.data() + row * static_cast<std::size_t>(y);
     // Tiled files by whole tiles (OpenImageIO 2.4's read_scanlines divides by zero on them).
