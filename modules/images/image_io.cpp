@@ -161,7 +161,7 @@ std::unique_ptr<OIIO::ImageInput> open_known(const std::string& path, std::strin
     auto in = OIIO::ImageInput::create(format);
     if (!in || !in->valid_file(path)) continue;
     if (in->format_name() == std::string("openexr")) {
-      error = images::exr_attribute_beyond_file(path);
+      error = images::exr_header_refusal(path, kMaxValues);
       if (!error.empty()) return nullptr;
     }
     OIIO::ImageSpec spec;

@@ -341,9 +341,10 @@ TEST(ImageOutput, TheFormatsLandsimReadsAreFoundByContentAndNoOthersAreRead) {
     EXPECT_EQ(image.channels, 3) << ext;
     // The lossless 8-bit formats give back every value.
     if (std::string(ext) == "png" || std::string(ext) == "tif" || std::string(ext) == "bmp" ||
-        std::string(ext) == "ppm" || std::string(ext) == "tga")
+        std::string(ext) == "ppm" || std::string(ext) == "tga") {
       for (std::size_t i = 0; i < pixels.size(); ++i)
         ASSERT_NEAR(image.pixels[i], pixels[i] / 255.0f, 1e-6f) << ext << " value " << i;
+    }
   }
   for (const char* ext : {"rla", "sgi", "fits", "dpx"}) {
     const auto path = dir / (std::string("other.") + ext);
@@ -360,10 +361,11 @@ TEST(ImageOutput, TheFormatsLandsimReadsAreFoundByContentAndNoOthersAreRead) {
   }
 }
 
-// An OpenEXR attribute claiming more bytes than the file holds is refused before OpenEXR
-// allocates it (image_fuzz: files of a few hundred bytes declaring attributes of 1.6 GB took
-// seconds under the sanitizers); an untouched file, one part or several, still reads.
-TEST(ImageOutput, AnExrAttributeLargerThanItsFileIsRefusedBeforeOpenExrReadsIt) {
+// An OpenEXR attribute claiming more bytes than the file holds, or a data window of more values
+// than landsim reads, is refused before OpenEXR allocates for it (image_fuzz: files of a few
+// hundred bytes took seconds to a minute under the sanitizers); an untouched file, one part or
+// several, still reads.
+TEST(ImageOutput, AnExrHeaderClaimingTooMuchIsRefusedBeforeOpenExrReadsIt) {
   const landsim::testing::TempDir dir;
   const auto path = dir / "whole.exr";
   const std::vector<unsigned char> pixels(16 * 8 * 3, 100);
@@ -397,6 +399,18 @@ TEST(ImageOutput, AnExrAttributeLargerThanItsFileIsRefusedBeforeOpenExrReadsIt) 
   int width = 0, height = 0, channels = 0;
   ASSERT_FALSE(image_io().probe(claims.string(), width, height, channels, error));
   EXPECT_NE(error.find("attribute \"channels\" (chlist) declares 2147483647 bytes, more than the "),
+            std::string::npos)
+      << error;
+  // The data window made 16777224 pixels wide: 402 M values, refused before OpenEXR sizes its
+  // line buffers from it (image_fuzz: 55 s under ASan).
+  bytes = landsim::testing::read_file(path);
+  const std::size_t box_at = bytes.find(std::string("dataWindow\0box2i\0", 17)) + 17 + 4;
+  ASSERT_NE(box_at, std::string::npos + 21);
+  bytes.replace(box_at + 8, 4, std::string("\x07\x00\x00\x01", 4));  // xMax = 2^24 + 7
+  const auto wide = dir.write("wide.exr", bytes);
+  ASSERT_FALSE(image_io().probe(wide.string(), width, height, channels, error));
+  EXPECT_NE(error.find("the OpenEXR header declares 16777224 x 8 pixels of 3 channels, more than "
+                       "the 268435456 values landsim reads"),
             std::string::npos)
       << error;
 }
