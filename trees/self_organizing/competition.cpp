@@ -43,12 +43,12 @@ class Claim {
                         buds.competing.empty() || buds.competing[b] != 0});
   }
 
-  // kConsumed, the bud marker `m` belongs to (the closest competing one whose perception cone
-  // holds it, ties to the lower index), or kNone.
   // Where the marker lies (ReachMask::place): kOutOfReach for a marker no bud can reach.
   std::uint64_t place(const Vec3& m) const { return reach_.place(m); }
 
-  // The verdict of a marker some bud may reach. Consumption is asked first, of the few cells
+  // The verdict of a marker some bud may reach: kConsumed, the bud it belongs to (the closest
+  // competing one whose perception cone holds it, ties to the lower index), or kNone.
+  // Consumption is asked first, of the few cells
   // around the occupancy sphere: where buds are dense most markers lie in one, found sooner
   // there than among the perception cones' buds.
   std::uint32_t verdict(const Vec3& m) const {
