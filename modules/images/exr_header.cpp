@@ -6,6 +6,12 @@
 #include <string>
 #include <system_error>
 
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfVersion.h>
+#include <OpenEXR/ImfXdr.h>
+
 namespace landsim::images {
 namespace {
 
@@ -38,47 +44,10 @@ std::string printable(const std::string& name) {
   return out + (name.size() > 40 ? "..." : "");
 }
 
-// The channels of a "chlist" value: entries of a name and 16 bytes, ended by an empty name.
-long long channel_count(const std::string& list) {
-  long long count = 0;
-  for (std::size_t at = 0; at < list.size() && list[at] != '\0'; ++count) {
-    const std::size_t end = list.find('\0', at);
-    if (end == std::string::npos) break;
-    at = end + 1 + 16;
-  }
-  return count;
-}
-
-// What one header declares of the pixels, as far as it says.
-struct Declared {
-  double width = 0, height = 0;
-  long long channels = 0;
-};
-
-// Reads the value of the attribute (name, type, size) at the stream's position into
-// `declared` if it is the data window or the channel list, else skips it.
-void read_value(std::istream& in, const std::string& name, const std::string& type,
-                std::uint32_t size, Declared& declared) {
-  if (name == "dataWindow" && type == "box2i" && size == 16) {
-    std::uint32_t box[4];
-    for (std::uint32_t& v : box) little_endian_32(in, v);
-    const auto coordinate = [](std::uint32_t v) {
-      return static_cast<double>(static_cast<std::int32_t>(v));
-    };
-    declared.width = coordinate(box[2]) - coordinate(box[0]) + 1;
-    declared.height = coordinate(box[3]) - coordinate(box[1]) + 1;
-  } else if (name == "channels" && type == "chlist") {
-    std::string list(size, '\0');
-    in.read(list.data(), size);
-    declared.channels = channel_count(list);
-  } else {
-    in.seekg(size, std::ios::cur);
-  }
-}
-
-}  // namespace
-
-std::string exr_header_refusal(const std::string& path, long long max_values) {
+// An attribute claiming more bytes than are left in the file, or "": the attributes' sizes
+// walked without reading their values (OpenEXR allocates an attribute of a type it does not
+// know at its declared size before it finds the file short).
+std::string attribute_beyond_file(const std::string& path) {
   std::error_code error;
   const auto file_bytes = std::filesystem::file_size(path, error);
   std::ifstream in(path, std::ios::binary);
@@ -87,8 +56,7 @@ std::string exr_header_refusal(const std::string& path, long long max_values) {
   const bool multi_part = (version & kMultiPart) != 0;
   for (std::string name, type;;) {                   // headers
     if (!text(in, name) || name.empty()) return "";  // no header, or the end of the list
-    Declared declared;
-    while (!name.empty()) {  // the header's attributes
+    while (!name.empty()) {                          // the header's attributes
       std::uint32_t size = 0;
       if (!text(in, type) || !little_endian_32(in, size)) return "";
       const auto left = file_bytes - static_cast<std::uintmax_t>(in.tellg());
@@ -96,19 +64,55 @@ std::string exr_header_refusal(const std::string& path, long long max_values) {
         return "the OpenEXR header's attribute \"" + printable(name) + "\" (" + printable(type) +
                ") declares " + std::to_string(size) + " bytes, more than the " +
                std::to_string(left) + " left in the file";
-      read_value(in, name, type, size, declared);
+      in.seekg(size, std::ios::cur);
       if (!text(in, name)) return "";
     }
-    if (declared.width > 0 && declared.height > 0 &&
-        declared.width * declared.height * static_cast<double>(declared.channels) >
-            static_cast<double>(max_values))
-      return "the OpenEXR header declares " +
-             std::to_string(static_cast<long long>(declared.width)) + " x " +
-             std::to_string(static_cast<long long>(declared.height)) + " pixels of " +
-             std::to_string(declared.channels) + " channels, more than the " +
-             std::to_string(max_values) + " values landsim reads";
     if (!multi_part) return "";
   }
+}
+
+// A part whose data window and channels make more than `max_values` values, or "": every
+// part's header read by OpenEXR's own reader (its attribute readers, not the sizes, decide
+// where a damaged header's next attribute begins), and nothing more of the file.
+std::string values_beyond(const std::string& path, long long max_values) {
+  try {
+    Imf::StdIFStream in(path.c_str());
+    char magic[4];
+    in.read(magic, 4);
+    int version = 0;
+    Imf::Xdr::read<Imf::StreamIO>(in, version);
+    if (!Imf::isImfMagic(magic)) return "";
+    for (;;) {
+      Imf::Header header;
+      header.readFrom(in, version);
+      const Imath::Box2i window = header.dataWindow();
+      const double width = static_cast<double>(window.max.x) - window.min.x + 1;
+      const double height = static_cast<double>(window.max.y) - window.min.y + 1;
+      long long channels = 0;
+      for (auto c = header.channels().begin(); c != header.channels().end(); ++c) ++channels;
+      if (width > 0 && height > 0 &&
+          width * height * static_cast<double>(channels) > static_cast<double>(max_values))
+        return "the OpenEXR header declares " + std::to_string(static_cast<long long>(width)) +
+               " x " + std::to_string(static_cast<long long>(height)) + " pixels of " +
+               std::to_string(channels) + " channels, more than the " + std::to_string(max_values) +
+               " values landsim reads";
+      if (!Imf::isMultiPart(version)) return "";
+      char next = 0;  // a multi-part file's list of headers ends with an empty one
+      const std::uint64_t at = in.tellg();
+      in.read(&next, 1);
+      if (next == 0) return "";
+      in.seekg(at);
+    }
+  } catch (const std::exception&) {
+    return "";  // OpenEXR says what is wrong when the file is opened
+  }
+}
+
+}  // namespace
+
+std::string exr_header_refusal(const std::string& path, long long max_values) {
+  std::string refusal = attribute_beyond_file(path);
+  return refusal.empty() ? values_beyond(path, max_values) : refusal;
 }
 
 }  // namespace landsim::images
