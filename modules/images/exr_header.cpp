@@ -1,6 +1,7 @@
 #include "modules/images/exr_header.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -11,6 +12,7 @@
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfVersion.h>
 #include <OpenEXR/ImfXdr.h>
+#include <OpenEXR/openexr.h>
 
 namespace landsim::images {
 namespace {
@@ -38,21 +40,19 @@ bool little_endian_32(std::istream& in, std::uint32_t& out) {
 }
 
 // A name as a message can show it: a damaged header's bytes are rarely text.
-std::string printable(const std::string& name) {
+std::string printable(const std::string& name, std::size_t longest = 40) {
   std::string out;
-  for (const char c : name.substr(0, 40)) out.push_back(c >= 0x20 && c < 0x7f ? c : '?');
-  return out + (name.size() > 40 ? "..." : "");
+  for (const char c : name.substr(0, longest)) out.push_back(c >= 0x20 && c < 0x7f ? c : '?');
+  return out + (name.size() > longest ? "..." : "");
 }
 
 // An attribute claiming more bytes than are left in the file, or "": the attributes' sizes
 // walked without reading their values (OpenEXR allocates an attribute of a type it does not
 // know at its declared size before it finds the file short).
-std::string attribute_beyond_file(const std::string& path) {
-  std::error_code error;
-  const auto file_bytes = std::filesystem::file_size(path, error);
+std::string attribute_beyond_file(const std::string& path, std::uintmax_t file_bytes) {
   std::ifstream in(path, std::ios::binary);
   std::uint32_t magic = 0, version = 0;
-  if (error || !little_endian_32(in, magic) || !little_endian_32(in, version)) return "";
+  if (!little_endian_32(in, magic) || !little_endian_32(in, version)) return "";
   const bool multi_part = (version & kMultiPart) != 0;
   for (std::string name, type;;) {                   // headers
     if (!text(in, name) || name.empty()) return "";  // no header, or the end of the list
@@ -71,32 +71,92 @@ std::string attribute_beyond_file(const std::string& path) {
   }
 }
 
-// A part whose data window and channels make more than `max_values` values, or "": every
-// part's header read by OpenEXR's own reader (its attribute readers, not the sizes, decide
-// where a damaged header's next attribute begins), and nothing more of the file.
-std::string values_beyond(const std::string& path, long long max_values) {
+// "the OpenEXR header declares W x H pixels of C channels, ..." if they make more than
+// `max_values` values, else "".
+std::string too_many_values(double width, double height, long long channels, long long max_values) {
+  if (!(width > 0 && height > 0) ||
+      width * height * static_cast<double>(channels) <= static_cast<double>(max_values))
+    return "";
+  return "the OpenEXR header declares " + std::to_string(static_cast<long long>(width)) + " x " +
+         std::to_string(static_cast<long long>(height)) + " pixels of " + std::to_string(channels) +
+         " channels, more than the " + std::to_string(max_values) + " values landsim reads";
+}
+
+// The most OpenEXRCore may allocate while it reads the headers of the file being checked: no
+// value of a header needs more than the file holds (its own allocator refuses the rest, so a
+// string attribute claiming a gigabyte fails instead of being zero-filled).
+thread_local std::size_t t_allocation_limit = 0;
+
+void* bounded_allocation(std::size_t bytes) {
+  return bytes > t_allocation_limit ? nullptr : std::malloc(bytes);
+}
+
+// OpenEXRCore's message, kept for the refusal instead of printed on standard error.
+void keep_error(exr_const_context_t context, exr_result_t, const char* message) {
+  void* kept = nullptr;
+  if (exr_get_user_data(context, &kept) == EXR_ERR_SUCCESS && kept != nullptr && message)
+    *static_cast<std::string*>(kept) = message;
+}
+
+// A header OpenEXRCore cannot read, or a part whose data window and channels (as it reads them)
+// make more than `max_values` values, or "". Every part's header is read by OpenEXR's own strict
+// reader, bounded by the file, and nothing else of the file: OpenEXR's C++ reader, which
+// OpenImageIO uses, reads on past a damaged attribute into whatever follows (a channel list without
+// its closing null gave it another data window; a string attribute there claimed 1.7 GB, which it
+// zero-filled), so a file must satisfy the strict reader before the other sees it.
+std::string strict_refusal(const std::string& path, std::uintmax_t file_bytes,
+                           long long max_values) {
+  std::string error;
+  exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+  init.error_handler_fn = keep_error;
+  init.alloc_fn = bounded_allocation;
+  init.free_fn = std::free;
+  init.user_data = &error;
+  t_allocation_limit = static_cast<std::size_t>((1u << 20) + 2 * file_bytes);
+  exr_context_t context = nullptr;
+  if (exr_start_read(&context, path.c_str(), &init) != EXR_ERR_SUCCESS) {
+    exr_finish(&context);
+    return "not a valid OpenEXR header (" + (error.empty() ? "unreadable" : printable(error, 200)) +
+           ")";
+  }
+  std::string refusal;
+  int parts = 0;
+  exr_get_count(context, &parts);
+  for (int p = 0; p < parts && refusal.empty(); ++p) {
+    exr_attr_box2i_t window{};
+    const exr_attr_chlist_t* channels = nullptr;
+    if (exr_get_data_window(context, p, &window) != EXR_ERR_SUCCESS ||
+        exr_get_channels(context, p, &channels) != EXR_ERR_SUCCESS || channels == nullptr)
+      continue;  // OpenEXR says what is missing when the file is opened
+    refusal = too_many_values(static_cast<double>(window.max.x) - window.min.x + 1,
+                              static_cast<double>(window.max.y) - window.min.y + 1,
+                              channels->num_channels, max_values);
+  }
+  exr_finish(&context);
+  return refusal;
+}
+
+// A part whose data window and channels, as OpenEXR's C++ reader (OpenImageIO's) reads them,
+// make more than `max_values` values, or "". Asked only of headers the strict reader accepted,
+// whose values it has bounded by the file; the two readers can still see different windows
+// (of two "dataWindow" attributes, one keeps the first and the other the last).
+std::string lenient_refusal(const std::string& path, long long max_values) {
   try {
     Imf::StdIFStream in(path.c_str());
     char magic[4];
     in.read(magic, 4);
     int version = 0;
     Imf::Xdr::read<Imf::StreamIO>(in, version);
-    if (!Imf::isImfMagic(magic)) return "";
     for (;;) {
       Imf::Header header;
       header.readFrom(in, version);
       const Imath::Box2i window = header.dataWindow();
-      const double width = static_cast<double>(window.max.x) - window.min.x + 1;
-      const double height = static_cast<double>(window.max.y) - window.min.y + 1;
       long long channels = 0;
       for (auto c = header.channels().begin(); c != header.channels().end(); ++c) ++channels;
-      if (width > 0 && height > 0 &&
-          width * height * static_cast<double>(channels) > static_cast<double>(max_values))
-        return "the OpenEXR header declares " + std::to_string(static_cast<long long>(width)) +
-               " x " + std::to_string(static_cast<long long>(height)) + " pixels of " +
-               std::to_string(channels) + " channels, more than the " + std::to_string(max_values) +
-               " values landsim reads";
-      if (!Imf::isMultiPart(version)) return "";
+      std::string refusal = too_many_values(static_cast<double>(window.max.x) - window.min.x + 1,
+                                            static_cast<double>(window.max.y) - window.min.y + 1,
+                                            channels, max_values);
+      if (!refusal.empty() || !Imf::isMultiPart(version)) return refusal;
       char next = 0;  // a multi-part file's list of headers ends with an empty one
       const std::uint64_t at = in.tellg();
       in.read(&next, 1);
@@ -111,8 +171,12 @@ std::string values_beyond(const std::string& path, long long max_values) {
 }  // namespace
 
 std::string exr_header_refusal(const std::string& path, long long max_values) {
-  std::string refusal = attribute_beyond_file(path);
-  return refusal.empty() ? values_beyond(path, max_values) : refusal;
+  std::error_code error;
+  const auto file_bytes = std::filesystem::file_size(path, error);
+  if (error) return "";
+  std::string refusal = attribute_beyond_file(path, file_bytes);
+  if (refusal.empty()) refusal = strict_refusal(path, file_bytes, max_values);
+  return refusal.empty() ? lenient_refusal(path, max_values) : refusal;
 }
 
 }  // namespace landsim::images

@@ -415,5 +415,31 @@ TEST(ImageOutput, AnExrHeaderClaimingTooMuchIsRefusedBeforeOpenExrReadsIt) {
       << error;
 }
 
+// Damaged OpenEXR headers image_fuzz found, which OpenEXR's C++ reader (OpenImageIO's) reads
+// on into whatever follows: refused by OpenEXR's strict reader or from the window the C++
+// reader would have seen, before OpenImageIO opens them. The first had OpenEXR zero-fill a
+// 1.7 GB string attribute (11 s, 1.8 GB in Release); the second has two data windows, the
+// strict reader keeping the first (64 x 64) and the C++ reader the last (16777224 x 8).
+TEST(ImageOutput, DamagedExrHeadersAreRefusedBeforeOpenExrsCppReaderSeesThem) {
+  const landsim::testing::TempDir dir;
+  struct Case {
+    const char* input;
+    const char* said;
+  };
+  for (const Case& c : {Case{"oom-exr-string-attribute-after-damaged-chlist",
+                             "not a valid OpenEXR header ('channels' attribute not found)"},
+                        Case{"timeout-exr-chlist-unterminated",
+                             "the OpenEXR header declares 16777224 x 8 pixels of 3 channels"}}) {
+    // The fuzz input's first byte is the target's choice of name; the file is the rest.
+    const std::string bytes = landsim::testing::read_file(
+        landsim::testing::source_file(std::string("fuzz/regressions/image_fuzz/") + c.input));
+    const auto path = dir.write(std::string(c.input) + ".exr", bytes.substr(1));
+    int width = 0, height = 0, channels = 0;
+    std::string error;
+    ASSERT_FALSE(image_io().probe(path.string(), width, height, channels, error)) << c.input;
+    EXPECT_NE(error.find(c.said), std::string::npos) << c.input << ": " << error;
+  }
+}
+
 }  // namespace
 }  // namespace landsim::renderer
