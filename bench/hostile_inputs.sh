@@ -79,7 +79,8 @@ scenario plain ""
 # image_fuzz findings kept in the regressions (their first byte is the target's choice of name).
 tail -c +2 fuzz/regressions/image_fuzz/timeout-rla-1x1-38-channels-rle > "$W/hang.rla"
 tail -c +2 fuzz/regressions/image_fuzz/slow-exr-attribute-beyond-file-1 > "$W/attribute.exr"
-for t in lzw.tif fax.tif claims.webp unknown.tif hang.rla attribute.exr; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
+tail -c +2 fuzz/regressions/image_fuzz/oom-exr-string-attribute-after-damaged-chlist > "$W/string.exr"
+for t in lzw.tif fax.tif claims.webp unknown.tif hang.rla attribute.exr string.exr; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
 printf 'camera { location <0, 1, -3> right x*image_width/image_height look_at <0, 0, 0> }\n#include "self.pov"\n' > "$W/self.pov"
 
 # Species.
@@ -134,6 +135,7 @@ run "texture: WebP of 20 bytes claiming 38M pixels" "$BIN/landsim" render "$W/te
 run "texture: TIFF of an unknown codec, 136M values" "$BIN/landsim" render "$W/texture_unknown.tif.toml" --out "$W/t4"
 run "texture: Wavefront RLA of 797 bytes (OpenImageIO's reader hung)" "$BIN/landsim" render "$W/texture_hang.rla.toml" --out "$W/t5"
 run "texture: EXR of 373 bytes with a 1.6 GB attribute" "$BIN/landsim" render "$W/texture_attribute.exr.toml" --out "$W/t6"
+run "texture: EXR of 312 bytes, a 1.7 GB string past a damaged channel list" "$BIN/landsim" render "$W/texture_string.exr.toml" --out "$W/t7"
 run "reference garbage" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c2" --reference "$W/strokes.toml"
 run "pov includes itself" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c3" --pov "$W/self.pov"
 run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"
