@@ -1,5 +1,7 @@
 #include "modules/images/exr_header.h"
 
+#include "modules/images/codec_limits.h"
+
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -71,15 +73,38 @@ std::string attribute_beyond_file(const std::string& path, std::uintmax_t file_b
   }
 }
 
-// "the OpenEXR header declares W x H pixels of C channels, ..." if they make more than
-// `max_values` values, else "".
-std::string too_many_values(double width, double height, long long channels, long long max_values) {
-  if (!(width > 0 && height > 0) ||
-      width * height * static_cast<double>(channels) <= static_cast<double>(max_values))
-    return "";
-  return "the OpenEXR header declares " + std::to_string(static_cast<long long>(width)) + " x " +
-         std::to_string(static_cast<long long>(height)) + " pixels of " + std::to_string(channels) +
-         " channels, more than the " + std::to_string(max_values) + " values landsim reads";
+// What a part's header claims of its pixels, as one of the two readers sees it.
+struct PartClaim {
+  double width = 0, height = 0;
+  long long channels = 0;
+  double pixel_bytes = 0;     // the channels' bytes per pixel (half 2, float and uint 4)
+  bool uncompressed = false;  // compression "none"
+  bool bounded = true;        // a codec of codec_limits.h's bound (all but DWAA and DWAB)
+};
+
+// Why a part claiming this is refused, or "": more values than `max_values`, or more bytes of
+// pixels than its compression decodes from the whole file (the bounds of codec_limits.h, as
+// the image module applies them to OpenImageIO's spec). Checked before the C++ reader sizes
+// its line buffers from the window (a 437-byte B44A file claiming 2752520 x 8 pixels of 3
+// channels took over 10 s under ASan to open).
+std::string claim_refusal(const PartClaim& part, std::uintmax_t file_bytes, long long max_values) {
+  if (!(part.width > 0 && part.height > 0)) return "";  // OpenEXR says what is wrong
+  const std::string pixels = "the OpenEXR header declares " +
+                             std::to_string(static_cast<long long>(part.width)) + " x " +
+                             std::to_string(static_cast<long long>(part.height)) + " pixels of " +
+                             std::to_string(part.channels) + " channels";
+  if (part.width * part.height * static_cast<double>(part.channels) >
+      static_cast<double>(max_values))
+    return pixels + ", more than the " + std::to_string(max_values) + " values landsim reads";
+  const double bytes = part.width * part.height * part.pixel_bytes;
+  const auto file = static_cast<double>(file_bytes);
+  const bool beyond =
+      part.uncompressed ? bytes > file
+                        : part.bounded && bytes > kBelievedBytes && bytes > kMaxCompression * file;
+  if (!beyond) return "";
+  return pixels + " (" + std::to_string(static_cast<long long>(bytes)) + " bytes), more than " +
+         (part.uncompressed ? "the file holds" : "its compression decodes from the file") + "'s " +
+         std::to_string(file_bytes) + " bytes";
 }
 
 // The most OpenEXRCore may allocate while it reads the headers of the file being checked: no
@@ -98,12 +123,31 @@ void keep_error(exr_const_context_t context, exr_result_t, const char* message) 
     *static_cast<std::string*>(kept) = message;
 }
 
-// A header OpenEXRCore cannot read, or a part whose data window and channels (as it reads them)
-// make more than `max_values` values, or "". Every part's header is read by OpenEXR's own strict
-// reader, bounded by the file, and nothing else of the file: OpenEXR's C++ reader, which
-// OpenImageIO uses, reads on past a damaged attribute into whatever follows (a channel list without
-// its closing null gave it another data window; a string attribute there claimed 1.7 GB, which it
-// zero-filled), so a file must satisfy the strict reader before the other sees it.
+// Part `p` as OpenEXRCore read it; false if it lacks a window or channels (OpenEXR says so).
+bool strict_claim(exr_const_context_t context, int p, PartClaim& part) {
+  exr_attr_box2i_t window{};
+  const exr_attr_chlist_t* channels = nullptr;
+  exr_compression_t compression = EXR_COMPRESSION_NONE;
+  if (exr_get_data_window(context, p, &window) != EXR_ERR_SUCCESS ||
+      exr_get_channels(context, p, &channels) != EXR_ERR_SUCCESS || channels == nullptr ||
+      exr_get_compression(context, p, &compression) != EXR_ERR_SUCCESS)
+    return false;
+  part.width = static_cast<double>(window.max.x) - window.min.x + 1;
+  part.height = static_cast<double>(window.max.y) - window.min.y + 1;
+  part.channels = channels->num_channels;
+  for (int c = 0; c < channels->num_channels; ++c)
+    part.pixel_bytes += channels->entries[c].pixel_type == EXR_PIXEL_HALF ? 2 : 4;
+  part.uncompressed = compression == EXR_COMPRESSION_NONE;
+  part.bounded = compression != EXR_COMPRESSION_DWAA && compression != EXR_COMPRESSION_DWAB;
+  return true;
+}
+
+// A header OpenEXRCore cannot read, or a part it reads whose claim is refused, or "". Every part's
+// header is read by OpenEXR's own strict reader, bounded by the file, and nothing else of the file:
+// OpenEXR's C++ reader, which OpenImageIO uses, reads on past a damaged attribute into whatever
+// follows (a channel list without its closing null gave it another data window; a string attribute
+// there claimed 1.7 GB, which it zero-filled), so a file must satisfy the strict reader before the
+// other sees it.
 std::string strict_refusal(const std::string& path, std::uintmax_t file_bytes,
                            long long max_values) {
   std::string error;
@@ -122,25 +166,35 @@ std::string strict_refusal(const std::string& path, std::uintmax_t file_bytes,
   std::string refusal;
   int parts = 0;
   exr_get_count(context, &parts);
-  for (int p = 0; p < parts && refusal.empty(); ++p) {
-    exr_attr_box2i_t window{};
-    const exr_attr_chlist_t* channels = nullptr;
-    if (exr_get_data_window(context, p, &window) != EXR_ERR_SUCCESS ||
-        exr_get_channels(context, p, &channels) != EXR_ERR_SUCCESS || channels == nullptr)
-      continue;  // OpenEXR says what is missing when the file is opened
-    refusal = too_many_values(static_cast<double>(window.max.x) - window.min.x + 1,
-                              static_cast<double>(window.max.y) - window.min.y + 1,
-                              channels->num_channels, max_values);
-  }
+  for (int p = 0; p < parts && refusal.empty(); ++p)
+    if (PartClaim part; strict_claim(context, p, part))
+      refusal = claim_refusal(part, file_bytes, max_values);
   exr_finish(&context);
   return refusal;
 }
 
-// A part whose data window and channels, as OpenEXR's C++ reader (OpenImageIO's) reads them,
-// make more than `max_values` values, or "". Asked only of headers the strict reader accepted,
-// whose values it has bounded by the file; the two readers can still see different windows
-// (of two "dataWindow" attributes, one keeps the first and the other the last).
-std::string lenient_refusal(const std::string& path, long long max_values) {
+// A part as OpenEXR's C++ reader read its header.
+PartClaim cpp_claim(const Imf::Header& header) {
+  PartClaim part;
+  const Imath::Box2i window = header.dataWindow();
+  part.width = static_cast<double>(window.max.x) - window.min.x + 1;
+  part.height = static_cast<double>(window.max.y) - window.min.y + 1;
+  for (auto c = header.channels().begin(); c != header.channels().end(); ++c) {
+    ++part.channels;
+    part.pixel_bytes += c.channel().type == Imf::HALF ? 2 : 4;
+  }
+  part.uncompressed = header.compression() == Imf::NO_COMPRESSION;
+  part.bounded = header.compression() != Imf::DWAA_COMPRESSION &&
+                 header.compression() != Imf::DWAB_COMPRESSION;
+  return part;
+}
+
+// A part whose claim, as OpenEXR's C++ reader (OpenImageIO's) reads it, is refused, or "". Asked
+// only of headers the strict reader accepted, whose values it has bounded by the file; the two
+// readers can still see different windows (of two "dataWindow" attributes, one keeps the first and
+// the other the last).
+std::string lenient_refusal(const std::string& path, std::uintmax_t file_bytes,
+                            long long max_values) {
   try {
     Imf::StdIFStream in(path.c_str());
     char magic[4];
@@ -150,12 +204,7 @@ std::string lenient_refusal(const std::string& path, long long max_values) {
     for (;;) {
       Imf::Header header;
       header.readFrom(in, version);
-      const Imath::Box2i window = header.dataWindow();
-      long long channels = 0;
-      for (auto c = header.channels().begin(); c != header.channels().end(); ++c) ++channels;
-      std::string refusal = too_many_values(static_cast<double>(window.max.x) - window.min.x + 1,
-                                            static_cast<double>(window.max.y) - window.min.y + 1,
-                                            channels, max_values);
+      const std::string refusal = claim_refusal(cpp_claim(header), file_bytes, max_values);
       if (!refusal.empty() || !Imf::isMultiPart(version)) return refusal;
       char next = 0;  // a multi-part file's list of headers ends with an empty one
       const std::uint64_t at = in.tellg();
@@ -176,7 +225,7 @@ std::string exr_header_refusal(const std::string& path, long long max_values) {
   if (error) return "";
   std::string refusal = attribute_beyond_file(path, file_bytes);
   if (refusal.empty()) refusal = strict_refusal(path, file_bytes, max_values);
-  return refusal.empty() ? lenient_refusal(path, max_values) : refusal;
+  return refusal.empty() ? lenient_refusal(path, file_bytes, max_values) : refusal;
 }
 
 }  // namespace landsim::images

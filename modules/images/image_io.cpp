@@ -3,6 +3,7 @@
 // (core/module_loader.h).
 #include "renderer/output/image_io.h"
 
+#include "modules/images/codec_limits.h"
 #include "modules/images/exr_header.h"
 #include "modules/images/library_noise.h"
 
@@ -71,16 +72,6 @@ std::string declared(const OIIO::ImageSpec& spec) {
          (spec.nchannels == 1 ? " channel" : " channels");
 }
 
-// The most bytes of pixels (in the file's own sample format) one byte of these codecs can
-// decode to, with room to spare: deflate (PNG, TIFF and OpenEXR zip) at most 1032, TIFF's
-// LZW about 2560 (a full 12-bit table's longest strings), PackBits 64, baseline or
-// progressive JPEG 2048 (every 8 x 8 block's DC coefficient takes a bit, four channels),
-// OpenEXR's RLE 64, PIZ and PXR24 and B44 less than deflate. Codecs whose ratio has no such
-// bound (OpenEXR's DWA, TIFF's ZSTD and WebP, JPEG 2000, WebP, fax) keep only kMaxValues.
-constexpr double kMaxCompression = 4096.0;
-// Below this many bytes of pixels any header is believed (tiny files, generous ratios).
-constexpr double kBelievedBytes = 1 << 20;
-
 // The codec's name as OpenImageIO gives it ("zip", "dwaa:45" -> "dwaa").
 std::string codec(const OIIO::ImageSpec& spec) {
   const std::string c = spec.get_string_attribute("compression");
@@ -133,7 +124,7 @@ std::string beyond_file(const OIIO::ImageInput& in, const std::string& path) {
            ", which libtiff does not decode";
   if (size_error || !ratio_bounded(format, c)) return "";
   const auto bytes = static_cast<double>(spec.image_bytes());
-  if (bytes <= kBelievedBytes || bytes <= kMaxCompression * static_cast<double>(file_bytes))
+  if (bytes <= images::kBelievedBytes || bytes <= images::kMaxCompression * static_cast<double>(file_bytes))
     return "";
   return declared(spec) + " (" + std::to_string(spec.image_bytes()) + " bytes), more than " +
          (c.empty() ? format : c) + " compression decodes from the file's " +

@@ -1,0 +1,17 @@
+#pragma once
+// What a compressed image's header is checked against (the image module and its OpenEXR header
+// check share them).
+
+namespace landsim::images {
+
+// The most bytes of pixels (in the file's own sample format) one byte of these codecs can
+// decode to, with room to spare: deflate (PNG, TIFF and OpenEXR zip) at most 1032, TIFF's
+// LZW about 2560 (a full 12-bit table's longest strings), PackBits 64, baseline or
+// progressive JPEG 2048 (every 8 x 8 block's DC coefficient takes a bit, four channels),
+// OpenEXR's RLE 64, PIZ and PXR24 and B44 less than deflate. Codecs whose ratio has no such
+// bound (OpenEXR's DWA, TIFF's ZSTD and WebP, JPEG 2000, WebP, fax) keep only the value limit.
+constexpr double kMaxCompression = 4096.0;
+// Below this many bytes of pixels any header is believed (tiny files, generous ratios).
+constexpr double kBelievedBytes = 1 << 20;
+
+}  // namespace landsim::images
