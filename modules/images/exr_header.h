@@ -10,16 +10,17 @@
 //   does not know is allocated at its declared size, up to 2 GB);
 // - every part's header read by OpenEXRCore, OpenEXR's strict reader, its allocations bounded
 //   by the file: a header it refuses is refused;
-// - the data window and channels, as each of the two readers sees them (of two "dataWindow"
-//   attributes one keeps the first, the other the last), may not make more values than
-//   landsim reads: the C++ reader sizes its line buffers from them when a part is opened.
+// - each part's claim, as each of the two readers sees it (of two "dataWindow" attributes one
+//   keeps the first, the other the last): no more values than landsim reads, and no more
+//   bytes of pixels than its codec decodes from the file (codec_limits.h): the C++ reader
+//   sizes its line buffers from the window and channels when a part is opened.
 #include <string>
 
 namespace landsim::images {
 
 // Why the OpenEXR file at `path` is refused from its header, or "": an attribute claiming
 // more bytes than the file has left, a header OpenEXRCore refuses (its message quoted), or a
-// part whose data window and channels make more than `max_values` values.
+// part claiming more than `max_values` values or more bytes than its codec could decode.
 std::string exr_header_refusal(const std::string& path, long long max_values);
 
 }  // namespace landsim::images
