@@ -1,19 +1,16 @@
 #pragma once
-// An OpenEXR header checked before OpenImageIO opens the file with OpenEXR's C++ reader, which
-// allocates from what a header claims before it finds the claim false, and reads on past a
-// damaged attribute into whatever follows (image_fuzz: files of a few hundred bytes costing
-// seconds and gigabytes). Three checks, in order:
+// An OpenEXR header checked before OpenImageIO opens the file (image_fuzz: files of a few
+// hundred bytes costing seconds and gigabytes). The image module has OpenImageIO read OpenEXR
+// through OpenEXRCore, OpenEXR's strict reader; its C++ reader, the default, allocates from
+// what a header claims before it finds the claim false and reads on past a damaged attribute
+// into whatever follows. Two checks, in order:
 // - the attributes' sizes walked without reading their values (a header is a run of
 //   attributes, each a name, a type name, a 32-bit little-endian size and the value, ending in
 //   an empty name; a multi-part file has one header per part and an empty one after the
-//   last): none may claim more bytes than are left in the file (an attribute of a type OpenEXR
-//   does not know is allocated at its declared size, up to 2 GB);
-// - every part's header read by OpenEXRCore, OpenEXR's strict reader, its allocations bounded
-//   by the file: a header it refuses is refused;
-// - each part's claim, as each of the two readers sees it (of two "dataWindow" attributes one
-//   keeps the first, the other the last): no more values than landsim reads, and no more
-//   bytes of pixels than its codec decodes from the file (codec_limits.h): the C++ reader
-//   sizes its line buffers from the window and channels when a part is opened.
+//   last): none may claim more bytes than are left in the file;
+// - every part's header read by OpenEXRCore, its allocations bounded by the file: a header it
+//   refuses is refused, and a part may claim no more values than landsim reads and no more
+//   bytes of pixels than its codec decodes from the file (codec_limits.h).
 #include <string>
 
 namespace landsim::images {
