@@ -140,18 +140,27 @@ bool write_8bit(const std::filesystem::path& path, int width, int height, int ch
   return out->close();
 }
 
+// Writes a flat 8-bit image and reads it back whole through the module: the file before it is
+// damaged.
+bool written_and_read(const std::filesystem::path& path, int width, int height, int channels,
+                      const char* compression) {
+  const std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * channels, 100);
+  FloatImage image;
+  std::string error;
+  const bool read = write_8bit(path, width, height, channels, compression, pixels) &&
+                    image_io().read(path.string(), false, image, error);
+  EXPECT_TRUE(read) << path << ": " << error;
+  return read && image.pixels.size() == pixels.size();
+}
+
 // An uncompressed image claiming more pixels than its file holds is refused from its header,
 // before anything is allocated for them (image_fuzz found a 257-byte TIFF read as 729 MB of
 // zeros); the whole file reads.
 TEST(ImageOutput, AnUncompressedImageLargerThanItsFileIsRefusedFromItsHeader) {
   const landsim::testing::TempDir dir;
   const auto path = dir / "whole.tif";
-  const std::vector<unsigned char> pixels(64 * 48 * 3, 128);
-  ASSERT_TRUE(write_8bit(path, 64, 48, 3, "none", pixels));
-  FloatImage image;
+  ASSERT_TRUE(written_and_read(path, 64, 48, 3, "none"));
   std::string error;
-  ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << error;
-  EXPECT_EQ(image.pixels.size(), pixels.size());
   const std::string bytes = landsim::testing::read_file(path);
   const auto cut = dir.write("cut.tif", bytes.substr(0, bytes.size() / 2));
   int width = 0, height = 0, channels = 0;
@@ -368,11 +377,9 @@ TEST(ImageOutput, TheFormatsLandsimReadsAreFoundByContentAndNoOthersAreRead) {
 TEST(ImageOutput, AnExrHeaderClaimingTooMuchIsRefusedBeforeOpenExrReadsIt) {
   const landsim::testing::TempDir dir;
   const auto path = dir / "whole.exr";
-  const std::vector<unsigned char> pixels(16 * 8 * 3, 100);
-  ASSERT_TRUE(write_8bit(path, 16, 8, 3, "zip", pixels));
+  ASSERT_TRUE(written_and_read(path, 16, 8, 3, "zip"));
   FloatImage image;
   std::string error;
-  ASSERT_TRUE(image_io().read(path.string(), false, image, error)) << error;
   // Two parts: the walk follows every header to the empty one after the last.
   const auto parts = dir / "parts.exr";
   {
