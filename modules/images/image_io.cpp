@@ -87,13 +87,12 @@ bool tiff_scheme_decodable(int scheme) {
   return std::find(std::begin(kSchemes), std::end(kSchemes), scheme) != std::end(kSchemes);
 }
 
+// OpenEXR is not among them: exr_header applies the same bound to every part before the file
+// is opened, from the header OpenImageIO then reads (both through OpenEXRCore).
 bool ratio_bounded(const std::string& format, const std::string& c) {
   if (format == "png" || format == "jpeg") return true;
   if (format == "tiff")
     return c == "lzw" || c == "zip" || c == "deflate" || c == "packbits" || c == "jpeg";
-  if (format == "openexr")
-    return c == "rle" || c == "zips" || c == "zip" || c == "piz" || c == "pxr24" || c == "b44" ||
-           c == "b44a";
   return false;
 }
 
