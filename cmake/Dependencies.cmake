@@ -17,6 +17,8 @@ pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET OpenColorIO)
 if(LANDSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)
+  # Zstandard writes the test TIFFs OpenImageIO cannot (it writes no Zstandard TIFF).
+  pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
 endif()
 if(LANDSIM_BUILD_BENCH)
   find_package(benchmark REQUIRED)

@@ -87,13 +87,26 @@ bool tiff_scheme_decodable(int scheme) {
   return std::find(std::begin(kSchemes), std::end(kSchemes), scheme) != std::end(kSchemes);
 }
 
-// OpenEXR is not among them: exr_header applies the same bound to every part before the file
-// is opened, from the header OpenImageIO then reads (both through OpenEXRCore).
-bool ratio_bounded(const std::string& format, const std::string& c) {
-  if (format == "png" || format == "jpeg") return true;
-  if (format == "tiff")
-    return c == "lzw" || c == "zip" || c == "deflate" || c == "packbits" || c == "jpeg";
-  return false;
+// The most bytes of pixels one byte of the file's codec decodes to, or 0 where no bound is
+// known (the value limit alone holds there). TIFF's codecs by scheme number (OpenImageIO names
+// no Zstandard). OpenEXR is not among them: exr_header applies its bound to every part before
+// the file is opened, from the header OpenImageIO then reads (both through OpenEXRCore).
+double max_ratio(const std::string& format, int tiff_scheme) {
+  if (format == "png" || format == "jpeg") return images::kMaxCompression;
+  if (format != "tiff") return 0;
+  switch (tiff_scheme) {
+    case 5:      // LZW
+    case 7:      // JPEG
+    case 8:      // deflate
+    case 32773:  // PackBits
+    case 32946:  // deflate (the old number)
+      return images::kMaxCompression;
+    case 34925:  // LZMA
+    case 50000:  // Zstandard
+      return images::kMaxLongWindowCompression;
+    default:
+      return 0;
+  }
 }
 
 // Why the file cannot hold what its header declares, or "": more bytes than an uncompressed
@@ -121,14 +134,35 @@ std::string beyond_file(const OIIO::ImageInput& in, const std::string& path) {
   if (format == "tiff" && !tiff_scheme_decodable(scheme))
     return declared(spec) + " compressed by TIFF scheme " + std::to_string(scheme) +
            ", which libtiff does not decode";
-  if (size_error || !ratio_bounded(format, c)) return "";
+  const double ratio = max_ratio(format, scheme);
+  if (size_error || ratio == 0) return "";
   const auto bytes = static_cast<double>(spec.image_bytes());
-  if (bytes <= images::kBelievedBytes ||
-      bytes <= images::kMaxCompression * static_cast<double>(file_bytes))
+  if (bytes <= images::kBelievedBytes || bytes <= ratio * static_cast<double>(file_bytes))
     return "";
   return declared(spec) + " (" + std::to_string(spec.image_bytes()) + " bytes), more than " +
-         (c.empty() ? format : c) + " compression decodes from the file's " +
-         std::to_string(file_bytes) + " bytes";
+         (!c.empty()         ? c
+          : format == "tiff" ? "TIFF scheme " + std::to_string(scheme)
+                             : format) +
+         " compression decodes from the file's " + std::to_string(file_bytes) + " bytes";
+}
+
+// A tile is decoded whole, padding and all: tiles of up to this many values (1024 x 1024
+// pixels of 4 channels; GDAL writes 256 x 256 by default, OpenImageIO 64 x 64), or of up to 4
+// times the image's, are believed.
+constexpr double kBelievedTileValues = 1 << 22;
+
+// Why the file's tiles claim memory its image does not need, or "" (an 8 x 8 TIFF in tiles of
+// 8192 x 8192 pixels: 2.2 GB and 9.5 s before its one tile failed to decode; of 65536 x 65536,
+// an allocation that stopped the process).
+std::string tiles_beyond_image(const OIIO::ImageSpec& spec) {
+  if (spec.tile_width <= 0) return "";
+  const double tile = static_cast<double>(spec.tile_width) * std::max(spec.tile_height, 1) *
+                      std::max(spec.tile_depth, 1) * spec.nchannels;
+  const double image = static_cast<double>(spec.width) * spec.height * spec.nchannels;
+  if (tile <= std::max(kBelievedTileValues, 4 * image)) return "";
+  return declared(spec) + " in tiles of " + std::to_string(spec.tile_width) + " x " +
+         std::to_string(spec.tile_height) + " x " + std::to_string(spec.tile_depth) +
+         " pixels, more than 4 times the image";
 }
 
 // The formats landsim reads, by OpenImageIO's names: photographs and scans for textures
@@ -183,6 +217,10 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
         declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
     return nullptr;
   }
+  if (std::string refusal = tiles_beyond_image(spec); !refusal.empty()) {
+    error = std::move(refusal);
+    return nullptr;
+  }
   if (std::string refusal = beyond_file(*in, path); !refusal.empty()) {
     error = std::move(refusal);
     return nullptr;
@@ -200,12 +238,98 @@ bool probe_file(const std::string& path, int& width, int& height, int& channels,
   return true;
 }
 
-// Rows decoded at a time: about 16 MiB of floats, whole tiles.
+// Rows decoded at a time: about 16 MiB of floats, whole tiles, and whole TIFF strips. A band of
+// whole strips is decoded straight into the band, each strip's on a core of its own where
+// OpenImageIO can; a band that cuts a strip is read a row at a time through a row that
+// OpenImageIO zero-fills first (a header claiming rows of 256 MB touched one before failing).
 int band_rows(const OIIO::ImageSpec& spec) {
   const auto row_bytes = static_cast<double>(spec.width) * spec.nchannels * sizeof(float);
-  const int tile = std::max(spec.tile_height, 1);
-  const int tiles = std::max(1, static_cast<int>((16.0 * (1 << 20)) / (row_bytes * tile)));
-  return tile * tiles;
+  const int unit = spec.tile_width > 0
+                       ? std::max(spec.tile_height, 1)
+                       : std::clamp(spec.get_int_attribute("tiff:RowsPerStrip", 1), 1, spec.height);
+  const int units = std::max(1, static_cast<int>((16.0 * (1 << 20)) / (row_bytes * unit)));
+  return unit * units;
+}
+
+// A band of scanlines, or a tile, in the file's own sample types. Not zero-filled: a file that
+// fails to decode touches only what its decoder wrote (a vector's zeros made every refusal of a
+// file claiming long rows touch a band of them).
+struct NativeBand {
+  std::unique_ptr<char[]> bytes;
+  std::size_t size = 0;
+  char* hold(std::size_t n) {
+    if (n > size) {
+      bytes.reset(new char[n]);
+      size = n;
+    }
+    return bytes.get();
+  }
+};
+
+// `rows` rows of `width` pixels in the file's own sample types (rows `native_row` bytes apart)
+// as floats at `out`, whose rows are the image's width apart.
+bool to_floats(const OIIO::ImageSpec& spec, const char* native, OIIO::stride_t native_row,
+               int width, int rows, float* out) {
+  const auto pixel = static_cast<OIIO::stride_t>(spec.pixel_bytes(true));
+  const auto out_pixel = static_cast<OIIO::stride_t>(spec.nchannels * sizeof(float));
+  const OIIO::stride_t out_row = out_pixel * spec.width;
+  if (spec.channelformats.empty())  // one type: every channel at once
+    return OIIO::convert_image(spec.nchannels, width, rows, 1, native, spec.format, pixel,
+                               native_row, OIIO::AutoStride, out, OIIO::TypeDesc::FLOAT, out_pixel,
+                               out_row, OIIO::AutoStride);
+  // Channels of their own types (OpenEXR): each channel's column converted on its own.
+  for (int c = 0; c < spec.nchannels; ++c)
+    if (!OIIO::convert_image(1, width, rows, 1, native + spec.pixel_bytes(0, c, true),
+                             spec.channelformat(c), pixel, native_row, OIIO::AutoStride, out + c,
+                             OIIO::TypeDesc::FLOAT, out_pixel, out_row, OIIO::AutoStride))
+      return false;
+  return true;
+}
+
+// Rows [y, end) of a scanline file appended to `pixels` as floats. Read in the file's own
+// sample types and converted here: OpenImageIO 2.4 converts in chunks of at least 256 rows
+// (its "read_chunk") whatever the image's height, and allocates the chunk first (a 185-byte
+// TIFF 8 rows high with rows of 51 MB asked for 13 GB). The floats grow only once the rows
+// have decoded.
+bool read_rows(OIIO::ImageInput& in, int y, int end, NativeBand& band, std::vector<float>& pixels) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const auto native_row = static_cast<OIIO::stride_t>(spec.scanline_bytes(true));
+  char* native = band.hold(static_cast<std::size_t>(native_row) * (end - y));
+  if (!in.read_scanlines(0, 0, spec.y + y, spec.y + end, spec.z, 0, spec.nchannels,
+                         OIIO::TypeDesc::UNKNOWN, native) ||
+      in.has_error())
+    return false;
+  const std::size_t row = static_cast<std::size_t>(spec.width) * spec.nchannels;
+  pixels.resize(row * static_cast<std::size_t>(end));
+  return to_floats(spec, native, native_row, spec.width, end - y,
+                   pixels.data() + row * static_cast<std::size_t>(y));
+}
+
+// Rows [y, end) of a tiled file (whole tiles high) appended to `pixels` as floats, a tile at a
+// time: each read in the file's own types into `band`, the part within the image converted
+// into place. OpenImageIO's own conversion zero-fills a row of tiles first (an 8 x 8 TIFF in
+// 4096 x 4096 tiles that fail to decode touched 650 MB). The floats grow once the band's first
+// tile has decoded. One slice of a volume: its first (no reader landsim meets reports more).
+bool read_tile_rows(OIIO::ImageInput& in, int y, int end, NativeBand& band,
+                    std::vector<float>& pixels) {
+  const OIIO::ImageSpec& spec = in.spec();
+  char* tile = band.hold(spec.tile_bytes(true));
+  const auto native_row = static_cast<OIIO::stride_t>(spec.pixel_bytes(true) * spec.tile_width);
+  const std::size_t row = static_cast<std::size_t>(spec.width) * spec.nchannels;
+  for (int ty = y; ty < end; ty += spec.tile_height)
+    for (int tx = 0; tx < spec.width; tx += spec.tile_width) {
+      if (!in.read_tile(spec.x + tx, spec.y + ty, spec.z, OIIO::TypeDesc::UNKNOWN, tile) ||
+          in.has_error())
+        return false;
+      pixels.resize(row * static_cast<std::size_t>(end));
+      const int width = std::min(spec.tile_width, spec.width - tx);
+      const int rows = std::min(spec.tile_height, end - ty);
+      if (!to_floats(spec, tile, native_row, width, rows,
+                     pixels.data() + row * static_cast<std::size_t>(ty) +
+                         static_cast<std::size_t>(tx) * spec.nchannels))
+        return false;
+    }
+  return true;
 }
 
 // Decodes the image a band of rows at a time into `pixels`, which grows as rows arrive: the
@@ -218,20 +342,13 @@ bool decode_bands(OIIO::ImageInput& in, std::vector<float>& pixels) {
   const OIIO::ImageSpec& spec = in.spec();
   const std::size_t row = static_cast<std::size_t>(spec.width) * spec.nchannels;
   pixels.clear();
+  NativeBand native;
   const int band = band_rows(spec);
   for (int y = 0; y < spec.height; y += band) {
     const int end = std::min(spec.height, y + band);
     if (y == band) pixels.reserve(row * static_cast<std::size_t>(spec.height));
-    pixels.resize(row * static_cast<std::size_t>(end));
-    float* out = pixels.data() + row * static_cast<std::size_t>(y);
-    // Tiled files by whole tiles (OpenImageIO 2.4's read_scanlines divides by zero on them).
-    // One slice: a volume's first (no reader landsim meets reports more).
-    const bool read =
-        spec.tile_width > 0
-            ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y, spec.y + end, spec.z,
-                            spec.z + 1, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out)
-            : in.read_scanlines(0, 0, spec.y + y, spec.y + end, spec.z, 0, spec.nchannels,
-                                OIIO::TypeDesc::FLOAT, out);
+    const bool read = spec.tile_width > 0 ? read_tile_rows(in, y, end, native, pixels)
+                                          : read_rows(in, y, end, native, pixels);
     // A strip or tile that failed to decode is an error even where OpenImageIO goes on with
     // zeros and reports success (a 178-byte TIFF of an unknown codec claiming 8 x 29448
     // pixels of 256 channels read as 240 MB of zeros): the first band that fails ends it.
