@@ -34,6 +34,9 @@ constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.
 // read first, so a file claiming 100000 x 100000 pixels is refused before anything is
 // allocated for it.
 constexpr long long kMaxValues = 1LL << 28;
+// The most bytes of samples in the file's own types: 1 GiB, as many as the floats (an image
+// of 2^28 doubles would have its rows read through 2 GiB buffers).
+constexpr double kMaxSampleBytes = 1 << 30;
 
 // OpenImageIO's errors, one per line as each layer adds its own (a truncated PNG: "Read error:
 // hit end of file", "PNG read error: IDAT: ...", "PNG library error"), made one line: the
@@ -215,6 +218,12 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
   if (static_cast<long long>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
     error =
         declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
+    return nullptr;
+  }
+  if (static_cast<double>(spec.image_bytes(true)) > kMaxSampleBytes) {
+    error = declared(spec) + " of " + spec.format.c_str() + " (" +
+            std::to_string(spec.image_bytes(true)) + " bytes), more than the " +
+            std::to_string(static_cast<long long>(kMaxSampleBytes)) + " bytes landsim reads";
     return nullptr;
   }
   if (std::string refusal = tiles_beyond_image(spec); !refusal.empty()) {

@@ -313,15 +313,16 @@ TEST(ImageOutput, AnImageWhoseStripsFailToDecodeIsRefused) {
 }
 
 // OpenImageIO 2.4 converts scanlines in chunks of at least 256 rows whatever the image's
-// height, allocating the chunk first: a header of 8 rows of 256 MB each (a codec without a
-// ratio bound, a strip of no bytes) asked for 64 GB and stopped the process with
+// height, allocating the chunk first: a header of 8 rows of 128 MB each (a codec without a
+// ratio bound, a strip of no bytes) asked for 32 GB and stopped the process with
 // std::bad_alloc. The module reads rows in the file's own types and converts them itself; the
-// strip's own error is what the reader says.
+// strip's own error is what the reader says. The same rows in doubles, 2 GiB of samples, are
+// refused from the header (the floats' limit, 1 GiB, holds for the file's own samples too).
 TEST(ImageOutput, AnImageOfLongRowsFailingToDecodeIsRefusedWithTheDecodersError) {
   const landsim::testing::TempDir dir;
   const auto path = dir.write("long_rows.tif", one_strip_tiff({{256, 1u << 22},
                                                                {257, 8},
-                                                               {258, 64},
+                                                               {258, 32},
                                                                {259, 34887},  // LERC
                                                                {262, 1},
                                                                {277, 8},
@@ -333,6 +334,21 @@ TEST(ImageOutput, AnImageOfLongRowsFailingToDecodeIsRefusedWithTheDecodersError)
   ASSERT_FALSE(image_io().read(path.string(), false, image, error));
   EXPECT_TRUE(image.pixels.empty());
   EXPECT_NE(error.find("Invalid strip byte count 0, strip 0"), std::string::npos) << error;
+  const auto doubles = dir.write("long_doubles.tif", one_strip_tiff({{256, 1u << 22},
+                                                                     {257, 8},
+                                                                     {258, 64},
+                                                                     {259, 34887},
+                                                                     {262, 1},
+                                                                     {277, 8},
+                                                                     {278, 8},
+                                                                     {339, 3}},
+                                                                    ""));
+  int width = 0, height = 0, channels = 0;
+  ASSERT_FALSE(image_io().probe(doubles.string(), width, height, channels, error));
+  EXPECT_NE(
+      error.find("of double (2147483648 bytes), more than the 1073741824 bytes landsim reads"),
+      std::string::npos)
+      << error;
 }
 
 // A JPEG cut short read with its missing rows grey, libjpeg's "premature end" an error on the
