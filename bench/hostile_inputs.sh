@@ -80,7 +80,11 @@ scenario plain ""
 tail -c +2 fuzz/regressions/image_fuzz/timeout-rla-1x1-38-channels-rle > "$W/hang.rla"
 tail -c +2 fuzz/regressions/image_fuzz/slow-exr-attribute-beyond-file-1 > "$W/attribute.exr"
 tail -c +2 fuzz/regressions/image_fuzz/oom-exr-string-attribute-after-damaged-chlist > "$W/string.exr"
-for t in lzw.tif fax.tif claims.webp unknown.tif hang.rla attribute.exr string.exr; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
+tail -c +2 fuzz/regressions/image_fuzz/slow-tiff-zstd-strip-byte-count-0 > "$W/zstd.tif"
+tail -c +2 fuzz/regressions/image_fuzz/slow-tiff-lerc-strip-byte-count-0 > "$W/lerc.tif"
+tail -c +2 fuzz/regressions/image_fuzz/oom-tiff-lerc-long-float-rows > "$W/rows.tif"
+tail -c +2 fuzz/regressions/image_fuzz/slow-tiff-tiles-8192-square-on-8x8 > "$W/tiles.tif"
+for t in lzw.tif fax.tif claims.webp unknown.tif hang.rla attribute.exr string.exr zstd.tif lerc.tif rows.tif tiles.tif; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
 printf 'camera { location <0, 1, -3> right x*image_width/image_height look_at <0, 0, 0> }\n#include "self.pov"\n' > "$W/self.pov"
 
 # Species.
@@ -136,6 +140,10 @@ run "texture: TIFF of an unknown codec, 136M values" "$BIN/landsim" render "$W/t
 run "texture: Wavefront RLA of 797 bytes (OpenImageIO's reader hung)" "$BIN/landsim" render "$W/texture_hang.rla.toml" --out "$W/t5"
 run "texture: EXR of 373 bytes with a 1.6 GB attribute" "$BIN/landsim" render "$W/texture_attribute.exr.toml" --out "$W/t6"
 run "texture: EXR of 312 bytes, a 1.7 GB string past a damaged channel list" "$BIN/landsim" render "$W/texture_string.exr.toml" --out "$W/t7"
+run "texture: Zstandard TIFF of 185 bytes, 8 rows of 51 MB, no strip bytes" "$BIN/landsim" render "$W/texture_zstd.tif.toml" --out "$W/t8"
+run "texture: the same in LERC (no ratio bound)" "$BIN/landsim" render "$W/texture_lerc.tif.toml" --out "$W/t9"
+run "texture: LERC TIFF of 8 rows of 128 MB floats, no strip bytes" "$BIN/landsim" render "$W/texture_rows.tif.toml" --out "$W/t10"
+run "texture: 8 x 8 TIFF in tiles of 8192 x 8192" "$BIN/landsim" render "$W/texture_tiles.tif.toml" --out "$W/t11"
 run "reference garbage" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c2" --reference "$W/strokes.toml"
 run "pov includes itself" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c3" --pov "$W/self.pov"
 run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"

@@ -215,7 +215,7 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::str
     error = "the header gives no pixels";
     return nullptr;
   }
-  if (static_cast<long long>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
+  if (static_cast<double>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
     error =
         declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
     return nullptr;

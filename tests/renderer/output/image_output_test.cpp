@@ -170,6 +170,22 @@ TEST(ImageOutput, AnUncompressedImageLargerThanItsFileIsRefusedFromItsHeader) {
       << error;
 }
 
+// A header of the largest dimensions a reader gives (a PPM of 2^31 - 1 squared pixels) is
+// refused by its count of values, counted without overflow (image_fuzz, session 22: the count
+// overflowed a 64-bit integer under UBSan).
+TEST(ImageOutput, AHeaderOfTheLargestDimensionsIsRefusedByItsValues) {
+  const landsim::testing::TempDir dir;
+  const auto path =
+      dir.write("huge.ppm", std::string("P6\n2147483647 2147483647\n255\n") + std::string(64, 'x'));
+  int width = 0, height = 0, channels = 0;
+  std::string error;
+  ASSERT_FALSE(image_io().probe(path.string(), width, height, channels, error));
+  EXPECT_NE(error.find("the header declares 2147483647 x 2147483647 pixels of 3 channels, more "
+                       "than the 268435456 values landsim reads"),
+            std::string::npos)
+      << error;
+}
+
 // A little-endian TIFF of one strip holding `data`: the IFD's entries (tag, value) as LONGs,
 // in ascending tag order, then the strip's offset and byte count.
 std::string one_strip_tiff(std::vector<std::array<std::uint32_t, 2>> tags,
