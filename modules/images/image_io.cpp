@@ -316,9 +316,10 @@ bool read_rows(OIIO::ImageInput& in, int y, int end, NativeBand& band, std::vect
 
 // Rows [y, end) of a tiled file (whole tiles high; OpenImageIO 2.4's read_scanlines divides by
 // zero on tiled files) appended to `pixels` as floats, a tile at a time: each read in the
-// file's own types into `band`, the part within the image converted into place. OpenImageIO's own conversion zero-fills a row of tiles first (an 8 x 8 TIFF in
-// 4096 x 4096 tiles that fail to decode touched 650 MB). The floats grow once the band's first
-// tile has decoded. One slice of a volume: its first (no reader landsim meets reports more).
+// file's own types into `band`, the part within the image converted into place. OpenImageIO's own
+// conversion zero-fills a row of tiles first (an 8 x 8 TIFF in 4096 x 4096 tiles that fail to
+// decode touched 650 MB). The floats grow once the band's first tile has decoded. One slice of a
+// volume: its first (no reader landsim meets reports more).
 bool read_tile_rows(OIIO::ImageInput& in, int y, int end, NativeBand& band,
                     std::vector<float>& pixels) {
   const OIIO::ImageSpec& spec = in.spec();
