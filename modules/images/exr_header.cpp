@@ -102,10 +102,10 @@ std::string claim_refusal(const PartClaim& part, std::uintmax_t file_bytes, long
          std::to_string(file_bytes) + " bytes";
 }
 
-// The most OpenEXRCore may allocate while it reads the headers of the file being checked: no
-// value of a header needs more than the file holds (its own allocator refuses the rest, so a
-// string attribute claiming a gigabyte fails instead of being zero-filled).
-thread_local std::size_t t_allocation_limit = 0;
+// The most OpenEXRCore may allocate on this thread now (HeaderAllocationLimit): no value of a
+// header needs more than the file holds, so while a header is read its allocator refuses the
+// rest (a string attribute claiming a gigabyte fails instead of being zero-filled).
+thread_local std::size_t t_allocation_limit = SIZE_MAX;
 
 void* bounded_allocation(std::size_t bytes) {
   return bytes > t_allocation_limit ? nullptr : std::malloc(bytes);
@@ -148,12 +148,12 @@ std::string strict_refusal(const std::string& path, std::uintmax_t file_bytes,
   std::string error;
   exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
   init.error_handler_fn = keep_error;
-  init.alloc_fn = bounded_allocation;
-  init.free_fn = std::free;
   init.user_data = &error;
-  t_allocation_limit = static_cast<std::size_t>((1u << 20) + 2 * file_bytes);
+  const HeaderAllocationLimit limit(path);
   exr_context_t context = nullptr;
-  if (exr_start_read(&context, path.c_str(), &init) != EXR_ERR_SUCCESS) {
+  // OpenEXRCore goes on past some errors it reports (an attribute's size beyond the file) and
+  // returns success: a header with an error is damaged all the same.
+  if (exr_start_read(&context, path.c_str(), &init) != EXR_ERR_SUCCESS || !error.empty()) {
     exr_finish(&context);
     return "not a valid OpenEXR header (" + (error.empty() ? "unreadable" : printable(error, 200)) +
            ")";
@@ -169,6 +169,20 @@ std::string strict_refusal(const std::string& path, std::uintmax_t file_bytes,
 }
 
 }  // namespace
+
+HeaderAllocationLimit::HeaderAllocationLimit(const std::string& path)
+    : previous_(t_allocation_limit) {
+  static const bool installed = [] {
+    exr_set_default_memory_routines(bounded_allocation, std::free);
+    return true;
+  }();
+  (void)installed;
+  std::error_code error;
+  const auto file_bytes = std::filesystem::file_size(path, error);
+  if (!error) t_allocation_limit = static_cast<std::size_t>((1u << 20) + 2 * file_bytes);
+}
+
+HeaderAllocationLimit::~HeaderAllocationLimit() { t_allocation_limit = previous_; }
 
 std::string exr_header_refusal(const std::string& path, long long max_values) {
   std::error_code error;

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -192,12 +193,19 @@ std::unique_ptr<OIIO::ImageInput> open_known(const std::string& path, std::strin
   for (const char* format : kFormats) {
     auto in = OIIO::ImageInput::create(format);
     if (!in || !in->valid_file(path)) continue;
-    if (in->format_name() == std::string("openexr")) {
+    const bool exr = in->format_name() == std::string("openexr");
+    if (exr) {
       error = images::exr_header_refusal(path, kMaxValues);
       if (!error.empty()) return nullptr;
     }
     OIIO::ImageSpec spec;
-    if (in->open(path, spec)) return in;
+    bool opened = false;
+    {
+      std::optional<images::HeaderAllocationLimit> limit;
+      if (exr) limit.emplace(path);
+      opened = in->open(path, spec);
+    }
+    if (opened) return in;
     error = one_line(in->geterror());
     if (error.empty()) error = std::string("cannot open it as ") + in->format_name();
     return nullptr;
