@@ -87,6 +87,38 @@ TEST(Competition, TheSameBitsOnOneCoreAsOnTwo) {
   EXPECT_GT(with_markers, 100);  // many buds' sums span several chunks
 }
 
+// Markers mostly within the buds' reach are judged in marker order, markers mostly beyond it
+// (a brush's field) gathered and sorted by cell first: the same field, alone and among 20
+// times as many markers far away, must give every bud the same space to the bit.
+TEST(Competition, TheSpacesDoNotDependOnHowTheMarkersAreSearched) {
+  const Field f = random_field(5, 80, 30000);
+  const double radius = 1.5, angle = 1.6;
+  int in_reach = 0;  // by brute force: most of the field lies within some bud's radius
+  for (const Vec3& m : f.markers)
+    for (const Vec3& b : f.positions)
+      if (length(m - b) <= radius) {
+        ++in_reach;
+        break;
+      }
+  ASSERT_GT(in_reach * 2, static_cast<int>(f.markers.size()));
+  std::vector<Vec3> padded;
+  Random rng(11, 0);
+  for (const Vec3& m : f.markers) {
+    padded.push_back(m);
+    for (int k = 0; k < 20; ++k)  // interleaved, so the marker order differs too
+      padded.push_back({rng.uniform(100, 200), rng.uniform(-50, 50), rng.uniform(0, 50)});
+  }
+  const auto alone = allocate_markers(f.markers, f.positions, f.directions, radius, angle);
+  const auto among = allocate_markers(padded, f.positions, f.directions, radius, angle);
+  int total = 0;
+  for (std::size_t b = 0; b < f.positions.size(); ++b) {
+    EXPECT_EQ(alone[b].markers, among[b].markers) << b;
+    EXPECT_EQ(alone[b].direction, among[b].direction) << b;
+    total += alone[b].markers;
+  }
+  EXPECT_GT(total, 5000);
+}
+
 // One pass makes both rules: the markers within any bud's occupancy sphere are consumed (and
 // no others); the rest are shared exactly as the competition alone shares them.
 TEST(Competition, AClaimConsumesTheOccupiedMarkersAndSharesTheRest) {
