@@ -87,6 +87,19 @@ TEST(Competition, TheSameBitsOnOneCoreAsOnTwo) {
   EXPECT_GT(with_markers, 100);  // many buds' sums span several chunks
 }
 
+// Expects `a` and `b` to give every bud the same markers and direction, to the bit; returns
+// how many markers `a` gives out in all.
+int expect_same_spaces(const std::vector<BudSpace>& a, const std::vector<BudSpace>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  int total = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    EXPECT_EQ(a[i].markers, b[i].markers) << i;
+    EXPECT_EQ(a[i].direction, b[i].direction) << i;
+    total += a[i].markers;
+  }
+  return total;
+}
+
 // Markers mostly within the buds' reach are judged in marker order, markers mostly beyond it
 // (a brush's field) gathered and sorted by cell first: the same field, alone and among 20
 // times as many markers far away, must give every bud the same space to the bit.
@@ -110,13 +123,7 @@ TEST(Competition, TheSpacesDoNotDependOnHowTheMarkersAreSearched) {
   }
   const auto alone = allocate_markers(f.markers, f.positions, f.directions, radius, angle);
   const auto among = allocate_markers(padded, f.positions, f.directions, radius, angle);
-  int total = 0;
-  for (std::size_t b = 0; b < f.positions.size(); ++b) {
-    EXPECT_EQ(alone[b].markers, among[b].markers) << b;
-    EXPECT_EQ(alone[b].direction, among[b].direction) << b;
-    total += alone[b].markers;
-  }
-  EXPECT_GT(total, 5000);
+  EXPECT_GT(expect_same_spaces(alone, among), 5000);
 }
 
 // One pass makes both rules: the markers within any bud's occupancy sphere are consumed (and
@@ -141,13 +148,7 @@ TEST(Competition, AClaimConsumesTheOccupiedMarkersAndSharesTheRest) {
   EXPECT_GT(f.markers.size() - left.size(), 1000u);  // many consumed
   EXPECT_EQ(markers.points(), left);                 // those, and in their order
   const auto shared = allocate_markers(left, f.positions, f.directions, radius, angle);
-  int total = 0;
-  for (std::size_t b = 0; b < f.positions.size(); ++b) {
-    EXPECT_EQ(space[b].markers, shared[b].markers) << b;
-    EXPECT_EQ(space[b].direction, shared[b].direction) << b;
-    total += space[b].markers;
-  }
-  EXPECT_GT(total, 1000);
+  EXPECT_GT(expect_same_spaces(space, shared), 1000);
 }
 
 // Outside the selected branch a bud still consumes the markers around it but owns none: they
