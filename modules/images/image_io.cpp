@@ -193,18 +193,17 @@ std::unique_ptr<OIIO::ImageInput> open_known(const std::string& path, std::strin
   for (const char* format : kFormats) {
     auto in = OIIO::ImageInput::create(format);
     if (!in || !in->valid_file(path)) continue;
-    const bool exr = in->format_name() == std::string("openexr");
-    if (exr) {
+    // OpenEXR: its header checked, then opened with OpenEXRCore's allocations bounded by the
+    // file (the pixels are read unbounded).
+    std::optional<images::HeaderAllocationLimit> limit;
+    if (in->format_name() == std::string("openexr")) {
       error = images::exr_header_refusal(path, kMaxValues);
       if (!error.empty()) return nullptr;
+      limit.emplace(path);
     }
     OIIO::ImageSpec spec;
-    bool opened = false;
-    {
-      std::optional<images::HeaderAllocationLimit> limit;
-      if (exr) limit.emplace(path);
-      opened = in->open(path, spec);
-    }
+    const bool opened = in->open(path, spec);
+    limit.reset();
     if (opened) return in;
     error = one_line(in->geterror());
     if (error.empty()) error = std::string("cannot open it as ") + in->format_name();
@@ -214,35 +213,33 @@ std::unique_ptr<OIIO::ImageInput> open_known(const std::string& path, std::strin
   return nullptr;
 }
 
-// Opens the file and checks its header: pixels present, and no more values than landsim reads.
+// Why the header's size is more than landsim reads, or "": no pixels, more than kMaxValues
+// values, or more than kMaxSampleBytes of the file's own samples (counted in floating point: a
+// PPM of 2^31 - 1 squared pixels overflowed 64-bit integers).
+std::string beyond_limits(const OIIO::ImageSpec& spec) {
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    return "the header gives no pixels";
+  if (static_cast<double>(spec.width) * spec.height * spec.nchannels > kMaxValues)
+    return declared(spec) + ", more than the " + std::to_string(kMaxValues) +
+           " values landsim reads";
+  if (static_cast<double>(spec.image_bytes(true)) > kMaxSampleBytes)
+    return declared(spec) + " of " + spec.format.c_str() + " (" +
+           std::to_string(spec.image_bytes(true)) + " bytes), more than the " +
+           std::to_string(static_cast<long long>(kMaxSampleBytes)) + " bytes landsim reads";
+  return "";
+}
+
+// Opens the file and checks its header: pixels present, and no more than landsim reads or the
+// file can hold.
 std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, std::string& error) {
   auto in = open_known(path, error);
   if (!in) return nullptr;
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
-    error = "the header gives no pixels";
-    return nullptr;
-  }
-  if (static_cast<double>(spec.width) * spec.height * spec.nchannels > kMaxValues) {
-    error =
-        declared(spec) + ", more than the " + std::to_string(kMaxValues) + " values landsim reads";
-    return nullptr;
-  }
-  if (static_cast<double>(spec.image_bytes(true)) > kMaxSampleBytes) {
-    error = declared(spec) + " of " + spec.format.c_str() + " (" +
-            std::to_string(spec.image_bytes(true)) + " bytes), more than the " +
-            std::to_string(static_cast<long long>(kMaxSampleBytes)) + " bytes landsim reads";
-    return nullptr;
-  }
-  if (std::string refusal = tiles_beyond_image(spec); !refusal.empty()) {
-    error = std::move(refusal);
-    return nullptr;
-  }
-  if (std::string refusal = beyond_file(*in, path); !refusal.empty()) {
-    error = std::move(refusal);
-    return nullptr;
-  }
-  return in;
+  std::string refusal = beyond_limits(in->spec());
+  if (refusal.empty()) refusal = tiles_beyond_image(in->spec());
+  if (refusal.empty()) refusal = beyond_file(*in, path);
+  if (refusal.empty()) return in;
+  error = std::move(refusal);
+  return nullptr;
 }
 
 bool probe_file(const std::string& path, int& width, int& height, int& channels,
