@@ -141,15 +141,38 @@ struct Sky {
   Vec3f horizon_radiance{15000.0f, 18333.0f, 23333.0f};
 };
 
-// Exponential height fog: extinction sigma(z) = 3.912 / visibility x exp(-(z - base) /
-// scale_height).
+// The haze: a participating medium (docs/ATMOSPHERE.md "The medium"). Aerosol of exponential
+// height profile, extinction at 550 nm sigma(z) = 3.912 / visibility x exp(-(z - base) /
+// scale_height) (less the air's own share at the base), scattering a share `albedo` of it
+// with its phase function; and, unless `molecular` is off, the air's Rayleigh scattering.
+// With `layer`, instead a homogeneous plane-parallel layer (the radiative-transfer checks).
+enum class AerosolPhase { henyey_greenstein, isotropic, rayleigh, table, legendre };
+
+struct HazeLayer {
+  double optical_depth = 1.0;  // vertical, every wavelength alike
+  double top = 1000.0;         // metres: the layer runs from `Haze::base_height` this far up
+};
+
 struct Haze {
   bool enabled = false;
-  double visibility = 20000.0;        // meteorological range at the base height, metres
-  double scale_height = 1200.0;       // metres
-  double base_height = 0.0;           // scene frame z where the visibility holds
-  Vec3f albedo{0.95f, 0.95f, 0.95f};  // single-scattering albedo (the haze's colour)
-  double asymmetry = 0.7;             // Henyey-Greenstein g
+  double visibility = 20000.0;   // meteorological range at the base height, metres
+  double scale_height = 1200.0;  // metres
+  double base_height = 0.0;      // scene frame z where the visibility holds
+  // Height of the base above sea level (the air's density there), metres.
+  double base_altitude = 0.0;
+  // Single-scattering albedo (a colour, upsampled to a spectrum): OPAC's continental
+  // average aerosol (Hess, Koepke and Schult 1998) at 550 nm.
+  Vec3f albedo{0.925f, 0.925f, 0.925f};
+  AerosolPhase phase = AerosolPhase::henyey_greenstein;
+  double asymmetry = 0.703;  // Henyey-Greenstein g (OPAC continental average)
+  // AerosolPhase::table: values at scattering angles (degrees, 0 to 180, increasing).
+  std::vector<double> phase_angles, phase_values;
+  // AerosolPhase::legendre: moments chi_l (chi_0 = 1), DISORT's convention.
+  std::vector<double> phase_moments;
+  // Aerosol extinction falls with wavelength as (lambda / 550 nm)^-angstrom.
+  double angstrom = 1.42;  // OPAC continental average
+  bool molecular = true;   // the air's Rayleigh scattering
+  std::optional<HazeLayer> layer;
 };
 
 // A camera (docs/CAMERAS.md). Its optical axis runs from `position` through `target`; the
@@ -196,7 +219,10 @@ struct RenderSettings {
   // "Sampler"). Sobol since session 19: it reached the million-tree view's 64-sample error
   // in less time than independent samples.
   SampleSequence sampler = SampleSequence::sobol;
-  int max_bounces = 4;
+  // The most scattering events (surface or haze) a path takes after the camera ray's first
+  // vertex; -1: no limit, paths end by Russian roulette alone (unbiased, the default). A
+  // limit is a bias (0: direct light only), kept for comparisons.
+  int max_bounces = -1;
   // The preview PNG's exposure value at ISO 100; empty: automatic (renderer/output/exposure.h).
   // The EXR stays in cd/m2 either way.
   std::optional<double> exposure_ev100;

@@ -152,15 +152,79 @@ renderer::Sky read_sky(const toml::table& t, const std::string& file) {
   return s;
 }
 
+// An array of numbers of any length (at least `least`), each in `range`; empty when absent.
+std::vector<double> number_list(TableReader& r, std::string_view key, std::size_t least,
+                                Range range) {
+  const toml::node* n = r.value(key, "an array of numbers");
+  if (n == nullptr) return {};
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->size() < least)
+    r.fail_at(*n, key, "expected an array of at least " + std::to_string(least) + " numbers");
+  std::vector<double> out;
+  for (const toml::node& e : *a) {
+    const std::optional<double> v = e.value<double>();
+    if (!v || !range.contains(*v)) r.fail_at(e, key, "expected numbers " + range.describe());
+    out.push_back(*v);
+  }
+  return out;
+}
+
+// [haze]'s phase function: Henyey-Greenstein by default, or isotropic, Rayleigh, a table by
+// scattering angle, or Legendre moments.
+void read_phase(TableReader& r, renderer::Haze& h) {
+  const std::string phase =
+      r.choice("phase", {"henyey-greenstein", "isotropic", "rayleigh", "table", "legendre"},
+               "henyey-greenstein");
+  h.asymmetry = r.number("asymmetry", Range{-0.95, 0.95}, h.asymmetry);
+  h.phase_angles = number_list(r, "phase_angles", 2, Range{0.0, 180.0});
+  h.phase_values = number_list(r, "phase_values", 2, Range{0.0, 1e12});
+  h.phase_moments = number_list(r, "phase_moments", 1, Range{-1.0, 1.0});
+  if (phase == "table") {
+    h.phase = renderer::AerosolPhase::table;
+    if (h.phase_angles.empty() || h.phase_angles.size() != h.phase_values.size())
+      r.fail("phase_angles", "phase = \"table\" needs phase_angles and as many phase_values");
+    for (std::size_t i = 1; i < h.phase_angles.size(); ++i)
+      if (!(h.phase_angles[i] > h.phase_angles[i - 1]))
+        r.fail("phase_angles", "expected increasing angles");
+    if (h.phase_angles.front() != 0.0 || h.phase_angles.back() != 180.0)
+      r.fail("phase_angles", "expected angles from 0 to 180 degrees");
+  } else if (phase == "legendre") {
+    h.phase = renderer::AerosolPhase::legendre;
+    if (h.phase_moments.empty() || h.phase_moments.front() != 1.0)
+      r.fail("phase_moments", "phase = \"legendre\" needs phase_moments starting with 1");
+  } else {
+    h.phase = phase == "isotropic"  ? renderer::AerosolPhase::isotropic
+              : phase == "rayleigh" ? renderer::AerosolPhase::rayleigh
+                                    : renderer::AerosolPhase::henyey_greenstein;
+  }
+}
+
 renderer::Haze read_haze(const toml::table& root, const std::string& file) {
   renderer::Haze h;
   if (!root.contains("haze")) return h;
   TableReader r(sub_table(root, "haze", file, true), "haze", file);
   h.enabled = true;
-  h.visibility = r.number("visibility", Range{10.0, 1e7});
-  h.scale_height = r.number("scale_height", Range{10.0, 1e5}, h.scale_height);
+  if (r.has("layer")) {
+    // The plane-parallel layer of the radiative-transfer checks (docs/ATMOSPHERE.md).
+    TableReader layer = r.table("layer");
+    renderer::HazeLayer l;
+    l.optical_depth = layer.number("optical_depth", Range{1e-6, 1e3});
+    l.top = layer.number("top", Range{1e-3, 1e6}, l.top);
+    layer.finish();
+    h.layer = l;
+    h.molecular = false;
+  } else {
+    h.visibility = r.number("visibility", Range{10.0, 1e7});
+    h.scale_height = r.number("scale_height", Range{10.0, 1e5}, h.scale_height);
+    h.angstrom = r.number("angstrom", Range{-1.0, 4.0}, h.angstrom);
+    h.molecular = r.boolean("molecular", h.molecular);
+  }
+  if (r.has("colour") && r.has("single_scattering_albedo"))
+    r.fail("single_scattering_albedo", "give either colour or single_scattering_albedo");
   h.albedo = to_vec3f(r.vec3("colour", kUnit, Vec3(h.albedo)));
-  h.asymmetry = r.number("asymmetry", Range{-0.95, 0.95}, h.asymmetry);
+  if (const auto a = r.optional_number("single_scattering_albedo", Range{0.0, 1.0}))
+    h.albedo = Vec3f{static_cast<float>(*a), static_cast<float>(*a), static_cast<float>(*a)};
+  read_phase(r, h);
   r.finish();
   return h;
 }
@@ -251,7 +315,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   if (r.has("sampling_seed"))
     s.sampling_seed = static_cast<std::uint64_t>(r.integer("sampling_seed", 0, INT64_MAX));
   s.threads = static_cast<int>(r.integer("threads", 0, 1024, s.threads));
-  s.max_bounces = static_cast<int>(r.integer("max_bounces", 0, 64, s.max_bounces));
+  s.max_bounces = static_cast<int>(r.integer("max_bounces", -1, 1000000, s.max_bounces));
   s.exposure_ev100 = read_exposure(r);
   s.checkpoint_seconds = r.number("checkpoint_seconds", Range{0.0, 1e6}, s.checkpoint_seconds);
   s.season = *trees::season_from_name(

@@ -296,6 +296,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.haze = scenario.haze;
   scene.haze.base_height =
       grid.min_height() - scene.origin.z;  // the visibility holds at the lowest ground
+  scene.haze.base_altitude = grid.min_height();  // the air's density there
   detail::warn_cameras_below_ground(scenario, foundation.views, grid);
   scene.views = foundation.views_around(scene.origin);
   scene.settings.spp = scenario.render.spp;

@@ -1,5 +1,6 @@
 #include "renderer/transport/path_tracer.h"
 
+#include "renderer/atmosphere/haze.h"
 #include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/glossy.h"
@@ -19,8 +20,11 @@ constexpr float kPi = std::numbers::pi_v<float>;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Paths are rouletted (by throughput) from their second vertex on: the third and later
 // vertices add 0.4% of the forest's light but cost a quarter of its rays (docs/PERFORMANCE.md
-// "Forest scale").
+// "Forest scale"). Unbiased: a surviving path is divided by its survival probability.
 constexpr int kRouletteAfter = 1;
+// The least survival probability: a path whose throughput has fallen far is ended 19 times in
+// 20, the survivor weighed up twentyfold (bounded weights, bounded noise).
+constexpr float kLeastSurvival = 0.05f;
 // Shadow rays that would add less than this fraction of the sky's mean radiance (largest
 // component) to the pixel are rouletted (renderer/transport/shadow_roulette.h); chosen by
 // measurement: 0.2 adds 3% to the noise of the forest benchmark, 0.5 adds 20%.
@@ -57,18 +61,18 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       embree_(embree),
       sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
       plain_(plain_surface(scene.ground)),
-      haze_(scene.haze),
+      medium_(scene.haze),
       sun_direction_(Vec3f(normalize(scene.sun.direction))),
       // The roulette compares spectral contributions: the sky's mean as a spectrum.
       roulette_threshold_(kShadowRouletteFraction *
                           max_component(emission_spectrum(sky_.mean_radiance()))),
-      horizon_(sky_),
-      sun_transmittance_at_base_(static_cast<float>(haze_.transmittance(
-          Vec3{0.0, 0.0, scene.haze.base_height}, Vec3(sun_direction_), kInfiniteDistance))),
       sun_spectrum_(sky_.sun_spectral_irradiance()),
-      haze_albedo_(reflectance_spectrum(haze_.albedo())),
-      inverse_haze_albedo_(safe_divide(Spectrum::constant(1.0f), haze_albedo_)),
-      seen_bins_(seen_bins(scene)) {}
+      seen_bins_(seen_bins(scene)),
+      bounce_limit_(scene.settings.max_bounces < 0 ? kSafetyBounces : scene.settings.max_bounces) {
+  for (int k = 0; k < kSpectrumBins; ++k)
+    if (seen_bins_[k] > 0.0f)
+      seen_.index[static_cast<std::size_t>(seen_.count++)] = static_cast<std::uint8_t>(k);
+}
 
 std::optional<Hit> PathTracer::intersect(const Ray& ray, std::uint32_t mask) const {
   if (auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask)) return hit;
@@ -84,6 +88,11 @@ std::optional<Hit> PathTracer::intersect(const Ray& ray, std::uint32_t mask) con
 
 bool PathTracer::occluded(const Ray& ray, std::uint32_t mask) const {
   return embree_.occluded(ray, 0.0f, kInfinity, mask) || plain_hit(plain_, ray).has_value();
+}
+
+Spectrum PathTracer::to_sky(const Vec3f& origin, const Vec3f& l) const {
+  if (!medium_.enabled()) return Spectrum::constant(1.0f);
+  return medium_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance, false);
 }
 
 Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
@@ -102,8 +111,7 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
   ++rays;
   const Ray ray{offset_point(v, front ? v.ng : -v.ng), l};
   if (occluded(ray, v.mask)) return {};
-  return light * (weight * static_cast<float>(haze_.transmittance(
-                               Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance)));
+  return light * to_sky(ray.origin, l) * weight;
 }
 
 Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
@@ -120,43 +128,76 @@ Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
   ++rays;
   const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
   if (occluded({origin, l}, v.mask)) return {};
-  const auto t_haze =
-      static_cast<float>(haze_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance));
-  return light * (weight * t_haze);
+  return light * to_sky(origin, l) * weight;
 }
 
-Spectrum PathTracer::haze_in_scatter(const Ray& ray, double t, double depth, float u,
-                                     const Spectrum& throughput, const ShadowRoulette& roulette,
-                                     std::uint32_t mask, std::uint32_t& rays) const {
-  const Vec3 o(ray.origin), d(ray.direction);
-  const double scattered = -std::expm1(-depth);  // 1 - T over the segment
-  if (scattered <= 0.0) return {};
-  // Sunlight scattered once, at a distance drawn in proportion to sigma x transmittance.
-  const double s = haze_.sample_distance(o, d, t, u, depth);
-  const Vec3f p = ray.origin + ray.direction * static_cast<float>(s);
-  const auto phase = static_cast<float>(haze_.phase(dot(ray.direction, sun_direction_)));
-  const Spectrum& a = haze_albedo_;
-  // Unshadowed, the sun scattered here adds a x sun x (1 - T): the roulette's contribution.
-  Spectrum sun = sun_spectrum_ * (phase * static_cast<float>(haze_.transmittance(
-                                              Vec3(p), Vec3(sun_direction_), kInfiniteDistance)));
-  const float weight = shadow_roulette_weight(
-      importance(throughput * a * sun) * static_cast<float>(scattered), roulette);
-  if (weight > 0.0f) {
-    ++rays;
-    sun = occluded({p, sun_direction_}, mask) ? Spectrum{} : sun * weight;
-  } else {
-    sun = {};
+Spectrum PathTracer::phase(const MediumPoint& p, float c) const {
+  Spectrum f;
+  for (int i = 0; i < kMediumComponents; ++i)
+    if (max_component(p.weight[static_cast<std::size_t>(i)]) > 0.0f)
+      f += p.weight[static_cast<std::size_t>(i)] * medium_.component(i).phase.eval(c);
+  return f;
+}
+
+namespace {
+
+// How often a haze point's new direction follows each component's phase function: in
+// proportion to its weight in the bins an output sees.
+std::array<float, kMediumComponents> component_shares(const MediumPoint& p, const Spectrum& seen) {
+  std::array<float, kMediumComponents> share{};
+  float total = 0.0f;
+  for (std::size_t c = 0; c < share.size(); ++c) {
+    const Spectrum w = p.weight[c] * seen;
+    for (float x : w.v) share[c] += x;
+    total += share[c];
   }
-  // Skylight (multiple scattering, which single scattering alone misses) as an ambient
-  // source, sized so that an unshadowed, endless horizontal view sees exactly the sky's
-  // horizon radiance in that direction: distant ridges fade toward the horizon colour.
-  const Spectrum horizon = horizon_.spectral(ray.direction);
-  const float sun_at_base = phase * sun_transmittance_at_base_;
-  Spectrum ambient;
-  for (int k = 0; k < kSpectrumBins; ++k)
-    ambient[k] =
-        a[k] > 0.0f ? std::max(0.0f, horizon[k] / a[k] - sun_spectrum_[k] * sun_at_base) : 0.0f;
-  return a * (ambient + sun) * static_cast<float>(scattered);
+  for (float& s : share) s = total > 0.0f ? s / total : 0.0f;
+  return share;
+}
+
+}  // namespace
+
+float PathTracer::phase_pdf(const MediumPoint& p, float c) const {
+  const auto share = component_shares(p, seen_bins_);
+  float pdf = 0.0f;
+  for (int i = 0; i < kMediumComponents; ++i)
+    if (share[static_cast<std::size_t>(i)] > 0.0f)
+      pdf += share[static_cast<std::size_t>(i)] * medium_.component(i).phase.eval(c);
+  return pdf;
+}
+
+Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
+                                const CounterRng& rng, std::uint32_t dim, bool trace_sun,
+                                std::uint32_t mask, std::uint32_t& rays) const {
+  Spectrum out;
+  const std::array<float, 2> sun = rng.uniform2(dim + kHazeSun0);
+  const std::array<float, 2> sky = rng.uniform2(dim + kHazeSky0);
+  const std::array<float, 2> shadow = rng.uniform2(dim + kHazeSunRoulette);
+  // The sun: light travelling along -l scattered into -d, the angle between them acos(d.l).
+  const Vec3f l =
+      sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), sun[0], sun[1]);
+  const Spectrum sunlit = phase(p, dot(d, l)) * sun_spectrum_;
+  const float w_sun =
+      trace_sun ? 1.0f
+                : shadow_roulette_weight(importance(throughput * sunlit), roulette(shadow[0]));
+  if (w_sun > 0.0f && max_component(sunlit) > 0.0f) {
+    ++rays;
+    if (!occluded({p.position, l}, mask)) out += sunlit * to_sky(p.position, l) * w_sun;
+  }
+  // The sky, combined with the phase function's own sampling.
+  float pdf = 0.0f;
+  const Vec3f k = sky_.sample(sky[0], sky[1], pdf);
+  if (pdf > 0.0f) {
+    const float c = dot(d, k);
+    const Spectrum light =
+        phase(p, c) * sky_.spectral_radiance(k) * (power_heuristic(pdf, phase_pdf(p, c)) / pdf);
+    const float w_sky = shadow_roulette_weight(importance(throughput * light), roulette(shadow[1]));
+    if (w_sky > 0.0f && max_component(light) > 0.0f) {
+      ++rays;
+      if (!occluded({p.position, k}, mask)) out += light * to_sky(p.position, k) * w_sky;
+    }
+  }
+  return out;
 }
 
 void PathTracer::finish(PathSample& out, const Spectrum& radiance) const {
@@ -173,57 +214,86 @@ void PathTracer::finish(PathSample& out, const Spectrum& radiance) const {
 PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
                              std::uint32_t mask) const {
   PathSample out;
-  out.first.depth = kInfinity;
-  Ray ray = camera_ray;
-  Spectrum throughput = Spectrum::constant(1.0f);
-  Spectrum radiance;
-  float last_pdf = 0.0f;      // BSDF pdf of the ray being traced (for MIS with sky NEE)
-  bool last_specular = true;  // camera rays and mirror bounces see the sky unweighted
+  finish(out, radiance(camera_ray, rng, mask, true, out));
+  return out;
+}
 
-  for (int bounce = 0; bounce <= scene_.settings.max_bounces; ++bounce) {
-    const std::uint32_t dim = kFirstBounceDim + kDimsPerBounce * static_cast<std::uint32_t>(bounce);
+Spectrum PathTracer::radiance(const Ray& camera_ray, const CounterRng& rng, std::uint32_t mask,
+                              bool sun_disc, PathSample& out) const {
+  out.first.depth = kInfinity;
+  Spectrum radiance;
+  PathState camera{camera_ray, Spectrum::constant(1.0f), 0.0f, true, 0, 0};
+  std::optional<PathState> branch;
+  follow(camera, rng, mask, sun_disc, out, radiance, &branch);
+  if (branch) follow(*branch, rng, mask, sun_disc, out, radiance, nullptr);
+  return radiance;
+}
+
+void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
+                        PathSample& out, Spectrum& radiance,
+                        std::optional<PathState>* branch) const {
+  Ray& ray = path.ray;
+  Spectrum& throughput = path.throughput;
+  float& last_pdf = path.last_pdf;           // pdf of the direction being traced (MIS)
+  bool& last_specular = path.last_specular;  // camera rays and mirrors see the sky unweighted
+
+  for (int& bounce = path.bounce; bounce <= bounce_limit_; ++bounce) {
+    const std::uint32_t dim = path.dimension_offset + kFirstBounceDim +
+                              kDimsPerBounce * static_cast<std::uint32_t>(bounce);
     ++out.rays;
     const auto hit = intersect(ray, mask);
-    // Haze lies over every segment. Camera and mirror rays that leave upward see the haze
-    // veil over the sky too (dense fog whitens the whole sky; any haze the sky's last degrees,
-    // so the hazed ground and the sky meet at the horizon without a seam). Diffuse bounces
-    // that leave upward are only attenuated, as next-event estimation of the sky is
-    // (sky_light), so the two estimators of the same light agree under MIS.
-    const bool leaves_upward = !hit && ray.direction.z > 0.0f;
-    if (haze_.enabled() && leaves_upward && !last_specular) {
-      throughput = throughput * static_cast<float>(haze_.transmittance(
-                                    Vec3(ray.origin), Vec3(ray.direction), kInfiniteDistance));
-    } else if (haze_.enabled()) {
-      const double t = hit ? hit->t : kInfiniteDistance;
-      // The segment's optical depth, once: its transmittance, its scattered share, and where
-      // along it the sun is sampled all follow from it.
-      const double depth = haze_.optical_depth(Vec3(ray.origin), Vec3(ray.direction), t);
-      const auto transmitted = static_cast<float>(std::exp(-depth));
-      // The camera's own segment carries every pixel's haze veil: its sun ray is always
-      // traced (rouletted, the veil's noise grew by 4%); later segments are short, their
-      // rays rouletted.
-      // The scatter point and the roulette are one pair (one Sobol draw) past the first.
-      const std::array<float, 2> haze = bounce == 0
-                                            ? std::array<float, 2>{rng.uniform(dim + kHaze), 0.0f}
-                                            : rng.uniform2(dim + kHaze);
-      const ShadowRoulette r = bounce == 0 ? ShadowRoulette{} : roulette(haze[1]);
-      radiance +=
-          throughput * haze_in_scatter(ray, t, depth, haze[0], throughput, r, mask, out.rays);
-      throughput = throughput * transmitted;
+    if (medium_.enabled()) {
+      const MediumSegment segment(medium_, ray, hit ? hit->t : kInfiniteDistance, hit.has_value(),
+                                  seen_);
+      if (segment.scatters()) {
+        const std::array<float, 2> u = rng.uniform2(dim + kHaze);
+        const MediumPoint p = segment.sample(u[0], u[1]);
+        // The camera's own segment carries every pixel's haze veil: its sun ray is always
+        // traced; later ones are rouletted by what they would add.
+        radiance += throughput *
+                    haze_light(p, ray.direction, throughput, rng, dim, bounce == 0, mask, out.rays);
+        const float q = segment.continue_probability();
+        const bool scatter = rng.uniform(dim + kHazeContinue) < q;
+        // The camera's segment splits: the path goes on through to the surface whatever
+        // happens, and with probability q a second path leaves from the haze point (one
+        // or the other would make every hazy pixel flicker between the ground's light and
+        // the haze's). Later segments choose one.
+        const bool split = branch != nullptr && bounce == 0;
+        if (scatter) {
+          PathState next = path;
+          next.dimension_offset = split ? kBranchDimensions : path.dimension_offset;
+          if (scatter_from(p, q, rng, dim, next)) {
+            ++next.bounce;
+            if (split) {
+              *branch = next;
+            } else {
+              path = next;
+              --bounce;  // the loop's increment: `next` already counts this vertex
+              continue;
+            }
+          } else if (!split) {
+            break;
+          }
+        }
+        throughput = throughput * segment.transmittance() / (split ? 1.0f : 1.0f - q);
+      } else {
+        throughput = throughput * segment.transmittance();
+      }
     }
     if (!hit) {
       const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
       radiance += throughput * sky_.spectral_radiance(ray.direction) * w;
       // The sun's disc is seen only along specular paths: every diffuse vertex already took
       // it by next-event estimation.
-      if (last_specular) radiance += throughput * sky_.sun_spectral_radiance(ray.direction);
+      if (last_specular && sun_disc)
+        radiance += throughput * sky_.sun_spectral_radiance(ray.direction);
       break;
     }
     const ShadingPoint v = shading_point(ray, *hit, mask);
     const SurfaceMaterial m = surface_material(scene_, *hit, v);
     const SpectralMaterial sm = spectral_material(m);
     const Bsdf bsdf(m, v.frame());
-    if (bounce == 0) out.first = first_hit(scene_, *hit, v, m);
+    if (bounce == 0 && path.dimension_offset == 0) out.first = first_hit(scene_, *hit, v, m);
     const float fresnel = bsdf.fresnel(ray.direction);
     // The roulette sees what reaches the pixel: the throughput and the water's share.
     const Spectrum seen = throughput * (1.0f - fresnel);
@@ -245,14 +315,33 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
     if (last_specular) continue;
     throughput = throughput * next.factor / next.divisor;
     last_pdf = next.pdf;
-    if (bounce >= kRouletteAfter) {
-      const float survive = std::clamp(importance(throughput), 0.05f, 1.0f);
-      if (rng.uniform(dim + kRoulette) >= survive) break;
-      throughput = throughput / survive;
-    }
+    if (!survives(throughput, bounce, rng.uniform(dim + kRoulette))) break;
   }
-  finish(out, radiance);
-  return out;
+}
+
+bool PathTracer::survives(Spectrum& throughput, int bounce, float u) const {
+  if (bounce < kRouletteAfter) return true;
+  const float survive = std::clamp(importance(throughput), kLeastSurvival, 1.0f);
+  if (u >= survive) return false;
+  throughput = throughput / survive;
+  return true;
+}
+
+bool PathTracer::scatter_from(const MediumPoint& p, float q, const CounterRng& rng,
+                              std::uint32_t dim, PathState& path) const {
+  // A direction from the haze point's phase functions, the component by its share.
+  const auto share = component_shares(p, seen_bins_);
+  const int c = rng.uniform(dim + kFresnel) < share[0] ? 0 : 1;
+  const std::array<float, 2> lobe = rng.uniform2(dim + kChoice);
+  const PhaseSample next = medium_.component(c).phase.sample(path.ray.direction, lobe[0], lobe[1]);
+  const float cos_theta = dot(path.ray.direction, next.direction);
+  const float pdf = phase_pdf(p, cos_theta);
+  if (!(pdf > 0.0f)) return false;
+  path.throughput = path.throughput * phase(p, cos_theta) / (pdf * q);
+  path.ray = {p.position, next.direction};
+  path.last_pdf = pdf;
+  path.last_specular = false;
+  return survives(path.throughput, path.bounce, rng.uniform(dim + kRoulette));
 }
 
 }  // namespace landsim::renderer

@@ -1,25 +1,32 @@
 #pragma once
 // Unidirectional spectral path tracer, the physical integrator: every path carries the 32
 // wavelength bins of renderer/spectra/spectrum.h, its RGB comes from them through the CIE functions
-// (docs/SPECTRAL.md); Lambertian and two-sided (leaf,
-// grass) surfaces, a Fresnel water mirror; next-event estimation to the sun disc and to the
-// sky (importance-sampled, combined with the BSDF's own sampling by multiple importance
-// sampling); exponential haze with analytic transmittance and single scattering of sunlight
-// along every ray segment; Russian roulette of paths after their second vertex and of
-// shadow rays by their contribution (renderer/transport/shadow_roulette.h).
+// (docs/SPECTRAL.md); Lambertian and two-sided (leaf, grass) surfaces, a Fresnel water mirror;
+// the haze as a participating medium (renderer/atmosphere/medium.h: scattering points on every
+// segment it touches, renderer/transport/medium_segment.h); next-event estimation of the sun
+// disc and the sky from surfaces and haze points alike (the sky importance-sampled and combined
+// with the BSDF's or phase function's own sampling by multiple importance sampling). Paths end
+// by Russian roulette on their spectral throughput alone (docs/ATMOSPHERE.md "Paths"); shadow
+// rays are rouletted by their contribution (renderer/transport/shadow_roulette.h).
 #include <cstdint>
+#include <optional>
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
-#include "renderer/atmosphere/haze.h"
-#include "renderer/atmosphere/horizon_radiance.h"
+#include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/camera.h"
 #include "renderer/transport/integrator.h"
+#include "renderer/transport/medium_segment.h"
 #include "renderer/transport/plain.h"
 #include "renderer/transport/surface.h"
 
 namespace landsim::renderer {
+
+// A path's longest run of scattering events when the scene sets no limit: a guard against
+// a path that never ends, not a bias (docs/ATMOSPHERE.md "Paths": no measured band moves by
+// 0.1% between it and a quarter of it).
+inline constexpr int kSafetyBounces = 100000;
 
 class PathTracer : public Integrator {
  public:
@@ -27,12 +34,38 @@ class PathTracer : public Integrator {
 
   PathSample trace(const Ray& camera_ray, const CounterRng& rng,
                    std::uint32_t mask = kAllBuckets) const override;
+  // The spectral radiance arriving along -ray.direction at ray.origin. `sun_disc`: whether a
+  // ray that meets the sun's disc sees it (false: diffuse light alone, as irradiance
+  // meters split it).
+  Spectrum radiance(const Ray& ray, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
+                    PathSample& out) const;
 
   const SkyModel& sky() const { return sky_; }
-  const HazeModel& haze() const { return haze_; }
+  const Medium& medium() const { return medium_; }
 
  private:
-  // Light at a vertex, as the path's `throughput` so far will see it (the throughput
+  // A path between vertices: where it goes, what it carries, and the dimensions of its
+  // random numbers (a branch takes its own, far from the camera path's).
+  struct PathState {
+    Ray ray;
+    Spectrum throughput;
+    float last_pdf = 0.0f;
+    bool last_specular = true;
+    int bounce = 0;
+    std::uint32_t dimension_offset = 0;
+  };
+  static constexpr std::uint32_t kBranchDimensions = 1u << 30;
+  // Follows `path` to its end, adding what it sees to `radiance`; its camera segment may
+  // leave a branch from the haze (`branch` null: none).
+  void follow(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
+              PathSample& out, Spectrum& radiance, std::optional<PathState>* branch) const;
+  // Turns `path` at haze point `p` (reached with probability q); false when it ends there.
+  bool scatter_from(const MediumPoint& p, float q, const CounterRng& rng, std::uint32_t dim,
+                    PathState& path) const;
+  // Russian roulette on the spectral throughput after the first bounces; the survivor is
+  // divided by its survival probability.
+  bool survives(Spectrum& throughput, int bounce, float u) const;
+  // Light at a surface vertex, as the path's `throughput` so far will see it (the throughput
   // decides the shadow ray's roulette; it is not applied to the result).
   Spectrum sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
                      float u2, const Spectrum& throughput, float u_roulette,
@@ -40,14 +73,19 @@ class PathTracer : public Integrator {
   Spectrum sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
                      float u2, const Spectrum& throughput, float u_roulette,
                      std::uint32_t& rays) const;
-  // Sunlight scattered toward the viewer by haze along a segment; `t` may be infinite.
-  // `depth`: the segment's optical depth.
-  Spectrum haze_in_scatter(const Ray& ray, double t, double depth, float u,
-                           const Spectrum& throughput, const ShadowRoulette& roulette,
-                           std::uint32_t mask, std::uint32_t& rays) const;
+  // Light scattered at haze point `p` along the path's direction `d` (the sun and sky by
+  // next-event estimation); `trace_sun`: the sun's shadow ray is not rouletted.
+  Spectrum haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
+                      const CounterRng& rng, std::uint32_t dim, bool trace_sun, std::uint32_t mask,
+                      std::uint32_t& rays) const;
+  // The haze's phase functions at p, weighted: per bin, and the pdf of sampling them.
+  Spectrum phase(const MediumPoint& p, float cos_theta) const;
+  float phase_pdf(const MediumPoint& p, float cos_theta) const;
   // The scene's geometry and, past it, the plain beyond the grid (renderer/transport/plain.h).
   std::optional<Hit> intersect(const Ray& ray, std::uint32_t mask) const;
   bool occluded(const Ray& ray, std::uint32_t mask) const;
+  // Transmittance from `origin` along `l` into the sky.
+  Spectrum to_sky(const Vec3f& origin, const Vec3f& l) const;
   ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
   // What the roulettes weigh a spectrum by: its largest bin among those an output sees (the
   // near infrared keeps a canopy's paths alive; without a band there it is not worth it).
@@ -59,15 +97,13 @@ class PathTracer : public Integrator {
   const EmbreeScene& embree_;
   SkyModel sky_;
   PlainSurface plain_;
-  HazeModel haze_;
+  Medium medium_;
   Vec3f sun_direction_;
   float roulette_threshold_;  // shadow rays adding less than this to a pixel are rouletted
-  HorizonRadiance horizon_;   // the haze's ambient term, by azimuth
-  float sun_transmittance_at_base_;
-  Spectrum sun_spectrum_;  // irradiance on a surface facing the sun
-  Spectrum haze_albedo_;
-  Spectrum inverse_haze_albedo_;  // 0 where the albedo is
-  Spectrum seen_bins_;            // 1 in bins an output (RGB, a band) sees, 0 elsewhere
+  Spectrum sun_spectrum_;     // irradiance on a surface facing the sun
+  Spectrum seen_bins_;        // 1 in bins an output (RGB, a band) sees, 0 elsewhere
+  BinSet seen_;               // the same as indices
+  int bounce_limit_;
 };
 
 }  // namespace landsim::renderer

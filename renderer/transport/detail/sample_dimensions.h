@@ -10,26 +10,39 @@ namespace landsim::renderer::detail {
 // above every bounce's.
 inline constexpr std::uint32_t kLens0 = 0xFFFF0000u, kLens1 = kLens0 + 1;
 inline constexpr std::uint32_t kFirstBounceDim = 2;
-inline constexpr std::uint32_t kDimsPerBounce = 12;
+inline constexpr std::uint32_t kDimsPerBounce = 20;
+// A bounce is one ray segment and the vertex it ends in: a surface, or a scattering point of
+// the haze drawn on the segment (renderer/transport/medium_segment.h). The haze's light at
+// that point has its own dimensions, since a surface vertex may follow on the same segment.
 enum Dim : std::uint32_t {
   kSun0 = 0,
   kSun1,
   kSky0,
   kSky1,
-  kChoice,
+  kChoice,  // a surface's lobe, or a haze point's new direction (with kDir)
   kDir,
   kSunRoulette,  // shadow-ray roulette (renderer/transport/shadow_roulette.h)
   kSkyRoulette,
-  kHaze,
-  kHazeRoulette,
+  kHaze,  // which wavelength bin draws the scattering point
+  kHazeDistance,
+  kHazeSun0,
+  kHazeSun1,
+  kHazeSky0,
+  kHazeSky1,
+  kHazeSunRoulette,
+  kHazeSkyRoulette,
+  kHazeContinue,  // whether the path goes on from the haze point or through to the surface
   kRoulette,
-  kFresnel
+  kFresnel,  // a surface's mirror choice, or which haze component scatters
+  kUnused
 };
 
 // Pairs drawn together (CounterRng::uniform2: one Sobol pair) start at an even dimension.
 static_assert(kFirstBounceDim % 2 == 0 && kDimsPerBounce % 2 == 0 && kLens0 % 2 == 0);
 static_assert(kSun0 % 2 == 0 && kSky0 % 2 == 0 && kChoice % 2 == 0 && kDir == kChoice + 1);
 static_assert(kSunRoulette % 2 == 0 && kSkyRoulette == kSunRoulette + 1);
-static_assert(kHaze % 2 == 0 && kHazeRoulette == kHaze + 1);
+static_assert(kHaze % 2 == 0 && kHazeDistance == kHaze + 1);
+static_assert(kHazeSun0 % 2 == 0 && kHazeSky0 % 2 == 0 && kHazeSunRoulette % 2 == 0);
+static_assert(kUnused < kDimsPerBounce);
 
 }  // namespace landsim::renderer::detail

@@ -1,0 +1,222 @@
+#include "renderer/atmosphere/medium.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "renderer/spectra/spectral_colour.h"
+
+namespace landsim::renderer {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Below this vertical rate (per metre of path, in scale heights) a ray counts as level.
+constexpr double kLevel = 1e-9;
+// The air's density scale height (metres): the Rayleigh optical depth of the whole column over
+// it is the sea-level scattering coefficient.
+constexpr double kMolecularScaleHeight = 8000.0;
+constexpr double kReferenceWavelength = 550.0;  // nm: where visibility is defined
+
+PhaseFunction aerosol_phase(const Haze& h) {
+  switch (h.phase) {
+    case AerosolPhase::isotropic:
+      return PhaseFunction::isotropic();
+    case AerosolPhase::rayleigh:
+      return PhaseFunction::rayleigh();
+    case AerosolPhase::table:
+      return PhaseFunction::table(h.phase_angles, h.phase_values);
+    case AerosolPhase::legendre:
+      return PhaseFunction::legendre(h.phase_moments);
+    case AerosolPhase::henyey_greenstein:
+      break;
+  }
+  return PhaseFunction::henyey_greenstein(h.asymmetry);
+}
+
+// The albedo as a spectrum: a grey exactly (the plane-parallel checks' 0.99 must be 0.99 in
+// every bin), a colour upsampled.
+Spectrum albedo_spectrum(const Vec3f& a) {
+  if (a.x == a.y && a.y == a.z) return Spectrum::constant(std::clamp(a.x, 0.0f, 1.0f));
+  Spectrum s = reflectance_spectrum(a);
+  for (float& v : s.v) v = std::clamp(v, 0.0f, 1.0f);
+  return s;
+}
+
+}  // namespace
+
+double rayleigh_scattering(double nm) {
+  // Bodhaine, Wood, Dutton and Slusser 1999, "On Rayleigh optical depth calculations",
+  // J. Atmos. Oceanic Technol. 16, equation (30): the column's optical depth at sea level
+  // (1013.25 hPa), lambda in micrometres; over the density scale height.
+  const double l = nm * 1e-3, l2 = l * l;
+  const double tau = 0.0021520 * (1.0455996 - 341.29061 / l2 - 0.90230850 * l2) /
+                     (1.0 + 0.0027059889 / l2 - 85.968563 * l2);
+  return tau / kMolecularScaleHeight;
+}
+
+double MediumComponent::density(double z) const {
+  if (!present) return 0.0;
+  if (slab) return z >= z0 && z <= z1 ? density0 : 0.0;
+  return density0 * std::exp(-(z - z0) / scale_height);
+}
+
+double MediumComponent::unit_depth(const Vec3& o, const Vec3& d, double t) const {
+  if (!present || t <= 0.0) return 0.0;
+  if (slab) {
+    double in = 0.0, out = t;
+    if (std::abs(d.z) < 1e-12) {
+      if (o.z < z0 || o.z > z1) return 0.0;
+    } else {
+      const double a = (z0 - o.z) / d.z, b = (z1 - o.z) / d.z;
+      in = std::max(in, std::min(a, b));
+      out = std::min(out, std::max(a, b));
+    }
+    return out > in ? density0 * (out - in) : 0.0;
+  }
+  const double at_origin = density(o.z);
+  const double k = d.z / scale_height;  // rate at which the density's exponent falls
+  if (std::abs(k) < kLevel) return std::isinf(t) ? kInfinity : at_origin * t;
+  if (std::isinf(t)) return k > 0.0 ? at_origin / k : kInfinity;
+  return at_origin * -std::expm1(-k * t) / k;
+}
+
+double MediumComponent::distance_at(const Vec3& o, const Vec3& d, double t, double depth) const {
+  if (!present || depth <= 0.0) return 0.0;
+  if (slab) {
+    double in = 0.0, out = t;
+    if (std::abs(d.z) >= 1e-12) {
+      const double a = (z0 - o.z) / d.z, b = (z1 - o.z) / d.z;
+      in = std::max(in, std::min(a, b));
+      out = std::min(out, std::max(a, b));
+    } else if (o.z < z0 || o.z > z1) {
+      return t;
+    }
+    const double s = in + depth / density0;
+    return s < out ? s : t;
+  }
+  const double at_origin = density(o.z);
+  const double k = d.z / scale_height;
+  double s;
+  if (std::abs(k) < kLevel) {
+    s = depth / at_origin;
+  } else {
+    const double arg = 1.0 - depth * k / at_origin;  // the density left, as a share
+    s = arg > 0.0 ? -std::log(arg) / k : kInfinity;
+  }
+  return std::isfinite(s) ? std::min(s, t) : t;
+}
+
+Medium::Medium(const Haze& h) {
+  if (!h.enabled) return;
+  MediumComponent& aerosol = components_[0];
+  MediumComponent& air = components_[1];
+  aerosol.phase = aerosol_phase(h);
+  const Spectrum albedo = albedo_spectrum(h.albedo);
+  if (h.layer) {
+    // The plane-parallel layer: homogeneous, grey, between the base and the top.
+    if (!(h.layer->top > 0.0) || !(h.layer->optical_depth > 0.0)) return;
+    aerosol.present = aerosol.slab = true;
+    aerosol.z0 = h.base_height;
+    aerosol.z1 = h.base_height + h.layer->top;
+    aerosol.density0 = h.layer->optical_depth / h.layer->top;
+    aerosol.extinction = Spectrum::constant(1.0f);
+    aerosol.scattering = albedo;
+    enabled_ = true;
+    return;
+  }
+  if (!(h.visibility > 0.0)) return;
+  const double air_at_base = h.molecular ? rayleigh_scattering(kReferenceWavelength) *
+                                               std::exp(-h.base_altitude / kMolecularScaleHeight)
+                                         : 0.0;
+  if (h.molecular) {
+    air.present = true;
+    air.reaches_sky = false;
+    air.z0 = h.base_height;
+    air.scale_height = kMolecularScaleHeight;
+    air.density0 = air_at_base;
+    air.phase = PhaseFunction::rayleigh();
+    for (int k = 0; k < kSpectrumBins; ++k)
+      air.extinction[k] = static_cast<float>(rayleigh_scattering(bin_centre(k)) /
+                                             rayleigh_scattering(kReferenceWavelength));
+    air.scattering = air.extinction;  // molecules absorb nothing here
+  }
+  // Koschmieder's visibility holds for the whole extinction at 550 nm; the aerosol takes what
+  // the air leaves (none past the air's own visibility, 330 km at sea level).
+  aerosol.density0 = std::max(0.0, 3.912 / h.visibility - air_at_base);
+  aerosol.present = aerosol.density0 > 0.0;
+  aerosol.z0 = h.base_height;
+  aerosol.scale_height = h.scale_height;
+  for (int k = 0; k < kSpectrumBins; ++k)
+    aerosol.extinction[k] =
+        static_cast<float>(std::pow(bin_centre(k) / kReferenceWavelength, -h.angstrom));
+  aerosol.scattering = aerosol.extinction * albedo;
+  enabled_ = aerosol.present || air.present;
+}
+
+UnitDepths Medium::unit_depths(const Vec3& o, const Vec3& d, double t, bool ends_on_surface) const {
+  UnitDepths out{};
+  for (int c = 0; c < kMediumComponents; ++c)
+    if (acts(c, ends_on_surface))
+      out[static_cast<std::size_t>(c)] = component(c).unit_depth(o, d, t);
+  return out;
+}
+
+double Medium::optical_depth(const UnitDepths& depths, int k) const {
+  double tau = 0.0;
+  for (int c = 0; c < kMediumComponents; ++c)
+    if (depths[static_cast<std::size_t>(c)] > 0.0)
+      tau += depths[static_cast<std::size_t>(c)] * component(c).extinction[k];
+  return tau;
+}
+
+Spectrum Medium::transmittance(const UnitDepths& depths) const {
+  Spectrum t;
+  for (int k = 0; k < kSpectrumBins; ++k)
+    t[k] = static_cast<float>(std::exp(-optical_depth(depths, k)));
+  return t;
+}
+
+double Medium::extinction(double z, int k, bool ends_on_surface) const {
+  double sigma = 0.0;
+  for (int c = 0; c < kMediumComponents; ++c)
+    if (acts(c, ends_on_surface)) sigma += component(c).density(z) * component(c).extinction[k];
+  return sigma;
+}
+
+double Medium::distance_at(const Vec3& o, const Vec3& d, double t, bool ends_on_surface, int k,
+                           double tau) const {
+  int acting = 0, only = 0;
+  for (int c = 0; c < kMediumComponents; ++c)
+    if (acts(c, ends_on_surface) && component(c).extinction[k] > 0.0f) {
+      ++acting;
+      only = c;
+    }
+  if (acting == 0) return t;
+  if (acting == 1) return component(only).distance_at(o, d, t, tau / component(only).extinction[k]);
+  // Two components (the aerosol and the air on a segment to a surface, t finite): Newton's
+  // method, kept inside a shrinking bracket. The optical depth is increasing and concave or
+  // convex piecewise, so it converges in a few steps from the first component's own answer.
+  const auto depth = [&](double s) { return optical_depth(unit_depths(o, d, s, true), k); };
+  double lo = 0.0, hi = t;
+  if (!std::isfinite(hi)) hi = 1e9;
+  if (depth(hi) <= tau) return t;
+  double s =
+      std::clamp(component(0).distance_at(o, d, hi, tau / component(0).extinction[k]), lo, hi);
+  for (int i = 0; i < 60; ++i) {
+    const double f = depth(s) - tau;
+    if (std::abs(f) <= 1e-9 * std::max(tau, 1e-12)) break;
+    if (f > 0.0)
+      hi = s;
+    else
+      lo = s;
+    const Vec3 p = o + d * s;
+    const double slope = extinction(p.z, k, true);
+    double next = slope > 0.0 ? s - f / slope : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (hi - lo <= 1e-9 * std::max(1.0, hi)) break;
+    s = next;
+  }
+  return s;
+}
+
+}  // namespace landsim::renderer

@@ -1,0 +1,84 @@
+#pragma once
+// The haze as a participating medium (docs/ATMOSPHERE.md "The medium"): up to two components,
+// each a density profile along z (exponential, or a homogeneous slab) times a spectral
+// extinction per unit density, a single-scattering albedo per bin and a phase function.
+// Landscape scenes: aerosol (exponential, extinction from the visibility, Angstrom's
+// wavelength law, OPAC's albedo and asymmetry) and the air's molecules (Rayleigh, 8 km scale
+// height). The plane-parallel checks: one homogeneous layer.
+//
+// The molecular component acts only on segments that end on a surface: the Hosek-Wilkie sky
+// and sun already hold the whole clear atmosphere's Rayleigh scattering, seen from the ground,
+// so a segment that leaves into the sky must not take it again (nothing counted twice); the
+// aerosol haze is the turbid layer under that clear sky and acts on every segment.
+//
+// Optical depths have closed forms along any ray; a component's "unit depth" is the integral
+// of its density profile, and a bin's optical depth is the sum over components of the unit
+// depth times the component's extinction in that bin.
+#include <array>
+
+#include "core/vec3.h"
+#include "renderer/atmosphere/phase_function.h"
+#include "renderer/scene.h"
+#include "renderer/spectra/spectrum.h"
+
+namespace landsim::renderer {
+
+inline constexpr int kMediumComponents = 2;
+using UnitDepths = std::array<double, kMediumComponents>;
+
+struct MediumComponent {
+  bool present = false;
+  bool slab = false;          // homogeneous between z0 and z1; else exponential from z0 upward
+  double density0 = 0.0;      // per metre, at z0 (the profile times the extinction at 550 nm)
+  double z0 = 0.0, z1 = 0.0;  // the base; the slab's top
+  double scale_height = 1.0;
+  bool reaches_sky = true;  // false: only on segments that end on a surface
+  Spectrum extinction;      // per unit density (1 at 550 nm for the aerosol)
+  Spectrum scattering;      // extinction x single-scattering albedo
+  PhaseFunction phase;
+
+  double density(double z) const;
+  // Integral of the density along o + s d for s in [0, t] (t may be infinite).
+  double unit_depth(const Vec3& o, const Vec3& d, double t) const;
+  // The distance s in [0, t] at which unit_depth reaches `depth` (t when it never does).
+  double distance_at(const Vec3& o, const Vec3& d, double t, double depth) const;
+};
+
+class Medium {
+ public:
+  explicit Medium(const Haze& haze);
+
+  bool enabled() const { return enabled_; }
+  const MediumComponent& component(int c) const { return components_[static_cast<std::size_t>(c)]; }
+  // Whether component c acts on a segment that ends on a surface (false: leaves to the sky).
+  bool acts(int c, bool ends_on_surface) const {
+    const MediumComponent& m = component(c);
+    return m.present && (ends_on_surface || m.reaches_sky);
+  }
+
+  UnitDepths unit_depths(const Vec3& o, const Vec3& d, double t, bool ends_on_surface) const;
+  // Per bin exp(-sum_c depths[c] x extinction_c).
+  Spectrum transmittance(const UnitDepths& depths) const;
+  Spectrum transmittance(const Vec3& o, const Vec3& d, double t, bool ends_on_surface) const {
+    return transmittance(unit_depths(o, d, t, ends_on_surface));
+  }
+  // Optical depth of bin k.
+  double optical_depth(const UnitDepths& depths, int k) const;
+  // Extinction of bin k at height z, per metre.
+  double extinction(double z, int k, bool ends_on_surface) const;
+  // The distance in [0, t] at which bin k's optical depth reaches `tau` (Newton's method on
+  // the closed forms when two components act; exact with one).
+  double distance_at(const Vec3& o, const Vec3& d, double t, bool ends_on_surface, int k,
+                     double tau) const;
+  // Extinction of bin k at 550 nm for the aerosol alone, at the base (the visibility's).
+  double aerosol_extinction_at_base() const { return components_[0].density0; }
+
+ private:
+  bool enabled_ = false;
+  std::array<MediumComponent, kMediumComponents> components_;
+};
+
+// The air's Rayleigh scattering coefficient at sea level, per metre, at wavelength `nm`.
+double rayleigh_scattering(double nm);
+
+}  // namespace landsim::renderer
