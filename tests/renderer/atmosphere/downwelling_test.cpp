@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "renderer/atmosphere/sky.h"
+#include "renderer/spectra/colour_matching.h"
 #include "renderer/spectra/spectral_colour.h"
 #include "tests/renderer/test_scenes.h"
 
@@ -47,6 +48,8 @@ TEST(Downwelling, HazeDimsTheBeamByItsOpticalDepth) {
   s.haze.visibility = 5000.0;
   s.haze.scale_height = 800.0;
   s.haze.base_height = 0.0;
+  s.haze.molecular = false;  // the air scatters only on the way to surfaces, never the sun's
+  s.haze.angstrom = 0.0;     // grey: one optical depth for every bin
   const Downwelling hazy = downwelling_irradiance(s, 100.0);
   // Extinction 3.912 / V at the base, falling with e^(-z / H): from z up along the sun, the
   // optical depth is 3.912 / V x H x e^(-z / H) / sin(elevation).
@@ -55,6 +58,27 @@ TEST(Downwelling, HazeDimsTheBeamByItsOpticalDepth) {
     EXPECT_NEAR(hazy.direct[k] / clear.direct[k], std::exp(-depth), 1e-4) << k;
   // Higher up there is less haze above.
   EXPECT_GT(downwelling_irradiance(s, 1500.0).direct[10], hazy.direct[10]);
+}
+
+// Aerosols that scatter nearly all they take from the beam (albedo 0.99) send it down as
+// diffuse light: thicker haze, more of it (before, the haze only absorbed, and the diffuse
+// light fell with the beam). The global irradiance falls by what the haze reflects up.
+TEST(Downwelling, DiffuseLightRisesAsTheHazeThickens) {
+  Scene s = sunny(35.0);
+  s.ground.albedo = {0.15f, 0.13f, 0.09f};
+  s.haze.enabled = true;
+  s.haze.albedo = {0.99f, 0.99f, 0.99f};
+  double last_diffuse = 0.0, last_total = 1e30;
+  for (const double v : {40000.0, 10000.0, 5000.0, 2000.0}) {
+    s.haze.visibility = v;
+    const Downwelling e = downwelling_irradiance(s, 0.0);
+    const double diffuse = rec709_luminance(Vec3(spectrum_to_rgb(e.diffuse)));
+    const double total = rec709_luminance(Vec3(spectrum_to_rgb(e.total())));
+    EXPECT_GT(diffuse, 1.1 * last_diffuse) << v;
+    EXPECT_LT(total, last_total) << v;
+    last_diffuse = diffuse;
+    last_total = total;
+  }
 }
 
 TEST(Downwelling, NoBeamFromASunBelowTheHorizon) {
