@@ -372,8 +372,31 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   EXPECT_EQ(with_sensor.views[0].sensor->black_level_dn, 64);
   const std::string iso = sensor_view + "[sensor]\niso = 400\n";
   EXPECT_DOUBLE_EQ(*load_scenario(f.dir.write("iso.toml", iso)).sensor->model.iso, 400.0);
+  // The haze's medium keys (docs/ATMOSPHERE.md): an aerosol of tabulated phase, and the
+  // plane-parallel layer of Legendre moments.
+  const std::string terrain = "[terrain]\nelevation = \"" +
+                              source_file("data/terrain/volcano.asc").string() +
+                              "\"\n[sun]\nelevation = 30\nazimuth = 200\n";
+  const std::string views =
+      "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\n"
+      "target = [300.0, 400.0, 150.0]\n";
+  const std::string aerosol = terrain + views +
+                              "[haze]\nvisibility = 8000\nsingle_scattering_albedo = 0.9\n"
+                              "angstrom = 1.1\nmolecular = false\nphase = \"table\"\n"
+                              "phase_angles = [0.0, 90.0, 180.0]\nphase_values = [5.0, 1.0, 0.5]\n";
+  const Scenario with_aerosol = load_scenario(f.dir.write("aerosol.toml", aerosol));
+  EXPECT_FLOAT_EQ(with_aerosol.haze.albedo.x, 0.9f);
+  EXPECT_EQ(with_aerosol.haze.phase_values.size(), 3u);
+  EXPECT_FALSE(with_aerosol.haze.molecular);
+  const std::string layer = terrain + views +
+                            "[haze]\nlayer = { optical_depth = 2.0, top = 500.0 }\n"
+                            "phase = \"legendre\"\nphase_moments = [1.0, 0.5, 0.25]\n";
+  const Scenario with_layer = load_scenario(f.dir.write("layer.toml", layer));
+  ASSERT_TRUE(with_layer.haze.layer.has_value());
+  EXPECT_DOUBLE_EQ(with_layer.haze.layer->optical_depth, 2.0);
   const std::string text =
-      f.text() + landsim::testing::read_file(source_file("scenes/examples/default.toml")) +
+      f.text() + aerosol + layer +
+      landsim::testing::read_file(source_file("scenes/examples/default.toml")) +
       landsim::testing::read_file(source_file("scenes/examples/kagwene_cameras.toml")) + cameras +
       sensor + iso;
   for (const std::string& k : documented) {

@@ -77,7 +77,9 @@ TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
   const double canopy = (nir[0] - red[0]) / (nir[0] + red[0]);
   const double soil = (nir[1] - red[1]) / (nir[1] + red[1]);
   EXPECT_GT(canopy, 0.7);
-  EXPECT_LT(canopy, 0.9);
+  // 0.86 before issue 57 (paths cut at 4 bounces, a veil sized to the horizon over 400 m of
+  // air); 0.91 now: a dense summer canopy's NDVI seen through clear air.
+  EXPECT_LT(canopy, 0.95);
   EXPECT_GT(soil, 0.0);
   EXPECT_LT(soil, 0.2);
   // The luminance band times 683 is the luminance the RGB layers give, within the colour

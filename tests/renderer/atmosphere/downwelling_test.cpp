@@ -69,7 +69,9 @@ TEST(Downwelling, DiffuseLightRisesAsTheHazeThickens) {
   s.haze.enabled = true;
   s.haze.albedo = {0.99f, 0.99f, 0.99f};
   double last_diffuse = 0.0, last_total = 1e30;
-  for (const double v : {40000.0, 10000.0, 5000.0, 2000.0}) {
+  // Issue 57's range: vertical optical depth 0.12 to 0.94. (Much thicker, the diffuse light
+  // falls again: what is scattered down is scattered again, and absorbed a little each time.)
+  for (const double v : {40000.0, 10000.0, 5000.0}) {
     s.haze.visibility = v;
     const Downwelling e = downwelling_irradiance(s, 0.0);
     const double diffuse = rec709_luminance(Vec3(spectrum_to_rgb(e.diffuse)));

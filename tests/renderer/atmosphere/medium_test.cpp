@@ -66,8 +66,8 @@ TEST(Medium, RayleighColumnMatchesBodhaine) {
   // between 400 and 800 nm it falls as lambda^-4 and a little more (the refractive index's
   // dispersion): an exponent between 4.0 and 4.2.
   EXPECT_NEAR(rayleigh_scattering(550.0) * 8000.0, 0.0973, 0.0973 * 0.01);
-  const double exponent = std::log(rayleigh_scattering(400.0) / rayleigh_scattering(800.0)) /
-                          std::log(2.0);
+  const double exponent =
+      std::log(rayleigh_scattering(400.0) / rayleigh_scattering(800.0)) / std::log(2.0);
   EXPECT_GT(exponent, 4.0);
   EXPECT_LT(exponent, 4.2);
 }

@@ -20,8 +20,10 @@ double hg(double g, double c) {
 std::vector<PhaseFunction> all() {
   std::vector<double> moments;
   for (int l = 0; l < 64; ++l) moments.push_back(std::pow(0.5, l));
-  return {PhaseFunction::isotropic(), PhaseFunction::rayleigh(),
-          PhaseFunction::henyey_greenstein(0.7), PhaseFunction::henyey_greenstein(-0.3),
+  return {PhaseFunction::isotropic(),
+          PhaseFunction::rayleigh(),
+          PhaseFunction::henyey_greenstein(0.7),
+          PhaseFunction::henyey_greenstein(-0.3),
           PhaseFunction::table({0, 30, 90, 150, 180}, {10, 4, 1, 0.5, 0.8}),
           PhaseFunction::legendre(moments)};
 }
