@@ -153,8 +153,16 @@ struct HazeLayer {
   double top = 1000.0;         // metres: the layer runs from `Haze::base_height` this far up
 };
 
+// How the haze's light other than the sun's single scattering reaches a scattering point
+// (docs/ATMOSPHERE.md "Two ways to the haze's light").
+enum class HazeScattering {
+  table,  // tabulated once per render from paths over the plain (fast, noise-free)
+  paths,  // traced on every path (exact for any terrain; noisier)
+};
+
 struct Haze {
   bool enabled = false;
+  HazeScattering scattering = HazeScattering::table;
   double visibility = 20000.0;   // meteorological range at the base height, metres
   double scale_height = 1200.0;  // metres
   double base_height = 0.0;      // scene frame z where the visibility holds

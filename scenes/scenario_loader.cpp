@@ -219,6 +219,12 @@ renderer::Haze read_haze(const toml::table& root, const std::string& file) {
     h.angstrom = r.number("angstrom", Range{-1.0, 4.0}, h.angstrom);
     h.molecular = r.boolean("molecular", h.molecular);
   }
+  // The haze's light other than the sun's single scattering: tabulated by default, traced
+  // with `paths` (the plane-parallel layer of the checks: traced unless told).
+  const std::string light =
+      r.choice("multiple_scattering", {"table", "paths"}, h.layer ? "paths" : "table");
+  h.scattering =
+      light == "paths" ? renderer::HazeScattering::paths : renderer::HazeScattering::table;
   if (r.has("colour") && r.has("single_scattering_albedo"))
     r.fail("single_scattering_albedo", "give either colour or single_scattering_albedo");
   h.albedo = to_vec3f(r.vec3("colour", kUnit, Vec3(h.albedo)));

@@ -1,5 +1,6 @@
 #include "renderer/atmosphere/downwelling.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -9,6 +10,7 @@
 #include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/transport/path_tracer.h"
+#include "renderer/transport/plane_parallel_scene.h"
 
 namespace landsim::renderer {
 namespace {
@@ -43,32 +45,13 @@ Spectrum clear_sky(const SkyModel& sky) {
   return out;
 }
 
-// The scene reduced to what lights a horizontal meter at height z: its sky, sun and haze
-// over an endless flat ground of the plain's albedo, just under the meter (or at the plain's
-// height when that is lower).
-Scene plane_parallel(const Scene& scene, double z) {
-  Scene pp;
-  pp.sky = scene.sky;
-  pp.sun = scene.sun;
-  pp.haze = scene.haze;
-  pp.bands = scene.bands;
-  pp.settings.max_bounces = scene.settings.max_bounces;
-  const Vec3f albedo = scene.ground.plain_albedo();
-  pp.ground.albedo = albedo;
-  pp.ground.edge_albedo = albedo;
-  const PlainSurface plain = plain_surface(scene.ground);
-  const auto ground = static_cast<float>(plain.present ? std::min<double>(plain.height, z) : z);
-  pp.ground.plain_height = ground;
-  pp.ground.mesh.vertices = {{-1, -1, ground}, {1, -1, ground}, {1, 1, ground}, {-1, 1, ground}};
-  pp.ground.mesh.normals.assign(4, Vec3f{0.0f, 0.0f, 1.0f});
-  pp.ground.mesh.indices = {0, 1, 2, 0, 2, 3};
-  return pp;
-}
-
 // Diffuse irradiance by Monte Carlo: pi x the mean radiance over cosine-distributed
 // directions, every path through the haze as the renderer traces it.
 Spectrum hazy_sky(const Scene& scene, double z) {
-  const Scene pp = plane_parallel(scene, z);
+  // The meter just above an endless ground of the plain's albedo (at the plain's height, or
+  // under the meter where that is lower).
+  const Scene pp =
+      plane_parallel_scene(scene, std::min(plain_height(scene), static_cast<float>(z)));
   const EmbreeScene embree(pp);
   const PathTracer tracer(pp, embree);
   const auto ground = static_cast<double>(*pp.ground.plain_height);

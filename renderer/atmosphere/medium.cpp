@@ -169,6 +169,26 @@ double Medium::optical_depth(const UnitDepths& depths, int k) const {
   return tau;
 }
 
+Spectrum Medium::transmittance(const UnitDepths& depths, const BinSet& bins) const {
+  // Float exponentials: a quarter of a hazy render's time was spent in double ones.
+  const auto d0 = static_cast<float>(depths[0]), d1 = static_cast<float>(depths[1]);
+  const Spectrum& e0 = components_[0].extinction;
+  const Spectrum& e1 = components_[1].extinction;
+  Spectrum t;
+  for (int i = 0; i < bins.count; ++i) {
+    const int k = bins.index[static_cast<std::size_t>(i)];
+    t[k] = std::exp(-(d0 * e0[k] + d1 * e1[k]));
+  }
+  return t;
+}
+
+UnitDepths Medium::densities(double z, bool ends_on_surface) const {
+  UnitDepths out{};
+  for (int c = 0; c < kMediumComponents; ++c)
+    if (acts(c, ends_on_surface)) out[static_cast<std::size_t>(c)] = component(c).density(z);
+  return out;
+}
+
 Spectrum Medium::transmittance(const UnitDepths& depths) const {
   Spectrum t;
   for (int k = 0; k < kSpectrumBins; ++k)

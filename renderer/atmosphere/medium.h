@@ -15,6 +15,7 @@
 // of its density profile, and a bin's optical depth is the sum over components of the unit
 // depth times the component's extinction in that bin.
 #include <array>
+#include <cstdint>
 
 #include "core/vec3.h"
 #include "renderer/atmosphere/phase_function.h"
@@ -24,6 +25,19 @@
 namespace landsim::renderer {
 
 inline constexpr int kMediumComponents = 2;
+
+// Wavelength bins by index: those an output sees (renderer/transport/path_tracer.cpp), where
+// the medium's per-bin work is done; the others are left at zero (nothing reads them).
+struct BinSet {
+  std::array<std::uint8_t, kSpectrumBins> index{};
+  int count = 0;
+  static BinSet all() {
+    BinSet b;
+    for (int k = 0; k < kSpectrumBins; ++k)
+      b.index[static_cast<std::size_t>(b.count++)] = static_cast<std::uint8_t>(k);
+    return b;
+  }
+};
 using UnitDepths = std::array<double, kMediumComponents>;
 
 struct MediumComponent {
@@ -57,11 +71,18 @@ class Medium {
   }
 
   UnitDepths unit_depths(const Vec3& o, const Vec3& d, double t, bool ends_on_surface) const;
-  // Per bin exp(-sum_c depths[c] x extinction_c).
+  // Per bin exp(-sum_c depths[c] x extinction_c); in `bins` only (zero elsewhere).
   Spectrum transmittance(const UnitDepths& depths) const;
+  Spectrum transmittance(const UnitDepths& depths, const BinSet& bins) const;
   Spectrum transmittance(const Vec3& o, const Vec3& d, double t, bool ends_on_surface) const {
     return transmittance(unit_depths(o, d, t, ends_on_surface));
   }
+  Spectrum transmittance(const Vec3& o, const Vec3& d, double t, bool ends_on_surface,
+                         const BinSet& bins) const {
+    return transmittance(unit_depths(o, d, t, ends_on_surface), bins);
+  }
+  // Each component's unit density at height z (0 where it does not act).
+  UnitDepths densities(double z, bool ends_on_surface) const;
   // Optical depth of bin k.
   double optical_depth(const UnitDepths& depths, int k) const;
   // Extinction of bin k at height z, per metre.

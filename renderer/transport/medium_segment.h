@@ -22,12 +22,6 @@
 
 namespace landsim::renderer {
 
-// The bins an output sees (renderer/transport/path_tracer.cpp seen_bins), as indices.
-struct BinSet {
-  std::array<std::uint8_t, kSpectrumBins> index{};
-  int count = 0;
-};
-
 struct MediumPoint {
   Vec3f position;
   // Per component, transmittance to the point x its scattering coefficient there, over the
@@ -56,8 +50,9 @@ class MediumSegment {
   double t_;
   bool ends_on_surface_;
   Spectrum transmittance_;
-  std::array<double, kSpectrumBins> scattered_{};  // 1 - T per bin
-  BinSet candidates_;                              // seen bins the haze touches
+  std::array<float, kSpectrumBins> scattered_{};  // 1 - T per bin
+  const BinSet& bins_;                            // the bins worked in
+  BinSet candidates_;                             // seen bins the haze touches
   float continue_ = 0.0f;
 };
 

@@ -4,6 +4,7 @@
 #include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/glossy.h"
+#include "renderer/transport/scattering_table.h"
 
 #include <algorithm>
 #include <array>
@@ -68,7 +69,12 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
                           max_component(emission_spectrum(sky_.mean_radiance()))),
       sun_spectrum_(sky_.sun_spectral_irradiance()),
       seen_bins_(seen_bins(scene)),
-      bounce_limit_(scene.settings.max_bounces < 0 ? kSafetyBounces : scene.settings.max_bounces) {
+      bounce_limit_(scene.settings.max_bounces < 0 ? kSafetyBounces : scene.settings.max_bounces),
+      // Direct light only (max_bounces 0) has no use for the haze's further light.
+      table_(medium_.enabled() && scene.haze.scattering == HazeScattering::table &&
+                     scene.settings.max_bounces != 0
+                 ? ScatteringTable::build(scene)
+                 : nullptr) {
   for (int k = 0; k < kSpectrumBins; ++k)
     if (seen_bins_[k] > 0.0f)
       seen_.index[static_cast<std::size_t>(seen_.count++)] = static_cast<std::uint8_t>(k);
@@ -92,7 +98,7 @@ bool PathTracer::occluded(const Ray& ray, std::uint32_t mask) const {
 
 Spectrum PathTracer::to_sky(const Vec3f& origin, const Vec3f& l) const {
   if (!medium_.enabled()) return Spectrum::constant(1.0f);
-  return medium_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance, false);
+  return medium_.transmittance(Vec3(origin), Vec3(l), kInfiniteDistance, false, seen_);
 }
 
 Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
@@ -122,13 +128,49 @@ Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
   bool front = false;
   const Spectrum f = bsdf.eval(s, l, front);
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
-  const Spectrum light = f * sky_.spectral_radiance(l) * (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
+  const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
+  const Spectrum light = f * hazy_sky(origin, l) * (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
   const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
   ++rays;
-  const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
   if (occluded({origin, l}, v.mask)) return {};
-  return light * to_sky(origin, l) * weight;
+  return light * weight;
+}
+
+Spectrum PathTracer::hazy_sky(const Vec3f& origin, const Vec3f& l) const {
+  Spectrum l_sky = sky_.spectral_radiance(l) * to_sky(origin, l);
+  if (table_) l_sky += table_->sky_rest(static_cast<double>(origin.z), l);
+  return l_sky;
+}
+
+float PathTracer::aureole_pdf(const Vec3f& l) const {
+  return table_ && table_->has_sky() && l.z > 0.0f
+             ? table_->aureole_phase().eval(dot(l, sun_direction_))
+             : 0.0f;
+}
+
+Spectrum PathTracer::aureole_light(const ShadingPoint& v, const Bsdf& bsdf,
+                                   const SpectralMaterial& s, const CounterRng& rng,
+                                   std::uint32_t dim, const Spectrum& throughput,
+                                   std::uint32_t& rays) const {
+  // A direction from the aureole's own shape (the aerosol's phase function about the sun);
+  // below the horizon it has none.
+  const std::array<float, 2> u = rng.uniform2(dim + kAureole0);
+  const Vec3f l = table_->aureole_phase().sample(sun_direction_, u[0], u[1]).direction;
+  const float pdf = aureole_pdf(l);
+  if (!(pdf > 0.0f)) return {};
+  bool front = false;
+  const Spectrum f = bsdf.eval(s, l, front);
+  if (max_component(f) <= 0.0f) return {};
+  const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
+  const Spectrum light = f * table_->aureole(static_cast<double>(origin.z), l) *
+                         (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
+  const float weight = shadow_roulette_weight(importance(throughput * light),
+                                              roulette(rng.uniform(dim + kAureoleRoulette)));
+  if (weight == 0.0f) return {};
+  ++rays;
+  if (occluded({origin, l}, v.mask)) return {};
+  return light * weight;
 }
 
 Spectrum PathTracer::phase(const MediumPoint& p, float c) const {
@@ -183,6 +225,14 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
   if (w_sun > 0.0f && max_component(sunlit) > 0.0f) {
     ++rays;
     if (!occluded({p.position, l}, mask)) out += sunlit * to_sky(p.position, l) * w_sun;
+  }
+  if (table_) {
+    // Everything else the haze point receives, tabulated (renderer/transport/scattering_table.h).
+    for (int c = 0; c < kMediumComponents; ++c)
+      if (max_component(p.weight[static_cast<std::size_t>(c)]) > 0.0f)
+        out += p.weight[static_cast<std::size_t>(c)] *
+               table_->in_scattered(c, static_cast<double>(p.position.z), d);
+    return out;
   }
   // The sky, combined with the phase function's own sampling.
   float pdf = 0.0f;
@@ -242,18 +292,28 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
                               kDimsPerBounce * static_cast<std::uint32_t>(bounce);
     ++out.rays;
     const auto hit = intersect(ray, mask);
+    Spectrum haze_sky, aureole;  // the hazy sky's own light along a diffuse ray into the sky
     if (medium_.enabled()) {
       const MediumSegment segment(medium_, ray, hit ? hit->t : kInfiniteDistance, hit.has_value(),
                                   seen_);
-      if (segment.scatters()) {
+      // A diffuse ray into the sky takes the hazy sky as the sky's next-event estimation does
+      // (sky_light): its transmitted radiance and the haze's own light, tabulated.
+      const bool hazy_sky_ray = !hit && !last_specular && table_ && table_->has_sky();
+      if (hazy_sky_ray) {
+        const auto z = static_cast<double>(ray.origin.z);
+        haze_sky = throughput * table_->sky_rest(z, ray.direction);
+        aureole = throughput * table_->aureole(z, ray.direction);
+        throughput = throughput * segment.transmittance();
+      } else if (segment.scatters()) {
         const std::array<float, 2> u = rng.uniform2(dim + kHaze);
         const MediumPoint p = segment.sample(u[0], u[1]);
         // The camera's own segment carries every pixel's haze veil: its sun ray is always
         // traced; later ones are rouletted by what they would add.
         radiance += throughput *
                     haze_light(p, ray.direction, throughput, rng, dim, bounce == 0, mask, out.rays);
-        const float q = segment.continue_probability();
-        const bool scatter = rng.uniform(dim + kHazeContinue) < q;
+        // With the table, which holds the haze's further light, the path goes on through.
+        const float q = table_ ? 0.0f : segment.continue_probability();
+        const bool scatter = q > 0.0f && rng.uniform(dim + kHazeContinue) < q;
         // The camera's segment splits: the path goes on through to the surface whatever
         // happens, and with probability q a second path leaves from the haze point (one
         // or the other would make every hazy pixel flicker between the ground's light and
@@ -282,7 +342,9 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     }
     if (!hit) {
       const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
-      radiance += throughput * sky_.spectral_radiance(ray.direction) * w;
+      radiance += (throughput * sky_.spectral_radiance(ray.direction) + haze_sky) * w;
+      if (!last_specular && max_component(aureole) > 0.0f)
+        radiance += aureole * power_heuristic(last_pdf, aureole_pdf(ray.direction));
       // The sun's disc is seen only along specular paths: every diffuse vertex already took
       // it by next-event estimation.
       if (last_specular && sun_disc)
@@ -302,6 +364,7 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     const std::array<float, 2> shadow = rng.uniform2(dim + kSunRoulette);  // sun's, sky's
     Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, shadow[0], out.rays);
     direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, shadow[1], out.rays);
+    if (table_ && table_->has_sky()) direct += aureole_light(v, bsdf, sm, rng, dim, seen, out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.

@@ -9,6 +9,7 @@
 // by Russian roulette on their spectral throughput alone (docs/ATMOSPHERE.md "Paths"); shadow
 // rays are rouletted by their contribution (renderer/transport/shadow_roulette.h).
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "core/counter_rng.h"
@@ -22,6 +23,8 @@
 #include "renderer/transport/surface.h"
 
 namespace landsim::renderer {
+
+class ScatteringTable;
 
 // A path's longest run of scattering events when the scene sets no limit: a guard against
 // a path that never ends, not a bias (docs/ATMOSPHERE.md "Paths": no measured band moves by
@@ -84,6 +87,15 @@ class PathTracer : public Integrator {
   // The scene's geometry and, past it, the plain beyond the grid (renderer/transport/plain.h).
   std::optional<Hit> intersect(const Ray& ray, std::uint32_t mask) const;
   bool occluded(const Ray& ray, std::uint32_t mask) const;
+  // The sky seen from `origin` along `l` through the haze: its radiance transmitted and, with
+  // the scattering table, the haze's own light along the way.
+  Spectrum hazy_sky(const Vec3f& origin, const Vec3f& l) const;
+  // The hazy sky's aureole at a surface vertex, by its own next-event estimation (combined
+  // with the BSDF's sampling), and the density of that sampling.
+  Spectrum aureole_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
+                         const CounterRng& rng, std::uint32_t dim, const Spectrum& throughput,
+                         std::uint32_t& rays) const;
+  float aureole_pdf(const Vec3f& l) const;
   // Transmittance from `origin` along `l` into the sky.
   Spectrum to_sky(const Vec3f& origin, const Vec3f& l) const;
   ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
@@ -104,6 +116,8 @@ class PathTracer : public Integrator {
   Spectrum seen_bins_;        // 1 in bins an output (RGB, a band) sees, 0 elsewhere
   BinSet seen_;               // the same as indices
   int bounce_limit_;
+  // HazeScattering::table: the haze's light but the sun's single scattering; null: traced.
+  std::shared_ptr<const ScatteringTable> table_;
 };
 
 }  // namespace landsim::renderer

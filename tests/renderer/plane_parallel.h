@@ -24,6 +24,8 @@ struct LayerSetup {
   double isotropic = 0.0;  // the sky's radiance from every downward direction (FISOT)
   double ground = 0.0;     // Lambertian albedo
   double top = 1000.0;     // metres: the layer's thickness
+  // Every scattering event traced (the checks' default), or the tabulated haze light.
+  HazeScattering scattering = HazeScattering::paths;
 };
 
 // A Monte Carlo estimate and its standard error.
@@ -54,6 +56,7 @@ class PlaneParallel {
     scene_.ground.mesh.normals.assign(4, Vec3f{0.0f, 0.0f, 1.0f});
     scene_.ground.mesh.indices = {0, 1, 2, 0, 2, 3};
     scene_.haze.enabled = true;
+    scene_.haze.scattering = l.scattering;
     scene_.haze.layer = HazeLayer{l.optical_depth, l.top};
     scene_.haze.base_height = 0.0;
     scene_.haze.albedo = Vec3f{static_cast<float>(l.albedo), static_cast<float>(l.albedo),

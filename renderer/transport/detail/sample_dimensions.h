@@ -10,7 +10,7 @@ namespace landsim::renderer::detail {
 // above every bounce's.
 inline constexpr std::uint32_t kLens0 = 0xFFFF0000u, kLens1 = kLens0 + 1;
 inline constexpr std::uint32_t kFirstBounceDim = 2;
-inline constexpr std::uint32_t kDimsPerBounce = 20;
+inline constexpr std::uint32_t kDimsPerBounce = 24;
 // A bounce is one ray segment and the vertex it ends in: a surface, or a scattering point of
 // the haze drawn on the segment (renderer/transport/medium_segment.h). The haze's light at
 // that point has its own dimensions, since a surface vertex may follow on the same segment.
@@ -34,7 +34,10 @@ enum Dim : std::uint32_t {
   kHazeContinue,  // whether the path goes on from the haze point or through to the surface
   kRoulette,
   kFresnel,  // a surface's mirror choice, or which haze component scatters
-  kUnused
+  kUnused,
+  kAureole0,  // the hazy sky's aureole (renderer/transport/scattering_table.h)
+  kAureole1,
+  kAureoleRoulette,
 };
 
 // Pairs drawn together (CounterRng::uniform2: one Sobol pair) start at an even dimension.
@@ -43,6 +46,6 @@ static_assert(kSun0 % 2 == 0 && kSky0 % 2 == 0 && kChoice % 2 == 0 && kDir == kC
 static_assert(kSunRoulette % 2 == 0 && kSkyRoulette == kSunRoulette + 1);
 static_assert(kHaze % 2 == 0 && kHazeDistance == kHaze + 1);
 static_assert(kHazeSun0 % 2 == 0 && kHazeSky0 % 2 == 0 && kHazeSunRoulette % 2 == 0);
-static_assert(kUnused < kDimsPerBounce);
+static_assert(kAureole0 % 2 == 0 && kAureoleRoulette < kDimsPerBounce);
 
 }  // namespace landsim::renderer::detail

@@ -1,0 +1,218 @@
+#include "renderer/transport/scattering_table.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/counter_rng.h"
+#include "renderer/acceleration/embree_scene.h"
+#include "renderer/transport/path_tracer.h"
+#include "renderer/transport/plane_parallel_scene.h"
+
+namespace landsim::renderer {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+// Paths per cell: the cells' standard error about 2% of their value in the default scene's
+// haze (measured: docs/ATMOSPHERE.md); the table takes about a second to trace.
+constexpr int kPathsPerCell = 192;
+constexpr std::uint64_t kTableSeed = 0x7461626c65ULL;  // fixed: the same scene, the same table
+// Heights above the plain, in scale heights of the aerosol (the air's component varies far
+// more slowly).
+constexpr std::array<double, ScatteringTable::kHeights> kLevels = {0.0,  0.25, 0.5, 1.0, 1.5,
+                                                                   2.25, 3.25, 4.5, 6.5};
+
+float cosine_of(int m) {
+  return -1.0f + (static_cast<float>(m) + 0.5f) * 2.0f / ScatteringTable::kCosines;
+}
+float azimuth_of(int a) { return kPi * static_cast<float>(a) / (ScatteringTable::kAzimuths - 1); }
+
+// The fractional cell index of `x` among `n` cells spaced `step` from `first`, clamped.
+float cell(float x, float first, float step, int n) {
+  return std::clamp((x - first) / step, 0.0f, static_cast<float>(n - 1));
+}
+
+}  // namespace
+
+std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene) {
+  auto table = std::make_shared<ScatteringTable>();
+  const float ground = plain_height(scene);
+  const Scene pp = plane_parallel_scene(scene, ground);
+  const EmbreeScene embree(pp);
+  const PathTracer tracer(pp, embree);
+  const Medium& medium = tracer.medium();
+  const double h = scene.haze.layer ? scene.haze.layer->top / 6.5 : scene.haze.scale_height;
+  for (int i = 0; i < kHeights; ++i)
+    table->heights_[static_cast<std::size_t>(i)] =
+        ground + 0.5 + h * kLevels[static_cast<std::size_t>(i)];
+  const Vec3 sun = normalize(scene.sun.direction);
+  if (sun.x * sun.x + sun.y * sun.y > 1e-12) {
+    table->sun_horizontal_ = Vec3f(normalize(Vec3{sun.x, sun.y, 0.0}));
+    table->sun_side_ = Vec3f{-table->sun_horizontal_.y, table->sun_horizontal_.x, 0.0f};
+  }
+  const int cells = kHeights * kCosines * kAzimuths;
+  for (auto& v : table->values_) v.assign(static_cast<std::size_t>(cells), Spectrum{});
+  // Each cell's paths draw from the mixture of the components' phase functions about its
+  // direction; each component's value is the mean of L x p_c / p_mixture.
+  std::array<bool, kMediumComponents> present{};
+  for (int c = 0; c < kMediumComponents; ++c)
+    present[static_cast<std::size_t>(c)] = medium.component(c).present;
+  tbb::parallel_for(tbb::blocked_range<int>(0, cells), [&](const tbb::blocked_range<int>& r) {
+    for (int index = r.begin(); index != r.end(); ++index) {
+      const int height = index / (kCosines * kAzimuths);
+      const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
+      const float mu = cosine_of(m), s = std::sqrt(std::max(0.0f, 1.0f - mu * mu));
+      const float phi = azimuth_of(a);
+      const Vec3f d = table->sun_horizontal_ * (s * std::cos(phi)) +
+                      table->sun_side_ * (s * std::sin(phi)) + Vec3f{0.0f, 0.0f, mu};
+      const Vec3f at{0.0f, 0.0f,
+                     static_cast<float>(table->heights_[static_cast<std::size_t>(height)])};
+      const int n_present = static_cast<int>(std::count(present.begin(), present.end(), true));
+      std::array<std::array<double, kSpectrumBins>, kMediumComponents> sum{};
+      for (int i = 0; i < kPathsPerCell; ++i) {
+        const CounterRng rng(kTableSeed, static_cast<std::uint64_t>(index),
+                             static_cast<std::uint64_t>(i), SampleSequence::sobol);
+        const std::array<float, 2> u = rng.uniform2(0);
+        // The component whose phase function draws this direction: in turn.
+        int c = i % kMediumComponents;
+        if (!present[static_cast<std::size_t>(c)]) c = 1 - c;
+        const Vec3f next = medium.component(c).phase.sample(d, u[0], u[1]).direction;
+        const float cos_theta = dot(d, next);
+        float mixture = 0.0f;
+        for (int k = 0; k < kMediumComponents; ++k)
+          if (present[static_cast<std::size_t>(k)])
+            mixture += medium.component(k).phase.eval(cos_theta) / static_cast<float>(n_present);
+        if (!(mixture > 0.0f)) continue;
+        PathSample sample;
+        const Spectrum l = tracer.radiance({at, next}, rng, kAllBuckets, false, sample);
+        for (int k = 0; k < kMediumComponents; ++k) {
+          if (!present[static_cast<std::size_t>(k)]) continue;
+          const float w = medium.component(k).phase.eval(cos_theta) / mixture;
+          for (int b = 0; b < kSpectrumBins; ++b)
+            sum[static_cast<std::size_t>(k)][static_cast<std::size_t>(b)] += l[b] * w;
+        }
+      }
+      for (int k = 0; k < kMediumComponents; ++k)
+        for (int b = 0; b < kSpectrumBins; ++b)
+          table->values_[static_cast<std::size_t>(k)][static_cast<std::size_t>(index)][b] =
+              static_cast<float>(sum[static_cast<std::size_t>(k)][static_cast<std::size_t>(b)] /
+                                 kPathsPerCell);
+    }
+  });
+  // The hazy sky's own light: the aerosol alone acts on rays into the sky (the air's is in the
+  // sky model), exponential (a layer has none).
+  const MediumComponent& aerosol = medium.component(0);
+  table->has_sky_ = aerosol.present && !aerosol.slab;
+  table->aerosol_ = aerosol;
+  table->sun_spectrum_ = tracer.sky().sun_spectral_irradiance();
+  table->sun_direction_ = Vec3f(sun);
+  if (table->has_sky_) {
+    table->sky_rest_.assign(static_cast<std::size_t>(cells), Spectrum{});
+    for (int index = 0; index < cells; ++index) {
+      const int height = index / (kCosines * kAzimuths);
+      const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
+      const float mu = cosine_of(m), s = std::sqrt(std::max(0.0f, 1.0f - mu * mu));
+      if (mu <= 0.0f) continue;  // mirrored below: the horizon's cells interpolate sensibly
+      const float phi = azimuth_of(a);
+      const Vec3f d = table->sun_horizontal_ * (s * std::cos(phi)) +
+                      table->sun_side_ * (s * std::sin(phi)) + Vec3f{0.0f, 0.0f, mu};
+      table->sky_rest_[static_cast<std::size_t>(index)] =
+          table->rest_along(table->heights_[static_cast<std::size_t>(height)], d);
+    }
+    for (int index = 0; index < cells; ++index) {
+      const int height = index / (kCosines * kAzimuths);
+      const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
+      if (cosine_of(m) > 0.0f) continue;
+      const int mirror = (height * kCosines + (kCosines - 1 - m)) * kAzimuths + a;
+      table->sky_rest_[static_cast<std::size_t>(index)] =
+          table->sky_rest_[static_cast<std::size_t>(mirror)];
+    }
+  }
+  return table;
+}
+
+Spectrum ScatteringTable::table_lookup(const std::vector<Spectrum>& values, double z,
+                                       const Vec3f& d) const {
+  // Height: piecewise linear between the levels.
+  int h0 = 0;
+  while (h0 + 2 < kHeights && z > heights_[static_cast<std::size_t>(h0 + 1)]) ++h0;
+  const double span =
+      heights_[static_cast<std::size_t>(h0 + 1)] - heights_[static_cast<std::size_t>(h0)];
+  const auto fh =
+      static_cast<float>(std::clamp((z - heights_[static_cast<std::size_t>(h0)]) / span, 0.0, 1.0));
+  const float fm = cell(d.z, cosine_of(0), 2.0f / kCosines, kCosines);
+  const float phi = std::atan2(std::abs(dot(d, sun_side_)), dot(d, sun_horizontal_));
+  const float fa = cell(phi, 0.0f, kPi / (kAzimuths - 1), kAzimuths);
+  const int m0 = std::min(static_cast<int>(fm), kCosines - 2),
+            a0 = std::min(static_cast<int>(fa), kAzimuths - 2);
+  const float tm = fm - static_cast<float>(m0), ta = fa - static_cast<float>(a0);
+  Spectrum out;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k) {
+        const float w = (i ? fh : 1.0f - fh) * (j ? tm : 1.0f - tm) * (k ? ta : 1.0f - ta);
+        if (w > 0.0f)
+          out += values[static_cast<std::size_t>(((h0 + i) * kCosines + m0 + j) * kAzimuths + a0 +
+                                                 k)] *
+                 w;
+      }
+  return out;
+}
+
+Spectrum ScatteringTable::in_scattered(int c, double z, const Vec3f& d) const {
+  return table_lookup(values_[static_cast<std::size_t>(c)], z, d);
+}
+
+Spectrum ScatteringTable::sky_rest(double z, const Vec3f& d) const {
+  if (!has_sky_ || d.z <= 0.0f) return {};
+  return table_lookup(sky_rest_, z, d);
+}
+
+Spectrum ScatteringTable::aureole(double z, const Vec3f& d) const {
+  if (!has_sky_ || d.z <= 0.0f) return {};
+  // E p(d.sun) omega a (e^-b - e^-a) / (a - b): sunlight scattered once along the ray, every
+  // point of it lit through the haze above it (unshadowed by the terrain), in closed form;
+  // a = e rho H / mu and b = e rho H / mu0 are the ray's and the sun's optical depths.
+  const auto rho_h = static_cast<float>(aerosol_.density(z) * aerosol_.scale_height);
+  const float mu = std::max(1e-3f, d.z);
+  const float mu0 = std::max(1e-3f, sun_direction_.z);
+  const float phase = aerosol_.phase.eval(dot(d, sun_direction_));
+  Spectrum out;
+  for (int k = 0; k < kSpectrumBins; ++k) {
+    const float e = aerosol_.extinction[k];
+    if (e <= 0.0f || sun_spectrum_[k] <= 0.0f) continue;
+    const float a = e * rho_h / mu, b = e * rho_h / mu0;
+    const float share = std::abs(a - b) < 1e-4f * std::max(a, 1e-6f)
+                            ? a * std::exp(-a)
+                            : a * (std::exp(-b) - std::exp(-a)) / (a - b);
+    out[k] = sun_spectrum_[k] * phase * (aerosol_.scattering[k] / e) * share;
+  }
+  return out;
+}
+
+Spectrum ScatteringTable::rest_along(double z, const Vec3f& d) const {
+  // (rho H / mu) s integral over x in (0, 1] of exp(-a (1 - x)) S(z - H ln x, d), midpoints.
+  constexpr int kSteps = 32;
+  const double h = aerosol_.scale_height;
+  const double rho_h = aerosol_.density(z) * h;
+  const double mu = std::max(1e-3, static_cast<double>(d.z));
+  std::array<double, kSpectrumBins> sum{};
+  for (int i = 0; i < kSteps; ++i) {
+    const double x = (i + 0.5) / kSteps;
+    const Spectrum s = in_scattered(0, z - h * std::log(x), d);
+    for (int k = 0; k < kSpectrumBins; ++k) {
+      const double a = aerosol_.extinction[k] * rho_h / mu;
+      sum[static_cast<std::size_t>(k)] += std::exp(-a * (1.0 - x)) * s[k];
+    }
+  }
+  Spectrum out;
+  for (int k = 0; k < kSpectrumBins; ++k)
+    out[k] = static_cast<float>(rho_h / mu * aerosol_.scattering[k] *
+                                sum[static_cast<std::size_t>(k)] / kSteps);
+  return out;
+}
+
+}  // namespace landsim::renderer

@@ -1,0 +1,71 @@
+#pragma once
+// The haze's light other than the sun's single scattering, tabulated (HazeScattering::table,
+// docs/ATMOSPHERE.md "Two ways to the haze's light"): for each haze component, height and
+// direction, the radiance arriving at a point from every direction but the sun's beam
+// (skylight through the haze, light from the ground, light scattered in the haze any number
+// of times) weighted by the component's phase function. A haze point then needs only its
+// sun's shadow ray and a lookup, as aerial-perspective tables do in sky renderers; the table
+// itself is computed once per render by tracing paths, with every scattering event, through
+// the scene's own sky, sun and medium over an endless plain of the plain's albedo. Exact where
+// the world is horizontally uniform; in a landscape it leaves out what the terrain itself does
+// to the multiply scattered light (ridges shading it, ground colours other than the plain's).
+//
+// Cells: heights from the plain up to a few scale heights, the direction's cosine to the
+// zenith, and its azimuth from the sun's (the field is symmetric about the sun's vertical
+// plane); linear between cells.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "core/vec3.h"
+#include "renderer/atmosphere/medium.h"
+#include "renderer/scene.h"
+#include "renderer/spectra/spectrum.h"
+
+namespace landsim::renderer {
+
+class ScatteringTable {
+ public:
+  // Traces the table for `scene` (its haze enabled); `threads`: TBB's choice when 0. The
+  // result does not depend on the thread count.
+  static std::shared_ptr<const ScatteringTable> build(const Scene& scene);
+
+  // The phase-weighted radiance (per steradian of the phase function, W m^-2 sr^-1 nm^-1) for
+  // component c at height z, for a path travelling along `d` (light going the other way).
+  Spectrum in_scattered(int c, double z, const Vec3f& d) const;
+
+  // Whether the hazy sky's terms below are available: the haze is the exponential aerosol
+  // (not a layer).
+  bool has_sky() const { return has_sky_; }
+  // The haze's own light arriving at height z along a ray that leaves upward into the sky
+  // along d (the sky's transmitted radiance and the sun's beam excluded), in two parts: its
+  // sunlight scattered once, in closed form (the aureole: bright about the sun, sampled by
+  // its own next-event estimation), and the rest, from the table by quadrature along the
+  // ray. What surfaces receive from the hazy sky besides the sky itself.
+  Spectrum aureole(double z, const Vec3f& d) const;
+  Spectrum sky_rest(double z, const Vec3f& d) const;
+  // The aerosol's phase function about the sun: the aureole's shape, to sample it by.
+  const PhaseFunction& aureole_phase() const { return aerosol_.phase; }
+
+  static constexpr int kHeights = 9, kCosines = 12, kAzimuths = 7;
+
+ private:
+  Spectrum table_lookup(const std::vector<Spectrum>& values, double z, const Vec3f& d) const;
+  // The ray's multiply scattered part by quadrature through the table (cells with d.z > 0).
+  Spectrum rest_along(double z, const Vec3f& d) const;
+  const Spectrum& at(int c, int h, int m, int a) const {
+    return values_[static_cast<std::size_t>(c)]
+                  [static_cast<std::size_t>((h * kCosines + m) * kAzimuths + a)];
+  }
+  std::array<double, kHeights> heights_{};
+  Vec3f sun_horizontal_{1.0f, 0.0f, 0.0f};  // azimuth 0 of the table
+  Vec3f sun_side_{0.0f, 1.0f, 0.0f};
+  std::array<std::vector<Spectrum>, kMediumComponents> values_;
+  std::vector<Spectrum> sky_rest_;  // rest_along per cell (zero where d.z <= 0)
+  bool has_sky_ = false;
+  MediumComponent aerosol_;
+  Spectrum sun_spectrum_;
+  Vec3f sun_direction_;
+};
+
+}  // namespace landsim::renderer
