@@ -381,13 +381,14 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\n"
       "target = [300.0, 400.0, 150.0]\n";
   const std::string aerosol = terrain + views +
-                              "[haze]\nvisibility = 8000\nsingle_scattering_albedo = 0.9\n"
+                              "[haze]\nvisibility = 8000\nsingle_scattering_albedo = 0.9\nmultiple_scattering = \"paths\"\n"
                               "angstrom = 1.1\nmolecular = false\nphase = \"table\"\n"
                               "phase_angles = [0.0, 90.0, 180.0]\nphase_values = [5.0, 1.0, 0.5]\n";
   const Scenario with_aerosol = load_scenario(f.dir.write("aerosol.toml", aerosol));
   EXPECT_FLOAT_EQ(with_aerosol.haze.albedo.x, 0.9f);
   EXPECT_EQ(with_aerosol.haze.phase_values.size(), 3u);
   EXPECT_FALSE(with_aerosol.haze.molecular);
+  EXPECT_EQ(with_aerosol.haze.scattering, renderer::HazeScattering::paths);
   const std::string layer = terrain + views +
                             "[haze]\nlayer = { optical_depth = 2.0, top = 500.0 }\n"
                             "phase = \"legendre\"\nphase_moments = [1.0, 0.5, 0.25]\n";

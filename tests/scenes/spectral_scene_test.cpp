@@ -28,6 +28,33 @@ Scenario ndvi_example(int width, int height, int spp) {
   return s;
 }
 
+// Leaves scatter nine tenths of the near infrared they receive: light bounces ten to thirty
+// times in a crown before it leaves. The default render ends its paths by roulette alone, so
+// its leaves' near-infrared band is a 64-bounce render's (paths cut at 4, the default before
+// issue 57, read 28% dark).
+TEST(SpectralScene, DefaultPathsCarryTheCanopysNearInfraredToTheEnd) {
+  Scenario scenario = ndvi_example(96, 64, 8);
+  const auto leaf_nir = [](const Scenario& s) {
+    const renderer::Scene scene = build_scene(s);
+    const renderer::Film film = renderer::Renderer(scene).render(scene.views[0], {});
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x)
+        if (film.object(x, y) == static_cast<std::uint8_t>(renderer::ObjectClass::leaf)) {
+          sum += film.band(x, y, 3);  // "nir"
+          ++n;
+        }
+    EXPECT_GT(n, 300);
+    return sum / n;
+  };
+  const double unlimited = leaf_nir(scenario);
+  scenario.render.max_bounces = 64;
+  EXPECT_NEAR(unlimited / leaf_nir(scenario), 1.0, 0.01);
+  scenario.render.max_bounces = 4;
+  EXPECT_GT(unlimited / leaf_nir(scenario), 1.1);  // the cut the default no longer makes
+}
+
 TEST(SpectralScene, NdviExampleSeesDenseCanopyAndBareSoil) {
   // NDVI from the reflectance layers (pi x band radiance / the image's downwelling band
   // irradiance, docs/SENSOR.md) the example asks for. Measured NDVI: dense forest 0.7-0.9,
