@@ -163,7 +163,7 @@ Spectrum PathTracer::aureole_light(const ShadingPoint& v, const Bsdf& bsdf,
   const Spectrum f = bsdf.eval(s, l, front);
   if (max_component(f) <= 0.0f) return {};
   const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
-  const Spectrum light = f * table_->aureole(static_cast<double>(origin.z), l) *
+  const Spectrum light = f * table_->aureole(static_cast<double>(origin.z), l, seen_) *
                          (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
   const float weight = shadow_roulette_weight(importance(throughput * light),
                                               roulette(rng.uniform(dim + kAureoleRoulette)));
@@ -213,8 +213,9 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
                                 std::uint32_t mask, std::uint32_t& rays) const {
   Spectrum out;
   const std::array<float, 2> sun = rng.uniform2(dim + kHazeSun0);
-  const std::array<float, 2> sky = rng.uniform2(dim + kHazeSky0);
-  const std::array<float, 2> shadow = rng.uniform2(dim + kHazeSunRoulette);
+  // The roulettes' numbers only where a ray may be rouletted (a number costs a hash).
+  const std::array<float, 2> shadow =
+      trace_sun && table_ ? std::array<float, 2>{} : rng.uniform2(dim + kHazeSunRoulette);
   // The sun: light travelling along -l scattered into -d, the angle between them acos(d.l).
   const Vec3f l =
       sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), sun[0], sun[1]);
@@ -235,6 +236,7 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
     return out;
   }
   // The sky, combined with the phase function's own sampling.
+  const std::array<float, 2> sky = rng.uniform2(dim + kHazeSky0);
   float pdf = 0.0f;
   const Vec3f k = sky_.sample(sky[0], sky[1], pdf);
   if (pdf > 0.0f) {
@@ -302,7 +304,7 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
       if (hazy_sky_ray) {
         const auto z = static_cast<double>(ray.origin.z);
         haze_sky = throughput * table_->sky_rest(z, ray.direction);
-        aureole = throughput * table_->aureole(z, ray.direction);
+        aureole = throughput * table_->aureole(z, ray.direction, seen_);
         throughput = throughput * segment.transmittance();
       } else if (segment.scatters()) {
         const std::array<float, 2> u = rng.uniform2(dim + kHaze);

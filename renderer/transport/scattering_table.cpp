@@ -15,7 +15,6 @@
 namespace landsim::renderer {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 // Paths per cell: the cells' standard error about 2% of their value in the default scene's
 // haze (measured: docs/ATMOSPHERE.md); the table takes about a second to trace.
 constexpr int kPathsPerCell = 192;
@@ -25,10 +24,23 @@ constexpr std::uint64_t kTableSeed = 0x7461626c65ULL;  // fixed: the same scene,
 constexpr std::array<double, ScatteringTable::kHeights> kLevels = {0.0,  0.25, 0.5, 1.0, 1.5,
                                                                    2.25, 3.25, 4.5, 6.5};
 
+// Nodes from straight down to straight up, the horizon among them.
 float cosine_of(int m) {
-  return -1.0f + (static_cast<float>(m) + 0.5f) * 2.0f / ScatteringTable::kCosines;
+  return -1.0f + static_cast<float>(m) * 2.0f / (ScatteringTable::kCosines - 1);
 }
-float azimuth_of(int a) { return kPi * static_cast<float>(a) / (ScatteringTable::kAzimuths - 1); }
+// Azimuths from the sun's are kept as a pseudo-angle in [0, 2] (0: toward the sun's azimuth,
+// 1: across it, 2: away from it), monotonic in the angle and free of an atan2: x and y are
+// the direction's horizontal components along and across the sun's azimuth (y >= 0).
+float pseudo_azimuth(float x, float y) {
+  const float sum = std::abs(x) + y;
+  return sum > 0.0f ? 1.0f - x / sum : 0.0f;
+}
+// The unit horizontal (along, across) of cell a.
+std::array<float, 2> azimuth_of(int a) {
+  const float p = 2.0f * static_cast<float>(a) / (ScatteringTable::kAzimuths - 1);
+  const float x = 1.0f - p, y = 1.0f - std::abs(x), n = std::sqrt(x * x + y * y);
+  return {x / n, y / n};
+}
 
 // The fractional cell index of `x` among `n` cells spaced `step` from `first`, clamped.
 float cell(float x, float first, float step, int n) {
@@ -44,10 +56,12 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
   const EmbreeScene embree(pp);
   const PathTracer tracer(pp, embree);
   const Medium& medium = tracer.medium();
-  const double h = scene.haze.layer ? scene.haze.layer->top / 6.5 : scene.haze.scale_height;
+  // Levels closer together low down, where an exponential haze is dense; a layer evenly.
   for (int i = 0; i < kHeights; ++i)
     table->heights_[static_cast<std::size_t>(i)] =
-        ground + 0.5 + h * kLevels[static_cast<std::size_t>(i)];
+        ground + 0.5 +
+        (scene.haze.layer ? scene.haze.layer->top * i / (kHeights - 1)
+                          : scene.haze.scale_height * kLevels[static_cast<std::size_t>(i)]);
   const Vec3 sun = normalize(scene.sun.direction);
   if (sun.x * sun.x + sun.y * sun.y > 1e-12) {
     table->sun_horizontal_ = Vec3f(normalize(Vec3{sun.x, sun.y, 0.0}));
@@ -65,9 +79,9 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
       const int height = index / (kCosines * kAzimuths);
       const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
       const float mu = cosine_of(m), s = std::sqrt(std::max(0.0f, 1.0f - mu * mu));
-      const float phi = azimuth_of(a);
-      const Vec3f d = table->sun_horizontal_ * (s * std::cos(phi)) +
-                      table->sun_side_ * (s * std::sin(phi)) + Vec3f{0.0f, 0.0f, mu};
+      const std::array<float, 2> across = azimuth_of(a);
+      const Vec3f d = table->sun_horizontal_ * (s * across[0]) +
+                      table->sun_side_ * (s * across[1]) + Vec3f{0.0f, 0.0f, mu};
       const Vec3f at{0.0f, 0.0f,
                      static_cast<float>(table->heights_[static_cast<std::size_t>(height)])};
       const int n_present = static_cast<int>(std::count(present.begin(), present.end(), true));
@@ -115,17 +129,17 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
       const int height = index / (kCosines * kAzimuths);
       const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
       const float mu = cosine_of(m), s = std::sqrt(std::max(0.0f, 1.0f - mu * mu));
-      if (mu <= 0.0f) continue;  // mirrored below: the horizon's cells interpolate sensibly
-      const float phi = azimuth_of(a);
-      const Vec3f d = table->sun_horizontal_ * (s * std::cos(phi)) +
-                      table->sun_side_ * (s * std::sin(phi)) + Vec3f{0.0f, 0.0f, mu};
+      if (mu < 0.0f) continue;  // mirrored below: the horizon's cells interpolate sensibly
+      const std::array<float, 2> across = azimuth_of(a);
+      const Vec3f d = table->sun_horizontal_ * (s * across[0]) +
+                      table->sun_side_ * (s * across[1]) + Vec3f{0.0f, 0.0f, mu};
       table->sky_rest_[static_cast<std::size_t>(index)] =
           table->rest_along(table->heights_[static_cast<std::size_t>(height)], d);
     }
     for (int index = 0; index < cells; ++index) {
       const int height = index / (kCosines * kAzimuths);
       const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
-      if (cosine_of(m) > 0.0f) continue;
+      if (cosine_of(m) >= 0.0f) continue;
       const int mirror = (height * kCosines + (kCosines - 1 - m)) * kAzimuths + a;
       table->sky_rest_[static_cast<std::size_t>(index)] =
           table->sky_rest_[static_cast<std::size_t>(mirror)];
@@ -143,9 +157,9 @@ Spectrum ScatteringTable::table_lookup(const std::vector<Spectrum>& values, doub
       heights_[static_cast<std::size_t>(h0 + 1)] - heights_[static_cast<std::size_t>(h0)];
   const auto fh =
       static_cast<float>(std::clamp((z - heights_[static_cast<std::size_t>(h0)]) / span, 0.0, 1.0));
-  const float fm = cell(d.z, cosine_of(0), 2.0f / kCosines, kCosines);
-  const float phi = std::atan2(std::abs(dot(d, sun_side_)), dot(d, sun_horizontal_));
-  const float fa = cell(phi, 0.0f, kPi / (kAzimuths - 1), kAzimuths);
+  const float fm = cell(d.z, -1.0f, 2.0f / (kCosines - 1), kCosines);
+  const float fa = cell(pseudo_azimuth(dot(d, sun_horizontal_), std::abs(dot(d, sun_side_))), 0.0f,
+                        2.0f / (kAzimuths - 1), kAzimuths);
   const int m0 = std::min(static_cast<int>(fm), kCosines - 2),
             a0 = std::min(static_cast<int>(fa), kAzimuths - 2);
   const float tm = fm - static_cast<float>(m0), ta = fa - static_cast<float>(a0);
@@ -171,7 +185,7 @@ Spectrum ScatteringTable::sky_rest(double z, const Vec3f& d) const {
   return table_lookup(sky_rest_, z, d);
 }
 
-Spectrum ScatteringTable::aureole(double z, const Vec3f& d) const {
+Spectrum ScatteringTable::aureole(double z, const Vec3f& d, const BinSet& bins) const {
   if (!has_sky_ || d.z <= 0.0f) return {};
   // E p(d.sun) omega a (e^-b - e^-a) / (a - b): sunlight scattered once along the ray, every
   // point of it lit through the haze above it (unshadowed by the terrain), in closed form;
@@ -181,7 +195,8 @@ Spectrum ScatteringTable::aureole(double z, const Vec3f& d) const {
   const float mu0 = std::max(1e-3f, sun_direction_.z);
   const float phase = aerosol_.phase.eval(dot(d, sun_direction_));
   Spectrum out;
-  for (int k = 0; k < kSpectrumBins; ++k) {
+  for (int i = 0; i < bins.count; ++i) {
+    const int k = bins.index[static_cast<std::size_t>(i)];
     const float e = aerosol_.extinction[k];
     if (e <= 0.0f || sun_spectrum_[k] <= 0.0f) continue;
     const float a = e * rho_h / mu, b = e * rho_h / mu0;

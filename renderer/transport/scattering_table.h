@@ -11,8 +11,8 @@
 // to the multiply scattered light (ridges shading it, ground colours other than the plain's).
 //
 // Cells: heights from the plain up to a few scale heights, the direction's cosine to the
-// zenith, and its azimuth from the sun's (the field is symmetric about the sun's vertical
-// plane); linear between cells.
+// zenith (13 nodes from -1 to 1, the horizon one of them), and its azimuth from the sun's (the
+// field is symmetric about the sun's vertical plane); linear between cells.
 #include <array>
 #include <memory>
 #include <vector>
@@ -42,12 +42,13 @@ class ScatteringTable {
   // sunlight scattered once, in closed form (the aureole: bright about the sun, sampled by
   // its own next-event estimation), and the rest, from the table by quadrature along the
   // ray. What surfaces receive from the hazy sky besides the sky itself.
-  Spectrum aureole(double z, const Vec3f& d) const;
+  // In `bins` only (zero elsewhere).
+  Spectrum aureole(double z, const Vec3f& d, const BinSet& bins) const;
   Spectrum sky_rest(double z, const Vec3f& d) const;
   // The aerosol's phase function about the sun: the aureole's shape, to sample it by.
   const PhaseFunction& aureole_phase() const { return aerosol_.phase; }
 
-  static constexpr int kHeights = 9, kCosines = 12, kAzimuths = 7;
+  static constexpr int kHeights = 9, kCosines = 13, kAzimuths = 7;
 
  private:
   Spectrum table_lookup(const std::vector<Spectrum>& values, double z, const Vec3f& d) const;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <array>
 #include <set>
 #include <vector>
@@ -95,6 +97,27 @@ TEST(CounterRng, SobolPairsAndPixelsAreDecorrelated) {
     sum +=
         CounterRng(1, k, k % 16, SampleSequence::sobol).uniform(static_cast<std::uint32_t>(k % 40));
   EXPECT_NEAR(sum / 20000.0, 0.5, 0.01);
+}
+
+// Each pixel's points are its own, not another pixel's in another order: the sorted values
+// of a dimension over a pixel's samples differ from pixel to pixel (a sampler that only
+// shuffled the order would give every pixel the same point set, and correlated images).
+TEST(CounterRng, SobolPixelsHaveTheirOwnPointSets) {
+  const auto sorted = [](std::uint64_t pixel, std::uint32_t dimension) {
+    std::vector<float> v;
+    for (int s = 0; s < 16; ++s)
+      v.push_back(CounterRng(5, pixel, static_cast<std::uint64_t>(s), SampleSequence::sobol)
+                      .uniform(dimension));
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (std::uint32_t dimension : {0u, 1u, 7u})
+    for (std::uint64_t pixel : {3u, 1000u}) {
+      const std::vector<float> a = sorted(pixel, dimension), b = sorted(pixel + 1, dimension);
+      int same = 0;
+      for (std::size_t i = 0; i < a.size(); ++i) same += a[i] == b[i];
+      EXPECT_LT(same, 2) << "pixel " << pixel << " dimension " << dimension;
+    }
 }
 
 // A pair drawn together is the two dimensions drawn alone, bit for bit, under either sampler

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
+#include <algorithm>
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -30,6 +34,34 @@ TEST(Surface, AHitsErrorIsAFewUnitsInTheLastPlace) {
   EXPECT_LT(three_km, 5e-3f);
   EXPECT_GT(twenty_km, 2e-3f);
   EXPECT_LT(twenty_km, 2.5e-2f);
+}
+
+// A ray leaving a surface starts exactly the hit's error bound off it, and the bound holds
+// the hit point's real error without being many times larger (rays offset ten times too far
+// start beyond the leaves beside them): hits on a plane far from the origin, the exact point
+// in double precision.
+TEST(Surface, RaysLeaveAtTheHitsErrorBound) {
+  for (const float x0 : {10.0f, 3000.0f, 20000.0f}) {
+    const Vec3f origin{x0, -40.0f, 25.0f};
+    const Vec3f d = normalize(Vec3f{0.31f, 0.93f, -0.2f});
+    // The plane z = 0.37 (not a float-friendly height): t exactly, then as a float hit.
+    const double t_exact = (0.37 - static_cast<double>(origin.z)) / static_cast<double>(d.z);
+    const auto t = static_cast<float>(t_exact);
+    const Vec3f p = origin + d * t;
+    const Vec3 exact = Vec3(origin) + Vec3(d) * t_exact;
+    const float bound = hit_error(origin, t, p);
+    EXPECT_GE(bound, static_cast<float>(length(Vec3(p) - exact))) << x0;
+    const float magnitude = std::max({std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)}) +
+                            t + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    EXPECT_LE(bound, 3.0f * std::numeric_limits<float>::epsilon() * magnitude) << x0;
+    ShadingPoint v{};
+    v.p = p;
+    v.error = bound;
+    const Vec3f up{0.0f, 0.0f, 1.0f};
+    const Vec3f off = offset_point(v, up);
+    EXPECT_NEAR(off.z - p.z, bound, 0.5f * bound) << x0;  // one bound up, not ten
+    EXPECT_EQ(off.x, p.x);
+  }
 }
 
 // A quaking aspen, one variant, leaves and bark as in the species file's colours.
