@@ -57,7 +57,14 @@ Spectrum seen_bins(const Scene& scene) {
 
 }  // namespace
 
-PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
+bool PathTracer::wants_table(const Scene& scene) {
+  // Direct light only (max_bounces 0) has no use for the haze's further light.
+  return Medium(scene.haze).enabled() && scene.haze.scattering == HazeScattering::table &&
+         scene.settings.max_bounces != 0;
+}
+
+PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
+                       std::shared_ptr<const ScatteringTable> table)
     : scene_(scene),
       embree_(embree),
       sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
@@ -70,11 +77,9 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree)
       sun_spectrum_(sky_.sun_spectral_irradiance()),
       seen_bins_(seen_bins(scene)),
       bounce_limit_(scene.settings.max_bounces < 0 ? kSafetyBounces : scene.settings.max_bounces),
-      // Direct light only (max_bounces 0) has no use for the haze's further light.
-      table_(medium_.enabled() && scene.haze.scattering == HazeScattering::table &&
-                     scene.settings.max_bounces != 0
-                 ? ScatteringTable::build(scene)
-                 : nullptr) {
+      table_(!wants_table(scene) ? nullptr
+             : table             ? std::move(table)
+                                 : ScatteringTable::build(scene)) {
   for (int k = 0; k < kSpectrumBins; ++k)
     if (seen_bins_[k] > 0.0f)
       seen_.index[static_cast<std::size_t>(seen_.count++)] = static_cast<std::uint8_t>(k);

@@ -33,7 +33,12 @@ inline constexpr int kSafetyBounces = 100000;
 
 class PathTracer : public Integrator {
  public:
-  PathTracer(const Scene& scene, const EmbreeScene& embree);
+  // `table`: the scene's haze table when one is at hand (a renderer shares one among its
+  // views); built here when the scene asks for one and none is given.
+  PathTracer(const Scene& scene, const EmbreeScene& embree,
+             std::shared_ptr<const ScatteringTable> table = nullptr);
+  // Whether `scene` takes its haze's further light from a table (HazeScattering::table).
+  static bool wants_table(const Scene& scene);
 
   PathSample trace(const Ray& camera_ray, const CounterRng& rng,
                    std::uint32_t mask = kAllBuckets) const override;

@@ -21,6 +21,7 @@
 #include "renderer/transport/comparable_tracer.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/path_tracer.h"
+#include "renderer/transport/scattering_table.h"
 
 #include <spdlog/spdlog.h>
 
@@ -245,8 +246,11 @@ ViewRenderer::ViewRenderer(const Renderer& renderer, const View& view, const Ren
   const EmbreeScene& embree = renderer.embree_ ? *renderer.embree_ : *state_->per_view;
   if (options.comparable)
     state_->tracer = std::make_unique<ComparableTracer>(scene_, embree, *options.comparable);
-  else
-    state_->tracer = std::make_unique<PathTracer>(scene_, embree);
+  else {
+    if (PathTracer::wants_table(scene_) && !renderer.haze_table_)
+      renderer.haze_table_ = ScatteringTable::build(scene_);
+    state_->tracer = std::make_unique<PathTracer>(scene_, embree, renderer.haze_table_);
+  }
   const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
   state_->arena = std::make_unique<tbb::task_arena>(threads);
 }

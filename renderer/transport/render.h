@@ -19,6 +19,8 @@
 
 namespace landsim::renderer {
 
+class ScatteringTable;
+
 struct RenderOptions {
   int threads = 0;  // 0: every core
   // Called now and then with the fraction of tiles done, from one thread at a time.
@@ -78,6 +80,9 @@ class Renderer {
   friend class ViewRenderer;
   const Scene& scene_;
   std::unique_ptr<EmbreeScene> embree_;
+  // The haze's table (renderer/transport/scattering_table.h), built for the first view and
+  // shared by the rest: it depends on the scene alone.
+  mutable std::shared_ptr<const ScatteringTable> haze_table_;
 };
 
 // One view ready to trace (camera, tracer, worker arena): renders any range of its tiles, so

@@ -17,7 +17,7 @@ namespace {
 
 // Paths per cell: the cells' standard error about 2% of their value in the default scene's
 // haze (measured: docs/ATMOSPHERE.md); the table takes about a second to trace.
-constexpr int kPathsPerCell = 192;
+constexpr int kPathsPerCell = 512;
 constexpr std::uint64_t kTableSeed = 0x7461626c65ULL;  // fixed: the same scene, the same table
 // Heights above the plain, in scale heights of the aerosol (the air's component varies far
 // more slowly).
@@ -74,6 +74,10 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
   std::array<bool, kMediumComponents> present{};
   for (int c = 0; c < kMediumComponents; ++c)
     present[static_cast<std::size_t>(c)] = medium.component(c).present;
+  // The light about a point peaks toward the sun (its aureole, seen from inside the haze):
+  // a third strategy draws directions from the aerosol's phase function about the sun.
+  const PhaseFunction& aerosol_about_sun = medium.component(0).phase;
+  const Vec3f sun_f(sun);
   tbb::parallel_for(tbb::blocked_range<int>(0, cells), [&](const tbb::blocked_range<int>& r) {
     for (int index = r.begin(); index != r.end(); ++index) {
       const int height = index / (kCosines * kAzimuths);
@@ -90,15 +94,30 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
         const CounterRng rng(kTableSeed, static_cast<std::uint64_t>(index),
                              static_cast<std::uint64_t>(i), SampleSequence::sobol);
         const std::array<float, 2> u = rng.uniform2(0);
-        // The component whose phase function draws this direction: in turn.
-        int c = i % kMediumComponents;
-        if (!present[static_cast<std::size_t>(c)]) c = 1 - c;
-        const Vec3f next = medium.component(c).phase.sample(d, u[0], u[1]).direction;
+        // The strategy that draws this direction, in turn: each component's phase function,
+        // and the whole sphere evenly (defensive: a forward-peaked phase function alone
+        // seldom looks back at bright light behind it).
+        const int strategies = n_present + 2;
+        const int strategy = i % strategies;
+        Vec3f next;
+        if (strategy == n_present + 1) {
+          next = aerosol_about_sun.sample(sun_f, u[0], u[1]).direction;
+        } else if (strategy == n_present) {
+          const float z = 1.0f - 2.0f * u[0], r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+          const float a = 2.0f * std::numbers::pi_v<float> * u[1];
+          next = {r * std::cos(a), r * std::sin(a), z};
+        } else {
+          int c = strategy;
+          if (!present[static_cast<std::size_t>(c)]) c = 1 - c;
+          next = medium.component(c).phase.sample(d, u[0], u[1]).direction;
+        }
         const float cos_theta = dot(d, next);
-        float mixture = 0.0f;
+        float mixture =
+            0.25f * std::numbers::inv_pi_v<float> + aerosol_about_sun.eval(dot(next, sun_f));
         for (int k = 0; k < kMediumComponents; ++k)
           if (present[static_cast<std::size_t>(k)])
-            mixture += medium.component(k).phase.eval(cos_theta) / static_cast<float>(n_present);
+            mixture += medium.component(k).phase.eval(cos_theta);
+        mixture /= static_cast<float>(strategies);
         if (!(mixture > 0.0f)) continue;
         PathSample sample;
         const Spectrum l = tracer.radiance({at, next}, rng, kAllBuckets, false, sample);

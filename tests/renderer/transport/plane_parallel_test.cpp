@@ -282,9 +282,10 @@ namespace {
 
 // The tabulated haze light (HazeScattering::table, the landscape default) is exact where the
 // world is plane-parallel, but for the table's cells: DISORT's isotropic cases 1b and 11a
-// again, within three standard errors plus 3% (both agree within 0.3%). Case 3a
-// (Henyey-Greenstein 0.75 under an overhead sun) reads 2-4% low at mu 0.5 and 1 with the
-// table: an open finding (docs/ATMOSPHERE.md), not a tolerance; LANDSIM_DISORT_TABLE=1 prints it.
+// again, within three standard errors plus 3% (both agree within 0.5%). Case 3a
+// (Henyey-Greenstein 0.75 under an overhead sun) reads up to 3.2% off with the table: the
+// cells' own noise, an open finding (docs/ATMOSPHERE.md), not a tolerance;
+// LANDSIM_DISORT_TABLE=1 prints it.
 TEST(DisortTable, TheTabulatedHazeLightReproducesThePlaneParallelCases) {
   for (const char* name : {"1b", "11a", "3a"}) {
     const bool open_finding = std::string(name) == "3a";
