@@ -152,14 +152,15 @@ renderer::Sky read_sky(const toml::table& t, const std::string& file) {
   return s;
 }
 
-// An array of numbers of any length (at least `least`), each in `range`; empty when absent.
+// An array of numbers (at least `least`, at most `most`), each in `range`; empty when absent.
 std::vector<double> number_list(TableReader& r, std::string_view key, std::size_t least,
-                                Range range) {
+                                std::size_t most, Range range) {
   const toml::node* n = r.value(key, "an array of numbers");
   if (n == nullptr) return {};
   const toml::array* a = n->as_array();
-  if (a == nullptr || a->size() < least)
-    r.fail_at(*n, key, "expected an array of at least " + std::to_string(least) + " numbers");
+  if (a == nullptr || a->size() < least || a->size() > most)
+    r.fail_at(*n, key, "expected an array of " + std::to_string(least) + " to " +
+                           std::to_string(most) + " numbers");
   std::vector<double> out;
   for (const toml::node& e : *a) {
     const std::optional<double> v = e.value<double>();
@@ -176,9 +177,10 @@ void read_phase(TableReader& r, renderer::Haze& h) {
       r.choice("phase", {"henyey-greenstein", "isotropic", "rayleigh", "table", "legendre"},
                "henyey-greenstein");
   h.asymmetry = r.number("asymmetry", Range{-0.95, 0.95}, h.asymmetry);
-  h.phase_angles = number_list(r, "phase_angles", 2, Range{0.0, 180.0});
-  h.phase_values = number_list(r, "phase_values", 2, Range{0.0, 1e12});
-  h.phase_moments = number_list(r, "phase_moments", 1, Range{-1.0, 1.0});
+  // Bounded: a table is evaluated by bisection, a Legendre series summed at 4001 cosines.
+  h.phase_angles = number_list(r, "phase_angles", 2, 100000, Range{0.0, 180.0});
+  h.phase_values = number_list(r, "phase_values", 2, 100000, Range{0.0, 1e12});
+  h.phase_moments = number_list(r, "phase_moments", 1, 1000, Range{-1.0, 1.0});
   if (phase == "table") {
     h.phase = renderer::AerosolPhase::table;
     if (h.phase_angles.empty() || h.phase_angles.size() != h.phase_values.size())
