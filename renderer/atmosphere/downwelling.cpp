@@ -6,7 +6,6 @@
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
-#include "renderer/atmosphere/haze.h"
 #include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/transport/path_tracer.h"

@@ -142,7 +142,7 @@ Medium::Medium(const Haze& h) {
   }
   // Koschmieder's visibility holds for the whole extinction at 550 nm; the aerosol takes what
   // the air leaves (none past the air's own visibility, 330 km at sea level).
-  aerosol.density0 = std::max(0.0, 3.912 / h.visibility - air_at_base);
+  aerosol.density0 = std::max(0.0, visibility_extinction(h) - air_at_base);
   aerosol.present = aerosol.density0 > 0.0;
   aerosol.z0 = h.base_height;
   aerosol.scale_height = h.scale_height;
@@ -190,10 +190,7 @@ UnitDepths Medium::densities(double z, bool ends_on_surface) const {
 }
 
 Spectrum Medium::transmittance(const UnitDepths& depths) const {
-  Spectrum t;
-  for (int k = 0; k < kSpectrumBins; ++k)
-    t[k] = static_cast<float>(std::exp(-optical_depth(depths, k)));
-  return t;
+  return transmittance(depths, BinSet::all());
 }
 
 double Medium::extinction(double z, int k, bool ends_on_surface) const {

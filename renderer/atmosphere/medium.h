@@ -16,6 +16,7 @@
 // depth times the component's extinction in that bin.
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include "core/vec3.h"
 #include "renderer/atmosphere/phase_function.h"
@@ -25,6 +26,13 @@
 namespace landsim::renderer {
 
 inline constexpr int kMediumComponents = 2;
+inline constexpr double kInfiniteDistance = std::numeric_limits<double>::infinity();
+
+// Koschmieder's law: the whole extinction at 550 nm, per metre, at the haze's base (0 without
+// haze). The medium's aerosol and air share it; the comparable tracer's uniform fog is it.
+inline double visibility_extinction(const Haze& h) {
+  return h.enabled && h.visibility > 0.0 ? 3.912 / h.visibility : 0.0;
+}
 
 // Wavelength bins by index: those an output sees (renderer/transport/path_tracer.cpp), where
 // the medium's per-bin work is done; the others are left at zero (nothing reads them).

@@ -22,7 +22,7 @@ ComparableTracer::ComparableTracer(const Scene& scene, const EmbreeScene& embree
       embree_(embree),
       light_(light),
       sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
-      haze_(scene.haze),
+      fog_extinction_(visibility_extinction(scene.haze)),
       sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
 
 PathSample ComparableTracer::trace(const Ray& ray, const CounterRng& rng,
@@ -36,8 +36,8 @@ PathSample ComparableTracer::trace(const Ray& ray, const CounterRng& rng,
   if (hit || ray.direction.z <= 0.0f) {
     // Uniform fog of the base height's density over the segment, of one colour.
     const double t = hit ? hit->t : kInfiniteDistance;
-    const auto transmitted = static_cast<float>(
-        haze_.enabled() ? std::exp(-haze_.sigma(scene_.haze.base_height) * t) : 1.0);
+    const auto transmitted =
+        static_cast<float>(fog_extinction_ > 0.0 ? std::exp(-fog_extinction_ * t) : 1.0);
     out.radiance += throughput * light_.fog_colour * (1.0f - transmitted);
     throughput = throughput * transmitted;
   }

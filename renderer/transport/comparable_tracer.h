@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "renderer/acceleration/embree_scene.h"
-#include "renderer/atmosphere/haze.h"
+#include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/transport/integrator.h"
 
@@ -32,7 +32,7 @@ class ComparableTracer : public Integrator {
   const EmbreeScene& embree_;
   ComparableLight light_;
   SkyModel sky_;
-  HazeModel haze_;
+  double fog_extinction_;  // per metre, uniform: the haze base's (0 without haze)
   Vec3f sun_direction_;
 };
 

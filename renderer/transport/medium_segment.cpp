@@ -59,6 +59,13 @@ MediumPoint MediumSegment::sample(float u_bin, float u_distance) const {
     out.weight[static_cast<std::size_t>(c)] =
         to_point * m.scattering * (static_cast<float>(rho[static_cast<std::size_t>(c)]) / pdf);
   }
+  float total = 0.0f;
+  for (std::size_t c = 0; c < out.share.size(); ++c) {
+    for (int i = 0; i < bins_.count; ++i)
+      out.share[c] += out.weight[c][bins_.index[static_cast<std::size_t>(i)]];
+    total += out.share[c];
+  }
+  for (float& share : out.share) share = total > 0.0f ? share / total : 0.0f;
   return out;
 }
 

@@ -27,6 +27,9 @@ struct MediumPoint {
   // Per component, transmittance to the point x its scattering coefficient there, over the
   // point's density: the phase function's weight in each bin.
   std::array<Spectrum, kMediumComponents> weight;
+  // How often a new direction from here follows each component's phase function: in
+  // proportion to its weight in the bins an output sees.
+  std::array<float, kMediumComponents> share{};
 };
 
 class MediumSegment {

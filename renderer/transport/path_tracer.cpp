@@ -1,6 +1,5 @@
 #include "renderer/transport/path_tracer.h"
 
-#include "renderer/atmosphere/haze.h"
 #include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/glossy.h"
@@ -186,26 +185,8 @@ Spectrum PathTracer::phase(const MediumPoint& p, float c) const {
   return f;
 }
 
-namespace {
-
-// How often a haze point's new direction follows each component's phase function: in
-// proportion to its weight in the bins an output sees.
-std::array<float, kMediumComponents> component_shares(const MediumPoint& p, const Spectrum& seen) {
-  std::array<float, kMediumComponents> share{};
-  float total = 0.0f;
-  for (std::size_t c = 0; c < share.size(); ++c) {
-    const Spectrum w = p.weight[c] * seen;
-    for (float x : w.v) share[c] += x;
-    total += share[c];
-  }
-  for (float& s : share) s = total > 0.0f ? s / total : 0.0f;
-  return share;
-}
-
-}  // namespace
-
 float PathTracer::phase_pdf(const MediumPoint& p, float c) const {
-  const auto share = component_shares(p, seen_bins_);
+  const auto& share = p.share;
   float pdf = 0.0f;
   for (int i = 0; i < kMediumComponents; ++i)
     if (share[static_cast<std::size_t>(i)] > 0.0f)
@@ -400,7 +381,7 @@ bool PathTracer::survives(Spectrum& throughput, int bounce, float u) const {
 bool PathTracer::scatter_from(const MediumPoint& p, float q, const CounterRng& rng,
                               std::uint32_t dim, PathState& path) const {
   // A direction from the haze point's phase functions, the component by its share.
-  const auto share = component_shares(p, seen_bins_);
+  const auto& share = p.share;
   const int c = rng.uniform(dim + kFresnel) < share[0] ? 0 : 1;
   const std::array<float, 2> lobe = rng.uniform2(dim + kChoice);
   const PhaseSample next = medium_.component(c).phase.sample(path.ray.direction, lobe[0], lobe[1]);

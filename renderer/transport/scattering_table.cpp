@@ -78,17 +78,11 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
   // a third strategy draws directions from the aerosol's phase function about the sun.
   const PhaseFunction& aerosol_about_sun = medium.component(0).phase;
   const Vec3f sun_f(sun);
+  const int n_present = static_cast<int>(std::count(present.begin(), present.end(), true));
   tbb::parallel_for(tbb::blocked_range<int>(0, cells), [&](const tbb::blocked_range<int>& r) {
     for (int index = r.begin(); index != r.end(); ++index) {
-      const int height = index / (kCosines * kAzimuths);
-      const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
-      const float mu = cosine_of(m), s = std::sqrt(std::max(0.0f, 1.0f - mu * mu));
-      const std::array<float, 2> across = azimuth_of(a);
-      const Vec3f d = table->sun_horizontal_ * (s * across[0]) +
-                      table->sun_side_ * (s * across[1]) + Vec3f{0.0f, 0.0f, mu};
-      const Vec3f at{0.0f, 0.0f,
-                     static_cast<float>(table->heights_[static_cast<std::size_t>(height)])};
-      const int n_present = static_cast<int>(std::count(present.begin(), present.end(), true));
+      const Vec3f d = table->cell_direction(index);
+      const Vec3f at{0.0f, 0.0f, static_cast<float>(table->cell_height(index))};
       std::array<std::array<double, kSpectrumBins>, kMediumComponents> sum{};
       for (int i = 0; i < kPathsPerCell; ++i) {
         const CounterRng rng(kTableSeed, static_cast<std::uint64_t>(index),
@@ -103,9 +97,9 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
         if (strategy == n_present + 1) {
           next = aerosol_about_sun.sample(sun_f, u[0], u[1]).direction;
         } else if (strategy == n_present) {
-          const float z = 1.0f - 2.0f * u[0], r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+          const float z = 1.0f - 2.0f * u[0], radius = std::sqrt(std::max(0.0f, 1.0f - z * z));
           const float a = 2.0f * std::numbers::pi_v<float> * u[1];
-          next = {r * std::cos(a), r * std::sin(a), z};
+          next = {radius * std::cos(a), radius * std::sin(a), z};
         } else {
           int c = strategy;
           if (!present[static_cast<std::size_t>(c)]) c = 1 - c;
@@ -145,15 +139,10 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
   if (table->has_sky_) {
     table->sky_rest_.assign(static_cast<std::size_t>(cells), Spectrum{});
     for (int index = 0; index < cells; ++index) {
-      const int height = index / (kCosines * kAzimuths);
-      const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
-      const float mu = cosine_of(m), s = std::sqrt(std::max(0.0f, 1.0f - mu * mu));
-      if (mu < 0.0f) continue;  // mirrored below: the horizon's cells interpolate sensibly
-      const std::array<float, 2> across = azimuth_of(a);
-      const Vec3f d = table->sun_horizontal_ * (s * across[0]) +
-                      table->sun_side_ * (s * across[1]) + Vec3f{0.0f, 0.0f, mu};
+      const Vec3f d = table->cell_direction(index);
+      if (d.z < 0.0f) continue;  // mirrored below: the horizon's cells interpolate sensibly
       table->sky_rest_[static_cast<std::size_t>(index)] =
-          table->rest_along(table->heights_[static_cast<std::size_t>(height)], d);
+          table->rest_along(table->cell_height(index), d);
     }
     for (int index = 0; index < cells; ++index) {
       const int height = index / (kCosines * kAzimuths);
@@ -165,6 +154,17 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
     }
   }
   return table;
+}
+
+Vec3f ScatteringTable::cell_direction(int index) const {
+  const int m = (index / kAzimuths) % kCosines, a = index % kAzimuths;
+  const float mu = cosine_of(m), s = std::sqrt(std::max(0.0f, 1.0f - mu * mu));
+  const std::array<float, 2> across = azimuth_of(a);
+  return sun_horizontal_ * (s * across[0]) + sun_side_ * (s * across[1]) + Vec3f{0.0f, 0.0f, mu};
+}
+
+double ScatteringTable::cell_height(int index) const {
+  return heights_[static_cast<std::size_t>(index / (kCosines * kAzimuths))];
 }
 
 Spectrum ScatteringTable::table_lookup(const std::vector<Spectrum>& values, double z,

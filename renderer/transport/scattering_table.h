@@ -51,6 +51,9 @@ class ScatteringTable {
   static constexpr int kHeights = 9, kCosines = 13, kAzimuths = 7;
 
  private:
+  // Cell `index`'s direction (a path's, in the scene frame) and height.
+  Vec3f cell_direction(int index) const;
+  double cell_height(int index) const;
   Spectrum table_lookup(const std::vector<Spectrum>& values, double z, const Vec3f& d) const;
   // The ray's multiply scattered part by quadrature through the table (cells with d.z > 0).
   Spectrum rest_along(double z, const Vec3f& d) const;

@@ -9,7 +9,7 @@
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
-#include "renderer/atmosphere/haze.h"
+#include "renderer/atmosphere/medium.h"
 #include "renderer/output/image_output.h"
 #include "renderer/transport/render.h"
 #include "terrain/ground_mesh.h"
@@ -48,44 +48,62 @@ TEST(Physics, WhiteFurnace) {
   EXPECT_NEAR(mean_luminance(film), 0.5, 0.5 * 0.02);
 }
 
-TEST(Physics, HazeTransmittanceMatchesTheAnalyticFormula) {
+// The haze's aerosol alone (no air, grey), bin 8 (550 nm): its extinction and the closed
+// forms the medium draws and dims with.
+Haze grey_aerosol(double visibility) {
   Haze h;
   h.enabled = true;
-  h.visibility = 5000.0;
+  h.visibility = visibility;
+  h.molecular = false;
+  h.angstrom = 0.0;
+  return h;
+}
+
+TEST(Physics, HazeTransmittanceMatchesTheAnalyticFormula) {
+  Haze h = grey_aerosol(5000.0);
   h.scale_height = 800.0;
   h.base_height = 100.0;
-  const HazeModel haze(h);
-  EXPECT_NEAR(haze.sigma(100.0), 3.912 / 5000.0, 1e-12);  // Koschmieder at the base
+  const Medium haze(h);
+  constexpr int k = 8;
+  const auto sigma = [&](double z) { return haze.extinction(z, k, true); };
+  const auto depth = [&](const Vec3& o, const Vec3& d, double t) {
+    return haze.optical_depth(haze.unit_depths(o, d, t, true), k);
+  };
+  EXPECT_NEAR(sigma(100.0), 3.912 / 5000.0, 1e-12);  // Koschmieder at the base
   for (const Vec3& d :
        {normalize(Vec3{1.0, 0.0, 0.2}), normalize(Vec3{0.3, 1.0, -0.1}), Vec3{1.0, 0.0, 0.0}}) {
     const Vec3 o{0.0, 0.0, 400.0};
     const double t = 3000.0;
     double tau = 0.0;  // midpoint rule over the exponential density
     const int n = 100000;
-    for (int i = 0; i < n; ++i) tau += haze.sigma(o.z + d.z * (i + 0.5) * t / n) * t / n;
-    EXPECT_NEAR(haze.optical_depth(o, d, t), tau, 1e-6 * tau);
-    EXPECT_NEAR(haze.transmittance(o, d, t), std::exp(-tau), 1e-6);
+    for (int i = 0; i < n; ++i) tau += sigma(o.z + d.z * (i + 0.5) * t / n) * t / n;
+    EXPECT_NEAR(depth(o, d, t), tau, 1e-6 * tau);
+    EXPECT_NEAR(haze.transmittance(o, d, t, true)[k], std::exp(-tau), 1e-6);
   }
   // Straight up to infinity: sigma(z0) x H.
-  EXPECT_NEAR(haze.optical_depth({0, 0, 100.0}, {0, 0, 1}, kInfiniteDistance),
-              3.912 / 5000.0 * 800.0, 1e-9);
-  EXPECT_EQ(haze.transmittance({0, 0, 100.0}, normalize(Vec3{1, 0, -0.01}), kInfiniteDistance),
-            0.0);
+  EXPECT_NEAR(depth({0, 0, 100.0}, {0, 0, 1}, kInfiniteDistance), 3.912 / 5000.0 * 800.0, 1e-9);
+  EXPECT_EQ(
+      haze.transmittance({0, 0, 100.0}, normalize(Vec3{1, 0, -0.01}), kInfiniteDistance, true)[k],
+      0.0f);
 }
 
 TEST(Physics, HazeDistancesFollowExtinctionTimesTransmittance) {
-  Haze h;
-  h.enabled = true;
-  h.visibility = 2000.0;
-  const HazeModel haze(h);
+  const Medium haze(grey_aerosol(2000.0));
+  constexpr int k = 8;
+  const auto depth = [&](const Vec3& o, const Vec3& d, double t) {
+    return haze.optical_depth(haze.unit_depths(o, d, t, true), k);
+  };
   const Vec3 o{0, 0, 50}, d = normalize(Vec3{1, 0, 0.05});
   const double t = 4000.0, s_mid = 1000.0;
-  const double expected =
-      -std::expm1(-haze.optical_depth(o, d, s_mid)) / -std::expm1(-haze.optical_depth(o, d, t));
+  const double expected = -std::expm1(-depth(o, d, s_mid)) / -std::expm1(-depth(o, d, t));
   int below = 0;
   const int n = 100000;
-  for (int i = 0; i < n; ++i)
-    below += haze.sample_distance(o, d, t, CounterRng(1, i, 0).uniform(0)) < s_mid;
+  const double scattered = -std::expm1(-depth(o, d, t));
+  for (int i = 0; i < n; ++i) {
+    // The optical depth at which to stop, uniform in 1 - exp(-tau) over the segment.
+    const double tau = -std::log1p(-CounterRng(1, i, 0).uniform(0) * scattered);
+    below += haze.distance_at(o, d, t, true, k, tau) < s_mid;
+  }
   EXPECT_NEAR(below / static_cast<double>(n), expected, 0.005);
 }
 

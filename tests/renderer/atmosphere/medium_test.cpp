@@ -7,7 +7,6 @@
 
 #include <cmath>
 
-#include "renderer/atmosphere/haze.h"
 
 namespace landsim::renderer {
 namespace {
