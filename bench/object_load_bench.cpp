@@ -13,9 +13,9 @@
 #include <fstream>
 #include <vector>
 
-#include "scenes/mesh_io.h"
-#include "scenes/scenario.h"
-#include "scenes/scene_builder.h"
+#include "scenes/builder/mesh_io.h"
+#include "scenes/scenario/scenario.h"
+#include "scenes/builder/scene_builder.h"
 
 namespace {
 

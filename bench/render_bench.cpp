@@ -3,8 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include "renderer/transport/render.h"
-#include "scenes/default_scenario.h"
-#include "scenes/scene_builder.h"
+#include "scenes/scenario/default_scenario.h"
+#include "scenes/builder/scene_builder.h"
 
 namespace {
 

@@ -20,8 +20,8 @@
 #include "renderer/camera.h"
 #include "renderer/transport/detail/ray_recorder.h"
 #include "renderer/transport/path_tracer.h"
-#include "scenes/default_scenario.h"
-#include "scenes/scene_builder.h"
+#include "scenes/scenario/default_scenario.h"
+#include "scenes/builder/scene_builder.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 #pragma once
 // What this process holds in memory and what the machine has (Linux): the inputs of the
-// memory budget (scenes/memory_estimate.h) and of its calibration (bench/memory_bench.cpp).
+// memory budget (scenes/builder/memory_estimate.h) and of its calibration (bench/memory_bench.cpp).
 #include <sys/resource.h>
 #include <unistd.h>
 

@@ -11,7 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "renderer/output/image_output.h"
-#include "scenes/image_set.h"
+#include "scenes/image_set/image_set.h"
 
 namespace landsim::exporters {
 namespace {

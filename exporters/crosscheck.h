@@ -10,7 +10,7 @@
 #include <string>
 
 #include "renderer/scene.h"
-#include "scenes/scenario.h"
+#include "scenes/scenario/scenario.h"
 
 namespace landsim::exporters {
 

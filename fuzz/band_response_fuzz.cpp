@@ -2,7 +2,7 @@
 // it makes.
 #include "fuzz/fuzz_input.h"
 #include "renderer/spectra/sensor_band.h"
-#include "scenes/sensor_bands.h"
+#include "scenes/scenario/sensor_bands.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return landsim::fuzz::refused_or_read([&] {

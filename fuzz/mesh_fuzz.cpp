@@ -1,8 +1,8 @@
 // A scene object's mesh file (docs/OBJECTS.md) through the header checks and the meshes
 // module (Assimp): OBJ, PLY, glTF or GLB, chosen by the input's first byte.
 #include "fuzz/fuzz_input.h"
-#include "scenes/detail/mesh_file_check.h"
-#include "scenes/mesh_io.h"
+#include "scenes/builder/detail/mesh_file_check.h"
+#include "scenes/builder/mesh_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "fuzz/fuzz_input.h"
-#include "scenes/scenario.h"
+#include "scenes/scenario/scenario.h"
 
 namespace {
 

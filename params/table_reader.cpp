@@ -158,7 +158,7 @@ std::string TableReader::prefix(std::string_view key) const {
 
 std::string TableReader::location(const toml::node* node) const {
   const toml::source_region& src = node != nullptr ? node->source() : table_->source();
-  // A value set from the command line (scenes/detail/scenario_overrides) names itself.
+  // A value set from the command line (scenes/scenario/detail/scenario_overrides) names itself.
   if (src.path != nullptr && src.path->rfind("--set ", 0) == 0) return *src.path;
   if (src.begin.line == 0) return file_;
   return file_ + ":" + std::to_string(src.begin.line) + ":" + std::to_string(src.begin.column);

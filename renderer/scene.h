@@ -54,11 +54,11 @@ struct Ground {
   Vec3f albedo = kDefaultGroundAlbedo;  // material 0: the terrain's own
   // The plain beyond the grid (renderer/transport/plain.h), and the ground the sky model sees
   // (Hosek-Wilkie's ground albedo): the mean albedo along the grid's edge
-  // (scenes/detail/plain_albedo); empty: `albedo`.
+  // (scenes/builder/detail/plain_albedo); empty: `albedo`.
   std::optional<Vec3f> edge_albedo;
   Vec3f plain_albedo() const { return edge_albedo.value_or(albedo); }
   // The plain's height, scene frame z (renderer/transport/plain.h): the mean along the grid's edge
-  // (scenes/detail/plain_albedo); empty: the mean of the mesh's rim.
+  // (scenes/builder/detail/plain_albedo); empty: the mean of the mesh's rim.
   std::optional<float> plain_height;
   // False: no plain, rays below the horizon see the sky model's (studio scenes: a cutaway
   // looks into the space under its ground).
@@ -282,7 +282,7 @@ struct TreeInstance {
   Vec3 position;          // trunk base, scene frame
   double rotation = 0.0;  // about z, radians
   double scale = 1.0;
-  // The whole tree's lean in the wind (scenes/wind_field.h): a turn about the trunk base
+  // The whole tree's lean in the wind (scenes/builder/wind_field.h): a turn about the trunk base
   // after the rotation, as axis x angle (radians); zero: upright.
   Vec3 lean{};
   bool leans() const { return lean.x != 0.0 || lean.y != 0.0 || lean.z != 0.0; }

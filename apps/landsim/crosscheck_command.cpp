@@ -9,8 +9,8 @@
 #include "core/input_error.h"
 #include "exporters/crosscheck.h"
 #include "scenario_input.h"
-#include "scenes/render_choices.h"
-#include "scenes/scene_builder.h"
+#include "scenes/scenario/render_choices.h"
+#include "scenes/builder/scene_builder.h"
 
 namespace landsim::app {
 

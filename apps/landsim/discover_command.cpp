@@ -13,7 +13,7 @@
 #include "exporters/contact_sheet.h"
 #include "renderer/output/image_output.h"
 #include "scenario_input.h"
-#include "scenes/scenario.h"
+#include "scenes/scenario/scenario.h"
 #include "trees/harmonic/parameters.h"
 #include "trees/species.h"
 

@@ -7,7 +7,7 @@
 
 #include "exporters/obj_export.h"
 #include "scenario_input.h"
-#include "scenes/scene_builder.h"
+#include "scenes/builder/scene_builder.h"
 
 namespace landsim::app {
 

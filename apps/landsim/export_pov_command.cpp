@@ -15,7 +15,7 @@
 #include "renderer/output/exposure.h"
 #include "renderer/spectra/colour_matching.h"
 #include "scenario_input.h"
-#include "scenes/scene_builder.h"
+#include "scenes/builder/scene_builder.h"
 
 namespace landsim::app {
 

@@ -16,7 +16,7 @@
 #include "renderer/output/image_output.h"
 #include "renderer/transport/render.h"
 #include "scenario_input.h"
-#include "scenes/scenario.h"
+#include "scenes/scenario/scenario.h"
 #include "trees/measured_growth/dimensions.h"
 #include "trees/measured_growth/generator.h"
 #include "trees/species.h"

@@ -8,7 +8,7 @@
 #include <iostream>
 
 #include "scenario_input.h"
-#include "scenes/memory_estimate.h"
+#include "scenes/builder/memory_estimate.h"
 
 namespace landsim::app {
 

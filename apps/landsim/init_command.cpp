@@ -9,7 +9,7 @@
 #include <iostream>
 
 #include "core/input_error.h"
-#include "scenes/starter_scenario.h"
+#include "scenes/scenario/starter_scenario.h"
 
 namespace landsim::app {
 namespace {

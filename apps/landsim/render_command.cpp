@@ -14,8 +14,8 @@
 #include "mpi_session.h"
 #include "renderer/transport/render.h"
 #include "scenario_input.h"
-#include "scenes/image_set.h"
-#include "scenes/render_choices.h"
+#include "scenes/image_set/image_set.h"
+#include "scenes/scenario/render_choices.h"
 #ifdef LANDSIM_HAVE_MPI
 #include "distributed_render.h"
 #endif

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/input_error.h"
-#include "scenes/default_scenario.h"
+#include "scenes/scenario/default_scenario.h"
 
 namespace landsim::app {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/scenario.h"
+#include "scenes/scenario/scenario.h"
 
 namespace CLI {
 class App;

@@ -6,8 +6,8 @@
 
 #include <iostream>
 
-#include "scenes/scenario.h"
-#include "scenes/sensor_output.h"
+#include "scenes/scenario/scenario.h"
+#include "scenes/image_set/sensor_output.h"
 
 namespace landsim::app {
 

@@ -13,7 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "exporters/obj_export.h"
-#include "scenes/scenario.h"
+#include "scenes/scenario/scenario.h"
 #include "trees/self_organizing/simulation.h"
 #include "trees/species.h"
 

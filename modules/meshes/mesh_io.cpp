@@ -1,6 +1,6 @@
-// liblandsim_meshes.so: the mesh function table of scenes/mesh_io.h on Assimp. Loaded by
+// liblandsim_meshes.so: the mesh function table of scenes/builder/mesh_io.h on Assimp. Loaded by
 // landsim the first time a scene object is read (core/module_loader.h).
-#include "scenes/mesh_io.h"
+#include "scenes/builder/mesh_io.h"
 
 #include <assimp/BaseImporter.h>
 #include <assimp/importerdesc.h>

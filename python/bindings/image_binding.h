@@ -4,7 +4,7 @@
 // the channel `landsim render` writes bit for bit.
 #include <pybind11/pybind11.h>
 
-#include "scenes/image_set.h"
+#include "scenes/image_set/image_set.h"
 
 namespace landsim::python {
 

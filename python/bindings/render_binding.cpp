@@ -9,9 +9,9 @@
 
 #include "python/bindings/cancellable_call.h"
 #include "python/bindings/scenario_binding.h"
-#include "scenes/image_set.h"
-#include "scenes/memory_estimate.h"
-#include "scenes/render_choices.h"
+#include "scenes/image_set/image_set.h"
+#include "scenes/builder/memory_estimate.h"
+#include "scenes/scenario/render_choices.h"
 
 namespace py = pybind11;
 

@@ -1,6 +1,6 @@
 #pragma once
 // `landsim.render`, `landsim.render_set` and `landsim.info`: the render library
-// (scenes/image_set.h) called as `landsim render` and `landsim info` call it.
+// (scenes/image_set/image_set.h) called as `landsim render` and `landsim info` call it.
 #include <pybind11/pybind11.h>
 
 namespace landsim::python {

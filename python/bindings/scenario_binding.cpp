@@ -6,7 +6,7 @@
 
 #include "core/input_error.h"
 #include "python/bindings/toml_value.h"
-#include "scenes/default_scenario.h"
+#include "scenes/scenario/default_scenario.h"
 
 namespace py = pybind11;
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/scenario.h"
+#include "scenes/scenario/scenario.h"
 
 namespace landsim::python {
 

@@ -1,6 +1,6 @@
 #pragma once
 // What the renderer's structures cost in resident memory, per element: the constants of the
-// memory estimate (scenes/memory_estimate.h, docs/PERFORMANCE.md "Memory budget").
+// memory estimate (scenes/builder/memory_estimate.h, docs/PERFORMANCE.md "Memory budget").
 // Embree's figures are measured by bench/memory_bench.cpp (Embree 3.13, a million elements
 // of each: its copies of the buffers plus the BVH built over them); rerun it after an Embree
 // upgrade.

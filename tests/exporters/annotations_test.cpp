@@ -12,7 +12,7 @@
 
 #include "core/input_error.h"
 #include "renderer/output/image_output.h"
-#include "scenes/image_set.h"
+#include "scenes/image_set/image_set.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::exporters {

@@ -19,7 +19,7 @@
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
 #include "renderer/transport/render.h"
-#include "scenes/scene_builder.h"
+#include "scenes/builder/scene_builder.h"
 #include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/tools.h"

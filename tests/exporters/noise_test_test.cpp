@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "renderer/transport/render.h"
-#include "scenes/default_scenario.h"
-#include "scenes/scene_builder.h"
+#include "scenes/scenario/default_scenario.h"
+#include "scenes/builder/scene_builder.h"
 
 namespace landsim::exporters {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "renderer/camera.h"
 #include "renderer/transport/render.h"
-#include "scenes/scene_builder.h"
+#include "scenes/builder/scene_builder.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::exporters {

@@ -1,0 +1,52 @@
+#include "scenes/builder/detail/plain_albedo.h"
+
+#include <cmath>
+
+namespace landsim::scenes::detail {
+namespace {
+
+// A cell at the edge of the ground: valid, with a 4-neighbour outside the grid or nodata.
+bool edge_cell(const terrain::ElevationGrid& g, int c, int r) {
+  if (c < 0 || r < 0 || c >= g.cols() || r >= g.rows() || !g.valid(c, r)) return false;
+  const auto open = [&](int cc, int rr) {
+    return cc < 0 || rr < 0 || cc >= g.cols() || rr >= g.rows() || !g.valid(cc, rr);
+  };
+  return open(c - 1, r) || open(c + 1, r) || open(c, r - 1) || open(c, r + 1);
+}
+
+}  // namespace
+
+Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
+                  const Vec3& origin) {
+  const terrain::GeoTransform& t = grid.transform();
+  const terrain::GroundMesh& mesh = ground.mesh;
+  Vec3 sum{};
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < mesh.triangle_count(); ++k) {
+    const Vec3f a = mesh.vertices[mesh.indices[3 * k]], b = mesh.vertices[mesh.indices[3 * k + 1]],
+                c = mesh.vertices[mesh.indices[3 * k + 2]];
+    const Vec3 centre = Vec3((a + b + c) / 3.0f) + origin;
+    const auto col = static_cast<int>(std::floor((centre.x - t.origin_x) / t.cell_size_x));
+    const auto row = static_cast<int>(std::floor((t.origin_y - centre.y) / t.cell_size_y));
+    if (!edge_cell(grid, col, row) || ground.material_id(k) == renderer::Ground::kSurroundings)
+      continue;
+    sum += Vec3(ground.material(ground.material_id(k)).albedo);
+    ++n;
+  }
+  return n == 0 ? ground.albedo : Vec3f(sum / static_cast<double>(n));
+}
+
+std::optional<float> edge_height(const terrain::ElevationGrid& grid, const Vec3& origin) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (int r = 0; r < grid.rows(); ++r)
+    for (int c = 0; c < grid.cols(); ++c)
+      if (edge_cell(grid, c, r)) {
+        sum += grid.at(c, r);
+        ++n;
+      }
+  if (n == 0) return std::nullopt;
+  return static_cast<float>(sum / static_cast<double>(n) - origin.z);
+}
+
+}  // namespace landsim::scenes::detail

@@ -1,0 +1,27 @@
+#pragma once
+// What a caller chooses for one render beyond the scenario's keys: samples, threads, image
+// size and the one view to render. `landsim render`'s options and the Python module's
+// `render` arguments are applied by the same function, so both render the same image.
+#include <optional>
+#include <string>
+
+#include "scenes/scenario/scenario.h"
+
+namespace landsim::scenes {
+
+struct RenderChoices {
+  std::optional<int> spp;
+  std::optional<int> threads;
+  std::optional<int> width, height;  // a lone width or height keeps each view's aspect
+  std::string view;                  // empty: every view
+  std::string source = "--view";     // how messages name the choice of view
+};
+
+// Sizes win over the scenario's; a lone width or height keeps each view's aspect ratio.
+// InputError for an explosive size.
+void override_view_sizes(Scenario& s, std::optional<int> width, std::optional<int> height);
+
+// Applies `c` to `s`: the chosen view alone stays (InputError naming the views there are).
+void apply_render_choices(Scenario& s, const RenderChoices& c);
+
+}  // namespace landsim::scenes

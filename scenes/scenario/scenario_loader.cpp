@@ -1,0 +1,188 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/fnv_hash.h"
+#include "core/input_error.h"
+#include "featuremaps/placement.h"
+#include "params/table_reader.h"
+#include "scenes/scenario/scenario.h"
+
+#include "scenes/scenario/detail/ground_reader.h"
+#include "scenes/scenario/detail/haze_reader.h"
+#include "scenes/scenario/detail/object_reader.h"
+#include "scenes/scenario/detail/render_reader.h"
+#include "scenes/scenario/detail/scenario_overrides.h"
+#include "scenes/scenario/detail/sensor_reader.h"
+#include "scenes/scenario/detail/sky_reader.h"
+#include "scenes/scenario/detail/terrain_reader.h"
+#include "scenes/scenario/detail/toml_tables.h"
+#include "scenes/scenario/detail/vegetation_reader.h"
+#include "scenes/scenario/detail/view_reader.h"
+
+namespace landsim::scenes {
+
+// Each table has its reader in detail/ (a file pair per table, or per kin of tables).
+using namespace detail;
+
+namespace {
+
+void refuse_unknown_tables(const toml::table& root, const std::string& file) {
+  static const std::set<std::string, std::less<>> kKnown{
+      "terrain", "sun",  "views", "render", "featuremaps", "species", "grass",
+      "ground",  "wind", "sky",   "haze",   "objects",     "bands",   "sensor"};
+  for (auto&& [key, value] : root) {
+    if (kKnown.count(key.str()) != 0) continue;
+    const auto& b = key.source().begin;
+    throw InputError(
+        file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+        ": unknown table or key '" + std::string(key.str()) + "'" +
+        params::did_you_mean(key.str(), std::vector<std::string>(kKnown.begin(), kKnown.end())) +
+        " (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
+        "haze, views, render, objects, bands, sensor)");
+  }
+}
+
+}  // namespace
+
+void check_image_size(int width, int height, const std::string& where) {
+  const std::string prefix = where.empty() ? "" : where + ": ";
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
+    throw InputError(prefix + "image size " + std::to_string(width) + " x " +
+                     std::to_string(height) + ": each side must be from 1 to " +
+                     std::to_string(kMaxImageSide));
+  }
+  if (double(width) * double(height) > kMaxImagePixels) {
+    throw InputError(prefix + "image of " + std::to_string(width) + " x " + std::to_string(height) +
+                     " pixels exceeds the limit of 100 million pixels");
+  }
+}
+
+Scenario parse_scenario(std::string_view text, const std::string& source,
+                        const std::string& base_dir, const std::vector<std::string>& sets) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(params::parse_error_message(e, source));
+  }
+  if (root.contains("core"))
+    throw InputError(source +
+                     ": this is a species file (it names a tree core), not a scenario; a "
+                     "scenario has [terrain], [sun] and [[views]] (landsim tree takes species "
+                     "files)");
+  apply_overrides(root, sets);
+  refuse_unknown_tables(root, source);
+  Scenario s;
+  s.source = source;
+  std::uint64_t hash = fnv1a(text);  // over the text and the overrides
+  for (const std::string& set : sets) hash = fnv1a("\n--set " + set, hash);
+  s.text_hash = fmt::format("{:016x}", hash);
+  s.terrain = read_terrain(sub_table(root, "terrain", source, true), source, base_dir);
+  s.sun = read_sun(sub_table(root, "sun", source, true), source);
+  s.featuremaps = read_featuremaps(root, source, base_dir);
+  s.species = read_species(root, source, base_dir);
+  s.grass = read_grass(root, source);
+  s.ground = read_ground(root, source, base_dir);
+  // Where the i-th [[grass]] or [[species]] table stands, for the messages below.
+  const auto where = [&](std::string_view key, std::size_t i) {
+    const toml::array* a = root.get(key) != nullptr ? root.get(key)->as_array() : nullptr;
+    const toml::node* first = a != nullptr && a->size() > i ? a->get(i) : root.get(key);
+    const auto& b = first->source().begin;
+    return source + ":" + std::to_string(b.line) + ":" + std::to_string(b.column);
+  };
+  // Vegetation grows where a feature map or its own cover says; with neither it would grow
+  // nowhere.
+  const bool maps =
+      s.featuremaps && (!s.featuremaps->vegetation.empty() || !s.featuremaps->classes.empty());
+  for (std::size_t i = 0; i < s.grass.size() && !maps; ++i)
+    if (!s.grass[i].cover)
+      throw InputError(where("grass", i) + ": [[grass]] type " + std::to_string(s.grass[i].type) +
+                       " grows nowhere: give it a cover (\"everywhere\", a fraction, a "
+                       "rectangle or a polygon) or add [featuremaps] vegetation or classes");
+  for (std::size_t i = 0; i < s.species.size() && !maps; ++i)
+    if (!s.species[i].cover)
+      throw InputError(where("species", i) + ": [[species]] bit " +
+                       std::to_string(s.species[i].bit) +
+                       " grows nowhere: give it a cover (\"everywhere\", a fraction, a "
+                       "rectangle or a polygon) or add [featuremaps] vegetation or classes");
+  // Bands before the sensor, the sensor before the views: the channels share the bands'
+  // layers, and each view may override the sensor.
+  s.bands = read_bands(root, source, base_dir);
+  s.sensor = read_sensor(root, source, base_dir, s.bands.size());
+  s.views = read_views(root, source, s.sensor);
+  s.render = read_render(sub_table(root, "render", source, false), source);
+  s.wind = read_wind(sub_table(root, "wind", source, false), source);
+  s.sky = read_sky(sub_table(root, "sky", source, false), source);
+  s.haze = read_haze(root, source);
+  s.objects = read_objects(root, source, base_dir);
+  return s;
+}
+
+bool has_cover(const Scenario& s) {
+  return std::any_of(s.species.begin(), s.species.end(), [](const auto& k) { return k.cover; }) ||
+         std::any_of(s.grass.begin(), s.grass.end(), [](const auto& g) { return g.cover; });
+}
+
+SensorSettings load_sensor(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file))
+    throw InputError(file.string() + ": cannot open sensor file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  toml::table root;
+  try {
+    root = toml::parse(text.str(), file.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(params::parse_error_message(e, file.string()));
+  }
+  for (auto&& [key, value] : root)
+    if (key.str() != "sensor") {
+      const auto& b = key.source().begin;
+      throw InputError(
+          fmt::format("{}:{}:{}: unknown table or key '{}' (a sensor file holds "
+                      "[sensor] alone)",
+                      file.string(), b.line, b.column, key.str()));
+    }
+  std::optional<SensorSettings> s =
+      read_sensor(root, file.string(), file.parent_path().string(), 0);
+  if (!s) throw InputError(file.string() + ": no [sensor] table");
+  return *s;
+}
+
+ScenarioText read_scenario_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file)) {
+    throw InputError(file.string() + ": cannot open scenario file");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return {text.str(), file.string(), file.parent_path().string()};
+}
+
+Scenario parse_scenario(const ScenarioText& t, const std::vector<std::string>& sets) {
+  return parse_scenario(t.text, t.source, t.base_dir, sets);
+}
+
+std::string scenario_toml(const ScenarioText& t, const std::vector<std::string>& sets) {
+  toml::table root;
+  try {
+    root = toml::parse(t.text, t.source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(params::parse_error_message(e, t.source));
+  }
+  apply_overrides(root, sets);
+  std::ostringstream out;
+  out << root << "\n";
+  return out.str();
+}
+
+Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& sets) {
+  return parse_scenario(read_scenario_text(file), sets);
+}
+
+}  // namespace landsim::scenes

@@ -1,0 +1,143 @@
+// A map view of the Kagwene grid as GIS tools read it: GDAL's own reader finds the DEM's CRS,
+// its exact geotransform, the bands' names and wavelengths, and world positions on the DEM.
+#include "scenes/image_set/detail/geo_rasters.h"
+
+#include <gdal.h>
+#include <gtest/gtest.h>
+#include <ogr_srs_api.h>
+
+#include <cmath>
+#include <string>
+
+#include "scenes/image_set/image_set.h"
+#include "terrain/dem_loader.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+using landsim::testing::TempDir;
+
+struct GdalFile {
+  explicit GdalFile(const std::filesystem::path& p) : ds(GDALOpen(p.c_str(), GA_ReadOnly)) {}
+  ~GdalFile() {
+    if (ds != nullptr) GDALClose(ds);
+  }
+  GDALDatasetH ds;
+};
+
+// The band named `name` (its description), 1-based; 0 when there is none.
+int band_named(GDALDatasetH ds, const std::string& name) {
+  for (int b = 1; b <= GDALGetRasterCount(ds); ++b)
+    if (name == GDALGetDescription(GDALGetRasterBand(ds, b))) return b;
+  return 0;
+}
+
+std::vector<float> read(GDALDatasetH ds, int band) {
+  const int cols = GDALGetRasterXSize(ds), rows = GDALGetRasterYSize(ds);
+  std::vector<float> v(static_cast<std::size_t>(cols) * rows);
+  EXPECT_EQ(GDALRasterIO(GDALGetRasterBand(ds, band), GF_Read, 0, 0, cols, rows, v.data(), cols,
+                         rows, GDT_Float32, 0, 0),
+            CE_None);
+  return v;
+}
+
+TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
+  GDALAllRegister();
+  const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc");
+  const std::string text =
+      "[terrain]\nelevation = \"" + dem +
+      "\"\n[sun]\nelevation = 50\nazimuth = 120\n[[bands]]\nname = \"red\"\ncentre = 660\nwidth = "
+      "60\n[[views]]\nname = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n"
+      "[render]\nspp = 1\nformats = [\"exr\", \"geotiff\", \"envi\"]\n";
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  render_image_set(parse_scenario(text, "map.toml", "."), o);
+  const terrain::ElevationGrid grid = terrain::load_elevation(dem);
+  const GdalFile tif(o.out_dir / "map.tif");
+  ASSERT_NE(tif.ds, nullptr);
+  EXPECT_EQ(GDALGetRasterXSize(tif.ds), grid.cols());
+  EXPECT_EQ(GDALGetRasterYSize(tif.ds), grid.rows());
+  // The DEM's CRS and its geotransform, exactly.
+  OGRSpatialReferenceH ours = OSRNewSpatialReference(GDALGetProjectionRef(tif.ds));
+  OGRSpatialReferenceH theirs = OSRNewSpatialReference(grid.crs_wkt().c_str());
+  EXPECT_TRUE(OSRIsSame(ours, theirs));
+  OSRDestroySpatialReference(ours);
+  OSRDestroySpatialReference(theirs);
+  double gt[6];
+  ASSERT_EQ(GDALGetGeoTransform(tif.ds, gt), CE_None);
+  const terrain::GeoTransform& t = grid.transform();
+  EXPECT_NEAR(gt[0], t.origin_x, 1e-6);
+  EXPECT_NEAR(gt[1], t.cell_size_x, 1e-9);
+  EXPECT_NEAR(gt[2], 0.0, 1e-12);
+  EXPECT_NEAR(gt[3], t.origin_y, 1e-6);
+  EXPECT_NEAR(gt[4], 0.0, 1e-12);
+  EXPECT_NEAR(gt[5], -t.cell_size_y, 1e-9);
+  // The band, named, with its centre wavelength.
+  const int red = band_named(tif.ds, "band.red");
+  ASSERT_GT(red, 0);
+  const char* nm = GDALGetMetadataItem(GDALGetRasterBand(tif.ds, red), "wavelength", nullptr);
+  ASSERT_NE(nm, nullptr);
+  EXPECT_NEAR(std::stod(nm), 660.0, 0.5);
+  // The camera model, as in the manifest.
+  const char* camera = GDALGetMetadataItem(tif.ds, "landsim_camera", nullptr);
+  ASSERT_NE(camera, nullptr);
+  EXPECT_NE(std::string(camera).find("\"orthographic\""), std::string::npos);
+  // Each pixel's first hit lies in its own DEM cell, on the ground the DEM gives there.
+  const auto x = read(tif.ds, band_named(tif.ds, "world_x"));
+  const auto y = read(tif.ds, band_named(tif.ds, "world_y"));
+  const auto z = read(tif.ds, band_named(tif.ds, "world_z"));
+  const Vec3 origin = grid.centre();
+  int on_grid = 0;
+  for (int r = 0; r < grid.rows(); ++r)
+    for (int c = 0; c < grid.cols(); ++c) {
+      const std::size_t i = static_cast<std::size_t>(r) * grid.cols() + c;
+      if (std::isnan(x[i])) continue;
+      const double wx = x[i] + origin.x, wy = y[i] + origin.y, wz = z[i] + origin.z;
+      EXPECT_NEAR(wx, grid.x_of_col(c), 0.5 * t.cell_size_x + 1e-3);
+      EXPECT_NEAR(wy, grid.y_of_row(r), 0.5 * t.cell_size_y + 1e-3);
+      const std::optional<double> ground = grid.height(wx, wy);
+      if (!ground) continue;  // nodata: the plain beyond
+      // The ground mesh's two triangles per quad of cell centres part from the bilinear
+      // surface by at most a quarter of the quad's twist.
+      const int c0 = static_cast<int>(std::floor((wx - t.origin_x) / t.cell_size_x - 0.5));
+      const int r0 = static_cast<int>(std::floor((t.origin_y - wy) / t.cell_size_y - 0.5));
+      const double twist = std::abs(grid.at(c0, r0) + grid.at(c0 + 1, r0 + 1) -
+                                    grid.at(c0 + 1, r0) - grid.at(c0, r0 + 1));
+      EXPECT_NEAR(wz, *ground, 0.25 * twist + 0.01) << c << ", " << r;
+      ++on_grid;
+    }
+  EXPECT_GT(on_grid, grid.cols() * grid.rows() / 4);
+  // The id layers in a file of their own, and ENVI with its wavelengths.
+  const GdalFile ids(o.out_dir / "map_ids.tif");
+  ASSERT_NE(ids.ds, nullptr);
+  EXPECT_EQ(GDALGetRasterDataType(GDALGetRasterBand(ids.ds, 1)), GDT_UInt32);
+  EXPECT_GT(band_named(ids.ds, "species"), 0);
+  const GdalFile envi(o.out_dir / "map.img");
+  ASSERT_NE(envi.ds, nullptr);
+  EXPECT_TRUE(std::filesystem::exists(o.out_dir / "map.hdr"));
+  EXPECT_EQ(GDALGetRasterCount(envi.ds), GDALGetRasterCount(tif.ds));
+}
+
+TEST(GeoRasters, OnlyAStraightDownOrthographicViewIsAMap) {
+  renderer::View v{"v", {0.0, 0.0, 100.0}, {0.0, 0.0, 0.0}, 40.0, 10, 20};
+  EXPECT_FALSE(detail::map_geotransform(v, {}));  // perspective
+  v.lens.projection = renderer::Projection::orthographic;
+  v.lens.extent_width = 100.0;
+  v.lens.extent_height = 200.0;
+  v.heading_deg = 90.0;  // east at the top: the geotransform turns
+  const auto gt = detail::map_geotransform(v, {1000.0, 2000.0, 0.0});
+  ASSERT_TRUE(gt);
+  // Pixel (0, 0)'s corner: 100 m east (the top) and 50 m north (the left edge is north).
+  EXPECT_NEAR((*gt)[0], 1100.0, 1e-9);
+  EXPECT_NEAR((*gt)[3], 2050.0, 1e-9);
+  // Columns run south, rows run west.
+  EXPECT_NEAR((*gt)[4], -10.0, 1e-9);
+  EXPECT_NEAR((*gt)[2], -10.0, 1e-9);
+  v.target = {0.0, 10.0, 0.0};  // oblique
+  EXPECT_FALSE(detail::map_geotransform(v, {}));
+}
+
+}  // namespace
+}  // namespace landsim::scenes

@@ -1,0 +1,183 @@
+// An image set rendered through the library, no program spawned: the files and the
+// manifest, resume keeping finished images, a task index, a stop before anything is built.
+#include "scenes/image_set/image_set.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <set>
+#include <string>
+
+#include "core/input_error.h"
+#include "renderer/output/image_output.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+using landsim::testing::TempDir;
+
+// Two frames of one 32 x 18 view of the bare volcano at 1 spp.
+Scenario two_frames() {
+  const std::string text =
+      "[terrain]\nelevation = \"" +
+      landsim::testing::source_file("data/terrain/volcano.asc").string() +
+      "\"\n[sun]\nelevation = 30\nazimuth = 300\n[[views]]\nname = \"v\"\n"
+      "position = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, 130.0]\nwidth = 32\n"
+      "height = 18\n[render]\nspp = 1\nframes = [0.0, 1.0]\n";
+  return parse_scenario(text, "set.toml", ".");
+}
+
+nlohmann::json manifest_in(const std::filesystem::path& dir) {
+  return nlohmann::json::parse(landsim::testing::read_file(dir / "manifest.json"));
+}
+
+TEST(ImageSet, RendersEveryImageWithItsPreviewAndTheManifest) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  int written = 0;
+  o.written = [&](const ImageReport& r) {
+    ++written;
+    EXPECT_TRUE(std::filesystem::exists(r.exr));
+  };
+  const ImageSetResult r = render_image_set(two_frames(), o);
+  ASSERT_EQ(r.images.size(), 2u);
+  EXPECT_EQ(written, 2);
+  EXPECT_FALSE(r.stopped_at.has_value());
+  EXPECT_GT(r.memory_estimate_bytes, 0u);
+  for (const char* f : {"v_f0000.exr", "v_f0000.png", "v_f0001.exr", "v_f0001.png"})
+    EXPECT_TRUE(std::filesystem::exists(o.out_dir / f)) << f;
+  const nlohmann::json m = manifest_in(o.out_dir);
+  EXPECT_TRUE(m["complete"].get<bool>());
+  ASSERT_EQ(m["images"].size(), 2u);
+  EXPECT_EQ(m["images"][1]["path"], "v_f0001.exr");
+  EXPECT_EQ(m["images"][1]["time_s"], 1.0);
+  EXPECT_EQ(r.images[1].frame_index, 1u);
+  EXPECT_EQ(r.images[1].width, 32);
+}
+
+TEST(ImageSet, ResumeKeepsFinishedImagesBitForBit) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  render_image_set(two_frames(), o);
+  const std::string first = landsim::testing::read_file(o.out_dir / "v_f0000.exr");
+  std::filesystem::remove(o.out_dir / "v_f0001.exr");
+  o.resume = true;
+  const ImageSetResult again = render_image_set(two_frames(), o);
+  EXPECT_EQ(again.skipped, 1u);
+  ASSERT_EQ(again.images.size(), 1u);
+  EXPECT_EQ(again.images[0].frame_index, 1u);
+  EXPECT_EQ(landsim::testing::read_file(o.out_dir / "v_f0000.exr"), first);
+  EXPECT_EQ(manifest_in(o.out_dir)["images"].size(), 2u);
+}
+
+TEST(ImageSet, ATaskIndexRendersOneImageAndNoManifest) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  o.task_index = 1;
+  const ImageSetResult r = render_image_set(two_frames(), o);
+  ASSERT_EQ(r.images.size(), 1u);
+  EXPECT_TRUE(std::filesystem::exists(o.out_dir / "v_f0001.exr"));
+  EXPECT_FALSE(std::filesystem::exists(o.out_dir / "v_f0000.exr"));
+  EXPECT_FALSE(std::filesystem::exists(o.out_dir / "manifest.json"));
+  o.task_index = 2;
+  EXPECT_THROW(render_image_set(two_frames(), o), InputError);
+}
+
+// Asked to stop before the first scene is built: nothing is built and nothing written.
+TEST(ImageSet, AStopBeforeTheSceneWritesNothing) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  o.stop = [] { return true; };
+  const ImageSetResult r = render_image_set(two_frames(), o);
+  ASSERT_TRUE(r.stopped_at.has_value());
+  EXPECT_EQ(*r.stopped_at, "v_f0000");
+  EXPECT_TRUE(r.stopped_before_tracing);
+  EXPECT_TRUE(r.images.empty());
+  EXPECT_FALSE(std::filesystem::exists(o.out_dir));
+}
+
+// A later image that cannot be written (its name taken by a directory) leaves the finished
+// ones with a manifest that says the set is unfinished, and the error goes to the caller.
+TEST(ImageSet, ALaterImageThatFailsLeavesAManifestOfTheFinishedOnes) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  std::filesystem::create_directories(o.out_dir / "v_f0001.exr");
+  EXPECT_ANY_THROW(render_image_set(two_frames(), o));
+  const nlohmann::json m = manifest_in(o.out_dir);
+  EXPECT_FALSE(m["complete"].get<bool>());
+  ASSERT_EQ(m["images"].size(), 1u);
+  EXPECT_EQ(m["images"][0]["path"], "v_f0000.exr");
+}
+
+TEST(ImageSet, CheckNamesTheMissingImagesAndWritesTheManifestWhenNoneAre) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  render_image_set(two_frames(), o);
+  std::filesystem::remove(o.out_dir / "manifest.json");
+  std::filesystem::remove(o.out_dir / "v_f0001.png");
+  EXPECT_EQ(check_image_set(two_frames(), o.out_dir), std::vector<std::string>{"v_f0001.png"});
+  EXPECT_FALSE(std::filesystem::exists(o.out_dir / "manifest.json"));
+  render_image_set(two_frames(), o);
+  EXPECT_TRUE(check_image_set(two_frames(), o.out_dir).empty());
+  EXPECT_EQ(manifest_in(o.out_dir)["images"].size(), 2u);
+}
+
+// The legend (docs/OUTPUTS.md) names every id the layers hold, and each layer's none: two
+// species and a truck on the volcano, in the manifest and in the EXR alike.
+TEST(ImageSet, TheLegendNamesEveryIdInTheLayers) {
+  const auto data = [](const std::string& f) {
+    return landsim::testing::source_file("data/" + f).string();
+  };
+  const std::string text =
+      "[terrain]\nelevation = \"" + data("terrain/volcano.asc") +
+      "\"\n[sun]\nelevation = 30\nazimuth = 300\n"
+      "[[species]]\nbit = 0\nfile = \"" +
+      data("species/quaking_aspen.toml") +
+      "\"\nvariants = 2\ndensity_per_ha = 40\ncover = { rectangle = [250, 700, 290, 780] }\n"
+      "[[species]]\nbit = 1\nfile = \"" +
+      data("species/fanpalm.xml") +
+      "\"\nvariants = 1\ndensity_per_ha = 40\ncover = { rectangle = [290, 700, 330, 780] }\n"
+      "[[objects]]\nname = \"truck\"\nfile = \"" +
+      data("objects/truck.obj") +
+      "\"\nposition = [290, 690]\n"
+      "[[views]]\nname = \"v\"\nposition = [290.0, 640.0, 140.0]\n"
+      "target = [290.0, 740.0, 110.0]\nwidth = 64\nheight = 48\n[render]\nspp = 2\n";
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  render_image_set(parse_scenario(text, "set.toml", "."), o);
+  const nlohmann::json legend = manifest_in(o.out_dir)["legend"];
+  renderer::ImageMetadata meta;
+  const renderer::Film film = renderer::read_exr(o.out_dir / "v.exr", &meta);
+  bool in_exr = false;
+  for (const auto& [key, value] : meta)
+    in_exr |= key == "legend" && nlohmann::json::parse(value) == legend;
+  EXPECT_TRUE(in_exr);
+  ASSERT_EQ(legend["species"]["values"].size(), 2u);
+  EXPECT_EQ(legend["species"]["values"][1]["core"], "weber_penn");
+  EXPECT_EQ(legend["target"]["values"][0]["name"], "truck");
+  std::set<std::uint64_t> species_seen, targets_seen, classes_seen;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const auto s = film.species(x, y);
+      if (s != legend["species"]["none"].get<std::uint64_t>()) species_seen.insert(s);
+      if (film.target(x, y) != legend["target"]["none"].get<std::uint32_t>())
+        targets_seen.insert(film.target(x, y));
+      classes_seen.insert(film.object(x, y));
+    }
+  EXPECT_EQ(species_seen.size(), 2u);  // both species in view
+  for (const auto s : species_seen) EXPECT_LT(s, legend["species"]["values"].size());
+  EXPECT_EQ(targets_seen, (std::set<std::uint64_t>{1}));  // the truck, id 1
+  for (const auto c : classes_seen)
+    EXPECT_TRUE(legend["object"]["values"].contains(std::to_string(c))) << c;
+}
+
+}  // namespace
+}  // namespace landsim::scenes
