@@ -132,6 +132,7 @@ enum class SkyKind {
   hosek_wilkie,  // Hosek and Wilkie 2012/2013: sky dome and sun (the default)
   preetham,      // Preetham, Shirley and Smits 1999, kept for comparison
   gradient,      // a plain gradient from horizon to zenith (tests: zenith = horizon is uniform)
+  none,          // no sky: the collimated sun alone (radiative-transfer benchmarks such as RAMI)
 };
 
 struct Sky {

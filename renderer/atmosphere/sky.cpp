@@ -43,8 +43,21 @@ auto upper_hemisphere_integral(int steps, F&& f) {
 
 }  // namespace
 
+namespace {
+
+// No sky is a gradient of nothing: every direction above the horizon dark, so the sun is the
+// only light (its sampling table stays valid: build_table's floor keeps it uniform).
+Sky dark_if_none(Sky sky) {
+  if (sky.model != SkyKind::none) return sky;
+  sky.model = SkyKind::gradient;
+  sky.zenith_radiance = sky.horizon_radiance = Vec3f{};
+  return sky;
+}
+
+}  // namespace
+
 SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
-    : sky_(sky), sun_direction_(normalize(Vec3f(sun.direction))) {
+    : sky_(dark_if_none(sky)), sun_direction_(normalize(Vec3f(sun.direction))) {
   const double elevation = std::asin(std::clamp(normalize(sun.direction).z, 0.0, 1.0));
   if (sky.model == SkyKind::preetham)
     preetham_ = std::make_unique<PreethamSky>(sun.direction, sky.turbidity);
@@ -364,6 +377,7 @@ Vec3f sun_irradiance(const Sky& sky, double elevation_deg, double angular_radius
     case SkyKind::preetham:
       return preetham_sun_irradiance(elevation_deg, sky.turbidity);
     case SkyKind::gradient:
+    case SkyKind::none:
       break;
   }
   return Sun{}.irradiance;

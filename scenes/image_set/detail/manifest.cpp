@@ -23,6 +23,8 @@ std::string sky_text(const renderer::Sky& sky) {
       return fmt::format("hosek-wilkie turbidity {}", sky.turbidity);
     case renderer::SkyKind::preetham:
       return fmt::format("preetham turbidity {}", sky.turbidity);
+    case renderer::SkyKind::none:
+      return "none";
     case renderer::SkyKind::gradient:
       break;
   }

@@ -61,9 +61,11 @@ renderer::Sky read_sky(const toml::table& t, const std::string& file) {
   TableReader r(t, "sky", file);
   renderer::Sky s;
   const std::string model =
-      r.choice("model", {"hosek-wilkie", "preetham", "gradient"}, "hosek-wilkie");
+      r.choice("model", {"hosek-wilkie", "preetham", "gradient", "none"}, "hosek-wilkie");
+  // "none": the collimated sun alone, as radiative-transfer benchmarks light a scene (RAMI).
   s.model = model == "hosek-wilkie" ? renderer::SkyKind::hosek_wilkie
             : model == "preetham"   ? renderer::SkyKind::preetham
+            : model == "none"       ? renderer::SkyKind::none
                                     : renderer::SkyKind::gradient;
   // Hosek-Wilkie's tables span turbidity 1-10; Preetham's fit is not valid below 1.7.
   s.turbidity = r.number(

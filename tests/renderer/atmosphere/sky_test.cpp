@@ -52,6 +52,23 @@ TEST(SkyModel, BelowTheHorizonIsASunlitPlainOfTheGroundAlbedo) {
   EXPECT_NEAR(model.radiance({0.0f, 0.6f, -0.8f}).x, 0.5f * e / std::numbers::pi_v<float>, 2e-3);
 }
 
+TEST(SkyModel, NoSkyLeavesTheSunAlone) {
+  Sky none;
+  none.model = SkyKind::none;  // its gradient radiances, left at their defaults, must not show
+  Sun sun = sun_at(50.0);
+  sun.irradiance = {3.0f, 3.0f, 3.0f};
+  const SkyModel model(none, sun, Vec3f{0.5f, 0.5f, 0.5f});
+  EXPECT_EQ(model.horizontal_irradiance().y, 0.0f);
+  EXPECT_EQ(lum(model.radiance(dir(10.0, 90.0))), 0.0f);
+  EXPECT_EQ(max_component(model.spectral_radiance(dir(60.0, 200.0))), 0.0f);
+  EXPECT_GT(max_component(model.sun_spectral_irradiance()), 0.0f);
+  // Sampling stays defined: a direction above the horizon with a finite density.
+  float pdf = 0.0f;
+  const Vec3f d = model.sample(0.3f, 0.7f, pdf);
+  EXPECT_GT(d.z, 0.0f);
+  EXPECT_TRUE(std::isfinite(pdf) && pdf > 0.0f);
+}
+
 Sky model_sky(SkyKind kind, double turbidity = 3.0) {
   Sky s;
   s.model = kind;
