@@ -262,6 +262,9 @@ struct TreePrototype {
   // infrared: docs/SPECTRAL.md); the vigour tint multiplies them; null: the RGB upsampled.
   std::shared_ptr<const SpectralOptics> leaf_optics;
   std::uint16_t species = 0;  // index in the scenario's species table
+  // An abstract canopy's leaf cloud (RAMI): its leaves are the discs of `geometry`'s leaf
+  // points at every range, as the benchmark defines them (no polygons, no degradation).
+  bool leaf_discs = false;
   // The paper's s and d for this tree (quality, season, evergreen).
   trees::DegradationFactors degradation;
 

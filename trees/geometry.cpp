@@ -35,12 +35,17 @@ std::array<Vec3f, 2> TreeGeometry::bounds() const {
   Vec3f lo{kInf, kInf, kInf};
   Vec3f hi{-kInf, -kInf, -kInf};
   bool any = false;
+  const auto add = [&](const Vec3f& v, float r) {
+    any = true;
+    lo = {std::min(lo.x, v.x - r), std::min(lo.y, v.y - r), std::min(lo.z, v.z - r)};
+    hi = {std::max(hi.x, v.x + r), std::max(hi.y, v.y + r), std::max(hi.z, v.z + r)};
+  };
   for (const GroupGeometry& g : groups) {
-    for (const Vec3f& v : g.triangles.vertices) {
-      any = true;
-      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-    }
+    for (const Vec3f& v : g.triangles.vertices) add(v, 0.0f);
+    // A group drawn only as discs (an abstract canopy's leaf cloud) is bounded by its discs.
+    if (g.triangles.vertices.empty())
+      for (std::size_t i = 0; i < g.points.point_count(); ++i)
+        add(g.points.centres[i], g.points.radii[i]);
   }
   if (!any) return {Vec3f{}, Vec3f{}};
   return {lo, hi};

@@ -108,7 +108,8 @@ struct TreeGeometry {
   GroupGeometry& group(Group g) { return groups[static_cast<std::size_t>(g)]; }
 
   std::size_t triangle_count() const;
-  // Axis-aligned bounds of every triangle vertex; {0,0,0} twice for an empty tree.
+  // Axis-aligned bounds of every triangle vertex (and of the discs of a group that has no
+  // triangles); {0,0,0} twice for an empty tree.
   std::array<Vec3f, 2> bounds() const;
 };
 

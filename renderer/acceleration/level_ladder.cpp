@@ -11,7 +11,26 @@ DrawnGroup drawn_group(const trees::GroupGeometry& g, trees::Group group,
   return {d.triangles, d.far_only_first, d.far_only_end};
 }
 
+namespace {
+
+// A leaf cloud draws every disc and every stem polygon at every step.
+trees::TreeDetail disc_detail(const trees::TreeGeometry& geometry) {
+  trees::TreeDetail detail = trees::full_detail(geometry);
+  const trees::GroupGeometry& leaves = geometry.group(trees::Group::leaves);
+  trees::GroupDetail& d = detail.groups[static_cast<std::size_t>(trees::Group::leaves)];
+  const auto discs = static_cast<std::uint32_t>(leaves.points.point_count());
+  d.polygon_items = 0;
+  d.triangles = 0;
+  d.far_items = leaves.item_count;
+  d.far_primitives = d.far_only_end = discs;
+  d.far_only_first = 0;
+  return detail;
+}
+
+}  // namespace
+
 trees::TreeDetail step_detail(const TreePrototype& prototype, int step) {
+  if (prototype.leaf_discs) return disc_detail(prototype.geometry);
   return step > 0 ? trees::tree_detail(prototype.geometry, step_r2(step), prototype.degradation)
                   : trees::full_detail(prototype.geometry);
 }

@@ -20,6 +20,7 @@
 #include "scenes/builder/detail/camera_check.h"
 #include "scenes/builder/detail/context_terrain.h"
 #include "scenes/builder/detail/grass_cover.h"
+#include "scenes/builder/detail/leaf_cloud.h"
 #include "scenes/builder/detail/plain_albedo.h"
 #include "scenes/builder/detail/scene_foundation.h"
 #include "scenes/builder/detail/scene_objects.h"
@@ -163,10 +164,14 @@ void set_ground_materials(const Scenario& s, renderer::Scene& scene) {
 void set_spectral_optics(const Scenario& s, renderer::Scene& scene) {
   auto& optics = scene.ground.optics;
   const double moisture = s.ground.soil_moisture;
-  optics[0] = std::make_shared<renderer::SpectralOptics>(
-      renderer::soil_optics(scene.ground.albedo, moisture));
-  optics[4] = std::make_shared<renderer::SpectralOptics>(
-      renderer::soil_optics(scene.ground.materials[3].albedo, moisture));
+  const auto soil = [&](const Vec3f& albedo) {
+    if (!s.ground.flat_soil) return renderer::soil_optics(albedo, moisture);
+    renderer::SpectralOptics flat;  // every wavelength the albedo's mean (RAMI's soils)
+    flat.reflectance = renderer::Spectrum::constant((albedo.x + albedo.y + albedo.z) / 3.0f);
+    return flat;
+  };
+  optics[0] = std::make_shared<renderer::SpectralOptics>(soil(scene.ground.albedo));
+  optics[4] = std::make_shared<renderer::SpectralOptics>(soil(scene.ground.materials[3].albedo));
   for (std::size_t t = 0; t < 3; ++t) {
     const renderer::GrassType& g = scene.grass.types[t];
     scene.grass.optics[t] = std::make_shared<renderer::SpectralOptics>(
@@ -318,6 +323,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
           photon_layer(scenario.sensor->model.channels[c].name), scenario.sensor->responses[c]));
   if (map && !scenario.species.empty())
     add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
+  detail::add_canopies(scenario, scene);
   // Objects after the trees: each clears the trunks within its radius.
   detail::add_objects(scenario, scene, reuse != nullptr ? &reuse->meshes : nullptr);
   if (map) {

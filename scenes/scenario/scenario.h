@@ -14,6 +14,7 @@
 #include "renderer/scene.h"
 #include "renderer/sensor/sensor_model.h"
 #include "renderer/spectra/sensor_band.h"
+#include "scenes/scenario/canopy.h"
 #include "terrain/dem_loader.h"
 #include "trees/species.h"
 
@@ -129,6 +130,9 @@ struct GroundMaterials {
   // Soil moisture 0-1: the soil colours are dry soil's; moisture darkens their spectra as
   // the measured wet soil is darker (docs/SPECTRAL.md "Soil").
   double soil_moisture = 0.0;
+  // Bare ground's spectrum: the measured soils' shape (false), or flat at the albedo's mean,
+  // every wavelength alike, as radiative-transfer benchmarks define a Lambertian soil.
+  bool flat_soil = false;
   // Variation, rules and texture size (renderer/materials/ground_shading.h); its textures are
   // loaded from `texture_files` (resolved paths, by material id; empty: none) when the scene is
   // built.
@@ -224,6 +228,7 @@ struct Scenario {
   RenderSection render;
   WindSettings wind;
   std::vector<ObjectSettings> objects;
+  std::vector<CanopySettings> canopies;  // abstract canopies (RAMI), beside or instead of trees
   std::vector<BandSettings> bands;
   std::optional<SensorSettings> sensor;
 };

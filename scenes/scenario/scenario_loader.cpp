@@ -12,6 +12,7 @@
 #include "params/table_reader.h"
 #include "scenes/scenario/scenario.h"
 
+#include "scenes/scenario/detail/canopy_reader.h"
 #include "scenes/scenario/detail/ground_reader.h"
 #include "scenes/scenario/detail/haze_reader.h"
 #include "scenes/scenario/detail/object_reader.h"
@@ -34,7 +35,7 @@ namespace {
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
       "terrain", "sun",  "views", "render", "featuremaps", "species", "grass",
-      "ground",  "wind", "sky",   "haze",   "objects",     "bands",   "sensor"};
+      "ground",  "wind", "sky",   "haze",   "objects",     "bands",   "sensor", "canopy"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
@@ -43,7 +44,7 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
         ": unknown table or key '" + std::string(key.str()) + "'" +
         params::did_you_mean(key.str(), std::vector<std::string>(kKnown.begin(), kKnown.end())) +
         " (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
-        "haze, views, render, objects, bands, sensor)");
+        "haze, views, render, objects, canopy, bands, sensor)");
   }
 }
 
@@ -120,6 +121,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.sky = read_sky(sub_table(root, "sky", source, false), source);
   s.haze = read_haze(root, source);
   s.objects = read_objects(root, source, base_dir);
+  s.canopies = read_canopies(root, source, base_dir);
   return s;
 }
 

@@ -116,6 +116,9 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file,
   g.water = to_vec3f(r.vec3("water", kUnit, Vec3(g.water)));
   g.road = to_vec3f(r.vec3("road", kUnit, Vec3(g.road)));
   g.soil_moisture = r.number("soil_moisture", kUnit, g.soil_moisture);
+  g.flat_soil = r.choice("soil_spectrum", {"measured", "flat"}, "measured") == "flat";
+  if (g.flat_soil && r.has("soil_moisture"))
+    r.fail("soil_moisture", "a flat soil spectrum has no moisture (soil_spectrum = \"flat\")");
   read_per_material(r, "variation", "a fraction 0-1, or a table of material = fraction",
                     "0.15 (road 0.05, rock 0.2, water 0)", kUnit, g.shading.variation);
   if (const auto sc = r.optional_numbers("variation_scales", 2, kPositive))
