@@ -340,6 +340,15 @@ struct ObjectInstance {
   }
 };
 
+// RAMI's cyclic boundary (docs/CANOPIES.md "The periodic cell"): the scene repeats without end
+// in x and y with the period of this cell (scene frame); a ray leaving it through a side
+// enters again through the opposite one (renderer/transport/periodic_cell.h). `top`: nothing
+// stands above it, so a ray rising past it has left for good.
+struct PeriodicCell {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  double top = 0.0;
+};
+
 struct Scene {
   Vec3 origin;  // terrain coordinates of the scene frame's (0, 0, 0)
   // The terrain's coordinate reference system (well-known text; empty for a local grid),
@@ -355,6 +364,7 @@ struct Scene {
   Sky sky;
   Haze haze;
   std::vector<View> views;
+  std::optional<PeriodicCell> periodic;  // empty: the scene is what is drawn, and the plain
   RenderSettings settings;
   std::vector<SpectralBand> bands;
 };

@@ -24,6 +24,7 @@
 #include "export_pov_command.h"
 #include "featuremap_command.h"
 #include "grow_command.h"
+#include "brf_command.h"
 #include "info_command.h"
 #include "init_command.h"
 #include "mpi_session.h"
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
       cmd::command(app, cmd::add_render_command, cmd::run_render),
       cmd::command(app, cmd::add_tree_command, cmd::run_tree),
       cmd::command(app, cmd::add_info_command, cmd::run_info),
+      cmd::command(app, cmd::add_brf_command, cmd::run_brf),
       cmd::command(app, cmd::add_export_obj_command, cmd::run_export_obj),
       cmd::command(app, cmd::add_export_pov_command, cmd::run_export_pov),
       cmd::command(app, cmd::add_crosscheck_command, cmd::run_crosscheck),

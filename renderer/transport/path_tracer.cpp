@@ -3,6 +3,7 @@
 #include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/glossy.h"
+#include "renderer/transport/periodic_cell.h"
 #include "renderer/transport/scattering_table.h"
 
 #include <algorithm>
@@ -84,7 +85,8 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       seen_.index[static_cast<std::size_t>(seen_.count++)] = static_cast<std::uint8_t>(k);
 }
 
-std::optional<Hit> PathTracer::intersect(const Ray& ray, std::uint32_t mask) const {
+std::optional<Hit> PathTracer::intersect(Ray& ray, std::uint32_t mask) const {
+  if (scene_.periodic) return periodic_intersect(embree_, *scene_.periodic, ray, mask);
   if (auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask)) return hit;
   const auto plain = plain_hit(plain_, ray);
   if (!plain) return std::nullopt;
@@ -97,6 +99,7 @@ std::optional<Hit> PathTracer::intersect(const Ray& ray, std::uint32_t mask) con
 }
 
 bool PathTracer::occluded(const Ray& ray, std::uint32_t mask) const {
+  if (scene_.periodic) return periodic_occluded(embree_, *scene_.periodic, ray, mask);
   return embree_.occluded(ray, 0.0f, kInfinity, mask) || plain_hit(plain_, ray).has_value();
 }
 

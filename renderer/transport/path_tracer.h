@@ -89,8 +89,9 @@ class PathTracer : public Integrator {
   // The haze's phase functions at p, weighted: per bin, and the pdf of sampling them.
   Spectrum phase(const MediumPoint& p, float cos_theta) const;
   float phase_pdf(const MediumPoint& p, float cos_theta) const;
-  // The scene's geometry and, past it, the plain beyond the grid (renderer/transport/plain.h).
-  std::optional<Hit> intersect(const Ray& ray, std::uint32_t mask) const;
+  // The scene's geometry and, past it, the plain beyond the grid (renderer/transport/plain.h);
+  // or, in a periodic cell, its endless repetition: `ray` then becomes the leg that hit.
+  std::optional<Hit> intersect(Ray& ray, std::uint32_t mask) const;
   bool occluded(const Ray& ray, std::uint32_t mask) const;
   // The sky seen from `origin` along `l` through the haze: its radiance transmitted and, with
   // the scattering table, the haze's own light along the way.

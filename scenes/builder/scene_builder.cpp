@@ -21,6 +21,7 @@
 #include "scenes/builder/detail/context_terrain.h"
 #include "scenes/builder/detail/grass_cover.h"
 #include "scenes/builder/detail/leaf_cloud.h"
+#include "scenes/builder/detail/periodic_cell.h"
 #include "scenes/builder/detail/plain_albedo.h"
 #include "scenes/builder/detail/scene_foundation.h"
 #include "scenes/builder/detail/scene_objects.h"
@@ -344,6 +345,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   detail::warn_cameras_under_the_plain(scenario, scene);
   scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();
   set_spectral_optics(scenario, scene);
+  if (scenario.terrain.periodic) detail::make_periodic(grid, scene);
   return scene;
 }
 

@@ -27,6 +27,9 @@ struct TerrainSettings {
   // Coarser elevation rasters around the grid (resolved paths), in any order.
   std::vector<std::string> context;
   std::vector<std::string> context_locations;  // "file:line:column" of each, for messages
+  // RAMI's cyclic boundary: the grid (from its first to its last samples) repeats without end
+  // in x and y, and there is no plain beyond it (docs/CANOPIES.md "The periodic cell").
+  bool periodic = false;
 };
 
 struct SunSettings {

@@ -54,6 +54,9 @@ TerrainSettings read_terrain(const toml::table& t, const std::string& file,
   s.dem.nodata = nodata == "fill" ? terrain::NodataPolicy::fill : terrain::NodataPolicy::hole;
   s.albedo = to_vec3f(r.vec3("albedo", kUnit, Vec3(s.albedo)));
   s.context = read_context(r, base_dir, s.context_locations);
+  s.periodic = r.boolean("periodic", s.periodic);
+  if (s.periodic && !s.context.empty())
+    r.fail("periodic", "a periodic cell repeats the grid itself: it takes no context grids");
   r.finish();
   return s;
 }

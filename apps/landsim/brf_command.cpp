@@ -1,0 +1,130 @@
+#include "brf_command.h"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <numbers>
+
+#include "core/atomic_file.h"
+#include "core/input_error.h"
+#include "renderer/measures/distant_measure.h"
+#include "scenario_input.h"
+#include "scenes/builder/scene_builder.h"
+
+namespace landsim::app {
+namespace {
+
+// "zenith,azimuth" in degrees, each in range; InputError naming the option.
+renderer::DistantDirection parse_direction(const std::string& text) {
+  double zenith = 0.0, azimuth = 0.0;
+  char comma = 0, rest = 0;
+  std::istringstream in(text);
+  if (!(in >> zenith >> comma >> azimuth) || comma != ',' || (in >> rest) ||
+      !(zenith >= 0.0 && zenith < 90.0) || !(azimuth >= 0.0 && azimuth <= 360.0))
+    throw InputError("--direction " + text +
+                     ": expected zenith,azimuth in degrees (zenith 0 to below 90, azimuth 0-360)");
+  return {zenith, azimuth};
+}
+
+// RAMI's signed view zenith in the principal plane: negative on the sun's side.
+double signed_zenith(const renderer::DistantDirection& d, double sun_azimuth) {
+  const double delta = std::fmod(std::abs(d.azimuth_deg - sun_azimuth), 360.0);
+  return std::abs(delta) < 1e-9 || std::abs(delta - 360.0) < 1e-9 ? -d.zenith_deg : d.zenith_deg;
+}
+
+nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& scene,
+                           const std::vector<renderer::DistantResult>& results, int spp,
+                           bool plane) {
+  nlohmann::json directions = nlohmann::json::array();
+  for (const renderer::DistantResult& r : results) {
+    nlohmann::json bands = nlohmann::json::object();
+    for (std::size_t b = 0; b < r.band_brf.size(); ++b)
+      bands[scene.bands[b].name] = {{"brf", r.band_brf[b].mean},
+                                    {"brf_se", r.band_brf[b].standard_error}};
+    nlohmann::json d = {{"zenith_deg", r.direction.zenith_deg},
+                        {"azimuth_deg", r.direction.azimuth_deg},
+                        {"brf", r.brf.mean},
+                        {"brf_se", r.brf.standard_error},
+                        {"radiance", r.radiance.mean},
+                        {"radiance_se", r.radiance.standard_error},
+                        {"bands", bands}};
+    if (plane) d["view_zenith_deg"] = signed_zenith(r.direction, s.sun.azimuth_deg);
+    directions.push_back(std::move(d));
+  }
+  return {{"scenario", s.source},
+          {"sun_zenith_deg", 90.0 - s.sun.elevation_deg},
+          {"sun_azimuth_deg", s.sun.azimuth_deg},
+          {"samples", spp},
+          {"directions", directions}};
+}
+
+std::string result_csv(const nlohmann::json& j) {
+  std::string out = "view_zenith_deg,zenith_deg,azimuth_deg,brf,brf_se,radiance,radiance_se\n";
+  for (const auto& d : j["directions"])
+    out += fmt::format("{},{},{},{},{},{},{}\n",
+                       d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
+                       d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>(),
+                       d["brf"].get<double>(), d["brf_se"].get<double>(),
+                       d["radiance"].get<double>(), d["radiance_se"].get<double>());
+  return out;
+}
+
+}  // namespace
+
+CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "brf", "Measure a periodic cell as radiative-transfer codes do: its BRF seen from far away");
+  cmd->add_option("scenario", args.scenario, "Scenario TOML file with [terrain] periodic = true")
+      ->required();
+  cmd->add_option("--spp", args.spp, "Paths per direction")->check(CLI::Range(2, 1 << 26));
+  cmd->add_option("--direction", args.directions,
+                  "zenith,azimuth (degrees) towards the sensor; repeatable (default: RAMI's "
+                  "principal plane, view zenith -75 to 75 every 2)");
+  cmd->add_option("--out", args.out, "Directory for brf.json and brf.csv");
+  cmd->add_option("--threads", args.threads, "Worker threads (0: every core)")
+      ->check(CLI::Range(0, 1024));
+  cmd->add_flag("--json", args.json, "Print the measure as one JSON object on stdout");
+  add_set_option(*cmd, args.sets);
+  return cmd;
+}
+
+int run_brf(const BrfArgs& args) {
+  scenes::Scenario scenario = scenario_or_default(args.scenario, args.sets);
+  if (!scenario.terrain.periodic)
+    throw InputError(scenario.source +
+                     ": landsim brf measures a periodic cell: set [terrain] periodic = true");
+  // Every tree and cloud at full detail: a measure has no camera to range them from.
+  scenario.render.degradation = false;
+  const renderer::Scene scene = scenes::build_scene(scenario);
+  std::vector<renderer::DistantDirection> directions;
+  for (const std::string& d : args.directions) directions.push_back(parse_direction(d));
+  const bool plane = directions.empty();
+  if (plane) directions = renderer::principal_plane(scenario.sun.azimuth_deg);
+  renderer::DistantMeasureOptions options;
+  options.samples = static_cast<std::uint64_t>(args.spp);
+  options.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
+  options.threads = args.threads;
+  const auto results = renderer::measure_distant(scene, directions, options);
+  const nlohmann::json j = result_json(scenario, scene, results, args.spp, plane);
+  if (!args.out.empty()) {
+    std::filesystem::create_directories(args.out);
+    write_file_atomically(std::filesystem::path(args.out) / "brf.json", j.dump(2) + "\n");
+    write_file_atomically(std::filesystem::path(args.out) / "brf.csv", result_csv(j));
+  }
+  if (args.json) {
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  for (const auto& d : j["directions"])
+    std::cout << fmt::format("{:>7.1f} {:>7.1f}  BRF {:.4f} +- {:.4f}\n",
+                             d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
+                             d["azimuth_deg"].get<double>(), d["brf"].get<double>(),
+                             d["brf_se"].get<double>());
+  return 0;
+}
+
+}  // namespace landsim::app

@@ -1,0 +1,28 @@
+#pragma once
+// `landsim brf SCENARIO [--json] [--spp N] [--out DIR] [--direction Z,A ...]`: what a
+// radiative-transfer code measures of a periodic cell (docs/CANOPIES.md "Measures"): the BRF
+// seen from infinitely far in RAMI's principal plane (or the directions given), with its
+// standard errors; brf.json and brf.csv in DIR.
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace landsim::app {
+
+struct BrfArgs {
+  std::vector<std::string> sets;
+  std::string scenario;
+  std::string out;                      // empty: nothing written
+  std::vector<std::string> directions;  // "zenith,azimuth" in degrees; empty: principal plane
+  int spp = 4096;                       // paths per direction
+  int threads = 0;
+  bool json = false;
+};
+
+CLI::App* add_brf_command(CLI::App& app, BrfArgs& args);
+int run_brf(const BrfArgs& args);
+
+}  // namespace landsim::app

@@ -1,0 +1,49 @@
+#pragma once
+// A distant measure (docs/CANOPIES.md "Measures"): what a sensor infinitely far away sees of a
+// periodic cell (renderer::PeriodicCell) in each of a list of directions: the radiance leaving
+// the whole cell towards it, averaged over the cell, and the bidirectional reflectance factor
+// BRF = pi L / (E cos theta_sun) with E the sun's irradiance normal to its beam, each with its
+// Monte Carlo standard error. It stands beside the camera: the same path tracer, rays started
+// uniformly over the cell's top instead of through a lens.
+#include <cstdint>
+#include <vector>
+
+#include "renderer/scene.h"
+
+namespace landsim::renderer {
+
+// Towards the sensor: zenith 0-90 degrees, azimuth clockwise from north (+y), degrees.
+struct DistantDirection {
+  double zenith_deg = 0.0;
+  double azimuth_deg = 0.0;
+};
+
+struct DistantValue {
+  double mean = 0.0;
+  double standard_error = 0.0;
+};
+
+struct DistantResult {
+  DistantDirection direction;
+  DistantValue radiance;  // luminance, cd/m2 (the image's Y)
+  DistantValue brf;       // of the luminance: every wavelength's where the optics are grey
+  std::vector<DistantValue> band_brf;  // of each of the scene's bands, in order
+};
+
+struct DistantMeasureOptions {
+  std::uint64_t samples = 4096;  // paths per direction
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0: every core
+};
+
+// Throws std::invalid_argument when the scene has no periodic cell or the sun is below the
+// horizon. The same options give the same bits on any thread count.
+std::vector<DistantResult> measure_distant(const Scene& scene,
+                                           const std::vector<DistantDirection>& directions,
+                                           const DistantMeasureOptions& options);
+
+// RAMI's principal plane: view zeniths -75 to 75 every 2 degrees, negative ones on the sun's
+// side (azimuth of the sun), positive ones opposite.
+std::vector<DistantDirection> principal_plane(double sun_azimuth_deg);
+
+}  // namespace landsim::renderer

@@ -1,0 +1,81 @@
+#include "renderer/transport/periodic_cell.h"
+
+#include <cmath>
+#include <limits>
+
+namespace landsim::renderer {
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+float wrapped(float v, double lo, double hi) {
+  const double width = hi - lo;
+  double w = lo + std::fmod(static_cast<double>(v) - lo, width);
+  if (w < lo) w += width;
+  return static_cast<float>(w);
+}
+
+// Past the leg's end on a side: into the opposite one.
+Ray next_leg(const PeriodicCell& cell, const Ray& ray, float t) {
+  Ray next{ray.origin + ray.direction * t, ray.direction};
+  const auto x0 = static_cast<float>(cell.x0), x1 = static_cast<float>(cell.x1);
+  const auto y0 = static_cast<float>(cell.y0), y1 = static_cast<float>(cell.y1);
+  if (ray.direction.x > 0.0f && next.origin.x >= x1 - 1e-4f * (x1 - x0)) next.origin.x = x0;
+  if (ray.direction.x < 0.0f && next.origin.x <= x0 + 1e-4f * (x1 - x0)) next.origin.x = x1;
+  if (ray.direction.y > 0.0f && next.origin.y >= y1 - 1e-4f * (y1 - y0)) next.origin.y = y0;
+  if (ray.direction.y < 0.0f && next.origin.y <= y0 + 1e-4f * (y1 - y0)) next.origin.y = y1;
+  return next;
+}
+
+bool gone_up(const PeriodicCell& cell, const Ray& ray) {
+  return ray.direction.z >= 0.0f && ray.origin.z >= static_cast<float>(cell.top);
+}
+
+}  // namespace
+
+Ray wrap_into(const PeriodicCell& cell, Ray ray) {
+  ray.origin.x = wrapped(ray.origin.x, cell.x0, cell.x1);
+  ray.origin.y = wrapped(ray.origin.y, cell.y0, cell.y1);
+  return ray;
+}
+
+float side_exit(const PeriodicCell& cell, const Ray& ray) {
+  float t = kInfinity;
+  const Vec3f& o = ray.origin;
+  const Vec3f& d = ray.direction;
+  if (d.x > 0.0f) t = std::min(t, static_cast<float>((cell.x1 - o.x) / d.x));
+  if (d.x < 0.0f) t = std::min(t, static_cast<float>((cell.x0 - o.x) / d.x));
+  if (d.y > 0.0f) t = std::min(t, static_cast<float>((cell.y1 - o.y) / d.y));
+  if (d.y < 0.0f) t = std::min(t, static_cast<float>((cell.y0 - o.y) / d.y));
+  return std::max(t, 0.0f);
+}
+
+std::optional<Hit> periodic_intersect(const EmbreeScene& embree, const PeriodicCell& cell, Ray& ray,
+                                      std::uint32_t mask) {
+  Ray leg = wrap_into(cell, ray);
+  for (int i = 0; i < kMaxPeriodicLegs && !gone_up(cell, leg); ++i) {
+    const float t = side_exit(cell, leg);
+    if (auto hit = embree.intersect(leg, 0.0f, t, mask)) {
+      ray = leg;
+      return hit;
+    }
+    if (!std::isfinite(t)) break;
+    leg = next_leg(cell, leg, t);
+  }
+  ray = leg;
+  return std::nullopt;
+}
+
+bool periodic_occluded(const EmbreeScene& embree, const PeriodicCell& cell, Ray ray,
+                       std::uint32_t mask) {
+  Ray leg = wrap_into(cell, ray);
+  for (int i = 0; i < kMaxPeriodicLegs && !gone_up(cell, leg); ++i) {
+    const float t = side_exit(cell, leg);
+    if (embree.occluded(leg, 0.0f, t, mask)) return true;
+    if (!std::isfinite(t)) return false;
+    leg = next_leg(cell, leg, t);
+  }
+  return false;
+}
+
+}  // namespace landsim::renderer
