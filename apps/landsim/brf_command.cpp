@@ -65,11 +65,10 @@ nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& sce
 std::string result_csv(const nlohmann::json& j) {
   std::string out = "view_zenith_deg,zenith_deg,azimuth_deg,brf,brf_se,radiance,radiance_se\n";
   for (const auto& d : j["directions"])
-    out += fmt::format("{},{},{},{},{},{},{}\n",
-                       d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
-                       d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>(),
-                       d["brf"].get<double>(), d["brf_se"].get<double>(),
-                       d["radiance"].get<double>(), d["radiance_se"].get<double>());
+    out += fmt::format(
+        "{},{},{},{},{},{},{}\n", d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
+        d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>(), d["brf"].get<double>(),
+        d["brf_se"].get<double>(), d["radiance"].get<double>(), d["radiance_se"].get<double>());
   return out;
 }
 

@@ -76,7 +76,9 @@ std::vector<DistantDirection> principal_plane(double sun_azimuth_deg) {
 std::vector<DistantResult> measure_distant(const Scene& scene,
                                            const std::vector<DistantDirection>& directions,
                                            const DistantMeasureOptions& options) {
-  if (!scene.periodic) throw std::invalid_argument("a distant measure needs a periodic cell");
+  if (!scene.periodic && !options.region)
+    throw std::invalid_argument("a distant measure needs a periodic cell or a region");
+  const PeriodicCell& cell = options.region ? *options.region : *scene.periodic;
   const double cos_sun = normalize(scene.sun.direction).z;
   if (!(cos_sun > 0.0)) throw std::invalid_argument("the sun is below the horizon");
   const EmbreeScene embree(scene);
@@ -100,7 +102,7 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, blocks), [&](const auto& r) {
         for (std::uint64_t k = r.begin(); k < r.end(); ++k)
-          sums[k] = trace_block(tracer, *scene.periodic, down, options.seed, d, k * kBlock,
+          sums[k] = trace_block(tracer, cell, down, options.seed, d, k * kBlock,
                                 std::min(n, (k + 1) * kBlock), bands);
       });
     });

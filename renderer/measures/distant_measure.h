@@ -6,6 +6,7 @@
 // Monte Carlo standard error. It stands beside the camera: the same path tracer, rays started
 // uniformly over the cell's top instead of through a lens.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "renderer/scene.h"
@@ -34,10 +35,14 @@ struct DistantMeasureOptions {
   std::uint64_t samples = 4096;  // paths per direction
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
+  // Where the rays start, uniformly over x0-x1, y0-y1 at height `top`; empty: the scene's
+  // periodic cell. A scene that is not periodic (the cell copied around itself) is measured
+  // over a region of it.
+  std::optional<PeriodicCell> region;
 };
 
-// Throws std::invalid_argument when the scene has no periodic cell or the sun is below the
-// horizon. The same options give the same bits on any thread count.
+// Throws std::invalid_argument when neither the scene nor the options give a cell, or the sun
+// is below the horizon. The same options give the same bits on any thread count.
 std::vector<DistantResult> measure_distant(const Scene& scene,
                                            const std::vector<DistantDirection>& directions,
                                            const DistantMeasureOptions& options);

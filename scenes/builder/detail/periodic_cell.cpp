@@ -12,7 +12,8 @@ std::array<Vec3, 2> instance_box(const renderer::Scene& scene, const renderer::T
   const double reach =
       t.scale * std::max({std::abs(b[0].x), std::abs(b[0].y), std::abs(b[1].x), std::abs(b[1].y)});
   const double radius = t.rotation == 0.0 ? 0.0 : reach * 1.4142135623730951;
-  const Vec3 lo = t.rotation == 0.0 ? Vec3(b[0]) * t.scale : Vec3{-radius, -radius, b[0].z * t.scale};
+  const Vec3 lo =
+      t.rotation == 0.0 ? Vec3(b[0]) * t.scale : Vec3{-radius, -radius, b[0].z * t.scale};
   const Vec3 hi = t.rotation == 0.0 ? Vec3(b[1]) * t.scale : Vec3{radius, radius, b[1].z * t.scale};
   return {t.position + lo, t.position + hi};
 }

@@ -1,0 +1,157 @@
+#include "renderer/measures/distant_measure.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/counter_rng.h"
+#include "tests/renderer/test_scenes.h"
+
+namespace landsim::renderer {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kHalf = 10.0;  // the cell: 20 m x 20 m
+
+Vec3 sun_towards(double zenith_deg, double azimuth_deg) {
+  const double z = zenith_deg * kPi / 180.0, a = azimuth_deg * kPi / 180.0;
+  return {std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)};
+}
+
+// A grey soil, flat in every wavelength, under the collimated sun alone.
+Scene bare_cell(double soil, double sun_zenith, double sun_azimuth) {
+  Scene s;
+  s.ground.mesh = testing::flat_ground(kHalf);
+  s.ground.plain = false;
+  auto optics = std::make_shared<SpectralOptics>();
+  optics->reflectance = Spectrum::constant(static_cast<float>(soil));
+  s.ground.optics[0] = optics;
+  s.sky.model = SkyKind::none;
+  s.sun.direction = sun_towards(sun_zenith, sun_azimuth);
+  s.sun.irradiance = {1000.0f, 1000.0f, 1000.0f};
+  s.settings.degradation = false;
+  s.periodic = PeriodicCell{-kHalf, -kHalf, kHalf, kHalf, 6.0};
+  return s;
+}
+
+// A cloud of `n` discs of radius `r` in a box 8 m wide, from 1 m to 5 m up, normals uniform
+// over the hemisphere; bi-Lambertian leaves of reflectance `rho` and transmittance `tau`.
+TreePrototype disc_cloud(int n, float r, float rho, float tau) {
+  TreePrototype p;
+  p.leaf_discs = true;
+  trees::GroupGeometry& g = p.geometry.group(trees::Group::leaves);
+  g.mass_size = trees::kLeafMassSize;
+  g.item_count = static_cast<std::size_t>(n);
+  CounterRng rng(7, 0, 0);
+  for (int i = 0; i < n; ++i) {
+    g.points.centres.push_back(
+        {8.0f * rng.next() - 4.0f, 8.0f * rng.next() - 4.0f, 1.0f + 4.0f * rng.next()});
+    g.points.radii.push_back(r);
+    const float c = 1.0f - rng.next(), phi = 2.0f * static_cast<float>(kPi) * rng.next();
+    const float s = std::sqrt(1.0f - c * c);
+    g.points.normals.push_back({s * std::cos(phi), s * std::sin(phi), c});
+    g.item_point_end.push_back(static_cast<std::uint32_t>(i + 1));
+  }
+  auto optics = std::make_shared<SpectralOptics>();
+  optics->reflectance = Spectrum::constant(rho);
+  optics->transmittance = Spectrum::constant(tau);
+  p.leaf_optics = optics;
+  p.leaf_reflectance = {rho, rho, rho};
+  p.leaf_transmittance = {tau, tau, tau};
+  return p;
+}
+
+Scene canopy_cell(double sun_zenith, double sun_azimuth) {
+  Scene s = bare_cell(0.2, sun_zenith, sun_azimuth);
+  s.prototypes.push_back(disc_cloud(3000, 0.1f, 0.45f, 0.4f));
+  s.instances.push_back({0, Vec3{}, 0.0, 1.0});
+  return s;
+}
+
+DistantMeasureOptions samples(std::uint64_t n, int threads = 0) {
+  DistantMeasureOptions o;
+  o.samples = n;
+  o.threads = threads;
+  return o;
+}
+
+TEST(DistantMeasure, ALambertianSoilHasItsAlbedoForBrfInEveryDirection) {
+  const Scene s = bare_cell(0.3, 40.0, 0.0);
+  for (const DistantResult& r :
+       measure_distant(s, {{0.0, 0.0}, {40.0, 0.0}, {60.0, 180.0}, {75.0, 90.0}}, samples(512)))
+    EXPECT_NEAR(r.brf.mean, 0.3, 2e-3) << r.direction.zenith_deg << " " << r.direction.azimuth_deg;
+}
+
+TEST(DistantMeasure, PrincipalPlaneRunsFromTheSunsSideAcrossNadir) {
+  const auto plane = principal_plane(30.0);
+  ASSERT_EQ(plane.size(), 76u);
+  EXPECT_DOUBLE_EQ(plane.front().zenith_deg, 75.0);
+  EXPECT_DOUBLE_EQ(plane.front().azimuth_deg, 30.0);  // negative zeniths: towards the sun
+  EXPECT_DOUBLE_EQ(plane.back().azimuth_deg, 210.0);
+  EXPECT_DOUBLE_EQ(plane[37].zenith_deg, 1.0);
+}
+
+// The hot spot: looking along the sun's beam no shadow is seen, so the BRF peaks at -theta_sun.
+TEST(DistantMeasure, TheHotSpotIsAtTheSunsOwnDirection) {
+  const Scene s = canopy_cell(30.0, 0.0);
+  const auto r =
+      measure_distant(s, {{30.0, 0.0}, {44.0, 0.0}, {16.0, 0.0}, {30.0, 180.0}}, samples(20000));
+  for (std::size_t i = 1; i < r.size(); ++i)
+    EXPECT_GT(r[0].brf.mean - r[i].brf.mean,
+              3.0 * std::hypot(r[0].brf.standard_error, r[i].brf.standard_error))
+        << "against " << r[i].direction.zenith_deg << " " << r[i].direction.azimuth_deg;
+}
+
+// Helmholtz reciprocity: bi-Lambertian leaves over a Lambertian soil give the same BRF with
+// the sun and the sensor exchanged.
+TEST(DistantMeasure, TheBrfIsReciprocal) {
+  const auto forward =
+      measure_distant(canopy_cell(30.0, 0.0), {{55.0, 120.0}}, samples(40000)).front();
+  const auto backward =
+      measure_distant(canopy_cell(55.0, 120.0), {{30.0, 0.0}}, samples(40000)).front();
+  EXPECT_NEAR(forward.brf.mean, backward.brf.mean,
+              3.0 * std::hypot(forward.brf.standard_error, backward.brf.standard_error));
+  EXPECT_LT(forward.brf.standard_error, 0.01 * forward.brf.mean);
+}
+
+// The periodic cell against the cell copied 9 x 9 around it (a wide ground, no repetition),
+// measured over the central cell alone.
+TEST(DistantMeasure, APeriodicCellMeasuresAsTheCellCopiedAroundIt) {
+  const Scene periodic = canopy_cell(35.0, 60.0);
+  Scene copied = canopy_cell(35.0, 60.0);
+  copied.periodic.reset();
+  copied.ground.mesh = testing::flat_ground(9.0 * kHalf);
+  copied.instances.clear();
+  for (int i = -4; i <= 4; ++i)
+    for (int j = -4; j <= 4; ++j)
+      copied.instances.push_back({0, Vec3{2.0 * kHalf * i, 2.0 * kHalf * j, 0.0}, 0.0, 1.0});
+  DistantMeasureOptions o = samples(30000);
+  const std::vector<DistantDirection> directions{{0.0, 0.0}, {35.0, 60.0}, {50.0, 200.0}};
+  const auto a = measure_distant(periodic, directions, o);
+  o.region = PeriodicCell{-kHalf, -kHalf, kHalf, kHalf, 6.0};
+  const auto b = measure_distant(copied, directions, o);
+  for (std::size_t i = 0; i < directions.size(); ++i)
+    EXPECT_NEAR(a[i].brf.mean, b[i].brf.mean,
+                3.0 * std::hypot(a[i].brf.standard_error, b[i].brf.standard_error))
+        << directions[i].zenith_deg;
+}
+
+TEST(DistantMeasure, TheSameBitsOnAnyThreadCount) {
+  const Scene s = canopy_cell(30.0, 0.0);
+  const auto one = measure_distant(s, {{20.0, 45.0}}, samples(3000, 1)).front();
+  const auto two = measure_distant(s, {{20.0, 45.0}}, samples(3000, 2)).front();
+  EXPECT_EQ(one.brf.mean, two.brf.mean);
+  EXPECT_EQ(one.brf.standard_error, two.brf.standard_error);
+}
+
+TEST(DistantMeasure, RefusesASceneWithoutACellOrWithTheSunDown) {
+  Scene s = bare_cell(0.3, 40.0, 0.0);
+  s.periodic.reset();
+  EXPECT_THROW(measure_distant(s, {{0.0, 0.0}}, samples(8)), std::invalid_argument);
+  Scene down = bare_cell(0.3, 100.0, 0.0);
+  EXPECT_THROW(measure_distant(down, {{0.0, 0.0}}, samples(8)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace landsim::renderer
