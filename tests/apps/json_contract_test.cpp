@@ -90,6 +90,14 @@ TEST(JsonContract, Render) {
   expect_contract("render", "--spp 1 --width 32 --out " + (dir / "r").string(), dir);
 }
 
+TEST(JsonContract, Brf) {
+  TempDir dir;
+  expect_contract("brf",
+                  testing::source_file("scenes/rami/het01.toml").string() +
+                      " --direction 0,0 --direction 30,90 --spp 16",
+                  dir);
+}
+
 TEST(JsonContract, Info) {
   TempDir dir;
   expect_contract("info", "", dir);
@@ -155,9 +163,8 @@ TEST(JsonContract, Compare) {
 TEST(JsonContract, Sense) {
   TempDir dir;
   const auto set = dir / "set";
-  ASSERT_EQ(testing::run_landsim("render --spp 1 --width 32 --set sensor.adc_bits=12 --out " +
-                                     set.string(),
-                                 dir)
+  ASSERT_EQ(testing::run_landsim(
+                "render --spp 1 --width 32 --set sensor.adc_bits=12 --out " + set.string(), dir)
                 .exit_code,
             0);
   expect_contract("sense", set.string() + " --noise-seed 3", dir);
