@@ -12,6 +12,7 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "renderer/measures/distant_measure.h"
+#include "renderer/measures/energy_budget.h"
 #include "scenario_input.h"
 #include "scenes/builder/scene_builder.h"
 
@@ -34,6 +35,21 @@ renderer::DistantDirection parse_direction(const std::string& text) {
 double signed_zenith(const renderer::DistantDirection& d, double sun_azimuth) {
   const double delta = std::fmod(std::abs(d.azimuth_deg - sun_azimuth), 360.0);
   return std::abs(delta) < 1e-9 || std::abs(delta - 360.0) < 1e-9 ? -d.zenith_deg : d.zenith_deg;
+}
+
+nlohmann::json value_json(const renderer::DistantValue& v) {
+  return {{"mean", v.mean}, {"se", v.standard_error}};
+}
+
+nlohmann::json budget_json(const renderer::EnergyBudget& b, int paths) {
+  return {{"paths", paths},
+          {"albedo", value_json(b.reflected)},
+          {"absorbed_leaves", value_json(b.absorbed_leaves)},
+          {"absorbed_stems", value_json(b.absorbed_stems)},
+          {"absorbed_soil", value_json(b.absorbed_soil)},
+          {"absorbed_other", value_json(b.absorbed_other)},
+          {"soil_direct", value_json(b.soil_direct)},
+          {"soil_diffuse", value_json(b.soil_diffuse)}};
 }
 
 nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& scene,
@@ -84,6 +100,9 @@ CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
                   "zenith,azimuth (degrees) towards the sensor; repeatable (default: RAMI's "
                   "principal plane, view zenith -75 to 75 every 2)");
   cmd->add_option("--out", args.out, "Directory for brf.json and brf.csv");
+  cmd->add_option("--budget-paths", args.budget_paths,
+                  "Paths from the sun for the energy budget (albedo, absorption; 0: none)")
+      ->check(CLI::Range(0, 1 << 28));
   cmd->add_option("--threads", args.threads, "Worker threads (0: every core)")
       ->check(CLI::Range(0, 1024));
   cmd->add_flag("--json", args.json, "Print the measure as one JSON object on stdout");
@@ -108,7 +127,14 @@ int run_brf(const BrfArgs& args) {
   options.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   options.threads = args.threads;
   const auto results = renderer::measure_distant(scene, directions, options);
-  const nlohmann::json j = result_json(scenario, scene, results, args.spp, plane);
+  nlohmann::json j = result_json(scenario, scene, results, args.spp, plane);
+  if (args.budget_paths > 0) {
+    renderer::EnergyOptions budget;
+    budget.samples = static_cast<std::uint64_t>(args.budget_paths);
+    budget.seed = options.seed;
+    budget.threads = args.threads;
+    j["budget"] = budget_json(renderer::measure_energy(scene, budget), args.budget_paths);
+  }
   if (!args.out.empty()) {
     std::filesystem::create_directories(args.out);
     write_file_atomically(std::filesystem::path(args.out) / "brf.json", j.dump(2) + "\n");
@@ -118,6 +144,11 @@ int run_brf(const BrfArgs& args) {
     std::cout << j.dump() << "\n";
     return 0;
   }
+  if (j.contains("budget"))
+    for (const char* k : {"albedo", "absorbed_leaves", "absorbed_stems", "absorbed_soil",
+                          "soil_direct", "soil_diffuse"})
+      std::cout << fmt::format("{:<16} {:.4f} +- {:.4f}\n", k, j["budget"][k]["mean"].get<double>(),
+                               j["budget"][k]["se"].get<double>());
   for (const auto& d : j["directions"])
     std::cout << fmt::format("{:>7.1f} {:>7.1f}  BRF {:.4f} +- {:.4f}\n",
                              d.value("view_zenith_deg", d["zenith_deg"].get<double>()),

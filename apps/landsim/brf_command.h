@@ -2,7 +2,8 @@
 // `landsim brf SCENARIO [--json] [--spp N] [--out DIR] [--direction Z,A ...]`: what a
 // radiative-transfer code measures of a periodic cell (docs/CANOPIES.md "Measures"): the BRF
 // seen from infinitely far in RAMI's principal plane (or the directions given), with its
-// standard errors; brf.json and brf.csv in DIR.
+// standard errors; where the sun's light goes (albedo, absorbed by leaves, stems and soil,
+// transmitted to the soil); brf.json and brf.csv in DIR.
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct BrfArgs {
   std::string out;                      // empty: nothing written
   std::vector<std::string> directions;  // "zenith,azimuth" in degrees; empty: principal plane
   int spp = 4096;                       // paths per direction
+  int budget_paths = 100000;            // paths from the sun for the energy budget; 0: none
   int threads = 0;
   bool json = false;
 };

@@ -10,8 +10,8 @@
 #include "core/input_error.h"
 #include "renderer/spectra/vegetation_optics.h"
 #include "scenes/builder/detail/tree_variant.h"
-#include "scenes/scenario/scenario.h"
 #include "scenes/builder/scene_builder.h"
+#include "scenes/scenario/scenario.h"
 #include "terrain/raster_files.h"
 #include "tests/support/rasters.h"
 #include "tests/support/temp_dir.h"
@@ -380,10 +380,11 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   const std::string views =
       "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\n"
       "target = [300.0, 400.0, 150.0]\n";
-  const std::string aerosol = terrain + views +
-                              "[haze]\nvisibility = 8000\nsingle_scattering_albedo = 0.9\nmultiple_scattering = \"paths\"\n"
-                              "angstrom = 1.1\nmolecular = false\nphase = \"table\"\n"
-                              "phase_angles = [0.0, 90.0, 180.0]\nphase_values = [5.0, 1.0, 0.5]\n";
+  const std::string aerosol =
+      terrain + views +
+      "[haze]\nvisibility = 8000\nsingle_scattering_albedo = 0.9\nmultiple_scattering = \"paths\"\n"
+      "angstrom = 1.1\nmolecular = false\nphase = \"table\"\n"
+      "phase_angles = [0.0, 90.0, 180.0]\nphase_values = [5.0, 1.0, 0.5]\n";
   const Scenario with_aerosol = load_scenario(f.dir.write("aerosol.toml", aerosol));
   EXPECT_FLOAT_EQ(with_aerosol.haze.albedo.x, 0.9f);
   EXPECT_EQ(with_aerosol.haze.phase_values.size(), 3u);
@@ -395,11 +396,20 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   const Scenario with_layer = load_scenario(f.dir.write("layer.toml", layer));
   ASSERT_TRUE(with_layer.haze.layer.has_value());
   EXPECT_DOUBLE_EQ(with_layer.haze.layer->optical_depth, 2.0);
-  const std::string text =
+  std::string text =
       f.text() + aerosol + layer +
       landsim::testing::read_file(source_file("scenes/examples/default.toml")) +
       landsim::testing::read_file(source_file("scenes/examples/kagwene_cameras.toml")) + cameras +
       sensor + iso;
+  // RAMI's canopies (docs/CANOPIES.md): the periodic cell, the flat soil, the sun alone; each
+  // shipped scenario loads.
+  std::string rami;
+  for (const char* scene : {"het01", "het04", "het06"}) {
+    const auto path = source_file(std::string("scenes/rami/") + scene + ".toml");
+    EXPECT_FALSE(load_scenario(path).canopies.empty()) << scene;
+    rami += landsim::testing::read_file(path);
+  }
+  text += rami;
   for (const std::string& k : documented) {
     EXPECT_NE(text.find("\n" + k + " ="), std::string::npos)
         << "documented key '" << k << "' is set by no test scenario";
