@@ -244,6 +244,15 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
           if (!t.indices.empty() && group.item_vigour.empty())
             write_mesh2(out, fmt::format("LS_Proto_{}_{}", p, k), t.vertices, t.normals, t.indices);
         }
+        // An abstract canopy's leaves are discs (TreePrototype::leaf_discs): POV-Ray's own.
+        if (scene.prototypes[p].leaf_discs) {
+          const trees::PointSet& d = g.group(trees::Group::leaves).points;
+          out.print("#declare LS_Proto_{}_discs = union {{\n", p);
+          for (std::size_t i = 0; i < d.point_count(); ++i)
+            out.print("  disc {{ {}, {}, {:.6g} }}\n", pov(d.centres[i]), pov(d.normals[i]),
+                      d.radii[i]);
+          out.print("}}\n");
+        }
         // Leaves of graded vigour: one mesh per level, each drawn in its own colour.
         for (const auto& [level, indices] : leaves_by_vigour(g.group(trees::Group::leaves)))
           write_mesh2(out, fmt::format("LS_Proto_{}_4_{}", p, level),
@@ -310,6 +319,9 @@ void export_pov(const renderer::Scene& scene, const renderer::View& view,
     for (std::size_t p = 0; p < scene.prototypes.size(); ++p) {
       const renderer::TreePrototype& proto = scene.prototypes[p];
       out.print("#declare LS_Tree_{} = union {{\n", p);
+      if (proto.leaf_discs)
+        out.print("  object {{ LS_Proto_{}_discs LS_Texture(<0, 0, 1>, {}) }}\n", p,
+                  colour_vector(proto.leaf_reflectance));
       for (const auto& [level, indices] :
            leaves_by_vigour(proto.geometry.group(trees::Group::leaves)))
         out.print(
