@@ -17,7 +17,6 @@ namespace {
 
 using namespace detail;  // sample dimensions
 
-constexpr float kPi = std::numbers::pi_v<float>;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Paths are rouletted (by throughput) from their second vertex on: the third and later
 // vertices add 0.4% of the forest's light but cost a quarter of its rays (docs/PERFORMANCE.md
