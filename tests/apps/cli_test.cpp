@@ -140,6 +140,28 @@ TEST(Cli, BadScenariosExitTwoNameTheKeyAndWriteNothing) {
   }
 }
 
+// landsim brf measures a periodic cell, in directions above the horizon; it writes brf.json
+// and brf.csv, every principal-plane direction a row.
+TEST(Cli, BrfMeasuresAPeriodicCellAndRefusesWhatIsNot) {
+  TempDir dir;
+  const auto file = dir.write("plain.toml", scenario("", "", "spp = 1"));
+  Result r = run("brf " + file.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("set [terrain] periodic = true"), std::string::npos) << r.err;
+  const std::string het01 = testing::source_file("scenes/rami/het01.toml").string();
+  r = run("brf " + het01 + " --direction 95,0", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--direction 95,0: expected zenith,azimuth"), std::string::npos) << r.err;
+  const auto out = dir / "het01";
+  r = run("brf " + het01 + " --spp 8 --budget-paths 0 --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = testing::read_file(out / "brf.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 77);  // a header and 76 directions
+  EXPECT_EQ(csv.rfind("view_zenith_deg,zenith_deg,azimuth_deg,brf,brf_se", 0), 0u);
+  EXPECT_NE(csv.find("\n-19,19,90,"), std::string::npos) << csv.substr(0, 300);
+  EXPECT_TRUE(std::filesystem::exists(out / "brf.json"));
+}
+
 TEST(Cli, AGroundTextureThatCannotBeReadExitsTwoAtItsEntry) {
   TempDir dir;
   const auto junk = dir.write("rock.png", "not an image");
