@@ -35,12 +35,6 @@ Vec3f towards(const DistantDirection& d) {
   return Vec3f(Vec3{std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)});
 }
 
-DistantValue value_of(double sum, double squares, double n, double scale) {
-  const double mean = sum / n;
-  const double variance = std::max(squares / n - mean * mean, 0.0) * n / std::max(n - 1.0, 1.0);
-  return {mean * scale, std::sqrt(variance / n) * scale};
-}
-
 Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, const Vec3f& down,
                  std::uint64_t seed, std::uint64_t key, std::uint64_t first, std::uint64_t end,
                  std::size_t bands) {
@@ -64,6 +58,12 @@ Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, const Vec3f
 }
 
 }  // namespace
+
+DistantValue mean_with_error(double sum, double squares, double n, double scale) {
+  const double mean = sum / n;
+  const double variance = std::max(squares / n - mean * mean, 0.0) * n / std::max(n - 1.0, 1.0);
+  return {mean * scale, std::sqrt(variance / n) * scale};
+}
 
 std::vector<DistantDirection> principal_plane(double sun_azimuth_deg) {
   std::vector<DistantDirection> out;
@@ -118,10 +118,11 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
     DistantResult r;
     r.direction = directions[d];
     const auto count = static_cast<double>(n);
-    r.radiance = value_of(total.y, total.yy, count, 1.0);
-    r.brf = value_of(total.y, total.yy, count, kPi / (e_y * cos_sun));
+    r.radiance = mean_with_error(total.y, total.yy, count, 1.0);
+    r.brf = mean_with_error(total.y, total.yy, count, kPi / (e_y * cos_sun));
     for (std::size_t b = 0; b < bands; ++b)
-      r.band_brf.push_back(value_of(total.b[b], total.bb[b], count, kPi / (e_band[b] * cos_sun)));
+      r.band_brf.push_back(
+          mean_with_error(total.b[b], total.bb[b], count, kPi / (e_band[b] * cos_sun)));
     out.push_back(std::move(r));
   }
   return out;

@@ -24,6 +24,10 @@ struct DistantValue {
   double standard_error = 0.0;
 };
 
+// The mean of n samples whose sum and sum of squares are given, and its standard error, both
+// times `scale` (the measures' one estimator).
+DistantValue mean_with_error(double sum, double squares, double n, double scale = 1.0);
+
 struct DistantResult {
   DistantDirection direction;
   DistantValue radiance;  // luminance, cd/m2 (the image's Y)

@@ -136,11 +136,7 @@ EnergyBudget measure_energy(const Scene& scene, const EnergyOptions& options) {
       all.squares[k] += s.squares[k];
     }
   const auto value = [&](Share k) {
-    const auto count = static_cast<double>(n);
-    const double mean = all.sum[k] / count;
-    const double variance =
-        std::max(all.squares[k] / count - mean * mean, 0.0) * count / (count - 1.0);
-    return DistantValue{mean, std::sqrt(variance / count)};
+    return mean_with_error(all.sum[k], all.squares[k], static_cast<double>(n));
   };
   return {value(reflected), value(leaves), value(stems),   value(soil),
           value(other),     value(direct), value(diffuse), value(lost)};

@@ -50,32 +50,40 @@ float side_exit(const PeriodicCell& cell, const Ray& ray) {
   return std::max(t, 0.0f);
 }
 
-std::optional<Hit> periodic_intersect(const EmbreeScene& embree, const PeriodicCell& cell, Ray& ray,
-                                      std::uint32_t mask) {
+namespace {
+
+// Walks `ray` leg by leg until `meets` (given a leg and its length) says it met something;
+// returns that leg, or none when the ray rose past everything or ran out of legs.
+template <typename Meets>
+std::optional<Ray> walk_legs(const PeriodicCell& cell, const Ray& ray, Meets meets) {
   Ray leg = wrap_into(cell, ray);
   for (int i = 0; i < kMaxPeriodicLegs && !gone_up(cell, leg); ++i) {
     const float t = side_exit(cell, leg);
-    if (auto hit = embree.intersect(leg, 0.0f, t, mask)) {
-      ray = leg;
-      return hit;
-    }
+    if (meets(leg, t)) return leg;
     if (!std::isfinite(t)) break;
     leg = next_leg(cell, leg, t);
   }
-  ray = leg;
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Hit> periodic_intersect(const EmbreeScene& embree, const PeriodicCell& cell, Ray& ray,
+                                      std::uint32_t mask) {
+  std::optional<Hit> hit;
+  const auto leg = walk_legs(cell, ray, [&](const Ray& l, float t) {
+    hit = embree.intersect(l, 0.0f, t, mask);
+    return hit.has_value();
+  });
+  if (leg) ray = *leg;
+  return hit;
 }
 
 bool periodic_occluded(const EmbreeScene& embree, const PeriodicCell& cell, Ray ray,
                        std::uint32_t mask) {
-  Ray leg = wrap_into(cell, ray);
-  for (int i = 0; i < kMaxPeriodicLegs && !gone_up(cell, leg); ++i) {
-    const float t = side_exit(cell, leg);
-    if (embree.occluded(leg, 0.0f, t, mask)) return true;
-    if (!std::isfinite(t)) return false;
-    leg = next_leg(cell, leg, t);
-  }
-  return false;
+  return walk_legs(cell, ray,
+                   [&](const Ray& l, float t) { return embree.occluded(l, 0.0f, t, mask); })
+      .has_value();
 }
 
 }  // namespace landsim::renderer
