@@ -48,8 +48,10 @@ nlohmann::json budget_json(const renderer::EnergyBudget& b, int paths) {
           {"absorbed_stems", value_json(b.absorbed_stems)},
           {"absorbed_soil", value_json(b.absorbed_soil)},
           {"absorbed_other", value_json(b.absorbed_other)},
+          {"absorbed_haze", value_json(b.absorbed_haze)},
           {"soil_direct", value_json(b.soil_direct)},
-          {"soil_diffuse", value_json(b.soil_diffuse)}};
+          {"soil_diffuse", value_json(b.soil_diffuse)},
+          {"total", value_json(b.total)}};
 }
 
 nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& scene,
@@ -134,6 +136,10 @@ int run_brf(const BrfArgs& args) {
     budget.seed = options.seed;
     budget.threads = args.threads;
     j["budget"] = budget_json(renderer::measure_energy(scene, budget), args.budget_paths);
+    // Under an isotropic sky: the bi-hemispherical reflectance, and what the canopy absorbs of
+    // diffuse light.
+    budget.illumination = renderer::Illumination::isotropic;
+    j["budget_isotropic"] = budget_json(renderer::measure_energy(scene, budget), args.budget_paths);
   }
   if (!args.out.empty()) {
     std::filesystem::create_directories(args.out);
@@ -144,11 +150,15 @@ int run_brf(const BrfArgs& args) {
     std::cout << j.dump() << "\n";
     return 0;
   }
-  if (j.contains("budget"))
+  if (j.contains("budget")) {
+    std::cout << fmt::format("{:<16} {:>17} {:>17}\n", "", "sun", "isotropic sky");
     for (const char* k : {"albedo", "absorbed_leaves", "absorbed_stems", "absorbed_soil",
-                          "soil_direct", "soil_diffuse"})
-      std::cout << fmt::format("{:<16} {:.4f} +- {:.4f}\n", k, j["budget"][k]["mean"].get<double>(),
-                               j["budget"][k]["se"].get<double>());
+                          "absorbed_haze", "soil_direct", "soil_diffuse", "total"})
+      std::cout << fmt::format(
+          "{:<16} {:.4f} +- {:.4f}  {:.4f} +- {:.4f}\n", k, j["budget"][k]["mean"].get<double>(),
+          j["budget"][k]["se"].get<double>(), j["budget_isotropic"][k]["mean"].get<double>(),
+          j["budget_isotropic"][k]["se"].get<double>());
+  }
   for (const auto& d : j["directions"])
     std::cout << fmt::format("{:>7.1f} {:>7.1f}  BRF {:.4f} +- {:.4f}\n",
                              d.value("view_zenith_deg", d["zenith_deg"].get<double>()),

@@ -153,6 +153,13 @@ Medium::Medium(const Haze& h) {
   enabled_ = aerosol.present || air.present;
 }
 
+double Medium::top() const {
+  double top = -kInfiniteDistance;
+  for (const MediumComponent& m : components_)
+    if (m.present) top = std::max(top, m.slab ? m.z1 : m.z0 + 40.0 * m.scale_height);
+  return top;
+}
+
 UnitDepths Medium::unit_depths(const Vec3& o, const Vec3& d, double t, bool ends_on_surface) const {
   UnitDepths out{};
   for (int c = 0; c < kMediumComponents; ++c)

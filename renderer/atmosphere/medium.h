@@ -99,6 +99,10 @@ class Medium {
   // the closed forms when two components act; exact with one).
   double distance_at(const Vec3& o, const Vec3& d, double t, bool ends_on_surface, int k,
                      double tau) const;
+  // The height above which the medium holds nothing that counts: a slab's top, or forty
+  // scale heights above an exponential component's base (its density down by e^-40 there).
+  // What a sensor or sun infinitely far away starts its rays at. -infinity when disabled.
+  double top() const;
   // Extinction of bin k at 550 nm for the aerosol alone, at the base (the visibility's).
   double aerosol_extinction_at_base() const { return components_[0].density0; }
 

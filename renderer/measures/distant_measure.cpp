@@ -11,6 +11,7 @@
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
 #include "renderer/acceleration/stochastic_lod.h"
+#include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/spectra/colour_matching.h"
 #include "renderer/spectra/spectral_colour.h"
@@ -35,7 +36,7 @@ Vec3f towards(const DistantDirection& d) {
   return Vec3f(Vec3{std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)});
 }
 
-Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, const Vec3f& down,
+Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, double top, const Vec3f& down,
                  std::uint64_t seed, std::uint64_t key, std::uint64_t first, std::uint64_t end,
                  std::size_t bands) {
   Sums s;
@@ -44,7 +45,7 @@ Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, const Vec3f
     // Dimensions 0 and 1 are the caller's (a camera's pixel jitter): where on the cell.
     const Vec3f origin{static_cast<float>(cell.x0 + (cell.x1 - cell.x0) * rng.uniform(0)),
                        static_cast<float>(cell.y0 + (cell.y1 - cell.y0) * rng.uniform(1)),
-                       static_cast<float>(cell.top)};
+                       static_cast<float>(top)};
     const PathSample p = tracer.trace({origin, down}, rng, pixel_ray_mask(i));
     const double y = rec709_luminance(Vec3(p.radiance));
     s.y += y;
@@ -58,6 +59,10 @@ Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, const Vec3f
 }
 
 }  // namespace
+
+double entry_height(const Scene& scene, const PeriodicCell& cell) {
+  return std::max(cell.top, Medium(scene.haze).top());
+}
 
 DistantValue mean_with_error(double sum, double squares, double n, double scale) {
   const double mean = sum / n;
@@ -83,6 +88,7 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
   if (!(cos_sun > 0.0)) throw std::invalid_argument("the sun is below the horizon");
   const EmbreeScene embree(scene);
   const PathTracer tracer(scene, embree);
+  const double top = entry_height(scene, cell);
   // E normal to the beam, as the tracer's sun gives it: luminance and each band.
   const SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
   const Spectrum& sun = sky.sun_spectral_irradiance();
@@ -102,7 +108,7 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, blocks), [&](const auto& r) {
         for (std::uint64_t k = r.begin(); k < r.end(); ++k)
-          sums[k] = trace_block(tracer, cell, down, options.seed, d, k * kBlock,
+          sums[k] = trace_block(tracer, cell, top, down, options.seed, d, k * kBlock,
                                 std::min(n, (k + 1) * kBlock), bands);
       });
     });

@@ -28,6 +28,10 @@ struct DistantValue {
 // times `scale` (the measures' one estimator).
 DistantValue mean_with_error(double sum, double squares, double n, double scale = 1.0);
 
+// The height rays from infinitely far away (the sensor's, the sun's) start at: the cell's
+// top, or the haze's where it reaches higher (renderer/atmosphere/medium.h).
+double entry_height(const Scene& scene, const PeriodicCell& cell);
+
 struct DistantResult {
   DistantDirection direction;
   DistantValue radiance;  // luminance, cd/m2 (the image's Y)

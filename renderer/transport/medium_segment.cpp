@@ -69,4 +69,26 @@ MediumPoint MediumSegment::sample(float u_bin, float u_distance) const {
   return out;
 }
 
+Spectrum phase_weight(const Medium& medium, const MediumPoint& p, float cos_theta) {
+  Spectrum f;
+  for (int i = 0; i < kMediumComponents; ++i)
+    if (max_component(p.weight[static_cast<std::size_t>(i)]) > 0.0f)
+      f += p.weight[static_cast<std::size_t>(i)] * medium.component(i).phase.eval(cos_theta);
+  return f;
+}
+
+float phase_pdf(const Medium& medium, const MediumPoint& p, float cos_theta) {
+  float pdf = 0.0f;
+  for (int i = 0; i < kMediumComponents; ++i)
+    if (p.share[static_cast<std::size_t>(i)] > 0.0f)
+      pdf += p.share[static_cast<std::size_t>(i)] * medium.component(i).phase.eval(cos_theta);
+  return pdf;
+}
+
+Vec3f scatter_direction(const Medium& medium, const MediumPoint& p, const Vec3f& d,
+                        float u_component, const std::array<float, 2>& u) {
+  const int c = u_component < p.share[0] ? 0 : 1;
+  return medium.component(c).phase.sample(d, u[0], u[1]).direction;
+}
+
 }  // namespace landsim::renderer

@@ -32,6 +32,14 @@ struct MediumPoint {
   std::array<float, kMediumComponents> share{};
 };
 
+// The phase functions at p weighted per bin (what a ray scattered there carries), the pdf with
+// which scatter_direction draws a direction, and a direction drawn about `d` (the travel
+// direction): the component by its share (u_component), then its own phase function (u).
+Spectrum phase_weight(const Medium& medium, const MediumPoint& p, float cos_theta);
+float phase_pdf(const Medium& medium, const MediumPoint& p, float cos_theta);
+Vec3f scatter_direction(const Medium& medium, const MediumPoint& p, const Vec3f& d,
+                        float u_component, const std::array<float, 2>& u);
+
 class MediumSegment {
  public:
   // The segment ray.origin + s ray.direction, s in [0, t]; t infinite when it leaves into

@@ -83,8 +83,9 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       seen_.index[static_cast<std::size_t>(seen_.count++)] = static_cast<std::uint8_t>(k);
 }
 
-std::optional<Hit> PathTracer::intersect(Ray& ray, std::uint32_t mask) const {
-  if (scene_.periodic) return periodic_intersect(embree_, *scene_.periodic, ray, mask);
+std::optional<Hit> PathTracer::intersect(Ray& ray, std::uint32_t mask, double* travelled) const {
+  if (travelled != nullptr) *travelled = 0.0;
+  if (scene_.periodic) return periodic_intersect(embree_, *scene_.periodic, ray, mask, travelled);
   if (auto hit = embree_.intersect(ray, 0.0f, kInfinity, mask)) return hit;
   const auto plain = plain_hit(plain_, ray);
   if (!plain) return std::nullopt;
@@ -178,23 +179,6 @@ Spectrum PathTracer::aureole_light(const ShadingPoint& v, const Bsdf& bsdf,
   return light * weight;
 }
 
-Spectrum PathTracer::phase(const MediumPoint& p, float c) const {
-  Spectrum f;
-  for (int i = 0; i < kMediumComponents; ++i)
-    if (max_component(p.weight[static_cast<std::size_t>(i)]) > 0.0f)
-      f += p.weight[static_cast<std::size_t>(i)] * medium_.component(i).phase.eval(c);
-  return f;
-}
-
-float PathTracer::phase_pdf(const MediumPoint& p, float c) const {
-  const auto& share = p.share;
-  float pdf = 0.0f;
-  for (int i = 0; i < kMediumComponents; ++i)
-    if (share[static_cast<std::size_t>(i)] > 0.0f)
-      pdf += share[static_cast<std::size_t>(i)] * medium_.component(i).phase.eval(c);
-  return pdf;
-}
-
 Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
                                 const CounterRng& rng, std::uint32_t dim, bool trace_sun,
                                 std::uint32_t mask, std::uint32_t& rays) const {
@@ -206,7 +190,7 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
   // The sun: light travelling along -l scattered into -d, the angle between them acos(d.l).
   const Vec3f l =
       sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), sun[0], sun[1]);
-  const Spectrum sunlit = phase(p, dot(d, l)) * sun_spectrum_;
+  const Spectrum sunlit = phase_weight(medium_, p, dot(d, l)) * sun_spectrum_;
   const float w_sun =
       trace_sun ? 1.0f
                 : shadow_roulette_weight(importance(throughput * sunlit), roulette(shadow[0]));
@@ -228,8 +212,8 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
   const Vec3f k = sky_.sample(sky[0], sky[1], pdf);
   if (pdf > 0.0f) {
     const float c = dot(d, k);
-    const Spectrum light =
-        phase(p, c) * sky_.spectral_radiance(k) * (power_heuristic(pdf, phase_pdf(p, c)) / pdf);
+    const Spectrum light = phase_weight(medium_, p, c) * sky_.spectral_radiance(k) *
+                           (power_heuristic(pdf, phase_pdf(medium_, p, c)) / pdf);
     const float w_sky = shadow_roulette_weight(importance(throughput * light), roulette(shadow[1]));
     if (w_sky > 0.0f && max_component(light) > 0.0f) {
       ++rays;
@@ -280,11 +264,14 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     const std::uint32_t dim = path.dimension_offset + kFirstBounceDim +
                               kDimsPerBounce * static_cast<std::uint32_t>(bounce);
     ++out.rays;
-    const auto hit = intersect(ray, mask);
+    double travelled = 0.0;  // in a periodic cell, before the leg that hit
+    const auto hit = intersect(ray, mask, &travelled);
     Spectrum haze_sky, aureole;  // the hazy sky's own light along a diffuse ray into the sky
     if (medium_.enabled()) {
-      const MediumSegment segment(medium_, ray, hit ? hit->t : kInfiniteDistance, hit.has_value(),
-                                  seen_);
+      // The haze varies with height alone: its segment runs the whole way, every leg.
+      const Ray whole{ray.origin - ray.direction * static_cast<float>(travelled), ray.direction};
+      const MediumSegment segment(medium_, whole, hit ? hit->t + travelled : kInfiniteDistance,
+                                  hit.has_value(), seen_);
       // A diffuse ray into the sky takes the hazy sky as the sky's next-event estimation does
       // (sky_light): its transmitted radiance and the haze's own light, tabulated.
       const bool hazy_sky_ray = !hit && !last_specular && table_ && table_->has_sky();
@@ -381,16 +368,13 @@ bool PathTracer::survives(Spectrum& throughput, int bounce, float u) const {
 
 bool PathTracer::scatter_from(const MediumPoint& p, float q, const CounterRng& rng,
                               std::uint32_t dim, PathState& path) const {
-  // A direction from the haze point's phase functions, the component by its share.
-  const auto& share = p.share;
-  const int c = rng.uniform(dim + kFresnel) < share[0] ? 0 : 1;
-  const std::array<float, 2> lobe = rng.uniform2(dim + kChoice);
-  const PhaseSample next = medium_.component(c).phase.sample(path.ray.direction, lobe[0], lobe[1]);
-  const float cos_theta = dot(path.ray.direction, next.direction);
-  const float pdf = phase_pdf(p, cos_theta);
+  const Vec3f next = scatter_direction(medium_, p, path.ray.direction, rng.uniform(dim + kFresnel),
+                                       rng.uniform2(dim + kChoice));
+  const float cos_theta = dot(path.ray.direction, next);
+  const float pdf = phase_pdf(medium_, p, cos_theta);
   if (!(pdf > 0.0f)) return false;
-  path.throughput = path.throughput * phase(p, cos_theta) / (pdf * q);
-  path.ray = {p.position, next.direction};
+  path.throughput = path.throughput * phase_weight(medium_, p, cos_theta) / (pdf * q);
+  path.ray = {p.position, next};
   path.last_pdf = pdf;
   path.last_specular = false;
   return survives(path.throughput, path.bounce, rng.uniform(dim + kRoulette));

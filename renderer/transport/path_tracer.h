@@ -86,12 +86,10 @@ class PathTracer : public Integrator {
   Spectrum haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
                       const CounterRng& rng, std::uint32_t dim, bool trace_sun, std::uint32_t mask,
                       std::uint32_t& rays) const;
-  // The haze's phase functions at p, weighted: per bin, and the pdf of sampling them.
-  Spectrum phase(const MediumPoint& p, float cos_theta) const;
-  float phase_pdf(const MediumPoint& p, float cos_theta) const;
   // The scene's geometry and, past it, the plain beyond the grid (renderer/transport/plain.h);
   // or, in a periodic cell, its endless repetition: `ray` then becomes the leg that hit.
-  std::optional<Hit> intersect(Ray& ray, std::uint32_t mask) const;
+  // `travelled`: as periodic_intersect's (0 outside a periodic cell).
+  std::optional<Hit> intersect(Ray& ray, std::uint32_t mask, double* travelled = nullptr) const;
   bool occluded(const Ray& ray, std::uint32_t mask) const;
   // The sky seen from `origin` along `l` through the haze: its radiance transmitted and, with
   // the scattering table, the haze's own light along the way.

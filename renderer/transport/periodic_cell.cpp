@@ -52,16 +52,33 @@ float side_exit(const PeriodicCell& cell, const Ray& ray) {
 
 namespace {
 
+// A ray coming down from above the cell (through a haze, from a distant sensor) meets nothing
+// before the cell's top: it starts there, `travelled` counting the way.
+Ray down_to_top(const PeriodicCell& cell, Ray ray, double& travelled) {
+  const auto top = static_cast<float>(cell.top);
+  if (ray.direction.z < 0.0f && ray.origin.z > top) {
+    const float s = (top - ray.origin.z) / ray.direction.z;
+    ray.origin = ray.origin + ray.direction * s;
+    ray.origin.z = top;
+    travelled += s;
+  }
+  return ray;
+}
+
 // Walks `ray` leg by leg until `meets` (given a leg and its length) says it met something;
-// returns that leg, or none when the ray rose past everything or ran out of legs.
+// returns that leg, or none when the ray rose past everything or ran out of legs. `travelled`:
+// the distance along `ray` to the returned leg's origin.
 template <typename Meets>
-std::optional<Ray> walk_legs(const PeriodicCell& cell, const Ray& ray, Meets meets) {
-  Ray leg = wrap_into(cell, ray);
+std::optional<Ray> walk_legs(const PeriodicCell& cell, const Ray& ray, Meets meets,
+                             double& travelled) {
+  travelled = 0.0;
+  Ray leg = wrap_into(cell, down_to_top(cell, ray, travelled));
   for (int i = 0; i < kMaxPeriodicLegs && !gone_up(cell, leg); ++i) {
     const float t = side_exit(cell, leg);
     if (meets(leg, t)) return leg;
     if (!std::isfinite(t)) break;
     leg = next_leg(cell, leg, t);
+    travelled += t;
   }
   return std::nullopt;
 }
@@ -69,20 +86,27 @@ std::optional<Ray> walk_legs(const PeriodicCell& cell, const Ray& ray, Meets mee
 }  // namespace
 
 std::optional<Hit> periodic_intersect(const EmbreeScene& embree, const PeriodicCell& cell, Ray& ray,
-                                      std::uint32_t mask) {
+                                      std::uint32_t mask, double* travelled) {
   std::optional<Hit> hit;
-  const auto leg = walk_legs(cell, ray, [&](const Ray& l, float t) {
-    hit = embree.intersect(l, 0.0f, t, mask);
-    return hit.has_value();
-  });
+  double before = 0.0;
+  const auto leg = walk_legs(
+      cell, ray,
+      [&](const Ray& l, float t) {
+        hit = embree.intersect(l, 0.0f, t, mask);
+        return hit.has_value();
+      },
+      before);
   if (leg) ray = *leg;
+  if (travelled != nullptr) *travelled = leg ? before : 0.0;
   return hit;
 }
 
 bool periodic_occluded(const EmbreeScene& embree, const PeriodicCell& cell, Ray ray,
                        std::uint32_t mask) {
-  return walk_legs(cell, ray,
-                   [&](const Ray& l, float t) { return embree.occluded(l, 0.0f, t, mask); })
+  double travelled = 0.0;
+  return walk_legs(
+             cell, ray, [&](const Ray& l, float t) { return embree.occluded(l, 0.0f, t, mask); },
+             travelled)
       .has_value();
 }
 

@@ -23,9 +23,12 @@ Ray wrap_into(const PeriodicCell& cell, Ray ray);
 float side_exit(const PeriodicCell& cell, const Ray& ray);
 
 // The first hit of `ray` in the endless repetition, found leg by leg; `ray` becomes the leg
-// that hit (its origin in the cell), so the hit's distance is along it.
+// that hit (its origin in the cell), so the hit's distance is along it, and `travelled` (when
+// given) the distance along the original ray to that leg's origin (0 without a hit): what a
+// medium, which varies only with height, is traversed over. A ray coming down from above the
+// cell starts its first leg at the cell's top.
 std::optional<Hit> periodic_intersect(const EmbreeScene& embree, const PeriodicCell& cell, Ray& ray,
-                                      std::uint32_t mask);
+                                      std::uint32_t mask, double* travelled = nullptr);
 bool periodic_occluded(const EmbreeScene& embree, const PeriodicCell& cell, Ray ray,
                        std::uint32_t mask);
 

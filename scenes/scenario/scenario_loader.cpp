@@ -122,9 +122,6 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.haze = read_haze(root, source);
   s.objects = read_objects(root, source, base_dir);
   s.canopies = read_canopies(root, source, base_dir);
-  if (s.terrain.periodic && s.haze.enabled)
-    throw InputError(source + ": [terrain] periodic = true with [haze]: a periodic cell is "
-                              "traced without the medium (remove one of them)");
   return s;
 }
 

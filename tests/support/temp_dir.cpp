@@ -12,11 +12,10 @@ TempDir::TempDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = "landsim-test";
   if (info != nullptr) name += std::string("-") + info->test_suite_name() + "-" + info->name();
+  // Parameterised tests are named "Instance/Suite.Test/param": one directory, not three.
+  for (char& c : name)
+    if (c == '/' || c == '<' || c == '>') c = '_';
   std::string templ = (std::filesystem::temp_directory_path() / (name + "-XXXXXX")).string();
-  for (char& c : templ) {
-    if (c == '/' && &c != &templ[0]) continue;
-    if (c == '<' || c == '>') c = '_';
-  }
   if (::mkdtemp(templ.data()) == nullptr) throw std::runtime_error("mkdtemp failed: " + templ);
   path_ = templ;
 }

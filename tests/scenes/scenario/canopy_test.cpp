@@ -118,13 +118,6 @@ TEST(CanopyTable, RefusesWhatCannotBeACloud) {
                                    positions))
                 .find("size"),
             std::string::npos);
-  // A periodic cell is traced without the medium: refused with it.
-  EXPECT_NE(load_error(with_canopy("name = \"c\"\nshape = \"sphere\"\nsize = 2.0\ndiscs = 10\n"
-                                   "disc_radius = 0.1\n" +
-                                   positions) +
-                       "[haze]\nvisibility = 10000\n")
-                .find("periodic = true with [haze]"),
-            std::string::npos);
 }
 
 }  // namespace
