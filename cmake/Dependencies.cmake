@@ -15,6 +15,8 @@ find_package(kissfft CONFIG REQUIRED COMPONENTS SHARED float)  # the sensor opti
 # OpenImageIO 2.4's CMake config requires OpenCV headers; OpenColorIO 2.1 ships pkg-config only.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET OpenColorIO)
+# NetCDF-4 with CF conventions: the measures' output for xarray users.
+pkg_check_modules(NETCDF REQUIRED IMPORTED_TARGET netcdf)
 if(LANDSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)
   # Zstandard writes the test TIFFs OpenImageIO cannot (it writes no Zstandard TIFF).

@@ -6,10 +6,10 @@ set -eu
 PACKAGES="build-essential cmake ninja-build pkg-config ccache git \
   libembree-dev libopenexr-dev libopenimageio-dev libopencolorio-dev \
   libgdal-dev gdal-bin libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev \
-  libtbb-dev libassimp-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libpugixml-dev libkissfft-dev libzstd-dev \
+  libtbb-dev libassimp-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libpugixml-dev libkissfft-dev libzstd-dev libnetcdf-dev \
   povray povray-includes embree-tools bc clang-format openmpi-bin libopenmpi-dev \
   fonts-dejavu-core python3 clang libclang-rt-14-dev \
-  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-openimageio"
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-openimageio python3-xarray python3-netcdf4"
 
 missing=""
 for p in $PACKAGES; do

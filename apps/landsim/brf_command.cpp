@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "exporters/measure_netcdf.h"
 #include "renderer/measures/distant_measure.h"
 #include "renderer/measures/energy_budget.h"
 #include "scenario_input.h"
@@ -101,7 +102,7 @@ CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
   cmd->add_option("--direction", args.directions,
                   "zenith,azimuth (degrees) towards the sensor; repeatable (default: RAMI's "
                   "principal plane, view zenith -75 to 75 every 2)");
-  cmd->add_option("--out", args.out, "Directory for brf.json and brf.csv");
+  cmd->add_option("--out", args.out, "Directory for brf.json, brf.csv and brf.nc (NetCDF-4, CF)");
   cmd->add_option("--budget-paths", args.budget_paths,
                   "Paths from the sun for the energy budget (albedo, absorption; 0: none)")
       ->check(CLI::Range(0, 1 << 28));
@@ -128,23 +129,36 @@ int run_brf(const BrfArgs& args) {
   options.samples = static_cast<std::uint64_t>(args.spp);
   options.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   options.threads = args.threads;
-  const auto results = renderer::measure_distant(scene, directions, options);
-  nlohmann::json j = result_json(scenario, scene, results, args.spp, plane);
+  exporters::MeasureRecord record;
+  record.scenario = scenario.source;
+  record.sun_zenith_deg = 90.0 - scenario.sun.elevation_deg;
+  record.sun_azimuth_deg = scenario.sun.azimuth_deg;
+  record.samples = options.samples;
+  record.directions = renderer::measure_distant(scene, directions, options);
+  for (const renderer::DistantResult& r : record.directions)
+    if (plane)
+      record.signed_view_zenith_deg.push_back(signed_zenith(r.direction, scenario.sun.azimuth_deg));
+  for (const renderer::SpectralBand& b : scene.bands) record.band_names.push_back(b.name);
+  nlohmann::json j = result_json(scenario, scene, record.directions, args.spp, plane);
   if (args.budget_paths > 0) {
     renderer::EnergyOptions budget;
     budget.samples = static_cast<std::uint64_t>(args.budget_paths);
     budget.seed = options.seed;
     budget.threads = args.threads;
-    j["budget"] = budget_json(renderer::measure_energy(scene, budget), args.budget_paths);
+    record.budget_paths = budget.samples;
+    record.budget_sun = renderer::measure_energy(scene, budget);
     // Under an isotropic sky: the bi-hemispherical reflectance, and what the canopy absorbs of
     // diffuse light.
     budget.illumination = renderer::Illumination::isotropic;
-    j["budget_isotropic"] = budget_json(renderer::measure_energy(scene, budget), args.budget_paths);
+    record.budget_isotropic = renderer::measure_energy(scene, budget);
+    j["budget"] = budget_json(*record.budget_sun, args.budget_paths);
+    j["budget_isotropic"] = budget_json(*record.budget_isotropic, args.budget_paths);
   }
   if (!args.out.empty()) {
     std::filesystem::create_directories(args.out);
     write_file_atomically(std::filesystem::path(args.out) / "brf.json", j.dump(2) + "\n");
     write_file_atomically(std::filesystem::path(args.out) / "brf.csv", result_csv(j));
+    exporters::write_measure_netcdf(std::filesystem::path(args.out) / "brf.nc", record);
   }
   if (args.json) {
     std::cout << j.dump() << "\n";

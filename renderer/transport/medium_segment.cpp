@@ -5,6 +5,23 @@
 
 namespace landsim::renderer {
 
+namespace {
+
+// The single-scattering albedo of bin k over a segment: its components' scattering over their
+// extinction, each weighed by its depth along the segment (exact with one component).
+float albedo_along(const Medium& medium, const UnitDepths& depths, int k) {
+  double extinction = 0.0, scattering = 0.0;
+  for (int c = 0; c < kMediumComponents; ++c) {
+    const double d = depths[static_cast<std::size_t>(c)];
+    if (!(d > 0.0)) continue;
+    extinction += d * medium.component(c).extinction[k];
+    scattering += d * medium.component(c).scattering[k];
+  }
+  return extinction > 0.0 ? static_cast<float>(scattering / extinction) : 0.0f;
+}
+
+}  // namespace
+
 MediumSegment::MediumSegment(const Medium& medium, const Ray& ray, double t, bool ends_on_surface,
                              const BinSet& bins)
     : medium_(medium),
@@ -13,16 +30,16 @@ MediumSegment::MediumSegment(const Medium& medium, const Ray& ray, double t, boo
       t_(t),
       ends_on_surface_(ends_on_surface),
       bins_(bins) {
-  transmittance_ =
-      medium.transmittance(medium.unit_depths(origin_, direction_, t, ends_on_surface), bins);
+  const UnitDepths depths = medium.unit_depths(origin_, direction_, t, ends_on_surface);
+  transmittance_ = medium.transmittance(depths, bins);
   float q = 0.0f;
   for (int i = 0; i < bins.count; ++i) {
     const int k = bins.index[static_cast<std::size_t>(i)];
-    const float scattered = 1.0f - transmittance_[k];
-    scattered_[static_cast<std::size_t>(k)] = scattered;
-    if (scattered <= 0.0f) continue;
+    const float extinguished = 1.0f - transmittance_[k];
+    scattered_[static_cast<std::size_t>(k)] = extinguished;
+    if (extinguished <= 0.0f) continue;
     candidates_.index[static_cast<std::size_t>(candidates_.count++)] = static_cast<std::uint8_t>(k);
-    q += scattered;
+    q += extinguished * albedo_along(medium, depths, k);
   }
   if (candidates_.count > 0) continue_ = q / static_cast<float>(candidates_.count);
 }

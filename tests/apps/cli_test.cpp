@@ -160,6 +160,7 @@ TEST(Cli, BrfMeasuresAPeriodicCellAndRefusesWhatIsNot) {
   EXPECT_EQ(csv.rfind("view_zenith_deg,zenith_deg,azimuth_deg,brf,brf_se", 0), 0u);
   EXPECT_NE(csv.find("\n-19,19,90,"), std::string::npos) << csv.substr(0, 300);
   EXPECT_TRUE(std::filesystem::exists(out / "brf.json"));
+  EXPECT_TRUE(std::filesystem::exists(out / "brf.nc"));  // read by tests/python/test_brf_netcdf.py
 }
 
 TEST(Cli, AGroundTextureThatCannotBeReadExitsTwoAtItsEntry) {

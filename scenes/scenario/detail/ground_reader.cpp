@@ -119,6 +119,8 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file,
   g.flat_soil = r.choice("soil_spectrum", {"measured", "flat"}, "measured") == "flat";
   if (g.flat_soil && r.has("soil_moisture"))
     r.fail("soil_moisture", "a flat soil spectrum has no moisture (soil_spectrum = \"flat\")");
+  // A benchmark's soil is one Lambertian albedo everywhere: no variation unless asked for.
+  if (g.flat_soil) g.shading.variation.fill(0.0f);
   read_per_material(r, "variation", "a fraction 0-1, or a table of material = fraction",
                     "0.15 (road 0.05, rock 0.2, water 0)", kUnit, g.shading.variation);
   if (const auto sc = r.optional_numbers("variation_scales", 2, kPositive))
