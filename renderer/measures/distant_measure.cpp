@@ -25,10 +25,10 @@ constexpr double kPi = std::numbers::pi;
 // which thread took which block.
 constexpr std::uint64_t kBlock = 256;
 
-// Sums of a block's samples: luminance and each band, and their squares.
+// Sums of a block's samples: luminance and each band.
 struct Sums {
-  double y = 0.0, yy = 0.0;
-  std::array<double, kMaxBands> b{}, bb{};
+  double y = 0.0;
+  std::array<double, kMaxBands> b{};
 };
 
 Vec3f towards(const DistantDirection& d) {
@@ -36,26 +36,35 @@ Vec3f towards(const DistantDirection& d) {
   return Vec3f(Vec3{std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)});
 }
 
+// Paths i in [first, end) of one batch: a stream of its own (an independently scrambled Sobol
+// sequence), its points stratified over the cell and over every later pair of dimensions.
 Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, double top, const Vec3f& down,
                  std::uint64_t seed, std::uint64_t key, std::uint64_t first, std::uint64_t end,
                  std::size_t bands) {
   Sums s;
   for (std::uint64_t i = first; i < end; ++i) {
-    const CounterRng rng(seed, key, i);
+    const CounterRng rng(seed, key, i, SampleSequence::sobol);
     // Dimensions 0 and 1 are the caller's (a camera's pixel jitter): where on the cell.
-    const Vec3f origin{static_cast<float>(cell.x0 + (cell.x1 - cell.x0) * rng.uniform(0)),
-                       static_cast<float>(cell.y0 + (cell.y1 - cell.y0) * rng.uniform(1)),
+    const std::array<float, 2> u = rng.uniform2(0);
+    const Vec3f origin{static_cast<float>(cell.x0 + (cell.x1 - cell.x0) * u[0]),
+                       static_cast<float>(cell.y0 + (cell.y1 - cell.y0) * u[1]),
                        static_cast<float>(top)};
     const PathSample p = tracer.trace({origin, down}, rng, pixel_ray_mask(i));
-    const double y = rec709_luminance(Vec3(p.radiance));
-    s.y += y;
-    s.yy += y * y;
-    for (std::size_t b = 0; b < bands; ++b) {
-      s.b[b] += p.bands[b];
-      s.bb[b] += static_cast<double>(p.bands[b]) * p.bands[b];
-    }
+    s.y += rec709_luminance(Vec3(p.radiance));
+    for (std::size_t b = 0; b < bands; ++b) s.b[b] += p.bands[b];
   }
   return s;
+}
+
+// The mean of the batches' means and its standard error from their spread (randomised
+// quasi-Monte Carlo: the batches are independent, the paths within one are not).
+DistantValue batch_mean(const std::vector<double>& means, double scale) {
+  const auto k = static_cast<double>(means.size());
+  double mean = 0.0;
+  for (const double m : means) mean += m / k;
+  double spread = 0.0;
+  for (const double m : means) spread += (m - mean) * (m - mean);
+  return {mean * scale, std::sqrt(spread / (k * std::max(k - 1.0, 1.0))) * scale};
 }
 
 }  // namespace
@@ -98,37 +107,37 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
   for (std::size_t b = 0; b < bands; ++b)
     for (int k = 0; k < kSpectrumBins; ++k) e_band[b] += scene.bands[b].weight[k] * sun[k];
 
-  const std::uint64_t n = std::max<std::uint64_t>(options.samples, 2);
-  const std::uint64_t blocks = (n + kBlock - 1) / kBlock;
+  const std::uint64_t batches = std::max(options.batches, 2);
+  const std::uint64_t per_batch =
+      std::max<std::uint64_t>((options.samples + batches - 1) / batches, 1);
+  const std::uint64_t blocks = (per_batch + kBlock - 1) / kBlock;  // per batch
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   std::vector<DistantResult> out;
   for (std::size_t d = 0; d < directions.size(); ++d) {
     const Vec3f down = towards(directions[d]) * -1.0f;
-    std::vector<Sums> sums(blocks);
+    std::vector<Sums> sums(batches * blocks);
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, blocks), [&](const auto& r) {
-        for (std::uint64_t k = r.begin(); k < r.end(); ++k)
-          sums[k] = trace_block(tracer, cell, top, down, options.seed, d, k * kBlock,
-                                std::min(n, (k + 1) * kBlock), bands);
+      tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, sums.size()), [&](const auto& r) {
+        for (std::uint64_t t = r.begin(); t < r.end(); ++t) {
+          const std::uint64_t batch = t / blocks, first = (t % blocks) * kBlock;
+          sums[t] = trace_block(tracer, cell, top, down, options.seed, d * batches + batch, first,
+                                std::min(per_batch, first + kBlock), bands);
+        }
       });
     });
-    Sums total;
-    for (const Sums& s : sums) {
-      total.y += s.y;
-      total.yy += s.yy;
-      for (std::size_t b = 0; b < bands; ++b) {
-        total.b[b] += s.b[b];
-        total.bb[b] += s.bb[b];
-      }
+    // Each batch's mean, in order: luminance, then each band.
+    std::vector<std::vector<double>> means(bands + 1, std::vector<double>(batches, 0.0));
+    for (std::uint64_t t = 0; t < sums.size(); ++t) {
+      const auto n = static_cast<double>(per_batch);
+      means[0][t / blocks] += sums[t].y / n;
+      for (std::size_t b = 0; b < bands; ++b) means[b + 1][t / blocks] += sums[t].b[b] / n;
     }
     DistantResult r;
     r.direction = directions[d];
-    const auto count = static_cast<double>(n);
-    r.radiance = mean_with_error(total.y, total.yy, count, 1.0);
-    r.brf = mean_with_error(total.y, total.yy, count, kPi / (e_y * cos_sun));
+    r.radiance = batch_mean(means[0], 1.0);
+    r.brf = batch_mean(means[0], kPi / (e_y * cos_sun));
     for (std::size_t b = 0; b < bands; ++b)
-      r.band_brf.push_back(
-          mean_with_error(total.b[b], total.bb[b], count, kPi / (e_band[b] * cos_sun)));
+      r.band_brf.push_back(batch_mean(means[b + 1], kPi / (e_band[b] * cos_sun)));
     out.push_back(std::move(r));
   }
   return out;

@@ -40,7 +40,11 @@ struct DistantResult {
 };
 
 struct DistantMeasureOptions {
-  std::uint64_t samples = 4096;  // paths per direction
+  std::uint64_t samples = 4096;  // paths per direction (rounded up to whole batches)
+  // Independently scrambled Sobol sequences the paths are drawn in (randomised quasi-Monte
+  // Carlo): within one, the paths' points are stratified over the cell and every later pair
+  // of dimensions; the standard error comes from the spread of the batches' means.
+  int batches = 32;
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
   // Where the rays start, uniformly over x0-x1, y0-y1 at height `top`; empty: the scene's
