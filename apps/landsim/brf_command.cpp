@@ -70,6 +70,7 @@ nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& sce
                         {"brf_se", r.brf.standard_error},
                         {"radiance", r.radiance.mean},
                         {"radiance_se", r.radiance.standard_error},
+                        {"paths", r.paths},
                         {"bands", bands}};
     if (plane) d["view_zenith_deg"] = signed_zenith(r.direction, s.sun.azimuth_deg);
     directions.push_back(std::move(d));
@@ -98,7 +99,12 @@ CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
       "brf", "Measure a periodic cell as radiative-transfer codes do: its BRF seen from far away");
   cmd->add_option("scenario", args.scenario, "Scenario TOML file with [terrain] periodic = true")
       ->required();
-  cmd->add_option("--spp", args.spp, "Paths per direction")->check(CLI::Range(2, 1 << 26));
+  cmd->add_option("--spp", args.spp, "Paths per direction (with --target-se: to start with)")
+      ->check(CLI::Range(2, 1 << 26));
+  cmd->add_option("--target-se", args.target_se,
+                  "Trace each direction until the BRF's standard error is at most this fraction "
+                  "of it (e.g. 0.001), up to 2^26 paths")
+      ->check(CLI::Range(1e-5, 0.5));
   cmd->add_option("--direction", args.directions,
                   "zenith,azimuth (degrees) towards the sensor; repeatable (default: RAMI's "
                   "principal plane, view zenith -75 to 75 every 2)");
@@ -129,6 +135,7 @@ int run_brf(const BrfArgs& args) {
   options.samples = static_cast<std::uint64_t>(args.spp);
   options.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   options.threads = args.threads;
+  options.target_relative_error = args.target_se;
   exporters::MeasureRecord record;
   record.scenario = scenario.source;
   record.sun_zenith_deg = 90.0 - scenario.sun.elevation_deg;

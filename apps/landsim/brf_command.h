@@ -19,6 +19,7 @@ struct BrfArgs {
   std::string out;                      // empty: nothing written
   std::vector<std::string> directions;  // "zenith,azimuth" in degrees; empty: principal plane
   int spp = 4096;                       // paths per direction
+  double target_se = 0.0;               // relative; 0: --spp paths exactly
   int budget_paths = 100000;            // paths from the sun for the energy budget; 0: none
   int threads = 0;
   bool json = false;

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -67,6 +68,69 @@ DistantValue batch_mean(const std::vector<double>& means, double scale) {
   return {mean * scale, std::sqrt(spread / (k * std::max(k - 1.0, 1.0))) * scale};
 }
 
+// What every direction is traced with.
+struct Tracing {
+  const PathTracer& tracer;
+  const PeriodicCell& cell;
+  double top;
+  std::uint64_t seed;
+  std::size_t bands;
+  tbb::task_arena& arena;
+};
+
+// One direction's batches: their sums over their first `per_batch` paths.
+struct Batches {
+  Batches(std::uint64_t count, std::uint64_t first_key) : sums(count), key(first_key) {}
+  std::vector<Sums> sums;
+  std::uint64_t key;  // the first batch's stream; the others follow
+  std::uint64_t per_batch = 0;
+};
+
+// Every batch's paths from its `per_batch` on to `to`: blocks traced in parallel, added to the
+// batch's sums in order (the same bits on any thread count).
+void extend(const Tracing& t, const Vec3f& down, Batches& b, std::uint64_t to) {
+  const std::uint64_t from = b.per_batch, blocks = (to - from + kBlock - 1) / kBlock;
+  std::vector<Sums> block(b.sums.size() * blocks);
+  t.arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, block.size()), [&](const auto& r) {
+      for (std::uint64_t k = r.begin(); k < r.end(); ++k) {
+        const std::uint64_t first = from + (k % blocks) * kBlock;
+        block[k] = trace_block(t.tracer, t.cell, t.top, down, t.seed, b.key + k / blocks, first,
+                               std::min(to, first + kBlock), t.bands);
+      }
+    });
+  });
+  for (std::uint64_t k = 0; k < block.size(); ++k) {
+    Sums& s = b.sums[k / blocks];
+    s.y += block[k].y;
+    for (std::size_t i = 0; i < t.bands; ++i) s.b[i] += block[k].b[i];
+  }
+  b.per_batch = to;
+}
+
+// The factors from a mean radiance to a BRF: of the luminance, of each band.
+struct Scales {
+  double luminance;
+  std::vector<double> band;
+};
+
+DistantResult result_of(const Batches& b, const DistantDirection& direction, const Scales& k) {
+  const auto n = static_cast<double>(b.per_batch);
+  std::vector<double> y;
+  for (const Sums& s : b.sums) y.push_back(s.y / n);
+  DistantResult r;
+  r.direction = direction;
+  r.paths = b.per_batch * b.sums.size();
+  r.radiance = batch_mean(y, 1.0);
+  r.brf = batch_mean(y, k.luminance);
+  for (std::size_t i = 0; i < k.band.size(); ++i) {
+    std::vector<double> band;
+    for (const Sums& s : b.sums) band.push_back(s.b[i] / n);
+    r.band_brf.push_back(batch_mean(band, k.band[i]));
+  }
+  return r;
+}
+
 }  // namespace
 
 double entry_height(const Scene& scene, const PeriodicCell& cell) {
@@ -107,37 +171,30 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
   for (std::size_t b = 0; b < bands; ++b)
     for (int k = 0; k < kSpectrumBins; ++k) e_band[b] += scene.bands[b].weight[k] * sun[k];
 
-  const std::uint64_t batches = std::max(options.batches, 2);
-  const std::uint64_t per_batch =
-      std::max<std::uint64_t>((options.samples + batches - 1) / batches, 1);
-  const std::uint64_t blocks = (per_batch + kBlock - 1) / kBlock;  // per batch
+  const auto batches = static_cast<std::uint64_t>(std::max(options.batches, 2));
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  const Tracing t{tracer, cell, top, options.seed, bands, arena};
+  Scales scales{kPi / (e_y * cos_sun), {}};
+  for (std::size_t b = 0; b < bands; ++b) scales.band.push_back(kPi / (e_band[b] * cos_sun));
+  const std::uint64_t cap = std::max<std::uint64_t>(options.max_samples / batches, 1);
   std::vector<DistantResult> out;
   for (std::size_t d = 0; d < directions.size(); ++d) {
     const Vec3f down = towards(directions[d]) * -1.0f;
-    std::vector<Sums> sums(batches * blocks);
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, sums.size()), [&](const auto& r) {
-        for (std::uint64_t t = r.begin(); t < r.end(); ++t) {
-          const std::uint64_t batch = t / blocks, first = (t % blocks) * kBlock;
-          sums[t] = trace_block(tracer, cell, top, down, options.seed, d * batches + batch, first,
-                                std::min(per_batch, first + kBlock), bands);
-        }
-      });
-    });
-    // Each batch's mean, in order: luminance, then each band.
-    std::vector<std::vector<double>> means(bands + 1, std::vector<double>(batches, 0.0));
-    for (std::uint64_t t = 0; t < sums.size(); ++t) {
-      const auto n = static_cast<double>(per_batch);
-      means[0][t / blocks] += sums[t].y / n;
-      for (std::size_t b = 0; b < bands; ++b) means[b + 1][t / blocks] += sums[t].b[b] / n;
+    Batches sums(batches, d * batches);
+    extend(t, down, sums, std::max<std::uint64_t>((options.samples + batches - 1) / batches, 1));
+    DistantResult r = result_of(sums, directions[d], scales);
+    // Until the BRF's relative standard error reaches the target: the paths needed, estimated
+    // from the error so far (it falls as 1 / sqrt(paths)) with a tenth more, and at least a
+    // quarter more than so far, in whole blocks.
+    while (options.target_relative_error > 0.0 && sums.per_batch < cap &&
+           r.brf.standard_error > options.target_relative_error * std::abs(r.brf.mean)) {
+      const double ratio = r.brf.standard_error / (options.target_relative_error * r.brf.mean);
+      const double needed =
+          std::max(1.1 * ratio * ratio, 1.25) * static_cast<double>(sums.per_batch);
+      const auto blocks = static_cast<std::uint64_t>(std::ceil(needed / kBlock));
+      extend(t, down, sums, std::min(cap, blocks * kBlock));
+      r = result_of(sums, directions[d], scales);
     }
-    DistantResult r;
-    r.direction = directions[d];
-    r.radiance = batch_mean(means[0], 1.0);
-    r.brf = batch_mean(means[0], kPi / (e_y * cos_sun));
-    for (std::size_t b = 0; b < bands; ++b)
-      r.band_brf.push_back(batch_mean(means[b + 1], kPi / (e_band[b] * cos_sun)));
     out.push_back(std::move(r));
   }
   return out;

@@ -37,6 +37,7 @@ struct DistantResult {
   DistantValue radiance;  // luminance, cd/m2 (the image's Y)
   DistantValue brf;       // of the luminance: every wavelength's where the optics are grey
   std::vector<DistantValue> band_brf;  // of each of the scene's bands, in order
+  std::uint64_t paths = 0;             // traced for it
 };
 
 struct DistantMeasureOptions {
@@ -45,6 +46,10 @@ struct DistantMeasureOptions {
   // Carlo): within one, the paths' points are stratified over the cell and every later pair
   // of dimensions; the standard error comes from the spread of the batches' means.
   int batches = 32;
+  // When above 0: more paths (at least doubling, up to max_samples) until the BRF's standard
+  // error is at most this fraction of it; `samples` is then where each direction starts.
+  double target_relative_error = 0.0;
+  std::uint64_t max_samples = std::uint64_t{1} << 26;
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
   // Where the rays start, uniformly over x0-x1, y0-y1 at height `top`; empty: the scene's
