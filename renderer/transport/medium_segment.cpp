@@ -8,11 +8,15 @@ namespace landsim::renderer {
 namespace {
 
 // The single-scattering albedo of bin k over a segment: its components' scattering over their
-// extinction, each weighed by its depth along the segment (exact with one component).
+// extinction, each weighed by its depth along the segment (exact with one component). A
+// segment running level through a layer for ever has infinite depths: those components alone.
 float albedo_along(const Medium& medium, const UnitDepths& depths, int k) {
+  const bool endless =
+      std::any_of(depths.begin(), depths.end(), [](double d) { return std::isinf(d); });
   double extinction = 0.0, scattering = 0.0;
   for (int c = 0; c < kMediumComponents; ++c) {
-    const double d = depths[static_cast<std::size_t>(c)];
+    const double depth = depths[static_cast<std::size_t>(c)];
+    const double d = endless ? (std::isinf(depth) ? 1.0 : 0.0) : depth;
     if (!(d > 0.0)) continue;
     extinction += d * medium.component(c).extinction[k];
     scattering += d * medium.component(c).scattering[k];
