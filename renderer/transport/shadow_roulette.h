@@ -14,10 +14,12 @@ struct ShadowRoulette {
 };
 
 // The weight for a ray of `contribution`: 1 when it is traced outright, 1/q when it survives
-// with probability q, 0 when it is not traced.
+// with probability q, 0 when it is not traced (always, when it would add nothing).
 inline float shadow_roulette_weight(float contribution, const ShadowRoulette& r) {
-  if (contribution >= r.threshold) return 1.0f;
+  // Nothing to add is never traced, whatever the threshold (with none, a black sky's rays
+  // were: one wasted ray at every vertex of a benchmark lit by the sun alone).
   if (contribution <= 0.0f) return 0.0f;
+  if (contribution >= r.threshold) return 1.0f;
   const float q = contribution / r.threshold;
   return r.u < q ? 1.0f / q : 0.0f;
 }

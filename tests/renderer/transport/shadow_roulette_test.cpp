@@ -33,6 +33,14 @@ TEST(ShadowRoulette, BrightRaysAreAlwaysTracedAndFaintOnesBounded) {
   EXPECT_EQ(shadow_roulette_weight(0.02f, {0.1f, 0.3f}), 0.0f);
 }
 
+// A ray that would add nothing is never traced, even with no threshold (every other ray
+// traced): a black sky's shadow rays cost nothing.
+TEST(ShadowRoulette, NothingToAddIsNeverTraced) {
+  EXPECT_EQ(shadow_roulette_weight(0.0f, {0.0f, 0.5f}), 0.0f);
+  EXPECT_EQ(shadow_roulette_weight(0.0f, {1.0f, 0.0f}), 0.0f);
+  EXPECT_EQ(shadow_roulette_weight(1e-9f, {0.0f, 0.99f}), 1.0f);
+}
+
 TEST(ShadowRoulette, DarkGroundUnderUniformSkyKeepsItsRadiance) {
   // A plane of albedo 0.1 under a uniform sky of radiance 0.5 (no sun) returns 0.05 exactly:
   // it sees only sky. Its sky shadow rays mostly add less than the threshold (0.2 x 0.5), so
