@@ -242,6 +242,24 @@ double object_bytes(const Scenario& s, VariantCache* keep) {
   return bytes + static_cast<double>(s.objects.size()) * 2.0 * mm::kEmbreeInstance;
 }
 
+// The [[canopy]] clouds (docs/CANOPIES.md): every variant's discs stored once, in the scenario
+// (those read from a file), in the prototype (centre, radius, normal, item end) and in Embree
+// (an oriented disc point), and every copy's instance with its top-level record.
+double canopy_bytes(const Scenario& s) {
+  constexpr double kSettingsDisc = sizeof(LeafDisc);
+  constexpr double kPrototypeDisc = 3 * 4 + 4 + 3 * 4 + 4;
+  double bytes = 0.0;
+  for (const CanopySettings& c : s.canopies) {
+    const double discs = c.generated ? static_cast<double>(c.generated->discs) *
+                                           static_cast<double>(c.generated->variants)
+                                     : static_cast<double>(c.discs.size());
+    bytes += discs * (kPrototypeDisc + mm::kEmbreeDisc) +
+             static_cast<double>(c.discs.size()) * kSettingsDisc +
+             static_cast<double>(c.positions.size()) * (mm::kEmbreeInstance + mm::kTopLevelRecord);
+  }
+  return bytes;
+}
+
 // A film pixel with its bands, the sensor's channels and the layers derived when writing
 // (reflectance: RGB, bands and channels), and the sensor's work on a view: each channel's
 // plane through the optics and its digital numbers, and one FFT's two complex buffers (with
@@ -363,6 +381,8 @@ MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
   part("grass", "grass", p.scene_grass + p.view_grass,
        "fewer [[grass]] types, or grass on less of the map");
   part("image", "image", p.view_film, "a smaller --width/--height");
+  part("canopies", "leaf clouds ([[canopy]])", canopy_bytes(s),
+       "fewer discs or variants per [[canopy]], or fewer copies");
   part("objects", "scene objects", object_bytes(s, keep),
        "[[objects]] meshes of fewer triangles, or smaller textures");
   // Objects are placed on the drawn ground through a BVH of its own

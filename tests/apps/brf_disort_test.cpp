@@ -55,7 +55,7 @@ TEST_P(BrfDisort, TheShippedScenarioGivesDisortsReflectanceAndFluxes) {
   const DisortCase& c = GetParam();
   ASSERT_TRUE(std::filesystem::exists(scenario_of(c))) << scenario_of(c);
   // The sun stands at azimuth 90 in the scenarios: DISORT's azimuth 0 (away from it) is 270.
-  std::string args = "brf " + scenario_of(c).string() + " --json --spp 16000 --budget-paths 20000";
+  std::string args = "brf " + scenario_of(c).string() + " --json --spp 8192 --budget-paths 10000";
   for (const testing::Intensity& i : c.top)
     args += " --direction " + std::to_string(std::acos(i.mu) * 180.0 / std::numbers::pi) + "," +
             std::to_string(270.0 - i.phi_deg);

@@ -24,6 +24,16 @@ nlohmann::json species(const Scenario& s) {
                    {"core", trees::core_name(sp.species)},
                    {"variants", sp.variants}});
   }
+  // The [[canopy]] clouds follow the species (scenes/builder/detail/leaf_cloud): their leaves
+  // carry these ids.
+  for (std::size_t k = 0; k < s.canopies.size(); ++k) {
+    const CanopySettings& c = s.canopies[k];
+    out.push_back({{"id", s.species.size() + k},
+                   {"name", c.name},
+                   {"file", c.location},
+                   {"core", "canopy"},
+                   {"variants", c.generated ? c.generated->variants : 1}});
+  }
   return out;
 }
 

@@ -7,8 +7,8 @@
 
 #include "core/input_error.h"
 #include "core/process_memory.h"
-#include "scenes/scenario/default_scenario.h"
 #include "scenes/builder/scene_builder.h"
+#include "scenes/scenario/default_scenario.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -44,8 +44,8 @@ TEST(MemoryEstimate, CountsWhatTheBuilderPlacesWithoutPlacingIt) {
   EXPECT_NEAR(e.triangles_stored, triangles, 0.25 * triangles);
 }
 
-// The estimate reads the build's own first stages (scenes/builder/detail/scene_foundation), so grass
-// kept off a road raster is kept off in the estimate too (it replayed the build without the
+// The estimate reads the build's own first stages (scenes/builder/detail/scene_foundation), so
+// grass kept off a road raster is kept off in the estimate too (it replayed the build without the
 // road and water masks before, and counted grass on the road).
 TEST(MemoryEstimate, GrassOffTheRoadIsOffInTheEstimateAndTheRoadIsCounted) {
   landsim::testing::TempDir dir;
@@ -93,6 +93,24 @@ TEST(MemoryEstimate, PartsScaleWithWhatTheyCount) {
   const double film = static_cast<double>(part(estimate_memory(large), "image")) /
                       static_cast<double>(part(base, "image"));
   EXPECT_NEAR(film, 16.0, 0.1);
+}
+
+// Leaf clouds are counted: HET01's 49,999 discs (the file's, the prototype's, Embree's) and
+// its 15 copies; a generated cloud's part grows with its discs times its variants.
+TEST(MemoryEstimate, LeafCloudsAreCounted) {
+  Scenario s = load_scenario(landsim::testing::source_file("scenes/rami/het01.toml"));
+  const double het01 = static_cast<double>(part(estimate_memory(s), "leaf clouds"));
+  EXPECT_GT(het01, 49999.0 * 100.0);
+  EXPECT_LT(het01, 49999.0 * 200.0);
+  CanopySettings& c = s.canopies.front();
+  c.discs.clear();
+  c.generated = GeneratedCloud{};
+  c.generated->discs = 10000;
+  const double small = static_cast<double>(part(estimate_memory(s), "leaf clouds"));
+  c.generated->variants = 4;
+  c.generated->discs = 20000;
+  const double large = static_cast<double>(part(estimate_memory(s), "leaf clouds"));
+  EXPECT_NEAR((large - small) / small, 7.0, 0.1);  // 8x the discs, the same 15 copies
 }
 
 // The default view sees its trees from afar: degraded, their variants hold a fraction of
