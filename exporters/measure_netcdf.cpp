@@ -148,6 +148,7 @@ std::vector<Quantity> budget_quantities(const MeasureRecord& r) {
   std::vector<Quantity> out;
   for (auto [member, q] : shares) {
     for (const auto* b : {&r.budget_sun, &r.budget_isotropic}) {
+      if (!b->has_value()) continue;
       q.mean.push_back(((**b).*member).mean);
       q.error.push_back(((**b).*member).standard_error);
     }
@@ -210,8 +211,11 @@ void write_measure_netcdf(const std::filesystem::path& path, const MeasureRecord
   }
   int illumination_names = -1;
   std::vector<Quantity> budget;
-  if (r.budget_sun && r.budget_isotropic) {
-    const int illumination = f.dimension("illumination", 2);
+  std::vector<std::string> lights;
+  if (r.budget_sun) lights.push_back("sun");
+  if (r.budget_isotropic) lights.push_back("isotropic");
+  if (!lights.empty()) {
+    const int illumination = f.dimension("illumination", lights.size());
     illumination_names = f.variable("illumination", NC_STRING, {illumination});
     f.text(illumination_names, "long_name",
            "the light the budget follows: the sun's beam, or an isotropic sky");
@@ -232,8 +236,7 @@ void write_measure_netcdf(const std::filesystem::path& path, const MeasureRecord
   f.put(sun_zenith, std::vector<double>{r.sun_zenith_deg});
   f.put(sun_azimuth, std::vector<double>{r.sun_azimuth_deg});
   if (band_names >= 0) f.put(band_names, r.band_names);
-  if (illumination_names >= 0)
-    f.put(illumination_names, std::vector<std::string>{"sun", "isotropic"});
+  if (illumination_names >= 0) f.put(illumination_names, lights);
   write_values(f, vars);
   f.close();
   out.commit();

@@ -153,12 +153,16 @@ int run_brf(const BrfArgs& args) {
     budget.seed = options.seed;
     budget.threads = args.threads;
     record.budget_paths = budget.samples;
-    record.budget_sun = renderer::measure_energy(scene, budget);
+    // A dark sun (a sky alone lights the cell) has no budget of its own.
+    const Vec3f& sun = scene.sun.irradiance;
+    if (sun.x > 0.0f || sun.y > 0.0f || sun.z > 0.0f) {
+      record.budget_sun = renderer::measure_energy(scene, budget);
+      j["budget"] = budget_json(*record.budget_sun, args.budget_paths);
+    }
     // Under an isotropic sky: the bi-hemispherical reflectance, and what the canopy absorbs of
     // diffuse light.
     budget.illumination = renderer::Illumination::isotropic;
     record.budget_isotropic = renderer::measure_energy(scene, budget);
-    j["budget"] = budget_json(*record.budget_sun, args.budget_paths);
     j["budget_isotropic"] = budget_json(*record.budget_isotropic, args.budget_paths);
   }
   if (!args.out.empty()) {
@@ -171,20 +175,23 @@ int run_brf(const BrfArgs& args) {
     std::cout << j.dump() << "\n";
     return 0;
   }
-  if (j.contains("budget")) {
+  if (j.contains("budget_isotropic")) {
     std::cout << fmt::format("{:<16} {:>17} {:>17}\n", "", "sun", "isotropic sky");
+    const auto share = [&](const char* budget, const char* k) {
+      if (!j.contains(budget)) return fmt::format("{:>17}", "-");
+      return fmt::format("{:.4f} +- {:.4f}", j[budget][k]["mean"].get<double>(),
+                         j[budget][k]["se"].get<double>());
+    };
     for (const char* k : {"albedo", "absorbed_leaves", "absorbed_stems", "absorbed_soil",
                           "absorbed_haze", "soil_direct", "soil_diffuse", "total"})
-      std::cout << fmt::format(
-          "{:<16} {:.4f} +- {:.4f}  {:.4f} +- {:.4f}\n", k, j["budget"][k]["mean"].get<double>(),
-          j["budget"][k]["se"].get<double>(), j["budget_isotropic"][k]["mean"].get<double>(),
-          j["budget_isotropic"][k]["se"].get<double>());
+      std::cout << fmt::format("{:<16} {}  {}\n", k, share("budget", k),
+                               share("budget_isotropic", k));
   }
   for (const auto& d : j["directions"])
-    std::cout << fmt::format("{:>7.1f} {:>7.1f}  BRF {:.4f} +- {:.4f}\n",
+    std::cout << fmt::format("{:>7.1f} {:>7.1f}  BRF {:.4f} +- {:.4f}  radiance {:.6g}\n",
                              d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
-                             d["azimuth_deg"].get<double>(), d["brf"].get<double>(),
-                             d["brf_se"].get<double>());
+                             d["azimuth_deg"].get<double>(), d.value("brf", std::nan("")),
+                             d.value("brf_se", std::nan("")), d["radiance"].get<double>());
   return 0;
 }
 

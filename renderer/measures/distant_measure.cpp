@@ -6,6 +6,7 @@
 
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -174,8 +175,12 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
   const auto batches = static_cast<std::uint64_t>(std::max(options.batches, 2));
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   const Tracing t{tracer, cell, top, options.seed, bands, arena};
-  Scales scales{kPi / (e_y * cos_sun), {}};
-  for (std::size_t b = 0; b < bands; ++b) scales.band.push_back(kPi / (e_band[b] * cos_sun));
+  // A dark sun (a sky alone lights the cell) has no BRF: not a number, the radiance stands.
+  const auto brf_scale = [&](double e) {
+    return e > 0.0 ? kPi / (e * cos_sun) : std::numeric_limits<double>::quiet_NaN();
+  };
+  Scales scales{brf_scale(e_y), {}};
+  for (std::size_t b = 0; b < bands; ++b) scales.band.push_back(brf_scale(e_band[b]));
   const std::uint64_t cap = std::max<std::uint64_t>(options.max_samples / batches, 1);
   std::vector<DistantResult> out;
   for (std::size_t d = 0; d < directions.size(); ++d) {

@@ -50,6 +50,13 @@ Spectrum luminance_weights(const Scene& scene) {
     w[k] = e[k] * (0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z);
     total += w[k];
   }
+  if (total > 0.0f) return w / total;
+  // A dark sun (a sky alone): the luminance of light of equal energy in every bin.
+  for (int k = 0; k < kSpectrumBins; ++k) {
+    const Vec3f& c = rgb[static_cast<std::size_t>(k)];
+    w[k] = 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+    total += w[k];
+  }
   return w / total;
 }
 

@@ -42,7 +42,8 @@ struct EnergyOptions {
   int threads = 0;
 };
 
-// The shares of the sun's luminance (every wavelength's share where the optics are grey).
+// The shares of the light's luminance (every wavelength's share where the optics are grey),
+// weighted by the sun's spectrum (by an equal-energy spectrum when the sun is dark).
 // Throws std::invalid_argument without a periodic cell or with the sun down.
 EnergyBudget measure_energy(const Scene& scene, const EnergyOptions& options);
 

@@ -70,6 +70,14 @@ renderer::Sky read_sky(const toml::table& t, const std::string& file) {
   // Hosek-Wilkie's tables span turbidity 1-10; Preetham's fit is not valid below 1.7.
   s.turbidity = r.number(
       "turbidity", Range{s.model == renderer::SkyKind::preetham ? 1.7 : 1.0, 10.0}, s.turbidity);
+  // The gradient's two colours (cd/m2, linear Rec. 709): equal, a uniform sky, the isotropic
+  // light of radiative-transfer benchmarks (DISORT's FISOT).
+  for (const char* key : {"zenith_radiance", "horizon_radiance"})
+    if (r.has(key) && s.model != renderer::SkyKind::gradient)
+      r.fail(key, "only with model = \"gradient\"");
+  s.zenith_radiance = to_vec3f(r.vec3("zenith_radiance", Range{0.0, 1e6}, Vec3(s.zenith_radiance)));
+  s.horizon_radiance =
+      to_vec3f(r.vec3("horizon_radiance", Range{0.0, 1e6}, Vec3(s.horizon_radiance)));
   r.finish();
   return s;
 }

@@ -179,6 +179,15 @@ TEST(Scenario, SkyModelsAndTheirTurbidityRanges) {
   EXPECT_NE(low.find("[sky] turbidity"), std::string::npos) << low;
   EXPECT_NE(error_of(scenario_text() + "\n[sky]\nmodel = \"perez\"").find("hosek-wilkie"),
             std::string::npos);
+  // The gradient's colours: equal, a uniform sky (DISORT's isotropic light); only for it.
+  const renderer::Sky uniform =
+      sky("u.toml", "model = \"gradient\"\nzenith_radiance = [5, 5, 5]\n"
+                    "horizon_radiance = [5, 5, 5]");
+  EXPECT_EQ(uniform.zenith_radiance, (Vec3f{5.0f, 5.0f, 5.0f}));
+  EXPECT_EQ(uniform.horizon_radiance, (Vec3f{5.0f, 5.0f, 5.0f}));
+  const std::string only = error_of(scenario_text() + "\n[sky]\nzenith_radiance = [5, 5, 5]");
+  EXPECT_NE(only.find("[sky] zenith_radiance: only with model = \"gradient\""), std::string::npos)
+      << only;
 }
 
 TEST(Scenario, OutOfRangeNumbersAreRefused) {
