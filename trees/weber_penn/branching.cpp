@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "trees/weber_penn/shape_ratio.h"
+
 namespace landsim::trees::weber_penn {
 
 double child_count(int level, int branches, double length, double parent_length,
@@ -27,7 +29,9 @@ double next_rotation(double& state, const LevelParameters& child, Random& r) {
 
 double down_angle(const LevelParameters& child, double ratio, Random& r) {
   if (child.down_angle_v >= 0.0) return child.down_angle + r.var(child.down_angle_v);
-  return child.down_angle + child.down_angle_v * (1.0 - 2.0 * ratio);
+  // As printed (section 4.3), through the conical ShapeRatio: the sweep runs from nDownAngle -
+  // V at the lowest child to nDownAngle + 0.6 V at the tip (the appendix species were tuned so).
+  return child.down_angle + child.down_angle_v * (1.0 - 2.0 * shape_ratio(0, ratio));
 }
 
 }  // namespace landsim::trees::weber_penn

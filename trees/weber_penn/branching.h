@@ -35,7 +35,8 @@ double child_count(int level, int branches, double length, double parent_length,
 double next_rotation(double& state, const LevelParameters& child, Random& r);
 
 // nDownAngle +- nDownAngleV; a negative nDownAngleV instead sweeps the angle along the
-// parent by position `ratio` (1 at the lowest child, 0 at the tip): nDownAngle + V (1 - 2 ratio).
+// parent by position `ratio` (1 at the lowest child, 0 at the tip), as the paper prints it:
+// nDownAngle + V (1 - 2 ShapeRatio(0, ratio)).
 double down_angle(const LevelParameters& child, double ratio, Random& r);
 
 }  // namespace landsim::trees::weber_penn

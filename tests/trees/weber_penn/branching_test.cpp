@@ -74,10 +74,13 @@ TEST(DownAngle, VariationOrSweepAlongTheParent) {
     ASSERT_GE(d, 50.0);
     ASSERT_LE(d, 70.0);
   }
-  lp.down_angle_v = -50.0;  // negative: lowest children 110 degrees, the tip 10
+  // Negative: the paper's sweep, 60 - 50 (1 - 2 (0.2 + 0.8 ratio)): the quaking aspen's main
+  // branches, 110 degrees from the trunk at the lowest child, 30 at the tip (a linear sweep
+  // would give 10), 70 half way.
+  lp.down_angle_v = -50.0;
   EXPECT_DOUBLE_EQ(down_angle(lp, 1.0, r), 110.0);
-  EXPECT_DOUBLE_EQ(down_angle(lp, 0.0, r), 10.0);
-  EXPECT_DOUBLE_EQ(down_angle(lp, 0.5, r), 60.0);
+  EXPECT_DOUBLE_EQ(down_angle(lp, 0.0, r), 30.0);
+  EXPECT_DOUBLE_EQ(down_angle(lp, 0.5, r), 70.0);
 }
 
 }  // namespace
