@@ -217,7 +217,7 @@ TEST(IterationLevels, TheTable2ExamplesAreThePapersWholeRows) {
               30,
               {cylinder, sphere_portion},
               std::vector<double>(7, 0.25),
-              {2, 1, 1, 1, 1, 1, 1},
+              {2, 1, 1, 2, 1, 1, 1},  // "2, 5" share b = 2, as tree a's "2,3" share b = 3
               std::vector<double>(7, 0.12)});
   expect_row(
       {"graph_table2_e.toml", 10, {sphere_portion}, {0.5, 0.5, 0.3}, {4, 4, 6}, {0, 0, 0}, 2});
