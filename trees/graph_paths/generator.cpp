@@ -50,6 +50,30 @@ double light_factor(const IterationParameters& it, const Vec3& v) {
   return 1.0 + it.light_strength * (1.0 - 2.0 * f);
 }
 
+// The least-cost tree from the node nearest `root` that reaches an endpoint: the nearest node
+// of all, unless the random nodes left it cut off from the rest (a narrow trunk cylinder of a
+// spacing's radius can: graph_conifer's seed 1 had its nearest node alone, and grew nothing);
+// then the next nearest, up to 64 of them.
+PathTree rooted_tree(const Graph& g, const Vec3& root,
+                     const std::vector<std::uint32_t>& endpoints) {
+  std::vector<std::uint32_t> order(g.nodes.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  const std::size_t tries = std::min<std::size_t>(64, order.size());
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(tries), order.end(),
+                    [&](std::uint32_t a, std::uint32_t b) {
+                      return length(g.nodes[a] - root) < length(g.nodes[b] - root);
+                    });
+  PathTree first;
+  for (std::size_t k = 0; k < tries; ++k) {
+    PathTree t = least_cost_tree(g, order[k]);
+    if (std::any_of(endpoints.begin(), endpoints.end(),
+                    [&](std::uint32_t e) { return std::isfinite(t.cost[e]); }))
+      return t;
+    if (k == 0) first = std::move(t);
+  }
+  return first;
+}
+
 class Grower {
  public:
   Grower(const Parameters& p, std::uint64_t seed, GraphStatistics& stats)
@@ -205,7 +229,8 @@ class Grower {
   std::vector<std::uint32_t> hang(const Graph& g, const std::vector<std::uint32_t>& endpoints,
                                   const Vec3& root, std::uint32_t attach, int level,
                                   BranchStructure& b) {
-    b = union_of_paths(g, least_cost_tree(g, nearest_node(g.nodes, root)), endpoints);
+    const PathTree t = rooted_tree(g, root, endpoints);
+    b = union_of_paths(g, t, endpoints);
     return tree_.append(g, b, attach, level);
   }
 
