@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <unordered_map>
 
 #include "core/counter_rng.h"
 #include "core/input_error.h"
@@ -28,7 +29,7 @@ bool candidate(const VegetationMap& map, const terrain::ElevationGrid& terrain,
   const double y =
       y0 + (static_cast<double>(j) + 0.5) * spacing + jitter * (2.0 * r.uniform(1) - 1.0);
   const auto cell = map.cell_at(x, y);
-  if (!cell || cell->species_bit() != sp.bit) return false;
+  if (!cell || !cell->has_tree_bit(sp.bit)) return false;
   const auto z = terrain.height(x, y);
   if (!z) return false;
   out.species = species_index;
@@ -40,6 +41,52 @@ bool candidate(const VegetationMap& map, const terrain::ElevationGrid& terrain,
   out.rotation = 2.0 * std::numbers::pi * r.uniform(3);
   out.scale = 1.0 + sp.scale_variation * (2.0 * r.uniform(4) - 1.0);
   return true;
+}
+
+// Trees in cells of several species compete for room: in species order, a tree that stands
+// closer to an earlier species' kept tree than the larger of their two minimum spacings gives
+// way. Cells of one species are left as placed (their trees meet only their own kind).
+std::vector<PlacedTree> compete_in_mixed_stands(const VegetationMap& map,
+                                                const std::vector<SpeciesPlacement>& species,
+                                                std::vector<PlacedTree> all) {
+  double reach = 0.0;
+  for (const SpeciesPlacement& sp : species) reach = std::max(reach, sp.min_spacing);
+  if (!(reach > 0.0)) return all;
+  const auto mixed = [&](const PlacedTree& t) {
+    const auto cell = map.cell_at(t.x, t.y);
+    return cell && cell->tree_bit_count() > 1;
+  };
+  // Kept trees of mixed cells, by grid square of side `reach`.
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> near;
+  const auto square = [&](double x, double y, int dx, int dy) {
+    const auto i = static_cast<std::int64_t>(std::floor(x / reach)) + dx;
+    const auto j = static_cast<std::int64_t>(std::floor(y / reach)) + dy;
+    return (static_cast<std::uint64_t>(i) << 32) ^ static_cast<std::uint64_t>(j & 0xffffffff);
+  };
+  std::vector<PlacedTree> kept;
+  kept.reserve(all.size());
+  for (const PlacedTree& t : all) {  // species by species: earlier species first
+    if (!mixed(t)) {
+      kept.push_back(t);
+      continue;
+    }
+    bool room = true;
+    for (int dx = -1; dx <= 1 && room; ++dx)
+      for (int dy = -1; dy <= 1 && room; ++dy) {
+        const auto it = near.find(square(t.x, t.y, dx, dy));
+        if (it == near.end()) continue;
+        for (const std::size_t k : it->second) {
+          const PlacedTree& o = kept[k];
+          const double gap =
+              std::max(species[t.species].min_spacing, species[o.species].min_spacing);
+          if (o.species != t.species && std::hypot(o.x - t.x, o.y - t.y) < gap) room = false;
+        }
+      }
+    if (!room) continue;
+    near[square(t.x, t.y, 0, 0)].push_back(kept.size());
+    kept.push_back(t);
+  }
+  return kept;
 }
 
 }  // namespace
@@ -78,7 +125,7 @@ std::vector<PlacedTree> place_trees(const VegetationMap& map, const terrain::Ele
     // Concatenated in row order: the result does not depend on how rows were scheduled.
     for (std::vector<PlacedTree>& row : per_row) all.insert(all.end(), row.begin(), row.end());
   }
-  return all;
+  return compete_in_mixed_stands(map, species, std::move(all));
 }
 
 }  // namespace landsim::featuremaps

@@ -1,6 +1,7 @@
 #pragma once
 // Tree placement (Weber & Penn section 6): each species is spread at its density over the
-// feature-map cells that select it, on a jittered grid whose jitter leaves at least the
+// feature-map cells whose bit for it is set (a cell may set several: a mixed stand, whose
+// species compete for room by their minimum spacings), on a jittered grid whose jitter leaves at least the
 // minimum trunk spacing between neighbours, standing on the terrain surface, each tree a
 // random variant, turned and scaled at random. Every candidate depends only on the seed and
 // its grid position, so placement is the same on any number of threads.

@@ -15,9 +15,11 @@ struct VegetationCell {
   // Grass type 1..3, or 0 for none.
   int grass_type() const { return raw >> kTreeBits; }
   std::uint16_t tree_bits() const { return raw & kTreeMask; }
-  // Number of tree species bits set (species are meant to be mutually exclusive).
+  // Number of tree species bits set (several: a mixed stand, each species placed by its own
+  // density).
   int tree_bit_count() const;
-  // The species bit that applies: the lowest one set, or none.
+  bool has_tree_bit(int bit) const { return bit >= 0 && bit < kTreeBits && ((raw >> bit) & 1u); }
+  // The lowest species bit set, or none (what a one-species cell selects).
   std::optional<int> species_bit() const;
 };
 

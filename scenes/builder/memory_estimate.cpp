@@ -126,14 +126,14 @@ std::vector<SpeciesExtent> species_extents(const Scenario& s,
   const double half_diagonal = 0.5 * std::hypot(t.cell_size_x, t.cell_size_y);
   for (int r = 0; r < map.rows(); ++r)
     for (int c = 0; c < map.cols(); ++c) {
-      const std::optional<int> bit = map.at(c, r).species_bit();
-      if (!bit) continue;
+      const featuremaps::VegetationCell cell = map.at(c, r);
+      if (cell.tree_bits() == 0) continue;
       const double x = t.origin_x + (c + 0.5) * t.cell_size_x;
       const double y = t.origin_y - (r + 0.5) * t.cell_size_y;
       const std::optional<double> z = grid.height(x, y);
       if (!z) continue;
       for (std::size_t k = 0; k < s.species.size(); ++k) {
-        if (s.species[k].bit != *bit) continue;
+        if (!cell.has_tree_bit(s.species[k].bit)) continue;
         extent[k].area += cell_area;
         for (std::size_t v = 0; v < views.size(); ++v) {
           const double d = length(Vec3{x, y, *z} - views[v].position);

@@ -38,9 +38,11 @@ TEST(Placement, DensityMatchesWithinAFewPercent) {
       place_trees(w.map, w.terrain, {{0, 300.0, 2.0, 4, 0.1}, {3, 80.0, 0.0, 1, 0.0}}, 5);
   std::map<std::uint32_t, int> count;
   for (const PlacedTree& p : t) ++count[p.species];
-  // Bit 0 holds columns 0-50 (51 of 100, the lowest bit wins in the shared strip): 51 ha.
+  // Bit 0 holds columns 0-50 (51 of 100), bit 3 columns 50-99 (50): the strip of both is a
+  // mixed stand with each species at its own density (bit 3's few trees there giving way
+  // within 2 m of bit 0's: under 1% of its count).
   EXPECT_NEAR(count[0] / (51.0 * 300.0), 1.0, 0.03);
-  EXPECT_NEAR(count[1] / (49.0 * 80.0), 1.0, 0.05);
+  EXPECT_NEAR(count[1] / (50.0 * 80.0), 1.0, 0.05);
 }
 
 TEST(Placement, TreesStandInTheirCellsOnTheSurface) {
@@ -51,7 +53,7 @@ TEST(Placement, TreesStandInTheirCellsOnTheSurface) {
   double smallest = 2.0, largest = 0.0;
   for (const PlacedTree& p : placed) {
     const int bit = p.species == 0 ? 0 : 3;
-    ASSERT_EQ(w.map.cell_at(p.x, p.y)->species_bit(), bit);
+    ASSERT_TRUE(w.map.cell_at(p.x, p.y)->has_tree_bit(bit));
     ASSERT_DOUBLE_EQ(p.z, 50.0);
     ASSERT_LT(p.variant, 3u);
     ASSERT_GE(p.scale, 0.8);
@@ -68,6 +70,35 @@ TEST(Placement, TreesStandInTheirCellsOnTheSurface) {
   for (std::uint32_t v = 0; v < 3; ++v) EXPECT_GT(per_variant[v], 5000) << v;
   EXPECT_LT(smallest, 0.81);
   EXPECT_GT(largest, 1.19);
+}
+
+// Weber & Penn section 6: a tree's variants are spread "over positions where the appropriate
+// bit for that tree is set": a cell of several bits is a mixed stand. Each species comes at its
+// own density, and they compete for room: no two trees of different species closer than the
+// larger of their minimum spacings.
+TEST(Placement, MixedStandsHoldEverySpeciesCompetingForRoom) {
+  const World w;  // the strip of column 50 sets bits 0 and 3
+  const std::vector<PlacedTree> t =
+      place_trees(w.map, w.terrain, {{0, 200.0, 3.0, 1, 0.0}, {3, 150.0, 1.0, 1, 0.0}}, 11);
+  std::vector<const PlacedTree*> strip;
+  for (const PlacedTree& p : t)
+    if (w.map.cell_at(p.x, p.y)->tree_bit_count() > 1) strip.push_back(&p);
+  int first = 0, second = 0;
+  for (const PlacedTree* p : strip) (p->species == 0 ? first : second) += 1;
+  // The strip is 1 ha, 10 m wide: species 0 at about its 200 (its 7 m grid's columns fall
+  // once or twice across the strip), species 1 at its 150 less what gives way to species 0's
+  // (within 3 m: about 200 x 28 m2 of the hectare, a 44% share).
+  EXPECT_GT(first, 100);
+  EXPECT_LT(first, 300);
+  EXPECT_GT(second, 30);
+  EXPECT_LT(second, 150);
+  for (const PlacedTree* a : strip) {
+    for (const PlacedTree* b : strip) {
+      if (a->species == 0 && b->species == 1) {
+        ASSERT_GE(std::hypot(a->x - b->x, a->y - b->y), 3.0);
+      }
+    }
+  }
 }
 
 TEST(Placement, MinimumSpacingHolds) {

@@ -75,7 +75,8 @@ void check_use(const Scenario& s, const featuremaps::VegetationMap& map, const s
   for (int r = 0; r < map.rows(); ++r)
     for (int c = 0; c < map.cols(); ++c) {
       const featuremaps::VegetationCell v = map.at(c, r);
-      if (const auto b = v.species_bit()) ++bits[static_cast<std::size_t>(*b)];
+      for (int b = 0; b < featuremaps::kTreeBits; ++b)
+        bits[static_cast<std::size_t>(b)] += v.has_tree_bit(b);
       ++grass[static_cast<std::size_t>(v.grass_type())];
     }
   check_entries(
@@ -98,7 +99,7 @@ std::optional<featuremaps::VegetationMap> scene_vegetation(const Scenario& s,
     map = vegetation_map(f, s.render.seed);
     check_overlap(*map, grid, f.vegetation.empty() ? f.classes : f.vegetation);
     if (const std::size_t multi = map->multi_species_cells(); multi > 0)
-      spdlog::warn("{} feature-map cells select several tree species; the lowest bit wins", multi);
+      spdlog::info("{} feature-map cells are mixed stands of several tree species", multi);
   }
   // Covers fill in where the feature map (if any) selects nothing, in file order.
   std::vector<featuremaps::CoverRequest> trees, grass;

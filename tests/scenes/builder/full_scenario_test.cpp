@@ -410,6 +410,12 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
     rami += landsim::testing::read_file(path);
   }
   text += rami;
+  // DISORT's plane-parallel cases (docs/VALIDATION.md): the layer, the uniform sky of case 11a.
+  for (const char* scene : {"case_3a", "case_11a"}) {
+    const auto path = source_file(std::string("scenes/disort/") + scene + ".toml");
+    EXPECT_TRUE(load_scenario(path).haze.layer.has_value()) << scene;
+    text += landsim::testing::read_file(path);
+  }
   for (const std::string& k : documented) {
     EXPECT_NE(text.find("\n" + k + " ="), std::string::npos)
         << "documented key '" << k << "' is set by no test scenario";
