@@ -56,6 +56,13 @@ double light_factor(const IterationParameters& it, const Vec3& v) {
 // then the next nearest, up to 64 of them.
 PathTree rooted_tree(const Graph& g, const Vec3& root,
                      const std::vector<std::uint32_t>& endpoints) {
+  const auto reaches = [&](const PathTree& t) {
+    return std::any_of(endpoints.begin(), endpoints.end(),
+                       [&](std::uint32_t e) { return std::isfinite(t.cost[e]); });
+  };
+  // The common case first, as cheap as before: one search from the nearest node.
+  PathTree first = least_cost_tree(g, nearest_node(g.nodes, root));
+  if (endpoints.empty() || reaches(first)) return first;
   std::vector<std::uint32_t> order(g.nodes.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   const std::size_t tries = std::min<std::size_t>(64, order.size());
@@ -63,13 +70,9 @@ PathTree rooted_tree(const Graph& g, const Vec3& root,
                     [&](std::uint32_t a, std::uint32_t b) {
                       return length(g.nodes[a] - root) < length(g.nodes[b] - root);
                     });
-  PathTree first;
-  for (std::size_t k = 0; k < tries; ++k) {
+  for (std::size_t k = 1; k < tries; ++k) {
     PathTree t = least_cost_tree(g, order[k]);
-    if (std::any_of(endpoints.begin(), endpoints.end(),
-                    [&](std::uint32_t e) { return std::isfinite(t.cost[e]); }))
-      return t;
-    if (k == 0) first = std::move(t);
+    if (reaches(t)) return t;
   }
   return first;
 }

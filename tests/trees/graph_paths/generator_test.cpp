@@ -116,9 +116,9 @@ TEST(GraphPathsGenerator, DownwardRotationMakesWeepingBranches) {
   EXPECT_LT(weeping, straight - 0.3);
 }
 
-// Endpoints of every subgraph grown in a three-level tree (seed 5) with the lifespan rule at
-// `lifespan`, each child ending with `terminate`, under a light of `light` strength from +x.
-std::size_t endpoints_with_lifespan(double lifespan, double terminate, double light) {
+// Statistics of a three-level tree (seed 5) with the lifespan rule at `lifespan`, each child
+// ending with `terminate`, under a light of `light` strength from +x; lifespan 0: without it.
+GraphStatistics with_lifespan(double lifespan, double terminate, double light) {
   Parameters p = iterated(3);
   p.iteration.use_lifespan = lifespan > 0.0;
   p.iteration.lifespan = lifespan;
@@ -127,21 +127,15 @@ std::size_t endpoints_with_lifespan(double lifespan, double terminate, double li
   p.iteration.light_strength = light;
   GraphStatistics stats;
   generate_skeleton(p, 5, &stats);
-  return stats.endpoints;
+  return stats;
 }
 
-// Nodes of a three-level tree (seed 5) with the lifespan rule at `lifespan`, each child ending
-// with `terminate`, under a light of `light` strength from +x; lifespan 0: without the rule.
+// Its graph nodes; its subgraphs' endpoints.
 std::size_t nodes_with_lifespan(double lifespan, double terminate = 0.3, double light = 0.0) {
-  Parameters p = iterated(3);
-  p.iteration.use_lifespan = lifespan > 0.0;
-  p.iteration.lifespan = lifespan;
-  p.iteration.terminate_probability = terminate;
-  p.iteration.light = {1, 0, 0};
-  p.iteration.light_strength = light;
-  GraphStatistics stats;
-  generate_skeleton(p, 5, &stats);
-  return stats.nodes;
+  return with_lifespan(lifespan, terminate, light).nodes;
+}
+std::size_t endpoints_with_lifespan(double lifespan, double terminate, double light) {
+  return with_lifespan(lifespan, terminate, light).endpoints;
 }
 
 TEST(GraphPathsGenerator, LifespanEndsSomeBranchesEarly) {
