@@ -51,7 +51,6 @@ void read_allometry(TableReader r, Allometry& a) {
 void read_growth(TableReader r, Parameters& p) {
   p.age = r.number("age", {0, 500}, p.age);
   p.scaffold_interval = r.number("scaffold_interval", {0.25, 20}, p.scaffold_interval);
-  p.branch_length = r.number("branch_length", {0.01, 100}, p.branch_length);
   p.max_generations = static_cast<int>(r.integer("max_generations", 0, 12, p.max_generations));
   p.min_scale = r.number("min_scale", {0, 1}, p.min_scale);
   p.l_max = r.number("l_max", {0, 100}, p.l_max);
@@ -76,7 +75,7 @@ double length_scale(const Parameters& p) { return p.l_max > 0.0 ? p.l_max : max_
 
 double bifurcation_age(const Parameters& p) {
   const Allometry& a = p.allometry;
-  const double wanted = max_height(p) * p.branch_length / length_scale(p);
+  const double wanted = length_scale(p);
   if (wanted <= a.f_height(0.0)) return 0.0;
   if (wanted > a.f_height(a.max_age)) return std::numeric_limits<double>::infinity();
   double lo = 0.0, hi = a.max_age;  // f_H increases with age
@@ -85,6 +84,10 @@ double bifurcation_age(const Parameters& p) {
     (a.f_height(mid) < wanted ? lo : hi) = mid;
   }
   return hi;
+}
+
+double grown_length(const Parameters& p, double c_l, double t, double t0) {
+  return c_l * p.allometry.f_height(t - t0);
 }
 
 Parameters read_parameters(params::TableReader& root, const std::string& source) {
@@ -101,10 +104,11 @@ Parameters read_parameters(params::TableReader& root, const std::string& source)
   // A branch born at its maximum length would fork at once, every fork again: refused.
   if (!(bifurcation_age(p) > 0.0))
     throw InputError(
-        source + ": growth.branch_length " + params::format_number(p.branch_length) +
+        source + ": growth.l_max " + params::format_number(p.l_max) +
         " m is no longer than a branch is at its creation (" +
-        params::format_number(p.allometry.f_height(0.0) / max_height(p) * length_scale(p)) +
-        " m for c_l = 1): every branch would fork at once; raise it");
+        params::format_number(p.allometry.f_height(0.0)) +
+        " m for c_l = 1, the height of the planted tree): every branch would fork at once; "
+        "raise it");
   const double scaffolds = p.allometry.max_age / p.scaffold_interval;
   const double per_scaffold = std::pow(2.0, p.max_generations + 1);
   if (scaffolds * per_scaffold > 2e6)

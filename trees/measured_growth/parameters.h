@@ -16,10 +16,9 @@ struct Parameters {
   Allometry allometry = modesto_london_plane();
   double age = 30.0;               // years since planting, when a scenario gives none
   double scaffold_interval = 1.0;  // years between scaffold limbs leaving the leader
-  double branch_length = 4.5;      // metres: a c_l = 1 branch's maximum length, then it forks
   int max_generations = 6;         // bifurcations along a scaffold
   double min_scale = 0.15;         // branches with a smaller c_l do not bifurcate
-  double l_max = 0.0;              // metres: a scaffold's c_l = 1 length; 0 = the max height
+  double l_max = 0.0;              // metres: a c_l = 1 branch's maximum length; 0 = H_max
   double c_dbh = 1.0;              // trunk diameter at 1.37 m = c_dbh * f_DBH
   double divergence = 2.2689;      // radians (130 degrees) between successive scaffolds
   double angle_noise = 0.087;      // radians: random part of the bifurcation angle
@@ -32,14 +31,19 @@ struct Parameters {
 
 // H_max: the largest height, f_H at the data's end.
 double max_height(const Parameters& p);
-// l_max: a c_l = 1 branch's length scale, the species' or else H_max.
+// l_max: a c_l = 1 branch's maximum length, the species' or else H_max.
 double length_scale(const Parameters& p);
 
-// Section 5: a branch grows l(t) = c_l l_max / H_max f_H(t - t0) and bifurcates when it
-// reaches its maximum length, c_l x `branch_length` (a child's maximum is its parent's times
-// the same factor s as its c_l): when f_H(t - t0) = H_max branch_length / l_max, the same
-// time after creation for every branch. Infinite if f_H never gets there.
+// Section 5, as landsim reads it (docs/MEASURED_GROWTH.md): a branch grows the tree's height
+// curve replayed from its creation, l(t) = c_l f_H(t - t0) (the paper's l_max / H_max is the
+// trunk's ratio, 1), and bifurcates when it reaches its maximum length c_l l_max (a child's
+// maximum is its parent's times the same s as its c_l): when f_H(t - t0) = l_max, the same
+// time after creation for every branch. Infinite if f_H never gets there (l_max = H_max: the
+// literal reading, in which nothing forks before the data's end).
 double bifurcation_age(const Parameters& p);
+
+// A branch's length at time t (before the crown's shape ends it): c_l f_H(t - t0).
+double grown_length(const Parameters& p, double c_l, double t, double t0);
 
 // Reads the core's tables ([allometry.*], [growth], [leaves]); InputError names file, line,
 // key and what was expected.

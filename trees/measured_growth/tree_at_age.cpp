@@ -74,12 +74,10 @@ TreeAtAge evaluate(const Parameters& p, const std::vector<Module>& modules, doub
   tree.height = a.f_height(age);
   tree.crown_base = tree.height - a.f_crown_height(age);
   tree.dbh_radius = p.c_dbh * a.f_dbh(age) / 200.0;
-  const double h_max = max_height(p);
-  const double l_max = length_scale(p);
   // The branch's length at time t: grown by the age function, ended by the crown's shape.
   const CrownShape shape(a, age);
   const auto length_at = [&](const Module& m, const Vec3& base, double t) {
-    const double grown = m.c_l * l_max / h_max * a.f_height(t - m.t0);
+    const double grown = grown_length(p, m.c_l, t, m.t0);
     return room(base, m.direction, shape.at(t), grown);
   };
   const double period = bifurcation_age(p);
