@@ -62,4 +62,24 @@ std::optional<double> GroundProbe::height(double x, double y) const {
   return static_cast<double>(impl_->top) - static_cast<double>(rh.ray.tfar);
 }
 
+bool GroundProbe::occluded(const Vec3& from, const Vec3& to) const {
+  const Vec3 d = to - from;
+  const double distance = length(d);
+  if (distance <= 0.0) return false;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray{};
+  ray.org_x = static_cast<float>(from.x);
+  ray.org_y = static_cast<float>(from.y);
+  ray.org_z = static_cast<float>(from.z);
+  ray.dir_x = static_cast<float>(d.x / distance);
+  ray.dir_y = static_cast<float>(d.y / distance);
+  ray.dir_z = static_cast<float>(d.z / distance);
+  ray.tnear = 0.0f;
+  ray.tfar = static_cast<float>(distance * (1.0 - 1e-4));  // the end point's own ground aside
+  ray.mask = 0xffffffffu;
+  rtcOccluded1(impl_->scene, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree marks a blocked ray with tfar = -inf
+}
+
 }  // namespace landsim::renderer

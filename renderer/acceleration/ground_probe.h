@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/vec3.h"
 #include "terrain/ground_mesh.h"
 
 namespace landsim::renderer {
@@ -20,6 +21,9 @@ class GroundProbe {
   // The highest ground surface at (x, y), scene frame; empty off the mesh or over a nodata
   // hole. Safe to call from many threads.
   std::optional<double> height(double x, double y) const;
+  // Whether the ground hides `to` from `from` (scene frame): the segment between them meets
+  // a ground triangle. Safe to call from many threads.
+  bool occluded(const Vec3& from, const Vec3& to) const;
 
  private:
   struct Impl;

@@ -177,6 +177,19 @@ struct ObjectMaterialOverride {
   std::optional<float> metallic;
 };
 
+// [objects.place] (docs/OBJECTS.md "Placed by a view"): the object drawn from the seed onto
+// ground seen from a view, within a range band and a bearing sector.
+struct ObjectSiting {
+  std::string location;          // "file:line:column" of the table, for messages
+  std::string view;              // the view's name
+  double range_min = 0.0, range_max = 0.0;  // metres, horizontal, from the camera
+  double bearing_min = 0.0, bearing_max = 0.0;  // degrees from the optical axis, clockwise
+  bool bearing_given = false;    // else the view's frame (perspective) or all round
+  double min_visible = 0.5;      // share of the object's sample points the camera sees
+  bool trees = true;             // trees occlude (their crowns' bounding cylinders, opaque)
+  std::uint64_t seed = 0;        // mixed with [render] seed and the randomised image
+};
+
 struct ObjectSettings {
   std::string location;           // "file:line:column" of its table
   std::string path;               // "objects[i]" or "objects \"name\"", for messages
@@ -193,6 +206,9 @@ struct ObjectSettings {
   bool align_to_ground = false;
   std::optional<double> clear_radius;  // metres; empty: the footprint's radius + 1 m
   std::vector<ObjectMaterialOverride> materials;
+  bool random_heading = false;          // `heading = "random"`: drawn from the seed
+  std::optional<ObjectSiting> siting;   // placed by a view instead of `position`
+  std::size_t copy = 0;                 // which of `count` copies (0-based), for the draws
 };
 
 // [[bands]]: a sensor band the image set also measures (docs/SPECTRAL.md).
@@ -234,6 +250,9 @@ struct Scenario {
   std::vector<CanopySettings> canopies;  // abstract canopies (RAMI), beside or instead of trees
   std::vector<BandSettings> bands;
   std::optional<SensorSettings> sensor;
+  // The randomised image this scenario is ([randomise], docs/SCENARIO.md), 0 otherwise: it
+  // mixes into the objects' draws, so each image places its own.
+  std::uint64_t variation = 0;
 };
 
 // Limit on frames per scenario (an image set is views x frames images).

@@ -48,6 +48,19 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   }
 }
 
+// [objects.place] view: one of the scenario's views.
+void check_object_views(const Scenario& s) {
+  for (const ObjectSettings& o : s.objects) {
+    if (!o.siting) continue;
+    std::vector<std::string> names;
+    for (const ViewSettings& v : s.views) names.push_back("'" + v.name + "'");
+    if (std::find(names.begin(), names.end(), "'" + o.siting->view + "'") == names.end())
+      throw InputError(fmt::format("{}: [{}.place] view: no view is named '{}' (the views: {})",
+                                   o.siting->location, o.path, o.siting->view,
+                                   fmt::join(names, ", ")));
+  }
+}
+
 }  // namespace
 
 void check_image_size(int width, int height, const std::string& where) {
@@ -121,6 +134,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.sky = read_sky(sub_table(root, "sky", source, false), source);
   s.haze = read_haze(root, source);
   s.objects = read_objects(root, source, base_dir);
+  check_object_views(s);
   s.canopies = read_canopies(root, source, base_dir);
   return s;
 }

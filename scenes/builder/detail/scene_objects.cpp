@@ -16,7 +16,9 @@
 #include "core/input_warnings.h"
 #include "renderer/acceleration/ground_probe.h"
 #include "renderer/materials/object_texture.h"
+#include "core/counter_rng.h"
 #include "scenes/builder/detail/mesh_file_check.h"
+#include "scenes/builder/detail/object_siting.h"
 #include "scenes/builder/mesh_io.h"
 
 namespace landsim::scenes::detail {
@@ -279,6 +281,31 @@ void clear_trees(renderer::Scene& scene, double x, double y, double radius) {
   });
 }
 
+// The object with what it draws from the seed: its place by a view ([objects.place]) and a
+// random heading. The draws mix [render] seed, the randomised image and the object's index.
+ObjectSettings with_draws(const ObjectSettings& o, std::size_t index, const Scenario& s,
+                          const renderer::ObjectPrototype& proto, const renderer::Scene& scene,
+                          const renderer::GroundProbe& probe,
+                          const std::vector<TakenGround>& taken) {
+  if (!o.siting && !o.random_heading) return o;
+  std::uint64_t seed = hash_combine(hash_combine(s.render.seed, s.variation), index);
+  ObjectSettings drawn = o;
+  if (o.siting) {
+    seed = hash_combine(seed, o.siting->seed);
+    const Site site = site_object(o, proto, scene, probe, taken, seed);
+    drawn.x = site.x + scene.origin.x;
+    drawn.y = site.y + scene.origin.y;
+    drawn.heading_deg = site.heading_deg;
+    drawn.position_location = o.siting->location;
+    spdlog::info("{} placed at ({:.1f}, {:.1f}), heading {:.1f}: {:.0f}% of it seen from '{}'",
+                 o.name, drawn.x, drawn.y, drawn.heading_deg, 100.0 * site.visible,
+                 o.siting->view);
+  } else {
+    drawn.heading_deg = 360.0 * CounterRng(seed, 0, 0).uniform(0);
+  }
+  return drawn;
+}
+
 }  // namespace
 
 const MeshData& read_object_mesh(const ObjectSettings& o, std::map<std::string, MeshData>& files) {
@@ -309,19 +336,23 @@ void add_objects(const Scenario& s, renderer::Scene& scene,
   std::map<std::string, MeshData>& files = meshes != nullptr ? *meshes : local;
   std::map<std::pair<std::string, bool>, std::uint32_t> prototype_of;
   std::map<std::string, std::shared_ptr<const renderer::ObjectTexture>> textures;
-  for (const ObjectSettings& o : s.objects) {
+  std::vector<TakenGround> taken;
+  for (std::size_t i = 0; i < s.objects.size(); ++i) {
+    const ObjectSettings& o = s.objects[i];
     const MeshData& mesh = read_object_mesh(o, files);
     auto [it, fresh] = prototype_of.emplace(
         std::pair{o.file, o.z_up}, static_cast<std::uint32_t>(scene.object_prototypes.size()));
     if (fresh) scene.object_prototypes.push_back(to_prototype(mesh, o));
     const renderer::ObjectPrototype& proto = scene.object_prototypes[it->second];
-    const ObjectPlacement placed = place(proto, o, scene.origin, probe);
+    const ObjectSettings drawn = with_draws(o, i, s, proto, scene, probe, taken);
+    const ObjectPlacement placed = place(proto, drawn, scene.origin, probe);
     renderer::ObjectInstance instance;
     instance.name = o.name;
     instance.prototype = it->second;
     instance.transform = placed.transform;
     instance.materials = object_materials(o, mesh, textures);
     scene.objects.push_back(std::move(instance));
+    taken.push_back({placed.transform[9], placed.transform[10], placed.footprint_radius});
     clear_trees(scene, placed.transform[9], placed.transform[10],
                 o.clear_radius.value_or(placed.footprint_radius + 1.0));
   }

@@ -12,6 +12,9 @@ namespace landsim::scenes::detail {
 
 namespace {
 
+// Copies one [[objects]] entry may ask for: each is placed by its own search.
+constexpr std::int64_t kMaxObjectCount = 1000;
+
 using params::Range;
 using params::TableReader;
 
@@ -56,6 +59,43 @@ void read_object_position(TableReader& r, ObjectSettings& o) {
   if (a->size() == 3) o.z = v[2];
 }
 
+// `heading`: degrees, or "random" (drawn from the seed, uniform all round).
+void read_object_heading(TableReader& r, ObjectSettings& o) {
+  const toml::node* n = r.value("heading", "degrees -360 to 360, or \"random\"", "0");
+  if (n == nullptr) return;
+  if (const auto word = n->value<std::string>()) {
+    if (*word != "random")
+      r.fail_at(*n, "heading", "expected degrees (-360 to 360) or \"random\", got \"" + *word + "\"");
+    o.random_heading = true;
+    return;
+  }
+  o.heading_deg = r.number("heading", Range{-360.0, 360.0});
+}
+
+// [objects.place]: drawn onto ground a view sees, within a range band and bearing sector.
+ObjectSiting read_object_siting(TableReader p) {
+  ObjectSiting s;
+  s.location = p.location(nullptr);
+  s.view = p.string("view");
+  const std::vector<double> range = p.numbers("range", 2, Range{0.0, 1e6});
+  if (!(range[0] < range[1]))
+    p.fail("range", "expected [nearest, farthest] metres with nearest < farthest");
+  s.range_min = range[0];
+  s.range_max = range[1];
+  if (const auto b = p.optional_numbers("bearing", 2, Range{-180.0, 180.0})) {
+    if (!((*b)[0] < (*b)[1]))
+      p.fail("bearing", "expected [from, to] degrees from the view's axis with from < to");
+    s.bearing_min = (*b)[0];
+    s.bearing_max = (*b)[1];
+    s.bearing_given = true;
+  }
+  s.min_visible = p.number("min_visible", Range{0.0, 1.0, true}, s.min_visible);
+  s.trees = p.boolean("trees", s.trees);
+  s.seed = static_cast<std::uint64_t>(p.integer("seed", 0, INT64_MAX, 0));
+  p.finish();
+  return s;
+}
+
 }  // namespace
 
 // [[objects]]: meshes placed on the terrain; names unique, files present.
@@ -79,8 +119,17 @@ std::vector<ObjectSettings> read_objects(const toml::table& root, const std::str
     o.file_location = r.location(t.get("file"));
     if (!std::filesystem::is_regular_file(o.file))
       r.fail("file", "file not found: " + o.file + " (expected a mesh: OBJ, PLY, glTF or GLB)");
-    read_object_position(r, o);
-    o.heading_deg = r.number("heading", Range{-360.0, 360.0}, o.heading_deg);
+    if (r.has("place")) {
+      if (r.has("position"))
+        r.fail("position", "give either position or [objects.place], not both");
+      o.siting = read_object_siting(r.table("place"));
+    } else {
+      read_object_position(r, o);
+    }
+    read_object_heading(r, o);
+    const auto count = r.integer("count", 1, kMaxObjectCount, 1);
+    if (count > 1 && !o.siting)
+      r.fail("count", "copies need [objects.place] to draw where each one stands");
     o.scale = r.number("scale", Range{0.0, 1000.0, true}, o.scale);
     o.unit_scale = r.number("unit_scale", Range{0.0, 1e6, true}, o.unit_scale);
     o.z_up = r.choice("up_axis", {"y", "z"}, "y") == "z";
@@ -88,7 +137,19 @@ std::vector<ObjectSettings> read_objects(const toml::table& root, const std::str
     o.clear_radius = r.optional_number("clear_radius", Range{0.0, 10000.0});
     o.materials = read_object_materials(r);
     r.finish();
-    out.push_back(std::move(o));
+    if (count == 1) {
+      out.push_back(std::move(o));
+      continue;
+    }
+    // `count` copies: "<name>_1" ... "<name>_<count>", each its own target id and draw.
+    for (std::int64_t k = 0; k < count; ++k) {
+      ObjectSettings copy = o;
+      copy.name = o.name + "_" + std::to_string(k + 1);
+      copy.copy = static_cast<std::size_t>(k);
+      if (!names.insert(copy.name).second)
+        r.fail("count", "the copy's name '" + copy.name + "' is used by another object");
+      out.push_back(std::move(copy));
+    }
   }
   return out;
 }
