@@ -25,6 +25,7 @@
 #include "scenes/image_set/detail/legend.h"
 #include "scenes/image_set/detail/manifest.h"
 #include "scenes/image_set/sensor_output.h"
+#include "scenes/scenario/randomise.h"
 
 namespace landsim::scenes {
 namespace {
@@ -37,30 +38,58 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// The image names of a set: <view> for a single frame, <view>_f<index> for several.
-std::string image_stem(const std::string& view, std::size_t frame, std::size_t frames) {
-  return frames == 1 ? view : fmt::format("{}_f{:04d}", view, frame);
+// The image names of a set: <view> for a single frame, <view>_f<index> for several; in a
+// randomised set <view>_r<image> before that.
+std::string image_stem(const Scenario& s, std::size_t view, std::size_t frame,
+                       std::size_t variation) {
+  std::string stem = s.views[view].name;
+  if (s.randomise) stem += fmt::format("_r{:04d}", variation);
+  if (s.render.frames.size() > 1) stem += fmt::format("_f{:04d}", frame);
+  return stem;
 }
 
-// One image of the set: a frame of a view.
+// One image of the set: a frame of a view (of a randomised image).
 struct Image {
   std::size_t frame = 0;
   std::size_t view = 0;
   std::string stem;  // file name without extension
+  std::size_t variation = 0;  // the randomised image, 0 without [randomise]
 };
 
-// The images this process renders, frame-major: all of the set, or task_index's one.
-std::vector<Image> images_to_render(const Scenario& s, const ImageSetOptions& o) {
-  const std::size_t frames = s.render.frames.size(), views = s.views.size();
-  if (o.task_index && *o.task_index >= frames * views)
-    throw InputError(fmt::format("--task-index {}: the image set has {} images (0 to {})",
-                                 *o.task_index, frames * views, frames * views - 1));
+// Every image of the set, randomised image first, then frame, then view; task_index counts
+// in this order.
+std::vector<Image> set_images(const Scenario& s) {
   std::vector<Image> images;
-  for (std::size_t f = 0; f < frames; ++f)
-    for (std::size_t v = 0; v < views; ++v)
-      if (!o.task_index || f * views + v == *o.task_index)
-        images.push_back({f, v, image_stem(s.views[v].name, f, frames)});
+  for (std::size_t r = 0; r < randomised_images(s); ++r)
+    for (std::size_t f = 0; f < s.render.frames.size(); ++f)
+      for (std::size_t v = 0; v < s.views.size(); ++v)
+        images.push_back({f, v, image_stem(s, v, f, r), r});
   return images;
+}
+
+// The images this process renders: all of the set, or task_index's one.
+std::vector<Image> images_to_render(const Scenario& s, const ImageSetOptions& o) {
+  std::vector<Image> images = set_images(s);
+  if (!o.task_index) return images;
+  if (*o.task_index >= images.size())
+    throw InputError(fmt::format("--task-index {}: the image set has {} images (0 to {})",
+                                 *o.task_index, images.size(), images.size() - 1));
+  return {images[*o.task_index]};
+}
+
+// The scenario of each randomised image the set renders (the scenario itself without
+// [randomise]), all read before anything is built: a drawn value the scenario refuses stops
+// the set before its first image.
+std::vector<Scenario> image_scenarios(const Scenario& s, const std::vector<Image>& images) {
+  std::vector<Scenario> out(randomised_images(s));
+  if (!s.randomise) {
+    out[0] = s;
+    return out;
+  }
+  for (const Image& image : images)
+    if (out[image.variation].variation == 0)
+      out[image.variation] = randomised_scenario(s, image.variation);
+  return out;
 }
 
 // What every image of one set shares.
@@ -209,6 +238,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
       report, manifest_entry(s.views[image.view], image.stem, image.frame, time, camera_model)};
   if (!objects.is_null()) out.manifest["objects"] = objects;
   out.manifest.update(light_and_sensor);
+  if (s.variation > 0)
+    out.manifest["randomised"] = {{"image", s.variation - 1}, {"set", s.variation_sets}};  // as saved_entry
   if (run.options.keep)
     run.options.keep({report, std::move(film), std::move(meta), out.manifest.dump()});
   return out;
@@ -245,6 +276,7 @@ MemoryEstimate check_memory(const Scenario& scenario, const ImageSetOptions& o,
 
 ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions& options) {
   const std::vector<Image> images = images_to_render(scenario, options);
+  const std::vector<Scenario> scenarios = image_scenarios(scenario, images);
   const SetRun run{scenario, options, Clock::now()};
   const std::filesystem::path& out_dir = options.out_dir;
   // The image module (PNG previews) is loaded now rather than after the first image: a
@@ -258,7 +290,7 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
   const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
   std::optional<renderer::Scene> scene;
   std::optional<renderer::Renderer> renderer;
-  std::size_t scene_frame = 0;
+  std::size_t scene_frame = 0, scene_variation = 0;
   nlohmann::json manifest = nlohmann::json::array();
   bool first = true;
   // A later image that fails (its scene, its file) leaves the images already written with a
@@ -268,14 +300,18 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
       write_manifest(out_dir / "manifest.json", scenario, manifest, false);
   };
   for (const Image& image : images) try {
+      // The image's own scenario: its randomised draws applied.
+      const Scenario& drawn = scenarios[image.variation];
+      const SetRun image_run{drawn, options, run.start};
       // Shared renders would all have to agree: finished images are skipped in one process.
-      if (options.resume && options.write_files && !run.shared() && already_finished(run, image)) {
+      if (options.resume && options.write_files && !run.shared() &&
+          already_finished(image_run, image)) {
         const auto exr = out_dir / (image.stem + ".exr");
-        manifest.push_back(saved_entry(scenario, image.view, image.stem, image.frame, exr));
+        manifest.push_back(saved_entry(drawn, image.view, image.stem, image.frame, exr));
         ++result.skipped;
         continue;
       }
-      if (!scene || (sway && image.frame != scene_frame)) {
+      if (!scene || (sway && image.frame != scene_frame) || image.variation != scene_variation) {
         if (options.stop && options.stop()) {  // asked to stop before a long build
           result.stopped_at = image.stem;
           result.stopped_before_tracing = true;
@@ -284,10 +320,11 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
         renderer.reset();
         scene.reset();  // one scene at a time: the memory estimate counts one
         const auto build_start = Clock::now();
-        scene = build_scene(scenario, scenario.render.frames[image.frame], &variants);
+        scene = build_scene(drawn, drawn.render.frames[image.frame], &variants);
         result.scene_seconds += seconds_since(build_start);
         variants.clear();
         scene_frame = image.frame;
+        scene_variation = image.variation;
         if (first)
           spdlog::info("scene built in {:.2f} s: {} trees of {} variants", seconds_since(run.start),
                        scene->instances.size(), scene->prototypes.size());
@@ -295,7 +332,7 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
       }
       std::optional<WrittenImage> done;
       try {
-        done = render_image(run, *scene, *renderer, image, first);
+        done = render_image(image_run, *scene, *renderer, image, first);
       } catch (const renderer::RenderInterrupted&) {
         result.stopped_at = image.stem;
         return result;
@@ -334,21 +371,21 @@ nlohmann::json read_manifest(const std::filesystem::path& dir) {
 
 std::vector<std::string> check_image_set(const Scenario& scenario,
                                          const std::filesystem::path& out_dir) {
-  const std::vector<double>& frames = scenario.render.frames;
   nlohmann::json entries = nlohmann::json::array();
   std::vector<std::string> missing;
-  for (std::size_t f = 0; f < frames.size(); ++f)
-    for (const ViewSettings& vs : scenario.views) {
-      const std::string stem = image_stem(vs.name, f, frames.size());
-      for (const char* ext : {".exr", ".png"})
-        if (!std::filesystem::exists(out_dir / (stem + ext))) missing.push_back(stem + ext);
-      if (vs.sensor && !std::filesystem::exists(out_dir / sensor_image_name(stem, *vs.sensor)))
-        missing.push_back(sensor_image_name(stem, *vs.sensor));
-      if (missing.empty())
-        entries.push_back(saved_entry(scenario,
-                                      static_cast<std::size_t>(&vs - scenario.views.data()), stem,
-                                      f, out_dir / (stem + ".exr")));
-    }
+  for (const Image& image : set_images(scenario)) {
+    const ViewSettings& vs = scenario.views[image.view];
+    for (const char* ext : {".exr", ".png"})
+      if (!std::filesystem::exists(out_dir / (image.stem + ext))) missing.push_back(image.stem + ext);
+    if (vs.sensor && !std::filesystem::exists(out_dir / sensor_image_name(image.stem, *vs.sensor)))
+      missing.push_back(sensor_image_name(image.stem, *vs.sensor));
+    if (!missing.empty()) continue;
+    entries.push_back(saved_entry(scenario, image.view, image.stem, image.frame,
+                                  out_dir / (image.stem + ".exr")));
+    if (scenario.randomise)
+      entries.back()["randomised"] = {{"image", image.variation},
+                                      {"set", randomised_sets(scenario, image.variation)}};
+  }
   if (missing.empty()) write_manifest(out_dir / "manifest.json", scenario, entries);
   return missing;
 }

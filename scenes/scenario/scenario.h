@@ -232,6 +232,30 @@ struct Scenario;
 // Whether any [[species]] or [[grass]] has a cover (and so needs no feature map).
 bool has_cover(const Scenario& s);
 
+// [randomise] (docs/SCENARIO.md "Randomised image sets"): scenario keys drawn per image from
+// ranges or lists, as domain randomisation does; each image is the scenario with its draws
+// applied as `--set` overrides would be.
+struct RandomKey {
+  std::string key;       // as --set takes it: "sun.elevation", "objects.0.file"
+  std::string location;  // "file:line:column" of its entry
+  enum class Kind { range, choose, jitter } kind = Kind::range;
+  std::vector<double> lo, hi;        // range: bounds (one per component); jitter: +- hi
+  bool integer = false;              // range of integers: drawn inclusive
+  bool vector = false;               // range or jitter of an array value
+  std::vector<std::string> choices;  // choose: each as TOML text
+  std::vector<double> base;          // jitter: the scenario's own value
+};
+struct RandomiseSettings {
+  std::string location;  // of the table
+  int images = 1;
+  std::uint64_t seed = 0;  // mixed with [render] seed
+  std::vector<RandomKey> keys;
+  // What each image's scenario is read from again: the text, its source and folder, and the
+  // overrides it was read with.
+  std::string text, source, base_dir;
+  std::vector<std::string> sets;
+};
+
 struct Scenario {
   std::string source;     // the file it came from, for messages
   std::string text_hash;  // FNV-1a 64 of the scenario text, hex (image metadata)
@@ -250,9 +274,11 @@ struct Scenario {
   std::vector<CanopySettings> canopies;  // abstract canopies (RAMI), beside or instead of trees
   std::vector<BandSettings> bands;
   std::optional<SensorSettings> sensor;
-  // The randomised image this scenario is ([randomise], docs/SCENARIO.md), 0 otherwise: it
-  // mixes into the objects' draws, so each image places its own.
+  std::optional<RandomiseSettings> randomise;
+  // The randomised image this scenario is ([randomise], docs/SCENARIO.md), 1-based; 0 when
+  // it is not one: it mixes into the objects' draws, so each image places its own.
   std::uint64_t variation = 0;
+  std::vector<std::string> variation_sets;  // what that image drew, as --set key=value
 };
 
 // Limit on frames per scenario (an image set is views x frames images).

@@ -16,6 +16,7 @@
 #include "scenes/scenario/detail/ground_reader.h"
 #include "scenes/scenario/detail/haze_reader.h"
 #include "scenes/scenario/detail/object_reader.h"
+#include "scenes/scenario/detail/randomise_reader.h"
 #include "scenes/scenario/detail/render_reader.h"
 #include "scenes/scenario/detail/scenario_overrides.h"
 #include "scenes/scenario/detail/sensor_reader.h"
@@ -35,7 +36,7 @@ namespace {
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
       "terrain", "sun",  "views", "render", "featuremaps", "species", "grass",
-      "ground",  "wind", "sky",   "haze",   "objects",     "bands",   "sensor", "canopy"};
+      "ground",  "wind", "sky",   "haze",   "objects",     "bands",   "sensor", "canopy", "randomise"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
@@ -44,7 +45,7 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
         ": unknown table or key '" + std::string(key.str()) + "'" +
         params::did_you_mean(key.str(), std::vector<std::string>(kKnown.begin(), kKnown.end())) +
         " (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
-        "haze, views, render, objects, canopy, bands, sensor)");
+        "haze, views, render, objects, canopy, bands, sensor, randomise)");
   }
 }
 
@@ -135,6 +136,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.haze = read_haze(root, source);
   s.objects = read_objects(root, source, base_dir);
   check_object_views(s);
+  s.randomise = read_randomise(root, source, text, base_dir, sets);
   s.canopies = read_canopies(root, source, base_dir);
   return s;
 }

@@ -217,6 +217,8 @@ nlohmann::json saved_entry(const Scenario& s, std::size_t view, const std::strin
   if (!s.objects.empty()) entry["objects"] = saved_json(exr, "objects");
   entry["irradiance"] = saved_json(exr, "irradiance");
   if (s.views[view].sensor) entry["sensor"] = saved_json(exr, "sensor");
+  if (s.variation > 0)
+    entry["randomised"] = {{"image", s.variation - 1}, {"set", s.variation_sets}};
   return entry;
 }
 
