@@ -78,6 +78,9 @@ std::vector<ClassName> class_names(const json& m,
     out.push_back({name, super});
   };
   for (const auto& [id, name] : objects) add(name, "object");
+  for (const json& image : m.at("images"))  // classes drawn per image ([randomise])
+    for (const json& o : image.value("objects", json::array()))
+      if (o.contains("class")) add(o.at("class").get<std::string>(), "object");
   if (trees)
     for (const json& sp : m.at("legend").at("species").at("values"))
       add(sp.at("name").get<std::string>(), "tree");
@@ -92,6 +95,13 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
     if (!f) throw std::runtime_error("cannot write " + path.string());
   }
   out.commit();
+}
+
+// An object's class: its truth's (the mesh it was drawn with in that image), or the legend's
+// for sets rendered before objects carried one.
+std::string class_of(const json& o, const std::map<std::uint32_t, std::string>& legend) {
+  if (o.contains("class")) return o.at("class").get<std::string>();
+  return legend.at(o.at("target").get<std::uint32_t>());
 }
 
 // An object of an image worth annotating: in the manifest's truth with enough pixels.
@@ -131,14 +141,20 @@ std::string kitti_line(const json& o, const std::string& type) {
       b.at("x1").get<int>() + 1, b.at("y1").get<int>() + 1, h, size.at(0), size.at(1), x, y, z, ry);
 }
 
+// KITTI's calib file as its devkits read it: P0-P3 (one camera, so all four are K [I | 0]),
+// R0_rect the identity (the image is already rectified), and Tr_velo_to_cam, Tr_imu_to_velo
+// the identity: a scene has no lidar or IMU, and the labels' 3D boxes are in the camera frame.
 std::string kitti_calib(const json& camera) {
   const json& k = camera.at("K");
-  std::string p2 = "P2:";
+  std::string p;
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) p2 += fmt::format(" {:.9g}", k.at(r).at(c).get<double>());
-    p2 += " 0";
+    for (int c = 0; c < 3; ++c) p += fmt::format(" {:.9g}", k.at(r).at(c).get<double>());
+    p += " 0";
   }
-  return p2 + "\nR0_rect: 1 0 0 0 1 0 0 0 1\n";
+  const std::string identity34 = " 1 0 0 0 0 1 0 0 0 0 1 0";
+  return "P0:" + p + "\nP1:" + p + "\nP2:" + p + "\nP3:" + p +
+         "\nR0_rect: 1 0 0 0 1 0 0 0 1\nTr_velo_to_cam:" + identity34 +
+         "\nTr_imu_to_velo:" + identity34 + "\n";
 }
 
 void write_kitti(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
@@ -154,7 +170,7 @@ void write_kitti(const json& m, const std::filesystem::path& set, const std::fil
     std::string labels;
     for (const json& o : image.value("objects", json::array()))
       if (annotated(o, options)) {
-        labels += kitti_line(o, names.at(o.at("target").get<std::uint32_t>()));
+        labels += kitti_line(o, class_of(o, names));
         ++summary.objects;
       }
     write_text(out / "label_2" / (stem_of(image) + ".txt"), labels);
@@ -180,11 +196,10 @@ void write_yolo(const json& m, const std::filesystem::path& set, const std::file
     std::string labels;
     for (const json& o : image.value("objects", json::array())) {
       if (!annotated(o, options)) continue;
-      const json& b = o.at("bbox");
+      const json& b = o.at(options.amodal ? "footprint_bbox" : "bbox");
       const double x0 = b.at("x0").get<double>(), y0 = b.at("y0").get<double>();
       const double x1 = b.at("x1").get<double>() + 1.0, y1 = b.at("y1").get<double>() + 1.0;
-      labels += fmt::format("{} {:.6f} {:.6f} {:.6f} {:.6f}\n",
-                            index.at(names.at(o.at("target").get<std::uint32_t>())),
+      labels += fmt::format("{} {:.6f} {:.6f} {:.6f} {:.6f}\n", index.at(class_of(o, names)),
                             0.5 * (x0 + x1) / w, 0.5 * (y0 + y1) / h, (x1 - x0) / w, (y1 - y0) / h);
       ++summary.objects;
     }
@@ -203,6 +218,25 @@ void write_yolo(const json& m, const std::filesystem::path& set, const std::file
   }
 }
 
+// A manifest box {x0, y0, x1, y1} (inclusive pixels) as COCO's [x, y, width, height].
+json coco_box(const json& b) {
+  if (b.is_null()) return nullptr;
+  const int x0 = b.at("x0"), y0 = b.at("y0"), x1 = b.at("x1"), y1 = b.at("y1");
+  return {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
+}
+
+// The image COCO's file_name names: the preview, the EXR, or the digital-number image.
+json image_file(const json& image, const std::filesystem::path& set,
+                const AnnotationOptions& options) {
+  if (options.image == AnnotationOptions::Image::exr) return image.at("path");
+  if (options.image == AnnotationOptions::Image::preview) return image.at("preview");
+  if (!image.contains("sensor") || !image.at("sensor").contains("path"))
+    throw InputError((set / "manifest.json").string() + ": image " +
+                     image.at("path").get<std::string>() +
+                     " has no digital-number image (render the set with a [sensor])");
+  return image.at("sensor").at("path");
+}
+
 void write_coco(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
                 const AnnotationOptions& options, AnnotationSummary& summary) {
   const auto names = classes(m.at("legend"));
@@ -218,7 +252,7 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
     const renderer::Film film = renderer::read_exr(set / image.at("path").get<std::string>());
     const int image_id = static_cast<int>(images.size()) + 1;
     images.push_back({{"id", image_id},
-                      {"file_name", image.at("preview")},
+                      {"file_name", image_file(image, set, options)},
                       {"exr", image.at("path")},
                       {"width", film.width()},
                       {"height", film.height()}});
@@ -233,17 +267,20 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
             mask[static_cast<std::size_t>(y) * film.width() + x] = 1;
             ++area;
           }
-      const json& b = o.at("bbox");
-      const int x0 = b.at("x0"), y0 = b.at("y0"), x1 = b.at("x1"), y1 = b.at("y1");
       annotations.push_back({{"id", annotations.size() + 1},
                              {"image_id", image_id},
-                             {"category_id", category.at(names.at(target))},
-                             {"bbox", {x0, y0, x1 - x0 + 1, y1 - y0 + 1}},
+                             {"category_id", category.at(class_of(o, names))},
+                             {"bbox", coco_box(o.at("bbox"))},
                              {"area", area},
                              {"iscrowd", 0},
                              {"segmentation",
                               {{"size", {film.height(), film.width()}},
                                {"counts", coco_rle(mask, film.width(), film.height())}}},
+                             {"amodal_bbox", coco_box(o.at("footprint_bbox"))},
+                             {"amodal_area", o.at("footprint_pixels")},
+                             {"amodal_segmentation",
+                              {{"size", {film.height(), film.width()}},
+                               {"counts", o.value("footprint_mask", json::array())}}},
                              {"landsim",
                               {{"name", o.at("name")},
                                {"visible_coverage", o.at("visible_coverage")},

@@ -20,6 +20,11 @@ struct AnnotationOptions {
   std::size_t min_pixels = 1;
   // COCO and YOLO: each tree (the instance layer) too, its species its category.
   bool trees = false;
+  // YOLO: boxes of the unoccluded footprint (amodal) instead of the visible pixels. (COCO
+  // carries both: `bbox` and `amodal_bbox`, with `amodal_segmentation`.)
+  bool amodal = false;
+  // COCO's `file_name`: the preview PNG, the EXR, or the sensor's digital-number image.
+  enum class Image { preview, exr, dn } image = Image::preview;
 };
 
 struct AnnotationSummary {

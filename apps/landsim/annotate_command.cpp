@@ -15,10 +15,19 @@ CLI::App* add_annotate_command(CLI::App& app, AnnotateArgs& args) {
       "annotate",
       "Write COCO, KITTI or YOLO annotations of an image set's scene objects (docs/OUTPUTS.md)");
   cmd->add_option("set", args.set, "An image set written by landsim render")->required();
-  cmd->add_option("--format", args.format, "coco, kitti or yolo")
+  cmd->add_option("--format", args.formats,
+                  "coco, kitti or yolo; several comma-separated (coco,kitti,yolo)")
+      ->delimiter(',')
       ->check(CLI::IsMember({"coco", "kitti", "yolo"}))
       ->capture_default_str();
-  cmd->add_option("--out", args.out, "Where to write them (default: SET/<format>)");
+  cmd->add_option("--out", args.out,
+                  "Where to write them (default: SET/<format>; with several formats OUT/<format>)");
+  cmd->add_option("--image", args.image,
+                  "COCO file_name: the preview PNG, the EXR, or the sensor's digital numbers")
+      ->check(CLI::IsMember({"preview", "exr", "dn"}))
+      ->capture_default_str();
+  cmd->add_flag("--amodal", args.amodal,
+                "YOLO: boxes of the unoccluded footprint, not the visible pixels (COCO has both)");
   cmd->add_option("--min-pixels", args.min_pixels,
                   "Leave out objects with fewer visible pixels (any coverage counts)")
       ->check(CLI::Range(1, 1 << 30))
@@ -31,20 +40,38 @@ CLI::App* add_annotate_command(CLI::App& app, AnnotateArgs& args) {
 
 int run_annotate(const AnnotateArgs& args) {
   exporters::AnnotationOptions o;
-  o.format = args.format == "kitti"  ? exporters::AnnotationFormat::kitti
-             : args.format == "yolo" ? exporters::AnnotationFormat::yolo
-                                     : exporters::AnnotationFormat::coco;
   o.min_pixels = args.min_pixels;
   o.trees = args.trees;
-  const std::string out = args.out.empty() ? args.set + "/" + args.format : args.out;
-  const exporters::AnnotationSummary s = exporters::write_annotations(args.set, out, o);
-  if (args.json) {
-    std::cout << nlohmann::json{{"out", out}, {"images", s.images}, {"objects", s.objects}}.dump()
-              << "\n";
-  } else {
-    std::cout << fmt::format("{}: {} annotations in {} images ({})\n", out, s.objects, s.images,
-                             args.format);
+  o.amodal = args.amodal;
+  o.image = args.image == "exr"  ? exporters::AnnotationOptions::Image::exr
+            : args.image == "dn" ? exporters::AnnotationOptions::Image::dn
+                                 : exporters::AnnotationOptions::Image::preview;
+  nlohmann::json formats = nlohmann::json::array();
+  exporters::AnnotationSummary total;
+  std::string first_out;
+  for (const std::string& format : args.formats) {
+    o.format = format == "kitti"  ? exporters::AnnotationFormat::kitti
+               : format == "yolo" ? exporters::AnnotationFormat::yolo
+                                  : exporters::AnnotationFormat::coco;
+    const std::string out = args.out.empty()          ? args.set + "/" + format
+                            : args.formats.size() > 1 ? args.out + "/" + format
+                                                      : args.out;
+    const exporters::AnnotationSummary s = exporters::write_annotations(args.set, out, o);
+    if (first_out.empty()) first_out = out;
+    total.images = s.images;
+    total.objects = std::max(total.objects, s.objects);
+    formats.push_back({{"format", format}, {"out", out}, {"objects", s.objects}});
+    if (!args.json)
+      std::cout << fmt::format("{}: {} annotations in {} images ({})\n", out, s.objects, s.images,
+                               format);
   }
+  if (args.json)
+    std::cout << nlohmann::json{{"out", first_out},
+                                {"images", total.images},
+                                {"objects", total.objects},
+                                {"formats", formats}}
+                     .dump()
+              << "\n";
   return 0;
 }
 

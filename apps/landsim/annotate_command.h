@@ -4,6 +4,7 @@
 // annotation files for machine-learning tools from an image set (docs/OUTPUTS.md).
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -13,8 +14,10 @@ namespace landsim::app {
 
 struct AnnotateArgs {
   std::string set;
-  std::string format = "coco";
-  std::string out;  // empty: SET/<format>
+  std::vector<std::string> formats{"coco"};
+  std::string out;                // empty: SET/<format>; several formats: OUT/<format>
+  std::string image = "preview";  // COCO's file_name: preview, exr or dn
+  bool amodal = false;
   std::size_t min_pixels = 1;
   bool trees = false;
   bool json = false;

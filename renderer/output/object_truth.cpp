@@ -227,6 +227,29 @@ void measure_ring(const Film& film, std::uint32_t id, ObjectTruth& t) {
     t.contrast = (t.luminance - t.background_luminance) / t.background_luminance;
 }
 
+// A set of pixels (indices y * width + x) as COCO's uncompressed RLE over a height x width
+// image: column-major runs, starting with a run of zeros.
+std::vector<std::uint32_t> rle_of(std::vector<std::uint64_t> pixels, int width, int height) {
+  for (std::uint64_t& p : pixels)  // to column-major order
+    p = (p % static_cast<std::uint64_t>(width)) * static_cast<std::uint64_t>(height) +
+        p / static_cast<std::uint64_t>(width);
+  std::sort(pixels.begin(), pixels.end());
+  std::vector<std::uint32_t> counts;
+  std::uint64_t at = 0;  // the next column-major index not yet counted
+  for (std::size_t i = 0; i < pixels.size();) {
+    std::size_t j = i + 1;
+    while (j < pixels.size() && pixels[j] == pixels[j - 1] + 1) ++j;
+    counts.push_back(static_cast<std::uint32_t>(pixels[i] - at));  // zeros before the run
+    counts.push_back(static_cast<std::uint32_t>(j - i));
+    at = pixels[j - 1] + 1;
+    i = j;
+  }
+  const std::uint64_t total =
+      static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  if (at < total || counts.empty()) counts.push_back(static_cast<std::uint32_t>(total - at));
+  return counts;
+}
+
 }  // namespace
 
 int ring_width(const PixelBox& box) {
@@ -240,6 +263,7 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
   if (out.empty()) return out;
   const Footprints footprint = footprints(scene, view, centre_first);
   std::vector<double> luminance(out.size(), 0.0);
+  std::vector<std::vector<std::uint64_t>> footprint_pixels(out.size());
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
       const std::uint32_t seen = film.target(x, y);
@@ -254,12 +278,14 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
            footprint.pixels[static_cast<std::size_t>(y) * film.width() + x]) {
         ++out[f.object].footprint_pixels;
         out[f.object].footprint_coverage += f.share;
+        footprint_pixels[f.object].push_back(static_cast<std::uint64_t>(y) * film.width() + x);
         grow(out[f.object].footprint_bbox, x, y);
       }
     }
   for (std::size_t i = 0; i < out.size(); ++i) {
     ObjectTruth& t = out[i];
     t.name = scene.objects[i].name;
+    t.footprint_rle = rle_of(std::move(footprint_pixels[i]), film.width(), film.height());
     t.range = length(object_centre(scene, scene.objects[i]) - view.position);
     t.box = object_box(scene, scene.objects[i], view);
     if (const std::optional<double> beyond = footprint.beyond_the_frame[i]) {

@@ -45,6 +45,9 @@ struct ObjectTruth {
   double visible_fraction = 0.0;
   std::optional<PixelBox> bbox;  // of the visible pixels; empty when none is
   std::optional<PixelBox> footprint_bbox;
+  // The footprint's pixels (any sample) as COCO's uncompressed RLE: column-major runs, the
+  // first of zeros; the amodal mask of the annotations.
+  std::vector<std::uint32_t> footprint_rle;
   double range = 0.0;  // metres, camera to the centre of the object's bounding box
   ObjectBox box;
   // The share of the footprint beyond the frame (the same rays continued past its edges);

@@ -52,7 +52,7 @@ std::string image_stem(const Scenario& s, std::size_t view, std::size_t frame,
 struct Image {
   std::size_t frame = 0;
   std::size_t view = 0;
-  std::string stem;  // file name without extension
+  std::string stem;           // file name without extension
   std::size_t variation = 0;  // the randomised image, 0 without [randomise]
 };
 
@@ -217,6 +217,12 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   if (!scene.objects.empty()) {
     objects = objects_json(renderer::object_truth(scene, view, film, options.centre_first_sample),
                            scene.origin);
+    // Each object's class, its mesh file's stem: a randomised set may draw the file per image.
+    for (std::size_t k = 0; k < scene.objects.size(); ++k)
+      objects[k]["class"] =
+          std::filesystem::path(scene.object_prototypes[scene.objects[k].prototype].file)
+              .stem()
+              .string();
     meta.emplace_back("objects", objects.dump());
   }
   if (run.writes_files()) {
@@ -239,7 +245,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   if (!objects.is_null()) out.manifest["objects"] = objects;
   out.manifest.update(light_and_sensor);
   if (s.variation > 0)
-    out.manifest["randomised"] = {{"image", s.variation - 1}, {"set", s.variation_sets}};  // as saved_entry
+    out.manifest["randomised"] = {{"image", s.variation - 1},
+                                  {"set", s.variation_sets}};  // as saved_entry
   if (run.options.keep)
     run.options.keep({report, std::move(film), std::move(meta), out.manifest.dump()});
   return out;
@@ -376,7 +383,8 @@ std::vector<std::string> check_image_set(const Scenario& scenario,
   for (const Image& image : set_images(scenario)) {
     const ViewSettings& vs = scenario.views[image.view];
     for (const char* ext : {".exr", ".png"})
-      if (!std::filesystem::exists(out_dir / (image.stem + ext))) missing.push_back(image.stem + ext);
+      if (!std::filesystem::exists(out_dir / (image.stem + ext)))
+        missing.push_back(image.stem + ext);
     if (vs.sensor && !std::filesystem::exists(out_dir / sensor_image_name(image.stem, *vs.sensor)))
       missing.push_back(sensor_image_name(image.stem, *vs.sensor));
     if (!missing.empty()) continue;

@@ -180,14 +180,14 @@ struct ObjectMaterialOverride {
 // [objects.place] (docs/OBJECTS.md "Placed by a view"): the object drawn from the seed onto
 // ground seen from a view, within a range band and a bearing sector.
 struct ObjectSiting {
-  std::string location;          // "file:line:column" of the table, for messages
-  std::string view;              // the view's name
-  double range_min = 0.0, range_max = 0.0;  // metres, horizontal, from the camera
+  std::string location;                         // "file:line:column" of the table, for messages
+  std::string view;                             // the view's name
+  double range_min = 0.0, range_max = 0.0;      // metres, horizontal, from the camera
   double bearing_min = 0.0, bearing_max = 0.0;  // degrees from the optical axis, clockwise
-  bool bearing_given = false;    // else the view's frame (perspective) or all round
-  double min_visible = 0.5;      // share of the object's sample points the camera sees
-  bool trees = true;             // trees occlude (their crowns' bounding cylinders, opaque)
-  std::uint64_t seed = 0;        // mixed with [render] seed and the randomised image
+  bool bearing_given = false;                   // else the view's frame (perspective) or all round
+  double min_visible = 0.5;  // share of the object's sample points the camera sees
+  bool trees = true;         // trees occlude (their crowns' bounding cylinders, opaque)
+  std::uint64_t seed = 0;    // mixed with [render] seed and the randomised image
 };
 
 struct ObjectSettings {
@@ -206,9 +206,9 @@ struct ObjectSettings {
   bool align_to_ground = false;
   std::optional<double> clear_radius;  // metres; empty: the footprint's radius + 1 m
   std::vector<ObjectMaterialOverride> materials;
-  bool random_heading = false;          // `heading = "random"`: drawn from the seed
-  std::optional<ObjectSiting> siting;   // placed by a view instead of `position`
-  std::size_t copy = 0;                 // which of `count` copies (0-based), for the draws
+  bool random_heading = false;         // `heading = "random"`: drawn from the seed
+  std::optional<ObjectSiting> siting;  // placed by a view instead of `position`
+  std::size_t copy = 0;                // which of `count` copies (0-based), for the draws
 };
 
 // [[bands]]: a sensor band the image set also measures (docs/SPECTRAL.md).
@@ -305,8 +305,9 @@ Scenario parse_scenario(const ScenarioText& t, const std::vector<std::string>& s
 std::string scenario_toml(const ScenarioText& t, const std::vector<std::string>& sets = {});
 
 // Throws InputError naming file:line:column, the key and what was expected. `sets` are
-// "key=value" overrides applied before reading (`--set`, scenes/scenario/detail/scenario_overrides):
-// the same validation, messages naming the override; they count in the scenario's hash.
+// "key=value" overrides applied before reading (`--set`,
+// scenes/scenario/detail/scenario_overrides): the same validation, messages naming the override;
+// they count in the scenario's hash.
 Scenario load_scenario(const std::filesystem::path& file,
                        const std::vector<std::string>& sets = {});
 // `source` names the text in messages; relative paths resolve against `base_dir`.

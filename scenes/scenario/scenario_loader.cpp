@@ -35,8 +35,8 @@ namespace {
 
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
-      "terrain", "sun",  "views", "render", "featuremaps", "species", "grass",
-      "ground",  "wind", "sky",   "haze",   "objects",     "bands",   "sensor", "canopy", "randomise"};
+      "terrain", "sun", "views", "render",  "featuremaps", "species", "grass",  "ground",
+      "wind",    "sky", "haze",  "objects", "bands",       "sensor",  "canopy", "randomise"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;

@@ -176,6 +176,16 @@ TEST(JsonContract, Annotate) {
   ASSERT_EQ(testing::run_landsim("render --spp 1 --width 32 --out " + set.string(), dir).exit_code,
             0);
   expect_contract("annotate", set.string() + " --format yolo", dir);
+  // Several formats in one call, each in its own folder.
+  const testing::ProgramResult r =
+      testing::run_landsim("annotate " + set.string() + " --format coco,kitti,yolo --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["formats"].size(), 3u);
+  for (const char* format : {"coco", "kitti", "yolo"})
+    EXPECT_TRUE(std::filesystem::is_directory(set / format)) << format;
+  EXPECT_TRUE(std::filesystem::exists(set / "coco" / "annotations.json"));
+  EXPECT_TRUE(std::filesystem::exists(set / "yolo" / "classes.txt"));
 }
 
 }  // namespace

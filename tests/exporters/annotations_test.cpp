@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -78,18 +79,84 @@ TEST(Annotations, CocoMasksAreTheTargetLayer) {
   }
 }
 
+// Decodes COCO's uncompressed RLE (column-major runs, zeros first) into (x, y) extents.
+struct Extent {
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+  std::size_t pixels = 0;
+};
+Extent extent_of(const nlohmann::json& counts, int height) {
+  Extent e;
+  std::size_t at = 0;
+  bool one = false;
+  for (const auto& run : counts) {
+    for (std::size_t k = 0; one && k < run.get<std::size_t>(); ++k) {
+      const int x = static_cast<int>((at + k) / height), y = static_cast<int>((at + k) % height);
+      e.x0 = std::min(e.x0, x), e.x1 = std::max(e.x1, x);
+      e.y0 = std::min(e.y0, y), e.y1 = std::max(e.y1, y);
+      ++e.pixels;
+    }
+    at += run.get<std::size_t>();
+    one = !one;
+  }
+  return e;
+}
+
+TEST(Annotations, CocoBoxesAreTheirMasksExtentAndAmodalOnesTheFootprints) {
+  TempDir dir;
+  const auto set = rendered_set(dir);
+  write_annotations(set, dir / "coco", AnnotationOptions{});
+  const nlohmann::json coco = load(dir / "coco" / "annotations.json");
+  const nlohmann::json manifest = load(set / "manifest.json");
+  const int height = coco["images"][0]["height"];
+  ASSERT_EQ(coco["annotations"].size(), 2u);
+  for (const nlohmann::json& a : coco["annotations"]) {
+    const Extent e = extent_of(a["segmentation"]["counts"], height);
+    // [x, y, width, height] of the mask, to the pixel: a box one pixel narrow fails.
+    EXPECT_EQ(a["bbox"], nlohmann::json({e.x0, e.y0, e.x1 - e.x0 + 1, e.y1 - e.y0 + 1}))
+        << a["landsim"]["name"];
+    const Extent amodal = extent_of(a["amodal_segmentation"]["counts"], height);
+    EXPECT_EQ(a["amodal_bbox"], nlohmann::json({amodal.x0, amodal.y0, amodal.x1 - amodal.x0 + 1,
+                                                amodal.y1 - amodal.y0 + 1}));
+    EXPECT_EQ(a["amodal_area"].get<std::size_t>(), amodal.pixels);
+    // The footprint holds every visible pixel.
+    EXPECT_LE(amodal.x0, e.x0);
+    EXPECT_LE(amodal.y0, e.y0);
+    EXPECT_GE(amodal.x1, e.x1);
+    EXPECT_GE(amodal.y1, e.y1);
+    EXPECT_GE(amodal.pixels, e.pixels);
+  }
+  // The class is each object's own (its mesh), which a randomised set may change per image.
+  EXPECT_EQ(manifest["images"][0]["objects"][1]["class"], "truck");
+  // file_name can name the EXR; the digital numbers need a sensor.
+  AnnotationOptions exr;
+  exr.image = AnnotationOptions::Image::exr;
+  write_annotations(set, dir / "coco_exr", exr);
+  EXPECT_EQ(load(dir / "coco_exr" / "annotations.json")["images"][0]["file_name"], "v.exr");
+  AnnotationOptions dn;
+  dn.image = AnnotationOptions::Image::dn;
+  EXPECT_THROW(write_annotations(set, dir / "coco_dn", dn), InputError);
+}
+
 TEST(Annotations, KittiCalibProjectsEachBoxCentreIntoIts2dBox) {
   TempDir dir;
   const auto set = rendered_set(dir);
   AnnotationOptions o;
   o.format = AnnotationFormat::kitti;
   write_annotations(set, dir / "kitti", o);
-  std::istringstream calib(landsim::testing::read_file(dir / "kitti" / "calib" / "v.txt"));
-  std::string tag;
-  double p[12];
-  calib >> tag;
-  ASSERT_EQ(tag, "P2:");
-  for (double& v : p) calib >> v;
+  // What KITTI's devkits read: P0-P3, R0_rect, Tr_velo_to_cam, Tr_imu_to_velo.
+  std::map<std::string, std::vector<double>> calib;
+  std::istringstream text(landsim::testing::read_file(dir / "kitti" / "calib" / "v.txt"));
+  for (std::string line; std::getline(text, line);) {
+    std::istringstream f(line);
+    std::string tag;
+    f >> tag;
+    for (double v; f >> v;) calib[tag].push_back(v);
+  }
+  for (const char* tag : {"P0:", "P1:", "P2:", "P3:", "Tr_velo_to_cam:", "Tr_imu_to_velo:"})
+    EXPECT_EQ(calib[tag].size(), 12u) << tag;
+  EXPECT_EQ(calib["R0_rect:"], (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(calib["P0:"], calib["P2:"]);  // one camera
+  const std::vector<double>& p = calib["P2:"];
   std::istringstream labels(landsim::testing::read_file(dir / "kitti" / "label_2" / "v.txt"));
   int lines = 0;
   for (std::string line; std::getline(labels, line);) {
@@ -187,7 +254,8 @@ TEST(Annotations, AnEditedManifestIsRefusedByName) {
   nlohmann::json m = load(set / "manifest.json");
   m["images"][0]["objects"][0].erase("box3d");
   m["images"][0]["camera"].erase("width");
-  m["images"][0]["objects"][1]["target"] = 7;  // not in the legend
+  m["images"][0]["objects"][1]["target"] = 7;   // not in the legend
+  m["images"][0]["objects"][1].erase("class");  // so its class is looked up there
   std::ofstream(set / "manifest.json") << m.dump();
   for (const AnnotationFormat f :
        {AnnotationFormat::coco, AnnotationFormat::kitti, AnnotationFormat::yolo}) {

@@ -59,8 +59,8 @@ std::vector<Cylinder> tree_cylinders(const renderer::Scene& scene) {
   out.reserve(scene.instances.size());
   for (const renderer::TreeInstance& t : scene.instances) {
     const auto& [r, h] = shape[t.prototype];
-    out.push_back({t.position.x, t.position.y, t.position.z, t.position.z + h * t.scale,
-                   r * t.scale});
+    out.push_back(
+        {t.position.x, t.position.y, t.position.z, t.position.z + h * t.scale, r * t.scale});
   }
   return out;
 }
@@ -123,8 +123,8 @@ std::vector<Cylinder> trees_along(const std::vector<Cylinder>& trees, const Vec3
   std::vector<Cylinder> out;
   const double dx = x - eye.x, dy = y - eye.y, len2 = dx * dx + dy * dy;
   for (const Cylinder& t : trees) {
-    const double s = std::clamp(len2 > 0 ? ((t.x - eye.x) * dx + (t.y - eye.y) * dy) / len2 : 0.0,
-                                0.0, 1.0);
+    const double s =
+        std::clamp(len2 > 0 ? ((t.x - eye.x) * dx + (t.y - eye.y) * dy) / len2 : 0.0, 0.0, 1.0);
     if (std::hypot(eye.x + s * dx - t.x, eye.y + s * dy - t.y) < t.radius + margin)
       out.push_back(t);
   }
@@ -142,18 +142,17 @@ const renderer::View& view_named(const renderer::Scene& scene, const std::string
 std::array<double, 2> bearing_sector(const ObjectSiting& s, const renderer::View& v) {
   if (s.bearing_given) return {s.bearing_min, s.bearing_max};
   if (v.lens.projection != renderer::Projection::perspective) return {-180.0, 180.0};
-  const double half = std::atan(std::tan(0.5 * v.fov_y_deg * kDegree) * v.width / v.height /
-                                v.lens.fx_over_fy) /
-                      kDegree;
+  const double half =
+      std::atan(std::tan(0.5 * v.fov_y_deg * kDegree) * v.width / v.height / v.lens.fx_over_fy) /
+      kDegree;
   return {-half, half};
 }
 
 }  // namespace
 
 double visible_share(const renderer::ObjectPrototype& p, double scale, double x, double y,
-                     double heading_deg, const renderer::View& view,
-                     const renderer::Scene& scene, const renderer::GroundProbe& probe,
-                     bool trees) {
+                     double heading_deg, const renderer::View& view, const renderer::Scene& scene,
+                     const renderer::GroundProbe& probe, bool trees) {
   const Box box = object_box(p, scale);
   const std::vector<Cylinder> between =
       trees ? trees_along(tree_cylinders(scene), view.position, x, y, box.footprint_radius)
@@ -195,9 +194,8 @@ Site site_object(const ObjectSettings& o, const renderer::ObjectPrototype& p,
       ++crowded;
       continue;
     }
-    const double seen =
-        share_seen(box, x, y, heading, view, camera, probe,
-                   trees_along(trees, view.position, x, y, box.footprint_radius));
+    const double seen = share_seen(box, x, y, heading, view, camera, probe,
+                                   trees_along(trees, view.position, x, y, box.footprint_radius));
     if (seen > best.visible) best = {x, y, heading, seen};
     if (seen >= s.min_visible) return {x, y, heading, seen};
   }

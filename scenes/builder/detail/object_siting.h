@@ -38,8 +38,7 @@ Site site_object(const ObjectSettings& o, const renderer::ObjectPrototype& p,
 // on the ground at (x, y), turned by `heading_deg`) that `view` sees: in its frame, not
 // behind the ground, and (with `trees`) outside every tree's crown cylinder between.
 double visible_share(const renderer::ObjectPrototype& p, double scale, double x, double y,
-                     double heading_deg, const renderer::View& view,
-                     const renderer::Scene& scene, const renderer::GroundProbe& probe,
-                     bool trees);
+                     double heading_deg, const renderer::View& view, const renderer::Scene& scene,
+                     const renderer::GroundProbe& probe, bool trees);
 
 }  // namespace landsim::scenes::detail

@@ -12,11 +12,11 @@
 #include <optional>
 #include <vector>
 
+#include "core/counter_rng.h"
 #include "core/input_error.h"
 #include "core/input_warnings.h"
 #include "renderer/acceleration/ground_probe.h"
 #include "renderer/materials/object_texture.h"
-#include "core/counter_rng.h"
 #include "scenes/builder/detail/mesh_file_check.h"
 #include "scenes/builder/detail/object_siting.h"
 #include "scenes/builder/mesh_io.h"
@@ -298,8 +298,7 @@ ObjectSettings with_draws(const ObjectSettings& o, std::size_t index, const Scen
     drawn.heading_deg = site.heading_deg;
     drawn.position_location = o.siting->location;
     spdlog::info("{} placed at ({:.1f}, {:.1f}), heading {:.1f}: {:.0f}% of it seen from '{}'",
-                 o.name, drawn.x, drawn.y, drawn.heading_deg, 100.0 * site.visible,
-                 o.siting->view);
+                 o.name, drawn.x, drawn.y, drawn.heading_deg, 100.0 * site.visible, o.siting->view);
   } else {
     drawn.heading_deg = 360.0 * CounterRng(seed, 0, 0).uniform(0);
   }

@@ -175,6 +175,7 @@ nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth, con
                    {"visible_fraction", t.visible_fraction},
                    {"bbox", box_json(t.bbox)},
                    {"footprint_bbox", box_json(t.footprint_bbox)},
+                   {"footprint_mask", t.footprint_rle},
                    {"range_m", t.range},
                    {"truncation", t.truncation ? nlohmann::json(*t.truncation) : nlohmann::json()},
                    {"box3d", box3d_json(t.box, origin)},

@@ -65,7 +65,8 @@ void read_object_heading(TableReader& r, ObjectSettings& o) {
   if (n == nullptr) return;
   if (const auto word = n->value<std::string>()) {
     if (*word != "random")
-      r.fail_at(*n, "heading", "expected degrees (-360 to 360) or \"random\", got \"" + *word + "\"");
+      r.fail_at(*n, "heading",
+                "expected degrees (-360 to 360) or \"random\", got \"" + *word + "\"");
     o.random_heading = true;
     return;
   }

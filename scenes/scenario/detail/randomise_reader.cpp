@@ -203,8 +203,9 @@ std::optional<RandomiseSettings> read_randomise(const toml::table& root, const s
                                    where(file, *images), kMaxImages));
     r.images = static_cast<int>(*v);
   } else {
-    throw InputError(r.location + ": [randomise] images: required key is missing (how many "
-                                  "images to draw)");
+    throw InputError(r.location +
+                     ": [randomise] images: required key is missing (how many "
+                     "images to draw)");
   }
   if (const toml::node* seed = t->get("seed")) {
     const std::optional<std::int64_t> v = seed->value<std::int64_t>();

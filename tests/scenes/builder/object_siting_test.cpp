@@ -47,9 +47,8 @@ std::string scenario(const std::string& terrain, const std::string& objects) {
 }
 
 std::string placed(int count, const std::string& place, const std::string& extra = "") {
-  return "[[objects]]\nname = \"car\"\nfile = \"" + car() + "\"\ncount = " +
-         std::to_string(count) + "\nheading = \"random\"\nplace = { view = \"north\", " + place +
-         " }\n" + extra;
+  return "[[objects]]\nname = \"car\"\nfile = \"" + car() + "\"\ncount = " + std::to_string(count) +
+         "\nheading = \"random\"\nplace = { view = \"north\", " + place + " }\n" + extra;
 }
 
 // Range (horizontal) and bearing (degrees clockwise from north) of an object from the camera.
@@ -159,7 +158,7 @@ TEST(ObjectSiting, BadPlacementsAreRefusedWhenTheScenarioIsRead) {
     return std::string();
   };
   std::string e = error("[[objects]]\nname = \"c\"\nfile = \"" + car() +
-            "\"\nplace = { view = \"south\", range = [300, 600] }\n");
+                        "\"\nplace = { view = \"south\", range = [300, 600] }\n");
   EXPECT_NE(e.find("[objects[0].place] view: no view is named 'south' (the views: 'north')"),
             std::string::npos)
       << e;

@@ -113,8 +113,7 @@ TEST(Randomise, BadEntriesAndRefusedDrawsAreNamed) {
             std::string::npos);
   EXPECT_NE(refusal("[randomise]\nimages = 0\n").find("images: expected an integer from 1"),
             std::string::npos);
-  const Scenario s =
-      with("[randomise]\nimages = 4\n\"sun.elevation\" = { range = [100, 120] }\n");
+  const Scenario s = with("[randomise]\nimages = 4\n\"sun.elevation\" = { range = [100, 120] }\n");
   try {
     randomised_scenario(s, 2);
     FAIL() << "a sun 100 degrees high was drawn";
