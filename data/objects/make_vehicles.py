@@ -112,15 +112,15 @@ def triangles(mesh):
     return out
 
 
-def write_obj(name, mesh):
+def write_obj(name, mesh, what="vehicle", script="make_vehicles.py"):
     tri = triangles(mesh)
     with open(os.path.join(HERE, name + ".mtl"), "w") as f:
-        f.write("# landsim example vehicle materials (data/objects/make_vehicles.py)\n")
+        f.write(f"# landsim example {what} materials (data/objects/{script})\n")
         for mat in tri:
             (r, g, b), ns = MATERIALS[mat]
             f.write(f"newmtl {mat}\nKd {r:.4f} {g:.4f} {b:.4f}\nNs {ns:.1f}\n\n")
     with open(os.path.join(HERE, name + ".obj"), "w") as f:
-        f.write(f"# landsim example vehicle '{name}' (data/objects/make_vehicles.py): y up, "
+        f.write(f"# landsim example {what} '{name}' (data/objects/{script}): y up, "
                 "front +z, metres\n")
         f.write(f"mtllib {name}.mtl\no {name}\n")
         base = 1

@@ -529,3 +529,43 @@ TEST(SceneObjects, TheMemoryEstimateCountsEachMeshOnceAndHandsItToTheBuilder) {
 
 }  // namespace
 }  // namespace landsim::scenes
+
+namespace landsim::scenes {
+namespace {
+
+// The shipped classes (data/objects/, made by its scripts) read upright at their sizes: the
+// height along z, the length along the front (y at heading 0), as PROVENANCE.md lists them.
+TEST(SceneObjects, EveryShippedClassStandsUprightAtItsSize) {
+  struct Size {
+    const char* file;
+    double height, length;
+  };
+  const Size sizes[] = {{"car.obj", 1.45, 4.40},     {"truck.obj", 3.20, 7.46},
+                        {"suv.obj", 1.95, 4.85},     {"tracked.obj", 2.30, 8.50},
+                        {"person.obj", 1.75, 0.29},  {"tent.obj", 1.20, 2.20},
+                        {"cow.obj", 1.47, 2.63},     {"hut.obj", 3.60, 3.70}};
+  TempDir dir;
+  std::string objects;
+  int k = 0;
+  for (const Size& s : sizes)
+    objects += object(std::string(s.file).substr(0, std::string(s.file).find('.')), vehicle(s.file),
+                      1030.0 + 12.0 * (k % 4), 2040.0 + 15.0 * (k / 4)),
+        ++k;
+  const renderer::Scene scene = build(dir, scenario(slope_asc(dir), objects));
+  ASSERT_EQ(scene.objects.size(), std::size(sizes));
+  for (std::size_t i = 0; i < std::size(sizes); ++i) {
+    const renderer::ObjectInstance& o = scene.objects[i];
+    double z0 = 1e9, z1 = -1e9, y0 = 1e9, y1 = -1e9;
+    for (const Vec3f& v : scene.object_prototypes[o.prototype].vertices) {
+      const Vec3 w = o.apply(v);
+      z0 = std::min(z0, w.z), z1 = std::max(z1, w.z);
+      y0 = std::min(y0, w.y), y1 = std::max(y1, w.y);
+    }
+    EXPECT_NEAR(z1 - z0, sizes[i].height, 0.02) << sizes[i].file;  // upright on the slope
+    EXPECT_NEAR(y1 - y0, sizes[i].length, 0.02) << sizes[i].file;
+    EXPECT_NEAR(lowest_clearance(scene, i), 0.0, 0.01) << sizes[i].file;  // it stands
+  }
+}
+
+}  // namespace
+}  // namespace landsim::scenes
