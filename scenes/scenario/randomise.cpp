@@ -8,6 +8,7 @@
 #include "core/counter_rng.h"
 #include "core/fnv_hash.h"
 #include "core/input_error.h"
+#include "scenes/scenario/render_choices.h"
 
 namespace landsim::scenes {
 namespace {
@@ -66,6 +67,7 @@ Scenario randomised_scenario(const Scenario& s, std::size_t image) {
     throw InputError(fmt::format("{}: [randomise] image {} drew a value the scenario refuses: {}",
                                  r.location, image, e.what()));
   }
+  apply_render_choices(out, s.choices);  // the command line's spp, size, view
   out.variation = image + 1;
   out.variation_sets = draws;
   return out;

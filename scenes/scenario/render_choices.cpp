@@ -27,6 +27,7 @@ void override_view_sizes(Scenario& s, std::optional<int> width, std::optional<in
 }
 
 void apply_render_choices(Scenario& s, const RenderChoices& c) {
+  s.choices = c;
   if (c.spp) {
     if (*c.spp < 1 || *c.spp > kMaxSpp)
       throw InputError("spp " + std::to_string(*c.spp) + ": expected 1 to " +
@@ -46,6 +47,11 @@ void apply_render_choices(Scenario& s, const RenderChoices& c) {
     if (v.name == c.view) {
       const ViewSettings chosen = v;
       s.views = {chosen};
+      for (const ObjectSettings& o : s.objects)
+        if (o.siting && o.siting->view != c.view)
+          throw InputError(c.source + ": " + o.siting->location + ": [" + o.path +
+                           ".place] places '" + o.name + "' by view \"" + o.siting->view +
+                           "\", which " + c.source + " " + c.view + " leaves out: render both");
       return;
     }
     names += (names.empty() ? "" : ", ") + v.name;

@@ -9,13 +9,6 @@
 
 namespace landsim::scenes {
 
-struct RenderChoices {
-  std::optional<int> spp;
-  std::optional<int> threads;
-  std::optional<int> width, height;  // a lone width or height keeps each view's aspect
-  std::string view;                  // empty: every view
-  std::string source = "--view";     // how messages name the choice of view
-};
 
 // Sizes win over the scenario's; a lone width or height keeps each view's aspect ratio.
 // InputError for an explosive size.

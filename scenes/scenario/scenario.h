@@ -256,6 +256,16 @@ struct RandomiseSettings {
   std::vector<std::string> sets;
 };
 
+// What a caller chose for one render beyond the scenario's keys (scenes/scenario/
+// render_choices.h applies it): samples, threads, image size and the one view to render.
+struct RenderChoices {
+  std::optional<int> spp;
+  std::optional<int> threads;
+  std::optional<int> width, height;  // a lone width or height keeps each view's aspect
+  std::string view;                  // empty: every view
+  std::string source = "--view";     // how messages name the choice of view
+};
+
 struct Scenario {
   std::string source;     // the file it came from, for messages
   std::string text_hash;  // FNV-1a 64 of the scenario text, hex (image metadata)
@@ -279,6 +289,7 @@ struct Scenario {
   // it is not one: it mixes into the objects' draws, so each image places its own.
   std::uint64_t variation = 0;
   std::vector<std::string> variation_sets;  // what that image drew, as --set key=value
+  RenderChoices choices;  // those applied (apply_render_choices): each randomised image's too
 };
 
 // Limit on frames per scenario (an image set is views x frames images).

@@ -8,11 +8,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "core/input_error.h"
 #include "renderer/acceleration/ground_probe.h"
 #include "scenes/builder/scene_builder.h"
 #include "scenes/image_set/image_set.h"
+#include "scenes/scenario/render_choices.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -106,6 +108,34 @@ TEST(ObjectSiting, EveryPlacedObjectIsSeenInItsImage) {
     EXPECT_GT(o["visible_pixels"].get<int>(), 0) << o["name"];
     EXPECT_GT(o["visible_fraction"].get<double>(), 0.5) << o["name"];
   }
+}
+
+// The shipped detection set (scenes/examples/detection_set.toml): its first randomised image
+// shows every one of its fourteen targets, from 300 m to 3 km, of the classes it drew.
+TEST(ObjectSiting, TheDetectionExampleShowsEveryTargetInItsImage) {
+  Scenario s = load_scenario(testing::source_file("scenes/examples/detection_set.toml"));
+  ASSERT_TRUE(s.randomise.has_value());
+  EXPECT_EQ(s.randomise->images, 50);
+  apply_render_choices(s, {.spp = 2});
+  ImageSetOptions options;
+  options.write_files = false;
+  options.task_index = 0;
+  nlohmann::json entry;
+  options.keep = [&](RenderedImage&& image) {
+    entry = nlohmann::json::parse(image.manifest_entry);
+  };
+  render_image_set(s, options);
+  ASSERT_EQ(entry["objects"].size(), 14u);
+  std::set<std::string> classes;
+  double farthest = 0.0;
+  for (const nlohmann::json& o : entry["objects"]) {
+    EXPECT_GT(o["visible_pixels"].get<int>(), 0) << o["name"];
+    classes.insert(o["class"].get<std::string>());
+    farthest = std::max(farthest, o["range_m"].get<double>());
+  }
+  EXPECT_GE(classes.size(), 7u);
+  EXPECT_GT(farthest, 1000.0);
+  EXPECT_EQ(entry["randomised"]["set"].size(), 10u);
 }
 
 TEST(ObjectSiting, ABeltOfTreesHidesWhatIsBehindItUnlessTreesAreIgnored) {
