@@ -51,6 +51,7 @@ struct OutputRaster {
   std::optional<std::array<double, 6>> geotransform;
   std::string crs_wkt;
   std::vector<std::pair<std::string, std::string>> metadata;
+  std::optional<double> nodata;  // every band's NoData value, when given
 };
 
 // Every function returns false on failure and puts GDAL's last message (possibly empty) in

@@ -17,6 +17,8 @@ struct SenseArgs {
   std::string sensor;  // a TOML file with [sensor]; empty: the one each image was rendered with
   std::optional<std::uint64_t> noise_seed;
   std::optional<double> exposure_time;
+  std::string out;        // empty: SET_sensed
+  bool in_place = false;  // rewrite the set itself
   bool json = false;
 };
 

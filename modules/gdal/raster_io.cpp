@@ -196,6 +196,7 @@ bool write_raster(const std::string& path, const OutputRaster& r, std::string& e
     const OutputBand& band = r.bands[b];
     GDALRasterBandH h = GDALGetRasterBand(ds.get(), static_cast<int>(b) + 1);
     GDALSetDescription(h, band.name.c_str());
+    if (r.nodata) GDALSetRasterNoDataValue(h, *r.nodata);
     every_wavelength = every_wavelength && band.wavelength_nm.has_value();
     if (band.wavelength_nm) {
       const std::string nm = std::to_string(*band.wavelength_nm);

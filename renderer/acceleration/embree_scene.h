@@ -22,7 +22,10 @@ enum class ObjectClass : std::uint8_t {
   leaf = 3,
   grass = 4,
   object = 5,  // a scene object ([[objects]]: vehicles, structures)
-  none = 6     // no ray leaves this pixel (outside a fisheye's image circle)
+  none = 6,    // no ray leaves this pixel (outside a fisheye's image circle)
+  // The plain beyond the drawn ground (and its lids over nodata holes): in the object layer
+  // only; it shades as ground (Hit::object stays ground, Hit::plain says which).
+  plain = 7
 };
 
 struct Hit {

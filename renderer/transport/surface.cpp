@@ -95,7 +95,9 @@ FirstHit first_hit(const Scene& scene, const Hit& hit, const ShadingPoint& v,
   const std::int32_t species =
       hit.prototype >= 0 ? scene.prototypes[static_cast<std::size_t>(hit.prototype)].species : -1;
   const Vec3f albedo = m.reflectance + m.transmittance + (m.glossy() ? m.specular : Vec3f{});
-  return {hit.t,        v.n,     albedo,    hit.object,
+  // The plain is ground to light, its own class to the truth: no DEM stands under it.
+  const ObjectClass object = hit.plain ? ObjectClass::plain : hit.object;
+  return {hit.t,        v.n,     albedo,    object,
           hit.instance, species, hit.level, static_cast<std::uint32_t>(hit.object_index + 1)};
 }
 

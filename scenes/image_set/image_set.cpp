@@ -160,6 +160,9 @@ renderer::RenderOptions render_options(const SetRun& run, const renderer::View& 
     options.checkpoint_seconds = s.render.checkpoint_seconds;
   }
   options.resume = run.options.resume;
+  // A grid-aligned map's first sample goes through each pixel's centre: its truth layers
+  // (world position, ids) are the cell centre's, where the geotransform puts the pixel.
+  options.centre_first_sample = s.views[image.view].grid_cells_per_pixel > 0;
   if (run.options.stop) options.stop = [stop = run.options.stop](int) { return stop(); };
   options.render_key = render_key(s, image);
   return options;
@@ -206,6 +209,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   renderer::ImageMetadata meta = metadata(s, view, scene, camera_model);
   meta.emplace_back("time_s", fmt::format("{}", time));
   meta.emplace_back("render_key", options.render_key);
+  const nlohmann::json settings = settings_json(s, scene);
+  meta.emplace_back("settings", settings.dump());
   const renderer::CameraMatrices camera = renderer::Camera(view).matrices();
   // The preview's exposure (fixed, or automatic from this image) goes in the EXR too, so a
   // viewer can reproduce the PNG from the EXR.
@@ -244,6 +249,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
       report, manifest_entry(s.views[image.view], image.stem, image.frame, time, camera_model)};
   if (!objects.is_null()) out.manifest["objects"] = objects;
   out.manifest.update(light_and_sensor);
+  out.manifest["settings"] = settings;
   if (s.variation > 0)
     out.manifest["randomised"] = {{"image", s.variation - 1},
                                   {"set", s.variation_sets}};  // as saved_entry

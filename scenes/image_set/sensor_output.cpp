@@ -227,12 +227,27 @@ void check_channels(const renderer::SensorModel& wanted, const renderer::SensorM
   }
 }
 
+// A file of the set into `to`: a hard link where the file system allows, else a copy.
+void link_or_copy(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::error_code error;
+  std::filesystem::remove(to, error);
+  std::filesystem::create_hard_link(from, to, error);
+  if (error) std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing);
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> sense_image_set(const std::filesystem::path& dir,
                                                    const SenseOptions& options) {
-  const std::filesystem::path manifest_path = dir / "manifest.json";
   nlohmann::json manifest = read_manifest(dir);
+  const std::filesystem::path out = options.out.empty() ? dir : options.out;
+  if (!options.out.empty()) {
+    if (std::filesystem::exists(out) && std::filesystem::equivalent(out, dir))
+      throw InputError(out.string() + ": the sensed set would overwrite the set: give another "
+                                      "folder, or --in-place");
+    std::filesystem::create_directories(out);
+  }
+  const std::filesystem::path manifest_path = out / "manifest.json";
   std::vector<std::filesystem::path> written;
   for (nlohmann::json& entry : manifest["images"]) {
     if (!entry.contains("path") || !entry["path"].is_string())
@@ -257,8 +272,14 @@ std::vector<std::filesystem::path> sense_image_set(const std::filesystem::path& 
     if (options.noise_seed) m.noise_seed = *options.noise_seed;
     if (options.exposure_time_s) m.exposure_time_s = *options.exposure_time_s;
     const std::string stem = std::filesystem::path(exr_name).stem().string();
-    entry["sensor"] = write_sensor_image(film, m, dir, stem, rendered->placement);
-    written.push_back(dir / entry["sensor"]["path"].get<std::string>());
+    if (out != dir) {
+      link_or_copy(exr, out / exr_name);
+      if (entry.contains("preview") && entry["preview"].is_string())
+        link_or_copy(dir / entry["preview"].get<std::string>(),
+                     out / entry["preview"].get<std::string>());
+    }
+    entry["sensor"] = write_sensor_image(film, m, out, stem, rendered->placement);
+    written.push_back(out / entry["sensor"]["path"].get<std::string>());
   }
   write_file_atomically(manifest_path, manifest.dump(2) + "\n");
   return written;

@@ -36,10 +36,15 @@ struct SenseOptions {
   std::optional<renderer::SensorModel> sensor;  // another sensor (its channels rendered)
   std::optional<std::uint64_t> noise_seed;
   std::optional<double> exposure_time_s;
+  // Where the sensed set goes: empty rewrites the set in place; else a new folder holding the
+  // set's EXRs and previews (hard links where the file system allows, else copies), the new
+  // digital numbers and its own manifest, the set itself untouched.
+  std::filesystem::path out;
 };
 
 // Applies a sensor again to every image of the set in `dir` (its manifest.json): the digital
-// numbers rewritten, the manifest's "sensor" entries updated (the EXRs keep the sensor they
+// numbers written (into options.out, or over the set's), the manifest's "sensor" entries
+// updated (the EXRs keep the sensor they
 // were rendered with). Returns the files written. Throws InputError naming the set, image or
 // channel when the set cannot take the sensor (no manifest, a channel not rendered, or
 // rendered with another response).

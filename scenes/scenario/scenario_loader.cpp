@@ -94,9 +94,11 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   refuse_unknown_tables(root, source);
   Scenario s;
   s.source = source;
-  std::uint64_t hash = fnv1a(text);  // over the text and the overrides
-  for (const std::string& set : sets) hash = fnv1a("\n--set " + set, hash);
-  s.text_hash = fmt::format("{:016x}", hash);
+  // Over the TOML as read, overrides applied, in toml++'s own layout: comments, spacing and
+  // key order aside, so a scenario written back (Python's to_dict, from_dict) keeps its hash.
+  std::ostringstream canonical;
+  canonical << root;
+  s.text_hash = fmt::format("{:016x}", fnv1a(canonical.str()));
   s.terrain = read_terrain(sub_table(root, "terrain", source, true), source, base_dir);
   s.sun = read_sun(sub_table(root, "sun", source, true), source);
   s.featuremaps = read_featuremaps(root, source, base_dir);

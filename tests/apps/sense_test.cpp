@@ -66,15 +66,32 @@ TEST(CliSense, RenderWritesDigitalNumbersAndSenseReproducesThem) {
   for (const std::uint16_t v : rendered) brightest = std::max(brightest, v);
   EXPECT_GT(brightest, 100);
   EXPECT_LE(brightest, 4095);
-  // The same sensor and seed: the same numbers, without tracing.
-  ASSERT_EQ(testing::run_landsim("sense " + set.string(), dir).exit_code, 0);
-  EXPECT_EQ(digital_numbers(set / "crater_dn.tif", channels), rendered);
+  // The same sensor and seed: the same numbers, without tracing, in a new folder (SET_sensed)
+  // beside the set, which stays as it was.
+  const std::string manifest_text = testing::read_file(set / "manifest.json");
+  ASSERT_EQ(testing::run_landsim("sense " + set.string() + "/", dir).exit_code, 0);
+  const auto sensed = dir / "set_sensed";
+  EXPECT_EQ(digital_numbers(sensed / "crater_dn.tif", channels), rendered);
+  EXPECT_TRUE(std::filesystem::exists(sensed / "crater.exr"));
+  EXPECT_TRUE(std::filesystem::exists(sensed / "manifest.json"));
   // Another noise seed: other numbers, the manifest says which seed.
-  const auto again = testing::run_landsim("sense " + set.string() + " --noise-seed 5", dir);
+  const auto again =
+      testing::run_landsim("sense " + set.string() + " --noise-seed 5 --out " +
+                               (dir / "seed5").string(), dir);
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_NE(digital_numbers(set / "crater_dn.tif", channels), rendered);
-  const auto after = nlohmann::json::parse(testing::read_file(set / "manifest.json"));
+  EXPECT_NE(digital_numbers(dir / "seed5" / "crater_dn.tif", channels), rendered);
+  const auto after = nlohmann::json::parse(testing::read_file(dir / "seed5" / "manifest.json"));
   EXPECT_EQ(after["images"][0]["sensor"]["noise_seed"], 5);
+  EXPECT_EQ(testing::read_file(set / "manifest.json"), manifest_text);
+  EXPECT_EQ(digital_numbers(set / "crater_dn.tif", channels), rendered);
+  // --in-place rewrites the set itself.
+  ASSERT_EQ(testing::run_landsim("sense " + set.string() + " --noise-seed 5 --in-place", dir)
+                .exit_code,
+            0);
+  EXPECT_NE(digital_numbers(set / "crater_dn.tif", channels), rendered);
+  EXPECT_EQ(nlohmann::json::parse(testing::read_file(set / "manifest.json"))["images"][0]
+                                                                             ["sensor"]["noise_seed"],
+            5);
 }
 
 TEST(CliSense, RefusesChannelsNotRenderedAndSetsWithoutASensor) {

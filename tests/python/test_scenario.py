@@ -74,6 +74,8 @@ def test_to_dict_and_from_dict_round_trip():
     s = landsim.Scenario.default().set("sun.azimuth", 200)
     again = landsim.Scenario.from_dict(s.to_dict(), base_dir=s.base_dir)
     assert again.to_dict() == s.to_dict()
+    # The same scenario, the same hash (the images' scenario_hash; resume keeps them).
+    assert again.hash == s.hash
     assert again.views == s.views
 
 

@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "renderer/acceleration/embree_scene.h"
 #include "renderer/camera.h"
 #include "renderer/output/image_output.h"
 #include "terrain/raster_io.h"
@@ -38,6 +40,14 @@ std::vector<float> plane(const std::vector<float>& data, int stride, int offset)
 std::array<std::vector<float>, 3> world_planes(const renderer::Film& film) {
   return {plane(film.position_data(), 3, 0), plane(film.position_data(), 3, 1),
           plane(film.position_data(), 3, 2)};
+}
+
+// A map pixel with no DEM under it: the plain, the sky, no ray.
+bool off_the_dem(std::uint32_t object) {
+  using renderer::ObjectClass;
+  return object == static_cast<std::uint32_t>(ObjectClass::plain) ||
+         object == static_cast<std::uint32_t>(ObjectClass::sky) ||
+         object == static_cast<std::uint32_t>(ObjectClass::none);
 }
 
 }  // namespace
@@ -120,6 +130,20 @@ void write_geo_rasters(const renderer::Film& film, const renderer::View& view,
                       "landsim_world_origin, metres; NaN where nothing is hit"},
                      {"landsim_radiance_unit", "R, G, B, Y: cd/m2 (Y); band.*: W m-2 sr-1"}};
   OutputRaster ids = values;
+  // A map's float bands are NoData (NaN) where no DEM stands: the plain beyond the grid and
+  // over its holes (its own object class), and sky; the ids keep their classes.
+  std::vector<std::vector<float>> masked;
+  if (values.geotransform) {
+    masked.reserve(values.bands.size());
+    for (OutputBand& band : values.bands) {
+      const auto* cells = static_cast<const float*>(band.cells);
+      std::vector<float>& copy = masked.emplace_back(cells, cells + film.pixel_count());
+      for (std::size_t i = 0; i < copy.size(); ++i)
+        if (off_the_dem(film.object_data()[i])) copy[i] = std::numeric_limits<float>::quiet_NaN();
+      band.cells = copy.data();
+    }
+    values.nodata = std::numeric_limits<double>::quiet_NaN();
+  }
   ids.type = CellType::uint32;
   ids.bands = {{"object", film.object_data().data(), {}},
                {"species", film.species_data().data(), {}},

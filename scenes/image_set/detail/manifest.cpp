@@ -59,7 +59,68 @@ nlohmann::json box3d_json(const renderer::ObjectBox& b, const Vec3& origin) {
           {"rotation_camera", {{m[0], m[1], m[2]}, {m[3], m[4], m[5]}, {m[6], m[7], m[8]}}}};
 }
 
+std::string haze_phase(renderer::AerosolPhase p) {
+  switch (p) {
+    case renderer::AerosolPhase::isotropic:
+      return "isotropic";
+    case renderer::AerosolPhase::rayleigh:
+      return "rayleigh";
+    case renderer::AerosolPhase::table:
+      return "table";
+    case renderer::AerosolPhase::legendre:
+      return "legendre";
+    case renderer::AerosolPhase::henyey_greenstein:
+      break;
+  }
+  return "henyey-greenstein";
+}
+
+nlohmann::json haze_json(const renderer::Haze& h) {
+  if (!h.enabled) return nullptr;
+  nlohmann::json out = {
+      {"single_scattering_albedo", {h.albedo.x, h.albedo.y, h.albedo.z}},
+      {"phase", haze_phase(h.phase)},
+      {"multiple_scattering", h.scattering == renderer::HazeScattering::paths ? "paths" : "table"}};
+  if (h.phase == renderer::AerosolPhase::henyey_greenstein) out["asymmetry"] = h.asymmetry;
+  if (h.layer) {
+    out["layer"] = {{"optical_depth", h.layer->optical_depth}, {"top_m", h.layer->top}};
+    return out;
+  }
+  out["visibility_m"] = h.visibility;
+  out["scale_height_m"] = h.scale_height;
+  out["angstrom"] = h.angstrom;
+  out["molecular"] = h.molecular;
+  return out;
+}
+
 }  // namespace
+
+nlohmann::json settings_json(const Scenario& s, const renderer::Scene& scene) {
+  static const char* const kSeasons[] = {"spring", "summer", "autumn", "winter"};
+  const Vec3f& e = scene.sun.irradiance;
+  return {
+      {"scenario_hash", s.text_hash},
+      {"sun",
+       {{"elevation_deg", s.sun.elevation_deg},
+        {"azimuth_deg", s.sun.azimuth_deg},
+        {"direction", vec_json(scene.sun.direction)},
+        {"irradiance_lux", {e.x, e.y, e.z}}}},
+      {"sky", sky_text(s.sky)},
+      {"haze", haze_json(s.haze)},
+      {"wind",
+       {{"speed", s.wind.speed}, {"gust", s.wind.gust}, {"direction_deg", s.wind.direction_deg}}},
+      {"render",
+       {{"spp", s.render.spp},
+        {"noise_threshold", s.render.noise_threshold},
+        {"seed", s.render.seed},
+        {"sampling_seed", scene.settings.seed},
+        {"max_bounces", s.render.max_bounces},
+        {"season", kSeasons[static_cast<int>(s.render.season)]},
+        {"degradation", s.render.degradation},
+        {"quality", s.render.quality},
+        {"exposure_ev100", s.render.exposure_ev100 ? nlohmann::json(*s.render.exposure_ev100)
+                                                   : nlohmann::json("auto")}}}};
+}
 
 // The whole camera model (docs/CAMERAS.md), positions and axes in terrain coordinates: in the
 // manifest and, as JSON text, the EXR's "camera" attribute.
@@ -218,6 +279,7 @@ nlohmann::json saved_entry(const Scenario& s, std::size_t view, const std::strin
   if (!s.objects.empty()) entry["objects"] = saved_json(exr, "objects");
   entry["irradiance"] = saved_json(exr, "irradiance");
   if (s.views[view].sensor) entry["sensor"] = saved_json(exr, "sensor");
+  entry["settings"] = saved_json(exr, "settings");
   if (s.variation > 0)
     entry["randomised"] = {{"image", s.variation - 1}, {"set", s.variation_sets}};
   return entry;

@@ -35,6 +35,10 @@ nlohmann::json manifest_entry(const ViewSettings& vs, const std::string& stem, s
                               double time, nlohmann::json camera);
 
 // The manifest's truth about each object in an image (docs/OBJECTS.md "Truth").
+// The image's resolved settings (docs/SCENARIO.md "Image sets"): the scenario's hash, sun
+// (with the irradiance used), sky, haze, wind and render settings, as the image was made.
+nlohmann::json settings_json(const Scenario& s, const renderer::Scene& scene);
+
 nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth, const Vec3& origin);
 
 // A JSON attribute (objects, camera) of an image already written; null when it has none.

@@ -140,6 +140,14 @@ TEST(Randomise, TheSetListsEachImagesDrawsAndOneImageRendersAloneTheSame) {
     EXPECT_EQ(entry["path"], "a_r000" + std::to_string(i) + ".exr");
     EXPECT_EQ(entry["randomised"]["image"], i);
     EXPECT_EQ(entry["randomised"]["set"].get<std::vector<std::string>>(), randomised_sets(s, i));
+    // The entry records the image's own resolved settings.
+    const nlohmann::json& settings = entry["settings"];
+    EXPECT_DOUBLE_EQ(settings["sun"]["elevation_deg"].get<double>(),
+                     std::stod(drawn(randomised_sets(s, i), "sun.elevation")));
+    EXPECT_EQ(settings["scenario_hash"], randomised_scenario(s, i).text_hash);
+    EXPECT_EQ(settings["sky"], "hosek-wilkie turbidity 3");
+    EXPECT_TRUE(settings["haze"].is_null());
+    EXPECT_GT(settings["sun"]["irradiance_lux"][1].get<double>(), 1000.0);
   }
   EXPECT_NE(set[0].film.rgb_data(), set[1].film.rgb_data());  // another sun, another image
   std::vector<RenderedImage> alone;
