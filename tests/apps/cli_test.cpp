@@ -794,12 +794,25 @@ TEST(Cli, RenderedExrHoldsEveryLayerAndTheDocumentedMetadata) {
   EXPECT_EQ(meta("spp"), "1");
   EXPECT_EQ(meta("seed"), "7");
   EXPECT_EQ(meta("view"), "v");
-  // The scenario's hash: FNV-1a 64 of the file's text, in hex.
-  std::uint64_t fnv = 0xcbf29ce484222325ULL;
-  for (const char c : text) fnv = (fnv ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv));
-  EXPECT_EQ(meta("scenario_hash"), hex);
+  // The scenario's hash: 16 hex digits of the scenario as read, comments and spacing aside
+  // (the same file with a comment and blank lines renders with the same hash), a value not.
+  EXPECT_TRUE(std::regex_match(meta("scenario_hash"), std::regex("[0-9a-f]{16}")))
+      << meta("scenario_hash");
+  const auto hash_of = [&](const std::string& name, const std::string& variant) {
+    const auto set = dir / name;
+    const Result again = run("render " + dir.write(name + ".toml", variant).string() +
+                                 " --width 8 --height 8 --out " + set.string(),
+                             dir);
+    EXPECT_EQ(again.exit_code, 0) << again.err;
+    const Imf::InputFile other((set / "v.exr").c_str());
+    const auto* a = other.header().findTypedAttribute<Imf::StringAttribute>("landsim/scenario_hash");
+    return a != nullptr ? a->value() : std::string("(missing)");
+  };
+  EXPECT_EQ(hash_of("commented", "# the same scenario\n\n" + text + "\n\n"),
+            meta("scenario_hash"));
+  std::string hazier = text;
+  hazier.replace(hazier.find("visibility = 9000.0"), 19, "visibility = 8000.0");
+  EXPECT_NE(hash_of("hazier", hazier), meta("scenario_hash"));
   // Positions in the EXR's matrices are relative to the scene origin (the grid's centre).
   double ox = 0, oy = 0, oz = 0;
   std::istringstream(meta("scene_origin")) >> ox >> oy >> oz;

@@ -416,6 +416,25 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
     EXPECT_TRUE(load_scenario(path).haze.layer.has_value()) << scene;
     text += landsim::testing::read_file(path);
   }
+  // Detection sets (docs/OBJECTS.md, SCENARIO.md [randomise]): objects placed by a view, in
+  // copies, and a randomised set; the shipped example, and the keys it writes inline.
+  const auto detection = source_file("scenes/examples/detection_set.toml");
+  EXPECT_TRUE(load_scenario(detection).randomise.has_value());
+  text += landsim::testing::read_file(detection);
+  const std::string placed =
+      "[[views]]\nname = \"v\"\nposition = [0.0, 0.0, 300.0]\ntarget = [300.0, 400.0, 150.0]\n"
+      "[[objects]]\nname = \"p\"\nfile = \"" +
+      source_file("data/objects/person.obj").string() +
+      "\"\ncount = 2\nheading = \"random\"\n[objects.place]\nview = \"v\"\n"
+      "range = [100, 400]\nbearing = [-20, 20]\nmin_visible = 0.3\ntrees = false\nseed = 4\n"
+      "[randomise]\nimages = 2\nseed = 3\n";
+  const Scenario with_placed = load_scenario(
+      f.dir.write("placed.toml", "[terrain]\nelevation = \"" +
+                                     source_file("data/terrain/volcano.asc").string() +
+                                     "\"\n[sun]\nelevation = 30\nazimuth = 100\n" + placed));
+  ASSERT_EQ(with_placed.objects.size(), 2u);
+  EXPECT_EQ(with_placed.objects[1].siting->seed, 4u);
+  text += placed;
   for (const std::string& k : documented) {
     EXPECT_NE(text.find("\n" + k + " ="), std::string::npos)
         << "documented key '" << k << "' is set by no test scenario";
