@@ -40,6 +40,13 @@ struct OutputBand {
   std::optional<double> wavelength_nm;
 };
 
+// A ground control point: an image position (pixel and line from the image's top-left
+// corner, GDAL's convention) and where it lies, in the raster's CRS.
+struct GroundControlPoint {
+  double pixel = 0.0, line = 0.0;
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+
 // A raster to write through one of GDAL's drivers ("GTiff", "ENVI"): its bands share a
 // type; it is north-up georeferenced when `geotransform` is given, in `crs_wkt` when not
 // empty; `metadata` goes to the dataset's default domain.
@@ -52,6 +59,8 @@ struct OutputRaster {
   std::string crs_wkt;
   std::vector<std::pair<std::string, std::string>> metadata;
   std::optional<double> nodata;  // every band's NoData value, when given
+  // Places a view that has no geotransform (perspective, fisheye): GIS tools warp by them.
+  std::vector<GroundControlPoint> gcps;
 };
 
 // Every function returns false on failure and puts GDAL's last message (possibly empty) in

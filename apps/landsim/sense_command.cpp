@@ -6,9 +6,9 @@
 
 #include <iostream>
 
-#include "scenes/scenario/scenario.h"
 #include "core/input_error.h"
 #include "scenes/image_set/sensor_output.h"
+#include "scenes/scenario/scenario.h"
 
 namespace landsim::app {
 
@@ -57,8 +57,8 @@ int run_sense(const SenseArgs& args) {
     std::cout << nlohmann::json{{"written", files}}.dump() << "\n";
   } else {
     for (const auto& f : written) std::cout << f.string() << "\n";
-    std::cout << fmt::format("{}: {} images sensed\n",
-                             o.out.empty() ? args.set : o.out.string(), written.size());
+    std::cout << fmt::format("{}: {} images sensed\n", o.out.empty() ? args.set : o.out.string(),
+                             written.size());
   }
   return 0;
 }

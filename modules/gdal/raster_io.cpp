@@ -2,6 +2,7 @@
 // landsim the first time a raster is touched (core/module_loader.h).
 #include "terrain/raster_io.h"
 
+#include <cpl_conv.h>
 #include <cpl_error.h>
 #include <cpl_vsi.h>
 #include <gdal.h>
@@ -189,6 +190,24 @@ bool write_raster(const std::string& path, const OutputRaster& r, std::string& e
     GDALSetGeoTransform(ds.get(), gt);
   }
   if (!r.crs_wkt.empty()) GDALSetProjection(ds.get(), r.crs_wkt.c_str());
+  if (!r.gcps.empty()) {
+    std::vector<GDAL_GCP> gcps(r.gcps.size());
+    std::vector<std::string> ids(r.gcps.size());
+    GDALInitGCPs(static_cast<int>(gcps.size()), gcps.data());
+    for (std::size_t k = 0; k < gcps.size(); ++k) {
+      const GroundControlPoint& p = r.gcps[k];
+      ids[k] = std::to_string(k + 1);
+      CPLFree(gcps[k].pszId);
+      gcps[k].pszId = CPLStrdup(ids[k].c_str());
+      gcps[k].dfGCPPixel = p.pixel;
+      gcps[k].dfGCPLine = p.line;
+      gcps[k].dfGCPX = p.x;
+      gcps[k].dfGCPY = p.y;
+      gcps[k].dfGCPZ = p.z;
+    }
+    GDALSetGCPs(ds.get(), static_cast<int>(gcps.size()), gcps.data(), r.crs_wkt.c_str());
+    GDALDeinitGCPs(static_cast<int>(gcps.size()), gcps.data());
+  }
   for (const auto& [key, value] : r.metadata)
     GDALSetMetadataItem(ds.get(), key.c_str(), value.c_str(), nullptr);
   bool every_wavelength = !r.bands.empty();

@@ -232,7 +232,8 @@ void link_or_copy(const std::filesystem::path& from, const std::filesystem::path
   std::error_code error;
   std::filesystem::remove(to, error);
   std::filesystem::create_hard_link(from, to, error);
-  if (error) std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing);
+  if (error)
+    std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing);
 }
 
 }  // namespace
@@ -243,8 +244,9 @@ std::vector<std::filesystem::path> sense_image_set(const std::filesystem::path& 
   const std::filesystem::path out = options.out.empty() ? dir : options.out;
   if (!options.out.empty()) {
     if (std::filesystem::exists(out) && std::filesystem::equivalent(out, dir))
-      throw InputError(out.string() + ": the sensed set would overwrite the set: give another "
-                                      "folder, or --in-place");
+      throw InputError(out.string() +
+                       ": the sensed set would overwrite the set: give another "
+                       "folder, or --in-place");
     std::filesystem::create_directories(out);
   }
   const std::filesystem::path manifest_path = out / "manifest.json";

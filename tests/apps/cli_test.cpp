@@ -805,11 +805,11 @@ TEST(Cli, RenderedExrHoldsEveryLayerAndTheDocumentedMetadata) {
                              dir);
     EXPECT_EQ(again.exit_code, 0) << again.err;
     const Imf::InputFile other((set / "v.exr").c_str());
-    const auto* a = other.header().findTypedAttribute<Imf::StringAttribute>("landsim/scenario_hash");
+    const auto* a =
+        other.header().findTypedAttribute<Imf::StringAttribute>("landsim/scenario_hash");
     return a != nullptr ? a->value() : std::string("(missing)");
   };
-  EXPECT_EQ(hash_of("commented", "# the same scenario\n\n" + text + "\n\n"),
-            meta("scenario_hash"));
+  EXPECT_EQ(hash_of("commented", "# the same scenario\n\n" + text + "\n\n"), meta("scenario_hash"));
   std::string hazier = text;
   hazier.replace(hazier.find("visibility = 9000.0"), 19, "visibility = 8000.0");
   EXPECT_NE(hash_of("hazier", hazier), meta("scenario_hash"));

@@ -75,9 +75,8 @@ TEST(CliSense, RenderWritesDigitalNumbersAndSenseReproducesThem) {
   EXPECT_TRUE(std::filesystem::exists(sensed / "crater.exr"));
   EXPECT_TRUE(std::filesystem::exists(sensed / "manifest.json"));
   // Another noise seed: other numbers, the manifest says which seed.
-  const auto again =
-      testing::run_landsim("sense " + set.string() + " --noise-seed 5 --out " +
-                               (dir / "seed5").string(), dir);
+  const auto again = testing::run_landsim(
+      "sense " + set.string() + " --noise-seed 5 --out " + (dir / "seed5").string(), dir);
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_NE(digital_numbers(dir / "seed5" / "crater_dn.tif", channels), rendered);
   const auto after = nlohmann::json::parse(testing::read_file(dir / "seed5" / "manifest.json"));
@@ -85,12 +84,12 @@ TEST(CliSense, RenderWritesDigitalNumbersAndSenseReproducesThem) {
   EXPECT_EQ(testing::read_file(set / "manifest.json"), manifest_text);
   EXPECT_EQ(digital_numbers(set / "crater_dn.tif", channels), rendered);
   // --in-place rewrites the set itself.
-  ASSERT_EQ(testing::run_landsim("sense " + set.string() + " --noise-seed 5 --in-place", dir)
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      testing::run_landsim("sense " + set.string() + " --noise-seed 5 --in-place", dir).exit_code,
+      0);
   EXPECT_NE(digital_numbers(set / "crater_dn.tif", channels), rendered);
-  EXPECT_EQ(nlohmann::json::parse(testing::read_file(set / "manifest.json"))["images"][0]
-                                                                             ["sensor"]["noise_seed"],
+  EXPECT_EQ(nlohmann::json::parse(
+                testing::read_file(set / "manifest.json"))["images"][0]["sensor"]["noise_seed"],
             5);
 }
 

@@ -17,6 +17,7 @@ namespace landsim::scenes::detail {
 namespace {
 
 using terrain::CellType;
+using terrain::GroundControlPoint;
 using terrain::OutputBand;
 using terrain::OutputRaster;
 
@@ -48,6 +49,32 @@ bool off_the_dem(std::uint32_t object) {
   return object == static_cast<std::uint32_t>(ObjectClass::plain) ||
          object == static_cast<std::uint32_t>(ObjectClass::sky) ||
          object == static_cast<std::uint32_t>(ObjectClass::none);
+}
+
+// GCPs per side of the lattice a view without a geotransform is placed by.
+constexpr int kGcpLattice = 8;
+
+// Ground control points of a view that is not a map: on a lattice of pixels, those whose
+// first hit is ground, each at the image position its hit projects to (exact, where the
+// pixel's jittered sample fell) and its terrain coordinates.
+std::vector<GroundControlPoint> control_points(const renderer::Film& film,
+                                               const renderer::View& view, const Vec3& origin) {
+  std::vector<GroundControlPoint> out;
+  const renderer::Camera camera(view);
+  for (int j = 0; j < kGcpLattice; ++j)
+    for (int i = 0; i < kGcpLattice; ++i) {
+      const int x = static_cast<int>((i + 0.5) * film.width() / kGcpLattice);
+      const int y = static_cast<int>((j + 0.5) * film.height() / kGcpLattice);
+      const std::size_t k = static_cast<std::size_t>(y) * film.width() + x;
+      if (film.object_data()[k] != static_cast<std::uint32_t>(renderer::ObjectClass::ground))
+        continue;
+      const Vec3 p{film.position_data()[3 * k], film.position_data()[3 * k + 1],
+                   film.position_data()[3 * k + 2]};
+      const std::optional<renderer::ImagePoint> at = camera.project(p);
+      if (!at) continue;
+      out.push_back({at->x, at->y, p.x + origin.x, p.y + origin.y, p.z + origin.z});
+    }
+  return out;
 }
 
 }  // namespace
@@ -120,6 +147,8 @@ void write_geo_rasters(const renderer::Film& film, const renderer::View& view,
   values.bands.push_back({"world_y", world[1].data(), {}});
   values.bands.push_back({"world_z", world[2].data(), {}});
   values.geotransform = map_geotransform(view, scene.origin);
+  if (!values.geotransform && !scene.crs_wkt.empty())
+    values.gcps = control_points(film, view, scene.origin);
   values.crs_wkt = scene.crs_wkt;
   values.metadata = {{"landsim_view", view.name},
                      {"landsim_camera", camera},

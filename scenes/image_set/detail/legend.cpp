@@ -9,8 +9,13 @@ namespace {
 
 nlohmann::json object_classes() {
   // renderer::ObjectClass, by value.
-  return {{"0", "sky"},   {"1", "ground"},       {"2", "bark"}, {"3", "leaf"},
-          {"4", "grass"}, {"5", "scene object"}, {"6", "none"},
+  return {{"0", "sky"},
+          {"1", "ground"},
+          {"2", "bark"},
+          {"3", "leaf"},
+          {"4", "grass"},
+          {"5", "scene object"},
+          {"6", "none"},
           {"7", "plain (the ground beyond the elevation grid and over its nodata holes)"}};
 }
 

@@ -540,10 +540,10 @@ TEST(SceneObjects, EveryShippedClassStandsUprightAtItsSize) {
     const char* file;
     double height, length;
   };
-  const Size sizes[] = {{"car.obj", 1.45, 4.40},     {"truck.obj", 3.20, 7.46},
-                        {"suv.obj", 1.95, 4.85},     {"tracked.obj", 2.30, 8.50},
-                        {"person.obj", 1.75, 0.29},  {"tent.obj", 1.20, 2.20},
-                        {"cow.obj", 1.47, 2.63},     {"hut.obj", 3.60, 3.70}};
+  const Size sizes[] = {{"car.obj", 1.45, 4.40},    {"truck.obj", 3.20, 7.46},
+                        {"suv.obj", 1.95, 4.85},    {"tracked.obj", 2.30, 8.50},
+                        {"person.obj", 1.75, 0.29}, {"tent.obj", 1.20, 2.20},
+                        {"cow.obj", 1.47, 2.63},    {"hut.obj", 3.60, 3.70}};
   TempDir dir;
   std::string objects;
   int k = 0;

@@ -141,6 +141,52 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
   EXPECT_EQ(GDALGetRasterCount(envi.ds), GDALGetRasterCount(tif.ds));
 }
 
+// A perspective view has no geotransform: ground control points place it. Each lies where its
+// pixel's hit projects (inside that pixel) at that hit's terrain coordinates, on the DEM.
+TEST(GeoRasters, APerspectiveViewCarriesGroundControlPointsOnTheDem) {
+  GDALAllRegister();
+  const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc");
+  const std::string text = "[terrain]\nelevation = \"" + dem +
+                           "\"\n[sun]\nelevation = 50\nazimuth = 120\n[[views]]\nname = \"v\"\n"
+                           "position = [582700.0, 676100.0]\naltitude_above_ground = 300\n"
+                           "target = [583150.0, 676400.0, 1900.0]\nwidth = 96\nheight = 64\n"
+                           "[render]\nspp = 1\nformats = [\"exr\", \"geotiff\"]\n";
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  render_image_set(parse_scenario(text, "v.toml", "."), o);
+  const terrain::ElevationGrid grid = terrain::load_elevation(dem);
+  const GdalFile tif(o.out_dir / "v.tif");
+  ASSERT_NE(tif.ds, nullptr);
+  double gt[6];
+  EXPECT_NE(GDALGetGeoTransform(tif.ds, gt), CE_None);  // no geotransform
+  const int n = GDALGetGCPCount(tif.ds);
+  ASSERT_GE(n, 32);  // most of the 8 x 8 lattice sees ground
+  OGRSpatialReferenceH ours = OSRNewSpatialReference(GDALGetGCPProjection(tif.ds));
+  OGRSpatialReferenceH theirs = OSRNewSpatialReference(grid.crs_wkt().c_str());
+  EXPECT_TRUE(OSRIsSame(ours, theirs));
+  OSRDestroySpatialReference(ours);
+  OSRDestroySpatialReference(theirs);
+  const auto x = read(tif.ds, band_named(tif.ds, "world_x"));
+  const Vec3 origin = grid.centre();
+  const GDAL_GCP* gcps = GDALGetGCPs(tif.ds);
+  for (int k = 0; k < n; ++k) {
+    const GDAL_GCP& g = gcps[k];
+    ASSERT_GE(g.dfGCPPixel, 0.0);
+    ASSERT_LT(g.dfGCPPixel, 96.0);
+    ASSERT_GE(g.dfGCPLine, 0.0);
+    ASSERT_LT(g.dfGCPLine, 64.0);
+    // The pixel it falls in holds the very hit (its first sample's).
+    const std::size_t i =
+        static_cast<std::size_t>(g.dfGCPLine) * 96 + static_cast<std::size_t>(g.dfGCPPixel);
+    EXPECT_NEAR(x[i] + origin.x, g.dfGCPX, 0.01) << k;
+    // On the ground the DEM gives there.
+    const std::optional<double> h = grid.height(g.dfGCPX, g.dfGCPY);
+    ASSERT_TRUE(h.has_value()) << k;
+    EXPECT_NEAR(g.dfGCPZ, *h, 3.0) << k;
+  }
+}
+
 TEST(GeoRasters, OnlyAStraightDownOrthographicViewIsAMap) {
   renderer::View v{"v", {0.0, 0.0, 100.0}, {0.0, 0.0, 0.0}, 40.0, 10, 20};
   EXPECT_FALSE(detail::map_geotransform(v, {}));  // perspective
