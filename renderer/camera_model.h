@@ -47,6 +47,11 @@ struct Lens {
   // As written in the scenario (for the record in the EXR and manifest); 0: not given.
   double focal_length_mm = 0.0;
   double f_number = 0.0;
+  // A region of a larger sensor (perspective): the whole sensor's pixels and the region's
+  // top-left corner in them; 0 x 0: the image is the whole sensor. The principal point
+  // already holds the region's offset (for the record).
+  int sensor_width = 0, sensor_height = 0;
+  double region_x0 = 0.0, region_y0 = 0.0;
 };
 
 }  // namespace landsim::renderer

@@ -147,6 +147,9 @@ nlohmann::json camera_json(const renderer::View& v, const Vec3& origin) {
   const std::array<double, 9> k = camera.intrinsics();
   out["K"] = {{k[0], k[1], k[2]}, {k[3], k[4], k[5]}, {k[6], k[7], k[8]}};
   out["principal_point_offset_px"] = {l.principal_x, l.principal_y};
+  if (l.sensor_width > 0)
+    out["sensor_region"] = {{"sensor_pixels", {l.sensor_width, l.sensor_height}},
+                            {"origin_px", {l.region_x0, l.region_y0}}};
   if (l.focal_length_mm > 0.0) out["focal_length_mm"] = l.focal_length_mm;
   if (l.projection != Projection::perspective) return out;
   const renderer::Distortion& d = l.distortion;

@@ -1,5 +1,7 @@
 #include "scenes/scenario/detail/view_reader.h"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -115,8 +117,11 @@ std::optional<std::pair<double, double>> read_pitch(TableReader& r, const ViewSe
   if (r.has("sensor_size") && r.has("pixel_pitch"))
     r.fail("pixel_pitch", "give sensor_size or pixel_pitch, not both");
   if (r.has("sensor_size")) {
+    // Of the whole sensor when the image is a region of it (sensor_pixels).
     const std::vector<double> s = r.numbers("sensor_size", 2, Range{0.0, 1e4, true});
-    return std::pair{s[0] / v.width, s[1] / v.height};
+    const auto full = r.optional_numbers("sensor_pixels", 2, Range{1.0, 1e6});
+    return full ? std::pair{s[0] / (*full)[0], s[1] / (*full)[1]}
+                : std::pair{s[0] / v.width, s[1] / v.height};
   }
   if (r.has("pixel_pitch")) {
     const double um = r.number("pixel_pitch", Range{0.0, 1e5, true});
@@ -138,6 +143,39 @@ void read_perspective(TableReader& r, ViewSettings& v) {
   if (!pitch) r.fail("focal_length", "needs sensor_size (mm, width x height) or pixel_pitch (um)");
   v.fov_y_deg = 2.0 * std::atan(0.5 * v.height * pitch->second / v.lens.focal_length_mm) / kDegree;
   v.lens.fx_over_fy = pitch->second / pitch->first;
+}
+
+// A region of a larger sensor (sensor_pixels, region_centre): the image is width x height
+// of the sensor's pixels around region_centre, seen through the whole sensor's lens: its
+// pitch and focal length as given, the optical axis at the sensor's centre (plus
+// principal_point), so the region's principal point is offset by the centre's distance.
+void read_region(TableReader& r, ViewSettings& v) {
+  const auto full = r.optional_numbers("sensor_pixels", 2, Range{1.0, 1e6});
+  if (!full) {
+    if (r.has("region_centre")) r.fail("region_centre", "needs sensor_pixels (the whole sensor)");
+    return;
+  }
+  if (v.lens.focal_length_mm <= 0.0)
+    r.fail("sensor_pixels",
+           "needs focal_length with pixel_pitch or sensor_size: the region is "
+           "seen through the whole sensor's lens");
+  const double w = (*full)[0], h = (*full)[1];
+  if (w != std::floor(w) || h != std::floor(h) || v.width > w || v.height > h)
+    r.fail("sensor_pixels",
+           fmt::format("expected whole pixels holding the {} x {} image", v.width, v.height));
+  const std::vector<double> c =
+      r.numbers("region_centre", 2, Range{0.0, 1e6}, std::vector<double>{0.5 * w, 0.5 * h});
+  const double x0 = c[0] - 0.5 * v.width, y0 = c[1] - 0.5 * v.height;
+  if (x0 < 0.0 || y0 < 0.0 || x0 + v.width > w || y0 + v.height > h)
+    r.fail("region_centre", fmt::format("the {} x {} region around ({}, {}) leaves the {} x {} "
+                                        "sensor",
+                                        v.width, v.height, c[0], c[1], w, h));
+  v.lens.sensor_width = static_cast<int>(w);
+  v.lens.sensor_height = static_cast<int>(h);
+  v.lens.region_x0 = x0;
+  v.lens.region_y0 = y0;
+  v.lens.principal_x += 0.5 * w - c[0];
+  v.lens.principal_y += 0.5 * h - c[1];
 }
 
 void read_fisheye(TableReader& r, ViewSettings& v) {
@@ -199,6 +237,9 @@ void read_intrinsics(TableReader& r, ViewSettings& v) {
     v.lens.principal_x = (*pp)[0];
     v.lens.principal_y = (*pp)[1];
   }
+  for (const char* k : {"sensor_pixels", "region_centre"})
+    only_for(r, k, p == Projection::perspective, "perspective projections");
+  if (p == Projection::perspective) read_region(r, v);
 }
 
 // The distorted normalised radius of the frame's farthest corner.

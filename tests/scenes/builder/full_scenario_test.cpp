@@ -427,7 +427,10 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       source_file("data/objects/person.obj").string() +
       "\"\ncount = 2\nheading = \"random\"\n[objects.place]\nview = \"v\"\n"
       "range = [100, 400]\nbearing = [-20, 20]\nmin_visible = 0.3\ntrees = false\nseed = 4\n"
-      "[randomise]\nimages = 2\nseed = 3\n";
+      "[randomise]\nimages = 2\nseed = 3\n"
+      "[[views]]\nname = \"crop\"\nposition = [0.0, 0.0, 300.0]\ntarget = [300.0, 400.0, 150.0]\n"
+      "focal_length = 200\npixel_pitch = 3.76\nsensor_pixels = [9576, 6388]\n"
+      "region_centre = [7000, 1500]\n";
   const Scenario with_placed = load_scenario(
       f.dir.write("placed.toml", "[terrain]\nelevation = \"" +
                                      source_file("data/terrain/volcano.asc").string() +

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/input_error.h"
+#include "renderer/camera.h"
 #include "scenes/scenario/scenario.h"
 #include "tests/support/temp_dir.h"
 
@@ -66,6 +67,41 @@ TEST(ViewReader, AFocalLengthWithASensorGivesTheFieldOfView) {
   const ViewSettings n =
       view_of("target = [300, 500, 400]\nfocal_length = 35\nsensor_size = [36, 30]");
   EXPECT_NEAR(n.lens.fx_over_fy, (30.0 / 400.0) / (36.0 / 600.0), 1e-12);
+}
+
+// A region of a full sensor: a 3.76 um, 9576 x 6388 sensor behind a 200 mm lens, rendered
+// 600 x 400 around a point of it, shows what the whole sensor's image shows there: every
+// scene point lands where the full image has it, less the region's corner.
+TEST(ViewReader, ARegionOfASensorIsThatPartOfTheWholeSensorsImage) {
+  const std::string lens = "target = [300, 900, 450]\nfocal_length = 200\npixel_pitch = 3.76\n";
+  const ViewSettings region = view_of(lens +
+                                      "sensor_pixels = [9576, 6388]\n"
+                                      "region_centre = [7000, 1500]");
+  ViewSettings whole = view_of(lens);
+  whole.width = 9576;
+  whole.height = 6388;
+  whole.fov_y_deg = 2.0 * std::atan(0.5 * 6388 * 3.76e-3 / 200.0) * 180.0 / kPi;
+  EXPECT_DOUBLE_EQ(region.lens.region_x0, 6700.0);
+  EXPECT_DOUBLE_EQ(region.lens.region_y0, 1300.0);
+  const renderer::Camera a(region), b(whole);
+  for (const Vec3 p : {Vec3{395.0, 900.0, 483.0}, Vec3{360.0, 950.0, 470.0}}) {
+    const auto in_region = a.project(p), in_whole = b.project(p);
+    ASSERT_TRUE(in_region && in_whole);
+    EXPECT_NEAR(in_region->x, in_whole->x - 6700.0, 1e-6);
+    EXPECT_NEAR(in_region->y, in_whole->y - 1300.0, 1e-6);
+  }
+  // With sensor_size, the size is the whole sensor's.
+  const ViewSettings sized = view_of(
+      "target = [300, 900, 450]\nfocal_length = 200\nsensor_size = [36.00576, 24.01888]\n"
+      "sensor_pixels = [9576, 6388]");
+  EXPECT_NEAR(sized.fov_y_deg, view_of(lens).fov_y_deg, 1e-9);
+  EXPECT_NE(error_of(lens + "sensor_pixels = [9576, 6388]\nregion_centre = [100, 100]")
+                .find("region_centre: the 600 x 400 region around (100, 100) leaves the 9576 x "
+                      "6388 sensor"),
+            std::string::npos);
+  EXPECT_NE(error_of("yaw = 0\npitch = 0\nfov = 30\nsensor_pixels = [9576, 6388]")
+                .find("sensor_pixels: needs"),
+            std::string::npos);
 }
 
 TEST(ViewReader, AFisheyeFillsItsCircle) {
