@@ -15,6 +15,7 @@
 #include "renderer/transport/render.h"
 #include "scenario_input.h"
 #include "scenes/image_set/image_set.h"
+#include "scenes/scenario/randomise.h"
 #include "scenes/scenario/render_choices.h"
 #ifdef LANDSIM_HAVE_MPI
 #include "distributed_render.h"
@@ -89,7 +90,8 @@ class StopOnSignal {
 // --check: every image of the set must be in the output directory; then the manifest.
 int check_images(const scenes::Scenario& scenario, const std::filesystem::path& out_dir) {
   const std::vector<std::string> missing = scenes::check_image_set(scenario, out_dir);
-  const std::size_t images = scenario.render.frames.size() * scenario.views.size();
+  const std::size_t images =
+      scenes::randomised_images(scenario) * scenario.render.frames.size() * scenario.views.size();
   if (!missing.empty()) {
     std::string list;
     for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;

@@ -1,4 +1,5 @@
 #include "scenes/builder/memory_estimate.h"
+#include "scenes/scenario/randomise.h"
 
 #include "renderer/camera.h"
 
@@ -465,7 +466,9 @@ nlohmann::json estimate_json(const Scenario& scenario, const MemoryEstimate& e) 
           // The image set: what a job array needs to size itself.
           {"views", scenario.views.size()},
           {"frames", scenario.render.frames.size()},
-          {"images", scenario.views.size() * scenario.render.frames.size()}};
+          {"randomised_images", randomised_images(scenario)},
+          {"images",
+           randomised_images(scenario) * scenario.views.size() * scenario.render.frames.size()}};
 }
 
 }  // namespace landsim::scenes

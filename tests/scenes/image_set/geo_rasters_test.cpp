@@ -42,18 +42,29 @@ std::vector<float> read(GDALDatasetH ds, int band) {
   return v;
 }
 
+// Renders `views` over the Kagwene DEM, one sample, in `formats`, into dir/out.
+std::filesystem::path render_kagwene(const TempDir& dir, const std::string& views,
+                                     const std::string& formats) {
+  const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc");
+  const std::string text = "[terrain]\nelevation = \"" + dem +
+                           "\"\n[sun]\nelevation = 50\nazimuth = 120\n" + views +
+                           "[render]\nspp = 1\nformats = " + formats + "\n";
+  const std::filesystem::path out = dir / "out";
+  ImageSetOptions o;
+  o.out_dir = out;
+  render_image_set(parse_scenario(text, "kagwene.toml", "."), o);
+  return out;
+}
+
 TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
   GDALAllRegister();
   const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc");
-  const std::string text =
-      "[terrain]\nelevation = \"" + dem +
-      "\"\n[sun]\nelevation = 50\nazimuth = 120\n[[bands]]\nname = \"red\"\ncentre = 660\nwidth = "
-      "60\n[[views]]\nname = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n"
-      "[render]\nspp = 1\nformats = [\"exr\", \"geotiff\", \"envi\"]\n";
   TempDir dir;
   ImageSetOptions o;
-  o.out_dir = dir / "out";
-  render_image_set(parse_scenario(text, "map.toml", "."), o);
+  o.out_dir = render_kagwene(dir,
+                             "[[bands]]\nname = \"red\"\ncentre = 660\nwidth = 60\n[[views]]\n"
+                             "name = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n",
+                             "[\"exr\", \"geotiff\", \"envi\"]");
   const terrain::ElevationGrid grid = terrain::load_elevation(dem);
   const GdalFile tif(o.out_dir / "map.tif");
   ASSERT_NE(tif.ds, nullptr);
@@ -146,15 +157,13 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
 TEST(GeoRasters, APerspectiveViewCarriesGroundControlPointsOnTheDem) {
   GDALAllRegister();
   const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc");
-  const std::string text = "[terrain]\nelevation = \"" + dem +
-                           "\"\n[sun]\nelevation = 50\nazimuth = 120\n[[views]]\nname = \"v\"\n"
-                           "position = [582700.0, 676100.0]\naltitude_above_ground = 300\n"
-                           "target = [583150.0, 676400.0, 1900.0]\nwidth = 96\nheight = 64\n"
-                           "[render]\nspp = 1\nformats = [\"exr\", \"geotiff\"]\n";
   TempDir dir;
   ImageSetOptions o;
-  o.out_dir = dir / "out";
-  render_image_set(parse_scenario(text, "v.toml", "."), o);
+  o.out_dir = render_kagwene(dir,
+                             "[[views]]\nname = \"v\"\nposition = [582700.0, 676100.0]\n"
+                             "altitude_above_ground = 300\ntarget = [583150.0, 676400.0, 1900.0]\n"
+                             "width = 96\nheight = 64\n",
+                             "[\"exr\", \"geotiff\"]");
   const terrain::ElevationGrid grid = terrain::load_elevation(dem);
   const GdalFile tif(o.out_dir / "v.tif");
   ASSERT_NE(tif.ds, nullptr);
