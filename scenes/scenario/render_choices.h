@@ -1,14 +1,14 @@
 #pragma once
-// What a caller chooses for one render beyond the scenario's keys: samples, threads, image
-// size and the one view to render. `landsim render`'s options and the Python module's
-// `render` arguments are applied by the same function, so both render the same image.
+// Applying what a caller chooses for one render beyond the scenario's keys (RenderChoices,
+// scenario.h: samples, threads, image size, the one view). `landsim render`'s options and the
+// Python module's `render` arguments go through the same function, so both render the same
+// image; the scenario keeps them, so each randomised image gets them too.
 #include <optional>
 #include <string>
 
 #include "scenes/scenario/scenario.h"
 
 namespace landsim::scenes {
-
 
 // Sizes win over the scenario's; a lone width or height keeps each view's aspect ratio.
 // InputError for an explosive size.
