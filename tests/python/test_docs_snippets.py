@@ -1,4 +1,5 @@
-"""The docs' snippets run as written: OUTPUTS.md's OpenImageIO reader of an EXR's ids."""
+"""The docs' snippets and statements about the files run as written: OUTPUTS.md's OpenImageIO
+reader of an EXR's ids, CAMERAS.md's frame of the EXR's worldToCamera."""
 import os
 import re
 
@@ -37,3 +38,25 @@ def test_outputs_reading_snippet_reads_ids_exactly(tmp_path):
     seen = set(np.unique(species).tolist()) - {names["legend"]["species"]["none"]}
     assert seen, "no species in the default scene's image"
     assert seen <= ids, f"ids {sorted(seen - ids)[:5]} are not in the legend"
+
+
+def test_world_to_camera_takes_scene_frame_points(tmp_path):
+    """CAMERAS.md: the EXR's worldToCamera takes terrain points less landsim/scene_origin; the
+    camera model's position then maps to the camera frame's origin, its target onto the axis."""
+    import json
+    import OpenImageIO as oiio
+    run_cli("render", "--spp", "1", "--width", "32", "--out", str(tmp_path / "out"))
+    exr = [f for f in os.listdir(tmp_path / "out") if f.endswith(".exr")][0]
+    spec = oiio.ImageInput.open(str(tmp_path / "out" / exr)).spec()
+    m = np.array(spec.getattribute("worldToCamera"), dtype=float).reshape(4, 4)  # row vectors
+    origin = np.array([float(v) for v in spec.getattribute("landsim/scene_origin").split()])
+    camera = json.loads(spec.getattribute("landsim/camera"))
+
+    def to_camera(terrain_point):
+        return np.append(np.array(terrain_point) - origin, 1.0) @ m
+
+    assert np.allclose(to_camera(camera["position"])[:3], 0.0, atol=1e-2)
+    target = to_camera(camera["target"])[:3]
+    assert abs(target[0]) < 1e-2 * abs(target[2]) and abs(target[1]) < 1e-2 * abs(target[2])
+    # In terrain coordinates, without the origin subtracted, the camera is far from the origin.
+    assert np.linalg.norm((np.append(camera["position"], 1.0) @ m)[:3]) > 1.0
