@@ -285,6 +285,7 @@ std::vector<ObjectTruth> object_truth(const Scene& scene, const View& view, cons
   for (std::size_t i = 0; i < out.size(); ++i) {
     ObjectTruth& t = out[i];
     t.name = scene.objects[i].name;
+    t.mesh = scene.object_prototypes[scene.objects[i].prototype].file;
     t.footprint_rle = rle_of(std::move(footprint_pixels[i]), film.width(), film.height());
     t.range = length(object_centre(scene, scene.objects[i]) - view.position);
     t.box = object_box(scene, scene.objects[i], view);

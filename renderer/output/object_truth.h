@@ -34,6 +34,7 @@ struct ObjectBox {
 
 struct ObjectTruth {
   std::string name;
+  std::string mesh;  // its mesh file (its class is the file's stem)
   // Pixels whose target is this object, and the sum of their coverage.
   std::uint64_t visible_pixels = 0;
   double visible_coverage = 0.0;

@@ -222,12 +222,6 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   if (!scene.objects.empty()) {
     objects = objects_json(renderer::object_truth(scene, view, film, options.centre_first_sample),
                            scene.origin);
-    // Each object's class, its mesh file's stem: a randomised set may draw the file per image.
-    for (std::size_t k = 0; k < scene.objects.size(); ++k)
-      objects[k]["class"] =
-          std::filesystem::path(scene.object_prototypes[scene.objects[k].prototype].file)
-              .stem()
-              .string();
     meta.emplace_back("objects", objects.dump());
   }
   if (run.writes_files()) {
@@ -251,8 +245,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   out.manifest.update(light_and_sensor);
   out.manifest["settings"] = settings;
   if (s.variation > 0)
-    out.manifest["randomised"] = {{"image", s.variation - 1},
-                                  {"set", s.variation_sets}};  // as saved_entry
+    out.manifest["randomised"] = randomised_json(s.variation - 1, s.variation_sets);
   if (run.options.keep)
     run.options.keep({report, std::move(film), std::move(meta), out.manifest.dump()});
   return out;
@@ -304,10 +297,10 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
       images.empty() ? scenario : scenarios[images.front().variation], options, variants);
   ImageSetResult result;
   result.memory_estimate_bytes = estimate.total_bytes();
-  // Without wind every frame shows the same geometry: the scene is built once.
-  const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
   std::optional<renderer::Scene> scene;
   std::optional<renderer::Renderer> renderer;
+  // Without wind every frame shows the same geometry: the scene is built once.
+  const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
   std::size_t scene_frame = 0, scene_variation = 0;
   nlohmann::json manifest = nlohmann::json::array();
   bool first = true;
@@ -408,8 +401,8 @@ std::vector<std::string> check_image_set(const Scenario& scenario,
     entries.push_back(saved_entry(scenario, image.view, image.stem, image.frame,
                                   out_dir / (image.stem + ".exr")));
     if (scenario.randomise)
-      entries.back()["randomised"] = {{"image", image.variation},
-                                      {"set", randomised_sets(scenario, image.variation)}};
+      entries.back()["randomised"] =
+          randomised_json(image.variation, randomised_sets(scenario, image.variation));
   }
   if (missing.empty()) write_manifest(out_dir / "manifest.json", scenario, entries);
   return missing;

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 #include "core/atomic_file.h"
 #include "renderer/camera.h"
 #include "renderer/output/image_io.h"
@@ -94,6 +96,10 @@ nlohmann::json haze_json(const renderer::Haze& h) {
 }
 
 }  // namespace
+
+nlohmann::json randomised_json(std::size_t image, const std::vector<std::string>& set) {
+  return {{"image", image}, {"set", set}};
+}
 
 nlohmann::json settings_json(const Scenario& s, const renderer::Scene& scene) {
   static const char* const kSeasons[] = {"spring", "summer", "autumn", "winter"};
@@ -229,7 +235,9 @@ nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth, con
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t i = 0; i < truth.size(); ++i) {
     const renderer::ObjectTruth& t = truth[i];
+    // The class, the mesh file's stem: a randomised set may draw the file per image.
     out.push_back({{"name", t.name},
+                   {"class", std::filesystem::path(t.mesh).stem().string()},
                    {"target", i + 1},
                    {"visible_pixels", t.visible_pixels},
                    {"visible_coverage", t.visible_coverage},
@@ -283,8 +291,7 @@ nlohmann::json saved_entry(const Scenario& s, std::size_t view, const std::strin
   entry["irradiance"] = saved_json(exr, "irradiance");
   if (s.views[view].sensor) entry["sensor"] = saved_json(exr, "sensor");
   entry["settings"] = saved_json(exr, "settings");
-  if (s.variation > 0)
-    entry["randomised"] = {{"image", s.variation - 1}, {"set", s.variation_sets}};
+  if (s.variation > 0) entry["randomised"] = randomised_json(s.variation - 1, s.variation_sets);
   return entry;
 }
 

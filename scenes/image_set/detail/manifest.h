@@ -35,6 +35,9 @@ nlohmann::json manifest_entry(const ViewSettings& vs, const std::string& stem, s
                               double time, nlohmann::json camera);
 
 // The manifest's truth about each object in an image (docs/OBJECTS.md "Truth").
+// A randomised image's record (docs/SCENARIO.md [randomise]): its index and its draws.
+nlohmann::json randomised_json(std::size_t image, const std::vector<std::string>& set);
+
 // The image's resolved settings (docs/SCENARIO.md "Image sets"): the scenario's hash, sun
 // (with the irradiance used), sky, haze, wind and render settings, as the image was made.
 nlohmann::json settings_json(const Scenario& s, const renderer::Scene& scene);

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 
 #include "core/input_error.h"
 
@@ -23,25 +24,12 @@ std::string where(const std::string& file, const toml::node& n) {
   throw InputError(fmt::format("{}: [randomise] \"{}\": {}", where(file, n), key, message));
 }
 
-// A TOML value as the text --set reads back to the same value.
+// A TOML value (not a table) as the text --set reads back to the same value.
 std::string toml_text(const toml::node& n, const std::string& file, const std::string& key) {
-  if (const auto* s = n.as_string()) {
-    std::string out = "\"";
-    for (const char c : s->get()) {
-      if (c == '"' || c == '\\') out += '\\';
-      out += c;
-    }
-    return out + "\"";
-  }
-  if (const auto* i = n.as_integer()) return fmt::format("{}", i->get());
-  if (const auto* d = n.as_floating_point()) return fmt::format("{}", d->get());
-  if (const auto* b = n.as_boolean()) return b->get() ? "true" : "false";
-  if (const auto* a = n.as_array()) {
-    std::vector<std::string> parts;
-    for (const toml::node& e : *a) parts.push_back(toml_text(e, file, key));
-    return "[" + fmt::format("{}", fmt::join(parts, ", ")) + "]";
-  }
-  fail(file, n, key, "choose: expected strings, numbers, booleans or arrays of them");
+  if (n.is_table()) fail(file, n, key, "choose: expected values (no tables)");
+  std::ostringstream out;  // toml++'s own writer, strings double-quoted
+  n.visit([&](auto&& v) { out << toml::toml_formatter{v, toml::format_flags::none}; });
+  return out.str();
 }
 
 // A number or an array of numbers, as components; empty when it is neither.

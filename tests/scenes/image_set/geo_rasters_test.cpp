@@ -60,13 +60,13 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
   GDALAllRegister();
   const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc");
   TempDir dir;
-  ImageSetOptions o;
-  o.out_dir = render_kagwene(dir,
-                             "[[bands]]\nname = \"red\"\ncentre = 660\nwidth = 60\n[[views]]\n"
-                             "name = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n",
-                             "[\"exr\", \"geotiff\", \"envi\"]");
+  const std::filesystem::path out =
+      render_kagwene(dir,
+                     "[[bands]]\nname = \"red\"\ncentre = 660\nwidth = 60\n[[views]]\n"
+                     "name = \"map\"\nprojection = \"orthographic\"\nalign = \"grid\"\n",
+                     "[\"exr\", \"geotiff\", \"envi\"]");
   const terrain::ElevationGrid grid = terrain::load_elevation(dem);
-  const GdalFile tif(o.out_dir / "map.tif");
+  const GdalFile tif(out / "map.tif");
   ASSERT_NE(tif.ds, nullptr);
   EXPECT_EQ(GDALGetRasterXSize(tif.ds), grid.cols());
   EXPECT_EQ(GDALGetRasterYSize(tif.ds), grid.rows());
@@ -106,7 +106,7 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
   int has_nodata = 0;
   EXPECT_TRUE(std::isnan(GDALGetRasterNoDataValue(GDALGetRasterBand(tif.ds, 1), &has_nodata)));
   EXPECT_TRUE(has_nodata);
-  const GdalFile id_file(o.out_dir / "map_ids.tif");
+  const GdalFile id_file(out / "map_ids.tif");
   const auto object = read(id_file.ds, band_named(id_file.ds, "object"));
   for (int r = 0; r < grid.rows(); ++r)
     for (int c = 0; c < grid.cols(); ++c) {
@@ -142,13 +142,13 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
   EXPECT_GT(on_grid, grid.cols() * grid.rows() / 4);
   EXPECT_GT(nodata, 0);  // the Kagwene DEM has holes
   // The id layers in a file of their own, and ENVI with its wavelengths.
-  const GdalFile ids(o.out_dir / "map_ids.tif");
+  const GdalFile ids(out / "map_ids.tif");
   ASSERT_NE(ids.ds, nullptr);
   EXPECT_EQ(GDALGetRasterDataType(GDALGetRasterBand(ids.ds, 1)), GDT_UInt32);
   EXPECT_GT(band_named(ids.ds, "species"), 0);
-  const GdalFile envi(o.out_dir / "map.img");
+  const GdalFile envi(out / "map.img");
   ASSERT_NE(envi.ds, nullptr);
-  EXPECT_TRUE(std::filesystem::exists(o.out_dir / "map.hdr"));
+  EXPECT_TRUE(std::filesystem::exists(out / "map.hdr"));
   EXPECT_EQ(GDALGetRasterCount(envi.ds), GDALGetRasterCount(tif.ds));
 }
 
@@ -158,14 +158,14 @@ TEST(GeoRasters, APerspectiveViewCarriesGroundControlPointsOnTheDem) {
   GDALAllRegister();
   const std::string dem = landsim::testing::source_file("data/terrain/gorillas_elevation.asc");
   TempDir dir;
-  ImageSetOptions o;
-  o.out_dir = render_kagwene(dir,
-                             "[[views]]\nname = \"v\"\nposition = [582700.0, 676100.0]\n"
-                             "altitude_above_ground = 300\ntarget = [583150.0, 676400.0, 1900.0]\n"
-                             "width = 96\nheight = 64\n",
-                             "[\"exr\", \"geotiff\"]");
+  const std::filesystem::path out =
+      render_kagwene(dir,
+                     "[[views]]\nname = \"v\"\nposition = [582700.0, 676100.0]\n"
+                     "altitude_above_ground = 300\ntarget = [583150.0, 676400.0, 1900.0]\n"
+                     "width = 96\nheight = 64\n",
+                     "[\"exr\", \"geotiff\"]");
   const terrain::ElevationGrid grid = terrain::load_elevation(dem);
-  const GdalFile tif(o.out_dir / "v.tif");
+  const GdalFile tif(out / "v.tif");
   ASSERT_NE(tif.ds, nullptr);
   double gt[6];
   EXPECT_NE(GDALGetGeoTransform(tif.ds, gt), CE_None);  // no geotransform
