@@ -299,8 +299,6 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
   result.memory_estimate_bytes = estimate.total_bytes();
   std::optional<renderer::Scene> scene;
   std::optional<renderer::Renderer> renderer;
-  // Without wind every frame shows the same geometry: the scene is built once.
-  const bool sway = scenario.wind.speed > 0.0 || scenario.wind.gust > 0.0;
   std::size_t scene_frame = 0, scene_variation = 0;
   nlohmann::json manifest = nlohmann::json::array();
   bool first = true;
@@ -322,6 +320,9 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
         ++result.skipped;
         continue;
       }
+      // Without wind every frame shows the same geometry: the scene is built once per image's
+      // scenario (a randomised image may draw its own wind).
+      const bool sway = drawn.wind.active();
       if (!scene || (sway && image.frame != scene_frame) || image.variation != scene_variation) {
         if (options.stop && options.stop()) {  // asked to stop before a long build
           result.stopped_at = image.stem;

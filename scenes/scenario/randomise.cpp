@@ -68,6 +68,14 @@ Scenario randomised_scenario(const Scenario& s, std::size_t image) {
                                  r.location, image, e.what()));
   }
   apply_render_choices(out, s.choices);  // the command line's spp, size, view
+  // The set's images are counted from the file's views and frames: a draw may move them,
+  // not add or remove them.
+  if (out.views.size() != s.views.size() || out.render.frames.size() != s.render.frames.size())
+    throw InputError(
+        fmt::format("{}: [randomise] image {} has {} views and {} frames, the set "
+                    "{} and {}: draws may change views and frames, not their number",
+                    r.location, image, out.views.size(), out.render.frames.size(), s.views.size(),
+                    s.render.frames.size()));
   out.variation = image + 1;
   out.variation_sets = draws;
   return out;

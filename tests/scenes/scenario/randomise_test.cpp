@@ -113,6 +113,16 @@ TEST(Randomise, BadEntriesAndRefusedDrawsAreNamed) {
             std::string::npos);
   EXPECT_NE(refusal("[randomise]\nimages = 0\n").find("images: expected an integer from 1"),
             std::string::npos);
+  // A draw may not change how many frames or views the set counts.
+  const Scenario frames =
+      with("[randomise]\nimages = 2\n\"render.frames\" = { choose = [[0.0], [0.0, 1.0]] }\n");
+  std::string m;
+  for (std::size_t i = 0; i < 2 && m.empty(); ++i) try {
+      randomised_scenario(frames, i);
+    } catch (const InputError& e) {
+      m = e.what();
+    }
+  EXPECT_NE(m.find("not their number"), std::string::npos) << m;
   const Scenario s = with("[randomise]\nimages = 4\n\"sun.elevation\" = { range = [100, 120] }\n");
   try {
     randomised_scenario(s, 2);
@@ -156,6 +166,25 @@ TEST(Randomise, TheSetListsEachImagesDrawsAndOneImageRendersAloneTheSame) {
   render_image_set(s, options);
   ASSERT_EQ(alone.size(), 1u);
   EXPECT_EQ(alone[0].film.rgb_data(), set[1].film.rgb_data());
+}
+
+// A randomised image that draws wind sways through its frames, though the file has none: its
+// scene is built again for each frame, as a windy scenario's is.
+TEST(Randomise, AnImageThatDrawsWindSwaysThroughItsFrames) {
+  const std::string trees =
+      "[[species]]\nbit = 0\nfile = \"" +
+      landsim::testing::source_file("data/species/quaking_aspen.toml").string() +
+      "\"\nvariants = 1\ndensity_per_ha = 400\ncover = { rectangle = [150, 250, 350, 450] }\n";
+  const Scenario s =
+      parse_scenario(text(trees + "[randomise]\nimages = 1\n\"wind.speed\" = { range = [4, 5] }\n"),
+                     "s.toml", ".", {"render.frames=[0.0, 3.0]"});
+  std::vector<RenderedImage> frames;
+  ImageSetOptions options;
+  options.write_files = false;
+  options.keep = [&](RenderedImage&& image) { frames.push_back(std::move(image)); };
+  render_image_set(s, options);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_NE(frames[0].film.rgb_data(), frames[1].film.rgb_data());
 }
 
 }  // namespace
