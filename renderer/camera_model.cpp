@@ -18,4 +18,12 @@ std::string_view projection_name(Projection p) {
   return "perspective";
 }
 
+std::optional<Projection> projection_from_name(std::string_view name) {
+  for (const Projection p :
+       {Projection::perspective, Projection::orthographic, Projection::fisheye_equidistant,
+        Projection::fisheye_equisolid, Projection::spherical})
+    if (projection_name(p) == name) return p;
+  return std::nullopt;
+}
+
 }  // namespace landsim::renderer

@@ -3,6 +3,7 @@
 // that go with it, OpenCV's Brown-Conrady lens distortion and a thin lens. renderer/camera.h
 // turns it into rays; scenes/ reads it from a scenario's [[views]] table.
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace landsim::renderer {
@@ -16,6 +17,8 @@ enum class Projection : std::uint8_t {
 };
 
 std::string_view projection_name(Projection p);
+// The projection projection_name names; empty for any other text.
+std::optional<Projection> projection_from_name(std::string_view name);
 
 inline bool is_fisheye(Projection p) {
   return p == Projection::fisheye_equidistant || p == Projection::fisheye_equisolid;

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/sensor/vignetting.h"
+
 namespace landsim::renderer {
 
 // A channel: a spectral response rendered as a photon-radiance layer "photons.<name>".
@@ -30,6 +32,7 @@ struct SensorModel {
   int adc_bits = 12;           // 8 to 16
   int black_level_dn = 0;      // the DN of no signal
   double blur_sigma_um = 0.0;  // Gaussian defocus or jitter, standard deviation
+  VignettingModel vignetting;  // none by default: an image-space telecentric lens
   std::uint64_t noise_seed = 1;
 };
 

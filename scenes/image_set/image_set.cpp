@@ -173,9 +173,10 @@ renderer::RenderOptions render_options(const SetRun& run, const renderer::View& 
 // What an image gets beyond its radiance and truth (docs/SENSOR.md): the downwelling
 // irradiance, the reflectance layers (added to `film`) and the sensor's digital numbers
 // (written beside it); their entries go to `meta` and, returned, to the manifest.
+// `camera`: the view's camera_json (the field the sensor's vignetting needs).
 nlohmann::json add_light_and_sensor(const SetRun& run, const renderer::Scene& scene,
-                                    const Image& image, renderer::Film& film,
-                                    renderer::ImageMetadata& meta) {
+                                    const Image& image, const nlohmann::json& camera,
+                                    renderer::Film& film, renderer::ImageMetadata& meta) {
   nlohmann::json entries = nlohmann::json::object();
   const renderer::ImageIrradiance irradiance = renderer::image_irradiance(scene, film);
   entries["irradiance"] = irradiance_json(irradiance, scene);
@@ -184,9 +185,9 @@ nlohmann::json add_light_and_sensor(const SetRun& run, const renderer::Scene& sc
   const std::optional<renderer::SensorModel>& sensor = run.scenario.views[image.view].sensor;
   if (sensor && run.writes_files()) {
     const renderer::View& view = scene.views[image.view];
-    entries["sensor"] =
-        write_sensor_image(film, *sensor, run.options.out_dir, image.stem,
-                           {detail::map_geotransform(view, scene.origin), scene.crs_wkt});
+    entries["sensor"] = write_sensor_image(film, *sensor, run.options.out_dir, image.stem,
+                                           {detail::map_geotransform(view, scene.origin),
+                                            scene.crs_wkt, image_field(camera, image.stem)});
     meta.emplace_back("sensor", entries["sensor"].dump());
   }
   return entries;
@@ -216,7 +217,8 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   // viewer can reproduce the PNG from the EXR.
   const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
   meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
-  const nlohmann::json light_and_sensor = add_light_and_sensor(run, scene, image, film, meta);
+  const nlohmann::json light_and_sensor =
+      add_light_and_sensor(run, scene, image, camera_model, film, meta);
   // Truth about the scene objects, in the manifest and (for resume) in the EXR.
   nlohmann::json objects;
   if (!scene.objects.empty()) {

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
@@ -12,6 +13,7 @@
 #include "renderer/output/image_output.h"
 #include "renderer/sensor/digitiser.h"
 #include "renderer/sensor/optics.h"
+#include "renderer/sensor/vignetting.h"
 #include "scenes/image_set/detail/geo_rasters.h"
 #include "scenes/image_set/image_set.h"
 #include "scenes/scenario/sensor_bands.h"
@@ -30,9 +32,11 @@ nlohmann::json mtf_table(double wavelength_nm, const renderer::SensorModel& m) {
   return rows;
 }
 
-// The photon plane of each channel, through the optics.
+// The photon plane of each channel, through the optics (the lens's point spread, then its
+// vignetting: both before the exposure is chosen, as a camera meters what reaches it).
 std::vector<std::vector<float>> optical_planes(const renderer::Film& film,
                                                const renderer::SensorModel& m,
+                                               const renderer::ImageField& field,
                                                const std::string& stem) {
   std::vector<std::vector<float>> planes;
   for (const renderer::SensorChannel& c : m.channels) {
@@ -45,6 +49,7 @@ std::vector<std::vector<float>> optical_planes(const renderer::Film& film,
                       stem, photon_layer(c.name), c.name));
     std::vector<float> plane = film.band_data(static_cast<int>(it - names.begin()));
     renderer::apply_optics(plane, film.width(), film.height(), c.wavelength_nm, m);
+    renderer::apply_vignetting(plane, film.width(), film.height(), field, m.vignetting);
     planes.push_back(std::move(plane));
   }
   return planes;
@@ -107,7 +112,9 @@ nlohmann::json sensor_json(const renderer::SensorModel& m) {
                       {"black_level_dn", m.black_level_dn},
                       {"blur_sigma_um", m.blur_sigma_um},
                       {"noise_seed", m.noise_seed},
-                      {"pixel_etendue_m2_sr", renderer::pixel_etendue(m)}};
+                      {"pixel_etendue_m2_sr", renderer::pixel_etendue(m)},
+                      {"natural_vignetting", m.vignetting.natural},
+                      {"lens_vignetting", m.vignetting.lens}};
   j["exposure_time_s"] =
       m.exposure_time_s ? nlohmann::json(*m.exposure_time_s) : nlohmann::json("auto");
   if (m.iso) j["iso"] = *m.iso;
@@ -135,6 +142,10 @@ renderer::SensorModel sensor_from_json(const nlohmann::json& j, const std::strin
     const nlohmann::json& t = j.at("exposure_time_s");
     if (t.is_number()) m.exposure_time_s = t.get<double>();
     if (j.contains("iso")) m.iso = j.at("iso").get<double>();
+    // Sets rendered before vignetting was modelled have neither key: no vignetting.
+    m.vignetting.natural = j.value("natural_vignetting", false);
+    if (j.contains("lens_vignetting"))
+      m.vignetting.lens = j.at("lens_vignetting").get<std::array<double, 3>>();
     if (m.adc_bits < 8 || m.adc_bits > 16 || m.channels.empty() || !(m.f_number > 0.0) ||
         !(m.pixel_pitch_um > 0.0) || !(m.gain_e_per_dn > 0.0))
       throw std::out_of_range("values out of range");
@@ -144,11 +155,48 @@ renderer::SensorModel sensor_from_json(const nlohmann::json& j, const std::strin
   }
 }
 
+renderer::ImageField image_field(const nlohmann::json& camera, const std::string& source) {
+  try {
+    const int w = camera.at("width").get<int>(), h = camera.at("height").get<int>();
+    renderer::ImageField f;
+    const std::string projection = camera.at("projection").get<std::string>();
+    const auto known = renderer::projection_from_name(projection);
+    if (!known) throw std::out_of_range("projection \"" + projection + "\"");
+    f.projection = *known;
+    // Without K (orthographic, spherical) the lens polynomial centres on the image.
+    f.cx = 0.5 * w;
+    f.cy = 0.5 * h;
+    double sensor_w = w, sensor_h = h;
+    if (camera.contains("K")) {
+      const nlohmann::json& k = camera.at("K");
+      f.fx = k.at(0).at(0).get<double>();
+      f.fy = k.at(1).at(1).get<double>();
+      // K's pixel centres sit on integers; landsim's on halves.
+      f.cx = k.at(0).at(2).get<double>() + 0.5;
+      f.cy = k.at(1).at(2).get<double>() + 0.5;
+    }
+    if (camera.contains("sensor_region")) {
+      const nlohmann::json& pixels = camera.at("sensor_region").at("sensor_pixels");
+      sensor_w = pixels.at(0).get<double>();
+      sensor_h = pixels.at(1).get<double>();
+    }
+    f.half_diagonal_px = 0.5 * std::hypot(sensor_w, sensor_h);
+    if (camera.contains("distortion")) {
+      const nlohmann::json& d = camera.at("distortion");
+      f.distortion = {d.at("k1").get<double>(), d.at("k2").get<double>(), d.at("k3").get<double>(),
+                      d.at("p1").get<double>(), d.at("p2").get<double>()};
+    }
+    return f;
+  } catch (const std::exception& e) {
+    throw InputError(source + ": its camera model is not one landsim wrote (" + e.what() + ")");
+  }
+}
+
 nlohmann::json write_sensor_image(const renderer::Film& film, const renderer::SensorModel& m,
                                   const std::filesystem::path& dir, const std::string& stem,
                                   const SensorPlacement& placement) {
   const int w = film.width(), h = film.height();
-  const std::vector<std::vector<float>> planes = optical_planes(film, m, stem);
+  const std::vector<std::vector<float>> planes = optical_planes(film, m, placement.field, stem);
   std::vector<const std::vector<float>*> pointers;
   for (const auto& p : planes) pointers.push_back(&p);
   const double exposure =
@@ -184,6 +232,17 @@ struct RenderedSensor {
   SensorPlacement placement;
 };
 
+// The EXR's "camera" attribute (camera_json of its view).
+nlohmann::json camera_attribute(const renderer::ImageMetadata& meta, const std::string& source) {
+  for (const auto& [key, value] : meta) {
+    if (key != "camera") continue;
+    const nlohmann::json j = nlohmann::json::parse(value, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) break;
+    return j;
+  }
+  throw InputError(source + ": it holds no camera model (landsim/camera) for the sensor's field");
+}
+
 std::optional<RenderedSensor> rendered_sensor(const renderer::ImageMetadata& meta,
                                               const std::string& source) {
   for (const auto& [key, value] : meta) {
@@ -192,6 +251,7 @@ std::optional<RenderedSensor> rendered_sensor(const renderer::ImageMetadata& met
     if (j.is_discarded() || !j.is_object())
       throw InputError(source + ": its sensor attribute is not a JSON object");
     RenderedSensor out{sensor_from_json(j, source), {}};
+    out.placement.field = image_field(camera_attribute(meta, source), source);
     try {
       if (j.contains("geotransform"))
         out.placement.geotransform = j["geotransform"].get<std::array<double, 6>>();

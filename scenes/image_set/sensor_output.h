@@ -18,15 +18,23 @@ namespace landsim::scenes {
 // The file name write_sensor_image gives an image: <stem>_dn.tif, or .png for 8 bits.
 std::string sensor_image_name(const std::string& stem, const renderer::SensorModel& m);
 
-// Where a sensor image sits in the terrain's CRS (map views only).
+// Where a sensor image sits: in the terrain's CRS (map views only), and behind which lens
+// (the field its vignetting needs).
 struct SensorPlacement {
   std::optional<std::array<double, 6>> geotransform;
   std::string crs_wkt;
+  renderer::ImageField field;
 };
 
-// Writes dir/<stem>_dn.tif (or .png) from `film` (which holds the model's photon layers) and
-// returns the manifest's "sensor" entry: the model, the exposure used, each channel's MTF.
-// Throws InputError naming the image when a channel's layer is missing.
+// The field of a view's camera model as camera_json describes it (the manifest's and the
+// EXR's "camera"): its projection, K, distortion and the whole sensor's size. Throws
+// InputError naming `source` when the description is not landsim's.
+renderer::ImageField image_field(const nlohmann::json& camera, const std::string& source);
+
+// Writes dir/<stem>_dn.tif (or .png) from `film` (which holds the model's photon layers),
+// vignetted over placement.field when the model asks, and returns the manifest's "sensor" entry:
+// the model, the exposure used, each channel's MTF. Throws InputError naming the image when a
+// channel's layer is missing.
 nlohmann::json write_sensor_image(const renderer::Film& film, const renderer::SensorModel& m,
                                   const std::filesystem::path& dir, const std::string& stem,
                                   const SensorPlacement& placement = {});

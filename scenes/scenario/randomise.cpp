@@ -21,7 +21,8 @@ std::string number_text(double v, bool integer) {
 std::string draw(const RandomKey& k, const CounterRng& rng) {
   if (k.kind == RandomKey::Kind::choose) {
     const auto n = k.choices.size();
-    return k.choices[std::min(n - 1, static_cast<std::size_t>(rng.uniform(0) * n))];
+    return k.choices[std::min(n - 1,
+                              static_cast<std::size_t>(rng.uniform(0) * static_cast<double>(n)))];
   }
   std::vector<std::string> parts;
   for (std::size_t c = 0; c < k.hi.size(); ++c) {

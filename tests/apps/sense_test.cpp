@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -119,6 +120,65 @@ TEST(CliSense, RefusesChannelsNotRenderedAndSetsWithoutASensor) {
   const auto q = testing::run_landsim("sense " + plain.string() + " --sensor " + xyz.string(), dir);
   EXPECT_EQ(q.exit_code, 2);
   EXPECT_NE(q.err.find("rendered without [sensor]"), std::string::npos) << q.err;
+}
+
+// A sensor behind a vignetting lens, applied by `sense` to a rendered set: each block of
+// digital numbers falls by the fall-off written out here from the EXR's camera model (K), the
+// natural cos^4 of the field angle times the lens's 1 + k1 r^2 (r = 1 at the corner).
+TEST(CliSense, VignettingDarkensEachPixelByItsFieldAngle) {
+  TempDir dir;
+  const auto set = dir / "set";
+  ASSERT_EQ(
+      testing::run_landsim(std::string("render ") + kSensorSets + " --out " + set.string(), dir)
+          .exit_code,
+      0);
+  const std::string model = "[sensor]\nadc_bits = 12\nexposure_time = 0.0004\nread_noise = 0\n";
+  const auto plain = dir.write("plain.toml", model);
+  const auto vignetting = dir.write(
+      "vignetting.toml", model + "natural_vignetting = true\nlens_vignetting = [-0.2, 0, 0]\n");
+  for (const char* name : {"plain", "vignetting"}) {
+    const auto r =
+        testing::run_landsim("sense " + set.string() + " --sensor " + (dir / name).string() +
+                                 ".toml --out " + (dir / name).string(),
+                             dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  int channels = 0;
+  const std::vector<std::uint16_t> flat =
+      digital_numbers(dir / "plain" / "crater_dn.tif", channels);
+  const std::vector<std::uint16_t> dark =
+      digital_numbers(dir / "vignetting" / "crater_dn.tif", channels);
+  const auto manifest = nlohmann::json::parse(testing::read_file(set / "manifest.json"));
+  const auto& camera = manifest["images"][0]["camera"];
+  const int w = camera["width"], h = camera["height"];
+  const double f = camera["K"][0][0], cx = camera["K"][0][2], cy = camera["K"][1][2];
+  const double half_diagonal = 0.5 * std::hypot(w, h);
+  ASSERT_EQ(flat.size(), static_cast<std::size_t>(w) * h * 3);
+  // Blocks of 6 x 6 pixels: the corners, an edge and the centre.
+  for (const auto& [x0, y0] :
+       {std::pair{0, 0}, {w - 6, h - 6}, {0, h / 2 - 3}, {w / 2 - 3, h / 2 - 3}}) {
+    double sum_flat = 0.0, sum_dark = 0.0, expected = 0.0;
+    for (int y = y0; y < y0 + 6; ++y) {
+      for (int x = x0; x < x0 + 6; ++x) {
+        const double dx = x - cx, dy = y - cy;  // OpenCV's pixel centres
+        const double cos_theta = f / std::sqrt(f * f + dx * dx + dy * dy);
+        const double r2 = (dx * dx + dy * dy) / (half_diagonal * half_diagonal);
+        const double fall_off = std::pow(cos_theta, 4) * (1.0 - 0.2 * r2);
+        for (int c = 0; c < 3; ++c) {
+          const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 3 + c;
+          sum_flat += flat[i];
+          sum_dark += dark[i];
+          expected += fall_off * flat[i];
+        }
+      }
+    }
+    ASSERT_GT(sum_flat, 36 * 3 * 50.0) << x0 << ", " << y0;
+    EXPECT_NEAR(sum_dark / expected, 1.0, 0.02) << "block at " << x0 << ", " << y0;
+  }
+  const auto sensed =
+      nlohmann::json::parse(testing::read_file(dir / "vignetting" / "manifest.json"));
+  EXPECT_EQ(sensed["images"][0]["sensor"]["natural_vignetting"], true);
+  EXPECT_EQ(sensed["images"][0]["sensor"]["lens_vignetting"][0], -0.2);
 }
 
 // The rays a render traced, from its --json report.

@@ -35,6 +35,21 @@ std::optional<double> read_exposure_time(TableReader& r, std::optional<double> f
   return *t;
 }
 
+// natural_vignetting (the ideal lens's fall-off) and lens_vignetting (lensfun's "pa"
+// polynomial, k1 k2 k3): a polynomial that reaches zero inside the frame is refused.
+void read_vignetting(TableReader& r, renderer::VignettingModel& v) {
+  v.natural = r.boolean("natural_vignetting", v.natural);
+  const std::vector<double> k = r.numbers("lens_vignetting", 3, Range{-100.0, 100.0},
+                                          std::vector<double>(v.lens.begin(), v.lens.end()));
+  std::copy(k.begin(), k.end(), v.lens.begin());
+  const double least = renderer::lens_polynomial_minimum(v.lens, 1.0);
+  if (!(least > 0.0))
+    r.fail("lens_vignetting",
+           fmt::format("1 + k1 r^2 + k2 r^4 + k3 r^6 falls to {:.3g} inside the frame (r = 1 "
+                       "at the sensor's corner); a lens's relative illumination stays above 0",
+                       least));
+}
+
 // Every key but the channels, each defaulting to `m`'s value.
 void read_model(TableReader& r, renderer::SensorModel& m) {
   m.quantum_efficiency =
@@ -54,6 +69,7 @@ void read_model(TableReader& r, renderer::SensorModel& m) {
   m.read_noise_e = r.number("read_noise", Range{0.0, 1e4}, m.read_noise_e);
   m.dark_current_e_per_s = r.number("dark_current", Range{0.0, 1e8}, m.dark_current_e_per_s);
   m.blur_sigma_um = r.number("blur_sigma", Range{0.0, 1000.0}, m.blur_sigma_um);
+  read_vignetting(r, m.vignetting);
   m.noise_seed = static_cast<std::uint64_t>(
       r.integer("noise_seed", 0, INT64_MAX, static_cast<std::int64_t>(m.noise_seed)));
   const std::size_t n = m.channels.size();

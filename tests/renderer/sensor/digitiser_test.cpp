@@ -136,14 +136,16 @@ TEST(Digitiser, NoiseSeedAloneChangesTheNoise) {
   const auto b = digitise(field, kSide, kSide, 0.003, m, "view", 0);
   EXPECT_NE(a, b);
   // ...and nothing else: the means agree within their noise.
-  EXPECT_NEAR(moments(a).mean, moments(b).mean, 5.0 * std::sqrt(moments(a).variance / a.size()));
+  EXPECT_NEAR(moments(a).mean, moments(b).mean,
+              5.0 * std::sqrt(moments(a).variance / static_cast<double>(a.size())));
 }
 
 TEST(Digitiser, AutoExposureFillsEightyPercentOfTheWell) {
   SensorModel m = test_sensor();
   std::vector<float> ramp(100 * 100);
   for (std::size_t i = 0; i < ramp.size(); ++i)
-    ramp[i] = static_cast<float>(kFlatField * static_cast<double>(i) / ramp.size());
+    ramp[i] =
+        static_cast<float>(kFlatField * static_cast<double>(i) / static_cast<double>(ramp.size()));
   const double t = auto_exposure_time({&ramp}, m);
   // The 99th percentile of the ramp at 80% of the well.
   EXPECT_NEAR(expected_electrons(m, kFlatField * 0.99, t) / m.full_well_e, 0.8, 0.002);

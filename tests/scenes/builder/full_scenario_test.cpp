@@ -366,10 +366,12 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
                              "pixel_pitch = 4.0\nexposure_time = \"auto\"\nf_number = 5.6\n"
                              "transmittance = 0.9\ngain = 1.5\nfull_well = 20000\n"
                              "read_noise = 3.0\ndark_current = 10\nadc_bits = 14\n"
-                             "black_level = 64\nblur_sigma = 1.0\nnoise_seed = 7\n";
+                             "black_level = 64\nblur_sigma = 1.0\nnoise_seed = 7\n"
+                             "natural_vignetting = true\nlens_vignetting = [-0.1, 0.0, 0.0]\n";
   const Scenario with_sensor = load_scenario(f.dir.write("sensor.toml", sensor));
   EXPECT_DOUBLE_EQ(*with_sensor.views[0].sensor->exposure_time_s, 0.002);
   EXPECT_EQ(with_sensor.views[0].sensor->black_level_dn, 64);
+  EXPECT_TRUE(with_sensor.views[0].sensor->vignetting.natural);
   const std::string iso = sensor_view + "[sensor]\niso = 400\n";
   EXPECT_DOUBLE_EQ(*load_scenario(f.dir.write("iso.toml", iso)).sensor->model.iso, 400.0);
   // The haze's medium keys (docs/ATMOSPHERE.md): an aerosol of tabulated phase, and the

@@ -116,7 +116,9 @@ TEST(ObjectSiting, TheDetectionExampleShowsEveryTargetInItsImage) {
   Scenario s = load_scenario(testing::source_file("scenes/examples/detection_set.toml"));
   ASSERT_TRUE(s.randomise.has_value());
   EXPECT_EQ(s.randomise->images, 50);
-  apply_render_choices(s, {.spp = 2});
+  RenderChoices choices;
+  choices.spp = 2;
+  apply_render_choices(s, choices);
   ImageSetOptions options;
   options.write_files = false;
   options.task_index = 0;

@@ -128,10 +128,11 @@ TEST(Randomise, BadEntriesAndRefusedDrawsAreNamed) {
     randomised_scenario(s, 2);
     FAIL() << "a sun 100 degrees high was drawn";
   } catch (const InputError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("[randomise] image 2 drew a value the scenario refuses"), std::string::npos)
-        << m;
-    EXPECT_NE(m.find("[sun] elevation"), std::string::npos) << m;
+    const std::string message = e.what();
+    EXPECT_NE(message.find("[randomise] image 2 drew a value the scenario refuses"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("[sun] elevation"), std::string::npos) << message;
   }
 }
 

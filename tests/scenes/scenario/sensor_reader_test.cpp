@@ -98,6 +98,26 @@ TEST(SensorReader, TheLensSharesItsFNumberAndPitch) {
   EXPECT_NE(p.find("pixel_pitch 3 um differs"), std::string::npos) << p;
 }
 
+// Vignetting is off unless asked for; a view may ask for its own lens's.
+TEST(SensorReader, VignettingIsReadAndAPolynomialThatDarkensToNothingRefused) {
+  const Scenario none = parse("", "[sensor]");
+  EXPECT_FALSE(none.views[0].sensor->vignetting.any());
+  const Scenario s = parse("sensor = { lens_vignetting = [-0.4, 0.1, 0.0] }",
+                           "[sensor]\nnatural_vignetting = true");
+  const renderer::VignettingModel& v = s.views[0].sensor->vignetting;
+  EXPECT_TRUE(v.natural);
+  EXPECT_EQ(v.lens, (std::array<double, 3>{-0.4, 0.1, 0.0}));
+  EXPECT_FALSE(s.sensor->model.vignetting.lens[0] != 0.0);  // [sensor]'s own has no polynomial
+  const std::string e = error_of("", "[sensor]\nlens_vignetting = [-0.7, -0.5, 0]");
+  EXPECT_NE(e.find("lens_vignetting: 1 + k1 r^2 + k2 r^4 + k3 r^6 falls to -0.2"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(error_of("", "[sensor]\nlens_vignetting = [-0.2]").find("lens_vignetting"),
+            std::string::npos);
+  EXPECT_NE(error_of("", "[sensor]\nnatural_vignetting = 1").find("natural_vignetting"),
+            std::string::npos);
+}
+
 TEST(SensorReader, RefusalsNameTheKey) {
   const auto refused = [](const std::string& rest, const std::string& what) {
     const std::string e = error_of("", rest);
