@@ -1,11 +1,13 @@
 """The docs' snippets and statements about the files run as written: OUTPUTS.md's OpenImageIO
-reader of an EXR's ids, CAMERAS.md's frame of the EXR's worldToCamera."""
+reader of an EXR's ids, SENSOR.md's NDVI reader, the Python snippets of README.md, USING.md and
+PYTHON.md (their renders made small; PYTHON.md's batch in test_docs_batch.py), CAMERAS.md's frame of the EXR's worldToCamera."""
+import json
 import os
 import re
 
 import numpy as np
 
-from conftest import SOURCE_DIR, run_cli
+from conftest import SOURCE_DIR, fenced, read_exr, run_cli, run_in, source_path
 
 
 def snippet(doc, starts):
@@ -16,6 +18,38 @@ def snippet(doc, starts):
         if lines[0].startswith(starts):
             return "\n".join(lines)
     raise AssertionError(f"no snippet starting {starts!r} in {doc}")
+
+
+def test_sensor_ndvi_snippet_reads_the_reflectance_layers(tmp_path):
+    run_cli("render", source_path("scenes/examples/ndvi.toml"), "--view", "overview", "--width",
+            "64", "--spp", "2", "--out", str(tmp_path / "out"))
+    names = {}
+    run_in(tmp_path, fenced("docs/SENSOR.md", "import OpenImageIO as oiio, numpy"), names)
+    ndvi = names["ndvi"]
+    layers = read_exr(tmp_path / "out" / "overview.exr")
+    assert ndvi.shape == layers["R"].shape
+    assert np.all(np.abs(ndvi) <= 1.0)
+    leaf = layers["object"] == 3  # the legend's leaf (checked below)
+    assert leaf.sum() > 20, "too few leaf pixels to judge"
+    assert np.median(ndvi[leaf]) > 0.6, np.median(ndvi[leaf])
+
+
+def test_python_snippets_run_as_written(tmp_path, small_renders):
+    # README.md and USING.md: one image of the default scene; USING.md also writes a set.
+    names = {}
+    run_in(tmp_path, fenced("README.md", "import landsim"), names)
+    assert names["image"].rgb.shape == (18, 32, 3)
+    names = {}
+    run_in(tmp_path, fenced("docs/USING.md", "import landsim"), names)
+    manifest = json.load(open(tmp_path / "out30" / "manifest.json"))
+    assert len(manifest["images"]) == len(names["s"].views)
+    # PYTHON.md's tour of the API, from the source folder (it loads an example by its path).
+    names = {}
+    run_in(SOURCE_DIR, fenced("docs/PYTHON.md", "import landsim"), names)
+    image = names["image"]
+    assert image.rgb.shape[1] == 32 and image.rgb.shape[2] == 3
+    assert image.manifest["camera"]["width"] == 32
+    assert names["s"].views[0] != "" and "highlands" in names["s"].views
 
 
 def test_outputs_reading_snippet_reads_ids_exactly(tmp_path):
