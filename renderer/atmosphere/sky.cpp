@@ -12,16 +12,9 @@
 namespace landsim::renderer {
 namespace {
 
-constexpr int kRows = 64;   // theta from 0 to pi
-constexpr int kCols = 128;  // phi from 0 to 2 pi
 constexpr float kPi = std::numbers::pi_v<float>;
 constexpr double kCdPerKcd = 1000.0;  // Preetham's luminance unit is kcd/m2
 constexpr int kSunDiscSteps = 64;     // the disc's radiance profile, by mu
-
-Vec3f direction_of(float theta, float phi) {
-  const float s = std::sin(theta);
-  return {s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
-}
 
 float luminance(const Vec3f& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
@@ -34,7 +27,7 @@ auto upper_hemisphere_integral(int steps, F&& f) {
     const float theta = 0.5f * kPi * (static_cast<float>(i) + 0.5f) / static_cast<float>(steps);
     for (int j = 0; j < 2 * steps; ++j) {
       const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / static_cast<float>(2 * steps);
-      sum += f(direction_of(theta, phi)) * std::sin(theta);
+      sum += f(DirectionTable::direction_of(theta, phi)) * std::sin(theta);
     }
   }
   const float cell = (0.5f * kPi / static_cast<float>(steps)) * (kPi / static_cast<float>(steps));
@@ -46,7 +39,7 @@ auto upper_hemisphere_integral(int steps, F&& f) {
 namespace {
 
 // No sky is a gradient of nothing: every direction above the horizon dark, so the sun is the
-// only light (its sampling table stays valid: build_table's floor keeps it uniform).
+// only light (its sampling table stays valid: DirectionTable's floor keeps it uniform).
 Sky dark_if_none(Sky sky) {
   if (sky.model != SkyKind::none) return sky;
   sky.model = SkyKind::gradient;
@@ -76,7 +69,7 @@ SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
       upper_hemisphere_integral(kSteps, [&](const Vec3f& d) { return above_horizon(d); }) *
       (1.0f / (2.0f * kPi));
   mean_radiance_ = (upper + below_horizon_) * 0.5f;
-  build_table();
+  table_ = DirectionTable([&](const Vec3f& d) { return luminance(radiance(d)); });
   build_spectra(sun, elevation, ground_albedo);
 }
 
@@ -279,73 +272,9 @@ Vec3f SkyModel::radiance(const Vec3f& direction) const {
   return direction.z >= 0.0f ? above_horizon(direction) : below_horizon_;
 }
 
-void SkyModel::build_table() {
-  weights_.resize(kRows * kCols);
-  row_cdf_.assign(kRows + 1, 0.0f);
-  cell_cdf_.assign(kRows * (kCols + 1), 0.0f);
-  // A floor keeps every direction above the horizon sampleable, so MIS weights never divide
-  // by zero. It is
-  // relative to the sky's mean, so scaling the sky scales the table exactly and leaves the
-  // sampling decisions (and the image's linearity in light) untouched.
-  float mean = 0.0f;
-  for (int i = 0; i < kRows; ++i)
-    for (int j = 0; j < kCols; ++j)
-      mean +=
-          luminance(radiance(direction_of(kPi * (static_cast<float>(i) + 0.5f) / kRows,
-                                          2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols)));
-  const float floor = std::max(1e-3f * mean / (kRows * kCols), 1e-30f);
-  for (int i = 0; i < kRows; ++i) {
-    const float theta = kPi * (static_cast<float>(i) + 0.5f) / kRows;
-    float row = 0.0f;
-    for (int j = 0; j < kCols; ++j) {
-      const float phi = 2.0f * kPi * (static_cast<float>(j) + 0.5f) / kCols;
-      // Below the horizon the plain beyond the grid is a surface (renderer/transport/plain.h), met
-      // by the paths themselves, not a light to sample.
-      const float w = theta > 0.5f * kPi ? 0.0f
-                                         : (luminance(radiance(direction_of(theta, phi))) + floor) *
-                                               std::sin(theta);
-      weights_[static_cast<std::size_t>(i * kCols + j)] = w;
-      row += w;
-      cell_cdf_[static_cast<std::size_t>(i * (kCols + 1) + j + 1)] = row;
-    }
-    row_cdf_[static_cast<std::size_t>(i + 1)] = row_cdf_[static_cast<std::size_t>(i)] + row;
-  }
-  total_ = row_cdf_[kRows];
-}
+Vec3f SkyModel::sample(float u1, float u2, float& pdf) const { return table_.sample(u1, u2, pdf); }
 
-Vec3f SkyModel::sample(float u1, float u2, float& pdf) const {
-  const float target_row = u1 * total_;
-  const auto row_it = std::upper_bound(row_cdf_.begin() + 1, row_cdf_.end(), target_row);
-  const int i = std::clamp(static_cast<int>(row_it - row_cdf_.begin()) - 1, 0, kRows - 1);
-  const float row_start = row_cdf_[static_cast<std::size_t>(i)];
-  const float row_total = row_cdf_[static_cast<std::size_t>(i + 1)] - row_start;
-  const float fu =
-      row_total > 0.0f ? (target_row - row_start) / row_total : 0.5f;  // reused within the row
-  const float* cdf = &cell_cdf_[static_cast<std::size_t>(i * (kCols + 1))];
-  const float target_cell = u2 * row_total;
-  const int j = std::clamp(
-      static_cast<int>(std::upper_bound(cdf + 1, cdf + kCols + 1, target_cell) - cdf) - 1, 0,
-      kCols - 1);
-  const float w = weights_[static_cast<std::size_t>(i * kCols + j)];
-  const float fv = w > 0.0f ? (target_cell - cdf[j]) / w : 0.5f;
-  const float theta = kPi * (static_cast<float>(i) + std::clamp(fu, 0.0f, 1.0f)) / kRows;
-  const float phi = 2.0f * kPi * (static_cast<float>(j) + std::clamp(fv, 0.0f, 1.0f)) / kCols;
-  const Vec3f d = direction_of(theta, phi);
-  pdf = this->pdf(d);
-  return d;
-}
-
-float SkyModel::pdf(const Vec3f& d) const {
-  const float theta = std::acos(std::clamp(d.z, -1.0f, 1.0f));
-  float phi = std::atan2(d.y, d.x);
-  if (phi < 0.0f) phi += 2.0f * kPi;
-  const int i = std::clamp(static_cast<int>(theta / kPi * kRows), 0, kRows - 1);
-  const int j = std::clamp(static_cast<int>(phi / (2.0f * kPi) * kCols), 0, kCols - 1);
-  const float sin_theta = std::sin(kPi * (static_cast<float>(i) + 0.5f) / kRows);
-  const float pdf_uv = weights_[static_cast<std::size_t>(i * kCols + j)] / total_ * (kRows * kCols);
-  // Within a cell the table is uniform in (theta, phi): convert with the cell's sin(theta).
-  return pdf_uv / (2.0f * kPi * kPi * std::max(sin_theta, 1e-6f));
-}
+float SkyModel::pdf(const Vec3f& d) const { return table_.pdf(d); }
 
 namespace {
 

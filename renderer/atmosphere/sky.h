@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "renderer/atmosphere/direction_table.h"
 #include "renderer/scene.h"
 #include "renderer/spectra/spectrum.h"
 
@@ -63,7 +64,6 @@ class SkyModel {
  private:
   Vec3f above_horizon(const Vec3f& direction) const;
   Spectrum above_horizon_spectral(const Vec3f& direction) const;
-  void build_table();
   void build_spectra(const Sun& sun, double elevation, Vec3f ground_albedo);
 
   void build_sun_disc(const Sun& sun, double elevation);  // elevation in radians
@@ -88,11 +88,7 @@ class SkyModel {
   std::array<BinSource, kSpectrumBins> sky_bins_{};
   Spectrum sun_spectrum_, below_horizon_spectrum_;
   float sun_luminance_ = 0.0f;  // of sun_spectrum_
-  // Sampling table: rows of theta (0 = zenith), columns of phi.
-  std::vector<float> weights_;   // per cell
-  std::vector<float> row_cdf_;   // kRows + 1
-  std::vector<float> cell_cdf_;  // per row, kCols + 1
-  float total_ = 0.0f;
+  DirectionTable table_;        // sampling: luminance x solid angle
 };
 
 // Irradiance from the sun on a surface facing it (lux-scaled Rec. 709) under `sky`'s model:

@@ -81,6 +81,16 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
   for (int k = 0; k < kSpectrumBins; ++k)
     if (seen_bins_[k] > 0.0f)
       seen_.index[static_cast<std::size_t>(seen_.count++)] = static_cast<std::uint8_t>(k);
+  if (table_ && table_->has_sky()) {
+    // The hazy sky varies with height through the haze's profile; its shape seen from the
+    // plain is close enough everywhere to sample by (any density is unbiased).
+    const Vec3f from{0.0f, 0.0f, plain_.height};
+    hazy_table_ = DirectionTable([&](const Vec3f& d) {
+      if (d.z <= 0.0f) return 0.0f;
+      const Vec3f rgb = spectrum_to_rgb(surface_sky(from, d));
+      return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
+    });
+  }
 }
 
 std::optional<Hit> PathTracer::intersect(Ray& ray, std::uint32_t mask, double* travelled) const {
@@ -130,12 +140,12 @@ Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
                                float u1, float u2, const Spectrum& throughput, float u_roulette,
                                std::uint32_t& rays) const {
   float pdf = 0.0f;
-  const Vec3f l = sky_.sample(u1, u2, pdf);
+  const Vec3f l = sample_sky(u1, u2, pdf);
   bool front = false;
   const Spectrum f = bsdf.eval(s, l, front);
   if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
   const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
-  const Spectrum light = f * hazy_sky(origin, l) * (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
+  const Spectrum light = f * surface_sky(origin, l) * (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
   const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
   if (weight == 0.0f) return {};
   ++rays;
@@ -149,34 +159,18 @@ Spectrum PathTracer::hazy_sky(const Vec3f& origin, const Vec3f& l) const {
   return l_sky;
 }
 
-float PathTracer::aureole_pdf(const Vec3f& l) const {
-  return table_ && table_->has_sky() && l.z > 0.0f
-             ? table_->aureole_phase().eval(dot(l, sun_direction_))
-             : 0.0f;
+Spectrum PathTracer::surface_sky(const Vec3f& origin, const Vec3f& l) const {
+  Spectrum light = hazy_sky(origin, l);
+  if (hazy_table_ && l.z > 0.0f) light += table_->aureole(static_cast<double>(origin.z), l, seen_);
+  return light;
 }
 
-Spectrum PathTracer::aureole_light(const ShadingPoint& v, const Bsdf& bsdf,
-                                   const SpectralMaterial& s, const CounterRng& rng,
-                                   std::uint32_t dim, const Spectrum& throughput,
-                                   std::uint32_t& rays) const {
-  // A direction from the aureole's own shape (the aerosol's phase function about the sun);
-  // below the horizon it has none.
-  const std::array<float, 2> u = rng.uniform2(dim + kAureole0);
-  const Vec3f l = table_->aureole_phase().sample(sun_direction_, u[0], u[1]).direction;
-  const float pdf = aureole_pdf(l);
-  if (!(pdf > 0.0f)) return {};
-  bool front = false;
-  const Spectrum f = bsdf.eval(s, l, front);
-  if (max_component(f) <= 0.0f) return {};
-  const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
-  const Spectrum light = f * table_->aureole(static_cast<double>(origin.z), l, seen_) *
-                         (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
-  const float weight = shadow_roulette_weight(importance(throughput * light),
-                                              roulette(rng.uniform(dim + kAureoleRoulette)));
-  if (weight == 0.0f) return {};
-  ++rays;
-  if (occluded({origin, l}, v.mask)) return {};
-  return light * weight;
+Vec3f PathTracer::sample_sky(float u1, float u2, float& pdf) const {
+  return hazy_table_ ? hazy_table_->sample(u1, u2, pdf) : sky_.sample(u1, u2, pdf);
+}
+
+float PathTracer::sky_pdf(const Vec3f& l) const {
+  return hazy_table_ ? hazy_table_->pdf(l) : sky_.pdf(l);
 }
 
 Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
@@ -266,7 +260,7 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     ++out.rays;
     double travelled = 0.0;  // in a periodic cell, before the leg that hit
     const auto hit = intersect(ray, mask, &travelled);
-    Spectrum haze_sky, aureole;  // the hazy sky's own light along a diffuse ray into the sky
+    Spectrum haze_sky;  // the hazy sky's own light along a diffuse ray into the sky
     if (medium_.enabled()) {
       // The haze varies with height alone: its segment runs the whole way, every leg.
       const Ray whole{ray.origin - ray.direction * static_cast<float>(travelled), ray.direction};
@@ -277,8 +271,8 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
       const bool hazy_sky_ray = !hit && !last_specular && table_ && table_->has_sky();
       if (hazy_sky_ray) {
         const auto z = static_cast<double>(ray.origin.z);
-        haze_sky = throughput * table_->sky_rest(z, ray.direction);
-        aureole = throughput * table_->aureole(z, ray.direction, seen_);
+        haze_sky = throughput *
+                   (table_->sky_rest(z, ray.direction) + table_->aureole(z, ray.direction, seen_));
         throughput = throughput * segment.transmittance();
       } else if (segment.scatters()) {
         const std::array<float, 2> u = rng.uniform2(dim + kHaze);
@@ -317,10 +311,9 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
       }
     }
     if (!hit) {
-      const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_.pdf(ray.direction));
+      // The sky, the haze's light and the aureole are one light (surface_sky), sampled as one.
+      const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_pdf(ray.direction));
       radiance += (throughput * sky_.spectral_radiance(ray.direction) + haze_sky) * w;
-      if (!last_specular && max_component(aureole) > 0.0f)
-        radiance += aureole * power_heuristic(last_pdf, aureole_pdf(ray.direction));
       // The sun's disc is seen only along specular paths: every diffuse vertex already took
       // it by next-event estimation.
       if (last_specular && sun_disc)
@@ -340,7 +333,6 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     const std::array<float, 2> shadow = rng.uniform2(dim + kSunRoulette);  // sun's, sky's
     Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, shadow[0], out.rays);
     direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, shadow[1], out.rays);
-    if (table_ && table_->has_sky()) direct += aureole_light(v, bsdf, sm, rng, dim, seen, out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.

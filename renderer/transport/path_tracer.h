@@ -14,6 +14,7 @@
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
+#include "renderer/atmosphere/direction_table.h"
 #include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/camera.h"
@@ -94,12 +95,14 @@ class PathTracer : public Integrator {
   // The sky seen from `origin` along `l` through the haze: its radiance transmitted and, with
   // the scattering table, the haze's own light along the way.
   Spectrum hazy_sky(const Vec3f& origin, const Vec3f& l) const;
-  // The hazy sky's aureole at a surface vertex, by its own next-event estimation (combined
-  // with the BSDF's sampling), and the density of that sampling.
-  Spectrum aureole_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
-                         const CounterRng& rng, std::uint32_t dim, const Spectrum& throughput,
-                         std::uint32_t& rays) const;
-  float aureole_pdf(const Vec3f& l) const;
+  // Everything a surface at `origin` receives from the sky along `l`: hazy_sky and, with the
+  // hazy sky's table, the haze's aureole about the sun. One light, sampled as one: a single
+  // shadow ray per vertex for the sky, the haze's light and the aureole together.
+  Spectrum surface_sky(const Vec3f& origin, const Vec3f& l) const;
+  // A direction for that light's next-event estimation, and its density: in proportion to
+  // the hazy sky's luminance seen from the plain's height (hazy_table_), else the sky's.
+  Vec3f sample_sky(float u1, float u2, float& pdf) const;
+  float sky_pdf(const Vec3f& l) const;
   // Transmittance from `origin` along `l` into the sky.
   Spectrum to_sky(const Vec3f& origin, const Vec3f& l) const;
   ShadowRoulette roulette(float u) const { return {roulette_threshold_, u}; }
@@ -122,6 +125,8 @@ class PathTracer : public Integrator {
   int bounce_limit_;
   // HazeScattering::table: the haze's light but the sun's single scattering; null: traced.
   std::shared_ptr<const ScatteringTable> table_;
+  // With the table's hazy sky: surface_sky's luminance from the plain's height, to sample by.
+  std::optional<DirectionTable> hazy_table_;
 };
 
 }  // namespace landsim::renderer

@@ -34,10 +34,6 @@ enum Dim : std::uint32_t {
   kHazeContinue,  // whether the path goes on from the haze point or through to the surface
   kRoulette,
   kFresnel,  // a surface's mirror choice, or which haze component scatters
-  kUnused,
-  kAureole0,  // the hazy sky's aureole (renderer/transport/scattering_table.h)
-  kAureole1,
-  kAureoleRoulette,
 };
 
 // Pairs drawn together (CounterRng::uniform2: one Sobol pair) start at an even dimension.
@@ -46,6 +42,6 @@ static_assert(kSun0 % 2 == 0 && kSky0 % 2 == 0 && kChoice % 2 == 0 && kDir == kC
 static_assert(kSunRoulette % 2 == 0 && kSkyRoulette == kSunRoulette + 1);
 static_assert(kHaze % 2 == 0 && kHazeDistance == kHaze + 1);
 static_assert(kHazeSun0 % 2 == 0 && kHazeSky0 % 2 == 0 && kHazeSunRoulette % 2 == 0);
-static_assert(kAureole0 % 2 == 0 && kAureoleRoulette < kDimsPerBounce);
+static_assert(kFresnel < kDimsPerBounce);
 
 }  // namespace landsim::renderer::detail
