@@ -43,6 +43,7 @@ namespace {
 constexpr int kCols = 16, kRows = 9, kBlock = 6;  // 96 x 54 pixels
 
 // Luminance means of kRows x kCols blocks of kBlock x kBlock pixels, row by row.
+// clang-format off: a row of the image a line
 constexpr std::array<double, kCols* kRows> kPinned = {
     7142,    7079.45, 7047.23, 7050.84, 7122.94, 7272.92, 7483.58, 7766.53, 8125.46, 8583.71,
     9197.74, 9910.78, 10714.5, 11614.2, 12579.8, 13626.6, 7907.99, 7887.35, 7895.45, 7944.36,
@@ -60,6 +61,7 @@ constexpr std::array<double, kCols* kRows> kPinned = {
     2342.3,  2409.99, 2541.14, 2452.37, 2467.75, 3378.9,  4450.8,  4484.41, 3993.16, 3510.94,
     2141.3,  2273.65, 2417.12, 3703.14,
 };
+// clang-format on
 
 std::array<double, kCols * kRows> digest(const renderer::Film& film) {
   std::array<double, kCols * kRows> blocks{};
