@@ -1,10 +1,13 @@
 // Noise of a render, from two renders that differ only in their seed (bench/spectral.sh): the
 // RMS of the two images' luminance difference over sqrt(2) (each image's own noise), relative
-// to the mean luminance, over the pixels that are not sky; the same for each band layer both
-// hold. Not a benchmark (prints once): usage exr_noise a.exr b.exr
+// to the mean luminance, over the pixels that are not sky, then the RMS itself and the mean
+// (in the layer's unit: an image whose mean moved is compared at equal absolute error too);
+// the same for each band layer both hold. Not a benchmark (prints once): usage exr_noise a.exr
+// b.exr
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "renderer/output/image_output.h"
 
@@ -12,8 +15,12 @@ namespace {
 
 using landsim::renderer::Film;
 
+struct Noise {
+  double rms = 0.0, mean = 0.0;
+};
+
 template <typename Value>
-double relative_noise(const Film& a, const Film& b, Value value) {
+Noise noise(const Film& a, const Film& b, Value value) {
   double diff = 0.0, sum = 0.0;
   std::size_t n = 0;
   for (int y = 0; y < a.height(); ++y)
@@ -24,8 +31,13 @@ double relative_noise(const Film& a, const Film& b, Value value) {
       sum += 0.5 * (va + vb);
       ++n;
     }
-  if (n == 0 || sum <= 0.0) return 0.0;
-  return std::sqrt(diff / static_cast<double>(n) / 2.0) / (sum / static_cast<double>(n));
+  if (n == 0 || sum <= 0.0) return {};
+  return {std::sqrt(diff / static_cast<double>(n) / 2.0), sum / static_cast<double>(n)};
+}
+
+void print(const char* name, const Noise& n) {
+  std::printf("%s %.4f rms %.4g mean %.4g\n", name, n.mean > 0.0 ? n.rms / n.mean : 0.0, n.rms,
+              n.mean);
 }
 
 }  // namespace
@@ -41,10 +53,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "exr_noise: the images differ in size or bands\n");
     return 2;
   }
-  std::printf("luminance %.4f\n",
-              relative_noise(a, b, [](const Film& f, int x, int y) { return f.luminance(x, y); }));
+  print("luminance", noise(a, b, [](const Film& f, int x, int y) { return f.luminance(x, y); }));
   for (int k = 0; k < a.band_count(); ++k)
-    std::printf("band.%s %.4f\n", a.band_name(k).c_str(),
-                relative_noise(a, b, [k](const Film& f, int x, int y) { return f.band(x, y, k); }));
+    print(("band." + a.band_name(k)).c_str(),
+          noise(a, b, [k](const Film& f, int x, int y) { return f.band(x, y, k); }));
   return 0;
 }
