@@ -161,7 +161,8 @@ Spectrum PathTracer::hazy_sky(const Vec3f& origin, const Vec3f& l) const {
 
 Spectrum PathTracer::surface_sky(const Vec3f& origin, const Vec3f& l) const {
   Spectrum light = hazy_sky(origin, l);
-  if (hazy_table_ && l.z > 0.0f) light += table_->aureole(static_cast<double>(origin.z), l, seen_);
+  if (table_ && table_->has_sky() && l.z > 0.0f)
+    light += table_->aureole(static_cast<double>(origin.z), l, seen_);
   return light;
 }
 

@@ -39,14 +39,11 @@ class ScatteringTable {
   bool has_sky() const { return has_sky_; }
   // The haze's own light arriving at height z along a ray that leaves upward into the sky
   // along d (the sky's transmitted radiance and the sun's beam excluded), in two parts: its
-  // sunlight scattered once, in closed form (the aureole: bright about the sun, sampled by
-  // its own next-event estimation), and the rest, from the table by quadrature along the
-  // ray. What surfaces receive from the hazy sky besides the sky itself.
-  // In `bins` only (zero elsewhere).
+  // sunlight scattered once, in closed form (the aureole: bright about the sun), and the rest, from
+  // the table by quadrature along the ray. What surfaces receive from the hazy sky besides the sky
+  // itself. In `bins` only (zero elsewhere).
   Spectrum aureole(double z, const Vec3f& d, const BinSet& bins) const;
   Spectrum sky_rest(double z, const Vec3f& d) const;
-  // The aerosol's phase function about the sun: the aureole's shape, to sample it by.
-  const PhaseFunction& aureole_phase() const { return aerosol_.phase; }
 
   static constexpr int kHeights = 9, kCosines = 13, kAzimuths = 7;
 

@@ -26,6 +26,12 @@ constexpr const char* kSensorSets =
     "--spp 2 --width 48 --set sensor.adc_bits=12 --set sensor.exposure_time=0.0004 "
     "--set render.reflectance=true";
 
+// The default scene rendered with kSensorSets into dir/set.
+testing::ProgramResult render_sensor_set(const TempDir& dir) {
+  return testing::run_landsim(
+      std::string("render ") + kSensorSets + " --out " + (dir / "set").string(), dir);
+}
+
 std::vector<std::uint16_t> digital_numbers(const std::filesystem::path& tif, int& channels) {
   auto in = OIIO::ImageInput::open(tif.string());
   EXPECT_TRUE(in) << tif;
@@ -41,8 +47,7 @@ std::vector<std::uint16_t> digital_numbers(const std::filesystem::path& tif, int
 TEST(CliSense, RenderWritesDigitalNumbersAndSenseReproducesThem) {
   TempDir dir;
   const auto set = dir / "set";
-  const auto r =
-      testing::run_landsim(std::string("render ") + kSensorSets + " --out " + set.string(), dir);
+  const auto r = render_sensor_set(dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto manifest = nlohmann::json::parse(testing::read_file(set / "manifest.json"));
   const auto& image = manifest["images"][0];
@@ -97,10 +102,7 @@ TEST(CliSense, RenderWritesDigitalNumbersAndSenseReproducesThem) {
 TEST(CliSense, RefusesChannelsNotRenderedAndSetsWithoutASensor) {
   TempDir dir;
   const auto set = dir / "set";
-  ASSERT_EQ(
-      testing::run_landsim(std::string("render ") + kSensorSets + " --out " + set.string(), dir)
-          .exit_code,
-      0);
+  ASSERT_EQ(render_sensor_set(dir).exit_code, 0);
   const auto xyz = dir.write("xyz.toml", "[sensor]\nchannels = \"xyz\"\n");
   const auto r = testing::run_landsim("sense " + set.string() + " --sensor " + xyz.string(), dir);
   EXPECT_EQ(r.exit_code, 2);
@@ -128,10 +130,7 @@ TEST(CliSense, RefusesChannelsNotRenderedAndSetsWithoutASensor) {
 TEST(CliSense, VignettingDarkensEachPixelByItsFieldAngle) {
   TempDir dir;
   const auto set = dir / "set";
-  ASSERT_EQ(
-      testing::run_landsim(std::string("render ") + kSensorSets + " --out " + set.string(), dir)
-          .exit_code,
-      0);
+  ASSERT_EQ(render_sensor_set(dir).exit_code, 0);
   const std::string model = "[sensor]\nadc_bits = 12\nexposure_time = 0.0004\nread_noise = 0\n";
   const auto plain = dir.write("plain.toml", model);
   const auto vignetting = dir.write(
