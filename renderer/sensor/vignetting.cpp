@@ -80,7 +80,8 @@ void apply_vignetting(std::vector<float>& plane, int width, int height, const Im
       const double x = i + 0.5, y = j + 0.5;
       double factor = 1.0;
       if (model.natural) factor *= natural_illumination(field, x, y);
-      factor *= lens_illumination(field, model.lens, x, y);
+      if (model.lens != std::array<double, 3>{0.0, 0.0, 0.0})
+        factor *= lens_illumination(field, model.lens, x, y);
       float& v = plane[static_cast<std::size_t>(j) * width + i];
       v = static_cast<float>(v * factor);
     }
