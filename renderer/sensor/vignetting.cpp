@@ -72,20 +72,26 @@ double lens_polynomial_minimum(const std::array<double, 3>& k, double r_max) {
   return least;
 }
 
-void apply_vignetting(std::vector<float>& plane, int width, int height, const ImageField& field,
-                      const VignettingModel& model) {
-  if (!model.any()) return;
+std::vector<double> vignetting_factors(int width, int height, const ImageField& field,
+                                       const VignettingModel& model) {
+  if (!model.any()) return {};
+  const bool polynomial = model.lens != std::array<double, 3>{0.0, 0.0, 0.0};
+  std::vector<double> factors(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
       const double x = i + 0.5, y = j + 0.5;
       double factor = 1.0;
       if (model.natural) factor *= natural_illumination(field, x, y);
-      if (model.lens != std::array<double, 3>{0.0, 0.0, 0.0})
-        factor *= lens_illumination(field, model.lens, x, y);
-      float& v = plane[static_cast<std::size_t>(j) * width + i];
-      v = static_cast<float>(v * factor);
+      if (polynomial) factor *= lens_illumination(field, model.lens, x, y);
+      factors[static_cast<std::size_t>(j) * width + i] = factor;
     }
   }
+  return factors;
+}
+
+void apply_vignetting(std::vector<float>& plane, const std::vector<double>& factors) {
+  for (std::size_t i = 0; i < factors.size(); ++i)
+    plane[i] = static_cast<float>(plane[i] * factors[i]);
 }
 
 }  // namespace landsim::renderer

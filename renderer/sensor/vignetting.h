@@ -44,8 +44,11 @@ double lens_illumination(const ImageField& field, const std::array<double, 3>& k
 // a polynomial that reaches 0 or below inside the frame is not a lens's.
 double lens_polynomial_minimum(const std::array<double, 3>& k, double r_max);
 
-// Multiplies `plane` (width x height, row-major) by both factors at each pixel's centre.
-void apply_vignetting(std::vector<float>& plane, int width, int height, const ImageField& field,
-                      const VignettingModel& model);
+// Both factors at each pixel's centre, row-major; empty when the model has none. Computed
+// once an image: every channel's plane takes the same.
+std::vector<double> vignetting_factors(int width, int height, const ImageField& field,
+                                       const VignettingModel& model);
+// Multiplies `plane` by `factors` (nothing when they are empty).
+void apply_vignetting(std::vector<float>& plane, const std::vector<double>& factors);
 
 }  // namespace landsim::renderer

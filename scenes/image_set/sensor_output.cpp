@@ -38,6 +38,8 @@ std::vector<std::vector<float>> optical_planes(const renderer::Film& film,
                                                const renderer::SensorModel& m,
                                                const renderer::ImageField& field,
                                                const std::string& stem) {
+  const std::vector<double> fall_off =
+      renderer::vignetting_factors(film.width(), film.height(), field, m.vignetting);
   std::vector<std::vector<float>> planes;
   for (const renderer::SensorChannel& c : m.channels) {
     const auto& names = film.band_names();
@@ -49,7 +51,7 @@ std::vector<std::vector<float>> optical_planes(const renderer::Film& film,
                       stem, photon_layer(c.name), c.name));
     std::vector<float> plane = film.band_data(static_cast<int>(it - names.begin()));
     renderer::apply_optics(plane, film.width(), film.height(), c.wavelength_nm, m);
-    renderer::apply_vignetting(plane, film.width(), film.height(), field, m.vignetting);
+    renderer::apply_vignetting(plane, fall_off);
     planes.push_back(std::move(plane));
   }
   return planes;

@@ -113,9 +113,9 @@ TEST(Vignetting, AppliedAtEachPixelsCentreAndNotAtAll) {
   f.cy = 1.0;
   f.half_diagonal_px = std::hypot(2.0, 1.0);
   std::vector<float> plane(8, 2.0f);
-  apply_vignetting(plane, 4, 2, f, {});
+  apply_vignetting(plane, vignetting_factors(4, 2, f, {}));
   EXPECT_EQ(plane, std::vector<float>(8, 2.0f));
-  apply_vignetting(plane, 4, 2, f, {true, {-0.2, 0.0, 0.0}});
+  apply_vignetting(plane, vignetting_factors(4, 2, f, {true, {-0.2, 0.0, 0.0}}));
   // Pixel (0, 0)'s centre (0.5, 0.5): 1.5 pixels left of and 0.5 above the axis.
   const double rho2 = (1.5 * 1.5 + 0.5 * 0.5) / 16.0;
   const double r2 = (1.5 * 1.5 + 0.5 * 0.5) / (f.half_diagonal_px * f.half_diagonal_px);

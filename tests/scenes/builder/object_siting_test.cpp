@@ -15,6 +15,7 @@
 #include "scenes/builder/scene_builder.h"
 #include "scenes/image_set/image_set.h"
 #include "scenes/scenario/render_choices.h"
+#include "tests/support/rendered_set.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -96,13 +97,9 @@ TEST(ObjectSiting, EveryPlacedObjectIsSeenInItsImage) {
   TempDir dir;
   const Scenario s = load_scenario(dir.write(
       "s.toml", scenario(ridge_asc(dir), placed(4, "range = [300, 700], min_visible = 0.8"))));
-  ImageSetOptions options;
-  options.write_files = false;
-  nlohmann::json entry;
-  options.keep = [&](RenderedImage&& image) {
-    entry = nlohmann::json::parse(image.manifest_entry);
-  };
-  render_image_set(s, options);
+  const std::vector<RenderedImage> images = testing::render_in_memory(s);
+  ASSERT_EQ(images.size(), 1u);
+  const nlohmann::json entry = nlohmann::json::parse(images[0].manifest_entry);
   ASSERT_EQ(entry["objects"].size(), 4u);
   for (const nlohmann::json& o : entry["objects"]) {
     EXPECT_GT(o["visible_pixels"].get<int>(), 0) << o["name"];
@@ -119,14 +116,9 @@ TEST(ObjectSiting, TheDetectionExampleShowsEveryTargetInItsImage) {
   RenderChoices choices;
   choices.spp = 2;
   apply_render_choices(s, choices);
-  ImageSetOptions options;
-  options.write_files = false;
-  options.task_index = 0;
-  nlohmann::json entry;
-  options.keep = [&](RenderedImage&& image) {
-    entry = nlohmann::json::parse(image.manifest_entry);
-  };
-  render_image_set(s, options);
+  const std::vector<RenderedImage> images = testing::render_in_memory(s, 0);
+  ASSERT_EQ(images.size(), 1u);
+  const nlohmann::json entry = nlohmann::json::parse(images[0].manifest_entry);
   ASSERT_EQ(entry["objects"].size(), 14u);
   std::set<std::string> classes;
   double farthest = 0.0;

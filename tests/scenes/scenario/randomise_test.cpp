@@ -12,6 +12,7 @@
 
 #include "core/input_error.h"
 #include "scenes/image_set/image_set.h"
+#include "tests/support/rendered_set.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -140,11 +141,7 @@ TEST(Randomise, TheSetListsEachImagesDrawsAndOneImageRendersAloneTheSame) {
   const Scenario s = with(
       "[randomise]\nimages = 3\n\"sun.elevation\" = { range = [20, 70] }\n"
       "\"sun.azimuth\" = { range = [0, 360] }\n");
-  std::vector<RenderedImage> set;
-  ImageSetOptions options;
-  options.write_files = false;
-  options.keep = [&](RenderedImage&& image) { set.push_back(std::move(image)); };
-  render_image_set(s, options);
+  const std::vector<RenderedImage> set = landsim::testing::render_in_memory(s);
   ASSERT_EQ(set.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     const nlohmann::json entry = nlohmann::json::parse(set[i].manifest_entry);
@@ -161,10 +158,7 @@ TEST(Randomise, TheSetListsEachImagesDrawsAndOneImageRendersAloneTheSame) {
     EXPECT_GT(settings["sun"]["irradiance_lux"][1].get<double>(), 1000.0);
   }
   EXPECT_NE(set[0].film.rgb_data(), set[1].film.rgb_data());  // another sun, another image
-  std::vector<RenderedImage> alone;
-  options.keep = [&](RenderedImage&& image) { alone.push_back(std::move(image)); };
-  options.task_index = 1;
-  render_image_set(s, options);
+  const std::vector<RenderedImage> alone = landsim::testing::render_in_memory(s, 1);
   ASSERT_EQ(alone.size(), 1u);
   EXPECT_EQ(alone[0].film.rgb_data(), set[1].film.rgb_data());
 }
@@ -179,11 +173,7 @@ TEST(Randomise, AnImageThatDrawsWindSwaysThroughItsFrames) {
   const Scenario s =
       parse_scenario(text(trees + "[randomise]\nimages = 1\n\"wind.speed\" = { range = [4, 5] }\n"),
                      "s.toml", ".", {"render.frames=[0.0, 3.0]"});
-  std::vector<RenderedImage> frames;
-  ImageSetOptions options;
-  options.write_files = false;
-  options.keep = [&](RenderedImage&& image) { frames.push_back(std::move(image)); };
-  render_image_set(s, options);
+  const std::vector<RenderedImage> frames = landsim::testing::render_in_memory(s);
   ASSERT_EQ(frames.size(), 2u);
   EXPECT_NE(frames[0].film.rgb_data(), frames[1].film.rgb_data());
 }
