@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace landsim::renderer {
 namespace {
@@ -91,6 +92,9 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
     });
   }
+  const Vec3f from{0.0f, 0.0f, plain_.height};
+  if (max_component(sky_.mean_radiance()) > 0.0f)
+    sky_model_ = SkyIrradiance([&](const Vec3f& d) { return surface_sky(from, d); });
 }
 
 std::optional<Hit> PathTracer::intersect(Ray& ray, std::uint32_t mask, double* travelled) const {
@@ -118,8 +122,9 @@ Spectrum PathTracer::to_sky(const Vec3f& origin, const Vec3f& l) const {
 }
 
 Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
-                               float u1, float u2, const Spectrum& throughput, float u_roulette,
-                               std::uint32_t& rays) const {
+                               float u1, float u2, const Spectrum& throughput,
+                               const ShadowRoulette& r, std::uint32_t& rays, bool& open) const {
+  open = false;
   // As sample_sun (renderer/transport/surface.h) with the spectral material: one direction in the
   // disc.
   const Vec3f l =
@@ -128,29 +133,42 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
   const Spectrum f = bsdf.eval(s, l, front);
   if (max_component(f) <= 0.0f) return {};
   const Spectrum light = f * sun_spectrum_;
-  const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
+  const float weight = shadow_roulette_weight(importance(throughput * light), r);
   if (weight == 0.0f) return {};
   ++rays;
   const Ray ray{offset_point(v, front ? v.ng : -v.ng), l};
   if (occluded(ray, v.mask)) return {};
+  open = true;
   return light * to_sky(ray.origin, l) * weight;
 }
 
 Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
-                               float u1, float u2, const Spectrum& throughput, float u_roulette,
+                               float u1, float u2, const Spectrum& throughput,
+                               const ShadowRoulette& r, const SkyControl* control,
                                std::uint32_t& rays) const {
   float pdf = 0.0f;
   const Vec3f l = sample_sky(u1, u2, pdf);
+  if (pdf <= 0.0f) return {};
+  const float w = power_heuristic(pdf, bsdf.pdf(l)) / pdf;
+  const Spectrum model = control ? control_integrand(*control, l) * w : Spectrum{};
   bool front = false;
   const Spectrum f = bsdf.eval(s, l, front);
-  if (max_component(f) <= 0.0f || pdf <= 0.0f) return {};
+  if (max_component(f) <= 0.0f) return Spectrum{} - model;
   const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
-  const Spectrum light = f * surface_sky(origin, l) * (power_heuristic(pdf, bsdf.pdf(l)) / pdf);
-  const float weight = shadow_roulette_weight(importance(throughput * light), roulette(u_roulette));
-  if (weight == 0.0f) return {};
+  const Spectrum light = f * surface_sky(origin, l) * w;
+  const float weight = control ? 1.0f : shadow_roulette_weight(importance(throughput * light), r);
+  if (weight == 0.0f) return Spectrum{} - model;
   ++rays;
-  if (occluded({origin, l}, v.mask)) return {};
-  return light * weight;
+  if (occluded({origin, l}, v.mask)) return Spectrum{} - model;
+  return light * weight - model;
+}
+
+Spectrum PathTracer::control_integral(const SkyControl& c) const {
+  return c.reflect * sky_model_->irradiance(c.bin, c.n);
+}
+
+Spectrum PathTracer::control_integrand(const SkyControl& c, const Vec3f& l) const {
+  return c.reflect * sky_model_->integrand(c.bin, c.n, l);
 }
 
 Spectrum PathTracer::hazy_sky(const Vec3f& origin, const Vec3f& l) const {
@@ -331,9 +349,30 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     const Spectrum seen = throughput * (1.0f - fresnel);
     // Pairs of dimensions drawn together (one hash and one shuffle for both under Sobol).
     const std::array<float, 2> sun = rng.uniform2(dim + kSun0), sky = rng.uniform2(dim + kSky0);
-    const std::array<float, 2> shadow = rng.uniform2(dim + kSunRoulette);  // sun's, sky's
-    Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, shadow[0], out.rays);
-    direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, shadow[1], out.rays);
+    // The camera path's first vertex traces its shadow rays outright: the pixel's own light,
+    // where a roulette's noise costs most (docs/PERFORMANCE.md "Conserved light").
+    const bool first = bounce == 0 && path.dimension_offset == 0;
+    const std::array<float, 2> shadow =
+        first ? std::array<float, 2>{} : rng.uniform2(dim + kSunRoulette);  // sun's, sky's
+    bool sunlit = false;
+    Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen,
+                                first ? ShadowRoulette{} : roulette(shadow[0]), out.rays, sunlit);
+    // Where the sun finds the first vertex open, the sky most likely does too: its skylight
+    // is the closed-form model's plus the Monte Carlo estimate of what differs (the choice
+    // depends on the sun's ray alone, not on the sky's samples: unbiased). Not for leaves and
+    // grass: a crown hides most of their sky, where the model's subtraction only adds noise
+    // (measured: docs/ATMOSPHERE.md "The sky on open surfaces"). The path must go on past
+    // this vertex, where the BSDF's side of the estimate is taken.
+    const bool controlled = first && sunlit && sky_model_ && !m.water && !m.glossy() &&
+                            !m.two_sided() && bounce < bounce_limit_;
+    SkyControl control;
+    if (controlled) {
+      control = {sm.reflectance * std::numbers::inv_pi_v<float>, v.n, sky_model_->bin_of(v.n)};
+      direct += control_integral(control);
+    }
+    direct +=
+        sky_light(v, bsdf, sm, sky[0], sky[1], seen, first ? ShadowRoulette{} : roulette(shadow[1]),
+                  controlled ? &control : nullptr, out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.
@@ -345,6 +384,11 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     ray = {offset_point(v, next.side), next.direction};
     last_specular = next.kind == BsdfSample::Kind::mirror;
     if (last_specular) continue;
+    // The model's integrand along the BSDF's own direction, under the same MIS weight as
+    // the sky this direction may meet next.
+    if (controlled)
+      radiance = radiance - seen * control_integrand(control, next.direction) *
+                                (power_heuristic(next.pdf, sky_pdf(next.direction)) / next.pdf);
     throughput = throughput * next.factor / next.divisor;
     last_pdf = next.pdf;
     if (!survives(throughput, bounce, rng.uniform(dim + kRoulette))) break;

@@ -5,9 +5,11 @@
 // the haze as a participating medium (renderer/atmosphere/medium.h: scattering points on every
 // segment it touches, renderer/transport/medium_segment.h); next-event estimation of the sun
 // disc and the sky from surfaces and haze points alike (the sky importance-sampled and combined
-// with the BSDF's or phase function's own sampling by multiple importance sampling). Paths end
-// by Russian roulette on their spectral throughput alone (docs/ATMOSPHERE.md "Paths"); shadow
-// rays are rouletted by their contribution (renderer/transport/shadow_roulette.h).
+// with the BSDF's or phase function's own sampling by multiple importance sampling; at an open
+// first vertex, through a closed-form control variate, renderer/atmosphere/sky_irradiance.h).
+// Paths end by Russian roulette on their spectral throughput alone (docs/ATMOSPHERE.md
+// "Paths"); shadow rays after the first vertex are rouletted by their contribution
+// (renderer/transport/shadow_roulette.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -17,6 +19,7 @@
 #include "renderer/atmosphere/direction_table.h"
 #include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
+#include "renderer/atmosphere/sky_irradiance.h"
 #include "renderer/camera.h"
 #include "renderer/transport/integrator.h"
 #include "renderer/transport/medium_segment.h"
@@ -74,14 +77,28 @@ class PathTracer : public Integrator {
   // Russian roulette on the spectral throughput after the first bounces; the survivor is
   // divided by its survival probability.
   bool survives(Spectrum& throughput, int bounce, float u) const;
+  // The sky's closed-form model at an opaque diffuse vertex
+  // (renderer/atmosphere/sky_irradiance.h): its reflectance over pi, the normal facing the
+  // viewer and the normal's bin.
+  struct SkyControl {
+    Spectrum reflect;
+    Vec3f n;
+    int bin = 0;
+  };
+  // The control variate's parts: the model's integral (exact) and its integrand toward l.
+  Spectrum control_integral(const SkyControl& c) const;
+  Spectrum control_integrand(const SkyControl& c, const Vec3f& l) const;
   // Light at a surface vertex, as the path's `throughput` so far will see it (the throughput
-  // decides the shadow ray's roulette; it is not applied to the result).
+  // decides the shadow ray's roulette `r`; it is not applied to the result). `open`: whether
+  // the sun's ray was traced and found the sun.
   Spectrum sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
-                     float u2, const Spectrum& throughput, float u_roulette,
-                     std::uint32_t& rays) const;
+                     float u2, const Spectrum& throughput, const ShadowRoulette& r,
+                     std::uint32_t& rays, bool& open) const;
+  // With `control`, the sky's estimate less the model's integrand there (its integral is
+  // added at the vertex), and no roulette: an unoccluded ray then adds almost nothing.
   Spectrum sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
-                     float u2, const Spectrum& throughput, float u_roulette,
-                     std::uint32_t& rays) const;
+                     float u2, const Spectrum& throughput, const ShadowRoulette& r,
+                     const SkyControl* control, std::uint32_t& rays) const;
   // Light scattered at haze point `p` along the path's direction `d` (the sun and sky by
   // next-event estimation); `trace_sun`: the sun's shadow ray is not rouletted.
   Spectrum haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
@@ -127,6 +144,9 @@ class PathTracer : public Integrator {
   std::shared_ptr<const ScatteringTable> table_;
   // With the table's hazy sky: surface_sky's luminance from the plain's height, to sample by.
   std::optional<DirectionTable> hazy_table_;
+  // The sky surfaces see (surface_sky from the plain's height), cell by cell: the control
+  // variate of open surfaces' skylight. Null where the sky is dark.
+  std::optional<SkyIrradiance> sky_model_;
 };
 
 }  // namespace landsim::renderer
