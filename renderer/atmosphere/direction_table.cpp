@@ -64,6 +64,8 @@ Vec3f DirectionTable::sample(float u1, float u2, float& pdf) const {
   return direction_of(theta, phi);
 }
 
+float DirectionTable::integral() const { return total_ * (kPi / kRows) * (2.0f * kPi / kCols); }
+
 float DirectionTable::cell_pdf(int i, int j) const {
   const float sin_theta = std::sin(kPi * (static_cast<float>(i) + 0.5f) / kRows);
   const float pdf_uv = weights_[static_cast<std::size_t>(i * kCols + j)] / total_ * (kRows * kCols);

@@ -26,6 +26,9 @@ class DirectionTable {
   // A direction above the horizon in proportion to the cells' weights; `pdf` per steradian.
   Vec3f sample(float u1, float u2, float& pdf) const;
   float pdf(const Vec3f& direction) const;
+  // The tabulated luminance's integral over the sphere (the floor included): the luminance
+  // toward d is about pdf(d) x integral(), the cell's own value.
+  float integral() const;
 
   // The unit direction at polar angle theta from +z and azimuth phi from +x.
   static Vec3f direction_of(float theta, float phi);

@@ -45,6 +45,8 @@ class SkyModel {
   // Radiance averaged over the whole sphere (sky above, the sunlit plain below): what haze
   // scatters toward the viewer from skylight, taken as isotropic.
   Vec3f mean_radiance() const { return mean_radiance_; }
+  // What sample() draws from: the sky's luminance, cell by cell.
+  const DirectionTable& table() const { return table_; }
 
   // Spectral counterparts (W m^-2 sr^-1 nm^-1 per bin; docs/SPECTRAL.md): Hosek-Wilkie's
   // spectral tables (the sun's and the sky's, continued past 720 nm by

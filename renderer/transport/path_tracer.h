@@ -136,9 +136,13 @@ class PathTracer : public Integrator {
   Medium medium_;
   Vec3f sun_direction_;
   float roulette_threshold_;  // shadow rays adding less than this to a pixel are rouletted
-  Spectrum sun_spectrum_;     // irradiance on a surface facing the sun
-  Spectrum seen_bins_;        // 1 in bins an output (RGB, a band) sees, 0 elsewhere
-  BinSet seen_;               // the same as indices
+  // The sky's radiance over its sampling density, about (the table's luminance integral, as
+  // the largest bin over the luminance): what the sky's shadow-ray roulette weighs a ray by
+  // before the ray, and the sky's own radiance, are known.
+  float sky_over_pdf_ = 0.0f;
+  Spectrum sun_spectrum_;  // irradiance on a surface facing the sun
+  Spectrum seen_bins_;     // 1 in bins an output (RGB, a band) sees, 0 elsewhere
+  BinSet seen_;            // the same as indices
   int bounce_limit_;
   // HazeScattering::table: the haze's light but the sun's single scattering; null: traced.
   std::shared_ptr<const ScatteringTable> table_;

@@ -67,5 +67,18 @@ TEST(DirectionTable, SamplesFallAtTheDensityTheyReport) {
   EXPECT_NEAR(static_cast<double>(hits) / kSamples, p, 5.0 * std::sqrt(p * (1.0 - p) / kSamples));
 }
 
+// The luminance toward a direction is its density times the integral: what the sky's
+// shadow-ray roulette estimates a ray's light by before tracing it.
+TEST(DirectionTable, DensityTimesIntegralIsTheTabulatedLuminance) {
+  const DirectionTable table(lobed);
+  // Cell centres well inside and well outside the lobe (its edge crosses cells).
+  const Vec3f inside = kLobe;
+  const Vec3f outside = DirectionTable::direction_of(0.3f * kPi / 2.0f, 2.6f);
+  ASSERT_EQ(lobed(outside), 1.0f);
+  // The floor adds 1e-3 of the mean per cell, far below 0.5% of either.
+  EXPECT_NEAR(table.pdf(inside) * table.integral(), 400.0f, 400.0f * 0.005f);
+  EXPECT_NEAR(table.pdf(outside) * table.integral(), 1.0f, 0.005f);
+}
+
 }  // namespace
 }  // namespace landsim::renderer
