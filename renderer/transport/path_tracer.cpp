@@ -98,8 +98,8 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
   const float mean_luminance = 0.2126f * mean.x + 0.7152f * mean.y + 0.0722f * mean.z;
   const float largest_bin_per_luminance =
       mean_luminance > 0.0f ? max_component(emission_spectrum(mean)) / mean_luminance : 1.0f;
-  sky_over_pdf_ = (hazy_table_ ? hazy_table_->integral() : sky_.table().integral()) *
-                  largest_bin_per_luminance;
+  sky_over_pdf_ =
+      (hazy_table_ ? hazy_table_->integral() : sky_.table().integral()) * largest_bin_per_luminance;
   const Vec3f from{0.0f, 0.0f, plain_.height};
   if (max_component(sky_.mean_radiance()) > 0.0f)
     sky_model_ = SkyIrradiance([&](const Vec3f& d) { return surface_sky(from, d); });
@@ -159,18 +159,19 @@ Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
   if (pdf <= 0.0f) return {};
   const float w = power_heuristic(pdf, bsdf.pdf(l)) / pdf;
   const Spectrum model = control ? control_integrand(*control, l) * w : Spectrum{};
+  const Spectrum dark = Spectrum{} - model;  // what the estimate is where no sky arrives
   bool front = false;
   const Spectrum f = bsdf.eval(s, l, front);
-  if (max_component(f) <= 0.0f) return Spectrum{} - model;
+  if (max_component(f) <= 0.0f) return dark;
   // The roulette weighs the ray by what it would add with the sky's radiance estimated from
   // its sampling density (unbiased whatever the estimate): the sky's own radiance through
   // the haze is worked out only for a ray that reaches it.
   const float guess = importance(throughput * f) * sky_over_pdf_ * w * pdf;
   const float weight = control ? 1.0f : shadow_roulette_weight(guess, r);
-  if (weight == 0.0f) return Spectrum{} - model;
+  if (weight == 0.0f) return dark;
   ++rays;
   const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
-  if (occluded({origin, l}, v.mask)) return Spectrum{} - model;
+  if (occluded({origin, l}, v.mask)) return dark;
   return f * surface_sky(origin, l) * (w * weight) - model;
 }
 
