@@ -45,24 +45,27 @@ SkyIrradiance::SkyIrradiance(const std::function<Spectrum(const Vec3f&)>& radian
   const int bins = kNormalRows * kNormalCols;
   moments_.assign(static_cast<std::size_t>(3 * bins), Spectrum{});
   tbb::parallel_for(tbb::blocked_range<int>(0, bins), [&](const tbb::blocked_range<int>& r) {
-    for (int b = r.begin(); b != r.end(); ++b) {
-      std::array<std::array<double, kSpectrumBins>, 3> sum{};
-      for (int c = 0; c < kRows * kCols; ++c) {
-        if (!counts(b, c)) continue;
-        const Spectrum& l = radiance_[static_cast<std::size_t>(c)];
-        const Vec3& m = moments[static_cast<std::size_t>(c)];
-        for (int k = 0; k < kSpectrumBins; ++k) {
-          sum[0][static_cast<std::size_t>(k)] += l[k] * m.x;
-          sum[1][static_cast<std::size_t>(k)] += l[k] * m.y;
-          sum[2][static_cast<std::size_t>(k)] += l[k] * m.z;
-        }
-      }
-      for (std::size_t a = 0; a < 3; ++a)
-        for (int k = 0; k < kSpectrumBins; ++k)
-          moments_[static_cast<std::size_t>(3 * b) + a][k] =
-              static_cast<float>(sum[a][static_cast<std::size_t>(k)]);
-    }
+    for (int bin = r.begin(); bin != r.end(); ++bin) tabulate(bin, moments);
   });
+}
+
+void SkyIrradiance::tabulate(int bin, const std::vector<Vec3>& moments) {
+  // In double: a bin sums up to a thousand cells of very different radiance.
+  std::array<std::array<double, kSpectrumBins>, 3> sum{};
+  for (int c = 0; c < kRows * kCols; ++c) {
+    if (!counts(bin, c)) continue;
+    const Spectrum& l = radiance_[static_cast<std::size_t>(c)];
+    const Vec3& m = moments[static_cast<std::size_t>(c)];
+    for (int k = 0; k < kSpectrumBins; ++k) {
+      sum[0][static_cast<std::size_t>(k)] += l[k] * m.x;
+      sum[1][static_cast<std::size_t>(k)] += l[k] * m.y;
+      sum[2][static_cast<std::size_t>(k)] += l[k] * m.z;
+    }
+  }
+  for (std::size_t a = 0; a < 3; ++a)
+    for (int k = 0; k < kSpectrumBins; ++k)
+      moments_[static_cast<std::size_t>(3 * bin) + a][k] =
+          static_cast<float>(sum[a][static_cast<std::size_t>(k)]);
 }
 
 bool SkyIrradiance::counts(int bin, int cell) const {

@@ -37,6 +37,8 @@ class SkyIrradiance {
 
  private:
   bool counts(int bin, int cell) const;
+  // moments_ of `bin`, from each cell's first moment (`moments`, per cell).
+  void tabulate(int bin, const std::vector<Vec3>& moments);
   std::vector<Spectrum> radiance_;  // per cell, row-major
   std::vector<Vec3f> centres_;      // per cell
   std::vector<Vec3f> normals_;      // per bin: its centre
