@@ -74,12 +74,16 @@ float DirectionTable::cell_pdf(int i, int j) const {
 }
 
 float DirectionTable::pdf(const Vec3f& d) const {
+  const std::array<int, 2> cell = grid_cell(d, kRows, kPi, kCols);
+  return cell_pdf(cell[0], cell[1]);
+}
+
+std::array<int, 2> grid_cell(const Vec3f& d, int rows, float theta_max, int cols) {
   const float theta = std::acos(std::clamp(d.z, -1.0f, 1.0f));
   float phi = std::atan2(d.y, d.x);
   if (phi < 0.0f) phi += 2.0f * kPi;
-  const int i = std::clamp(static_cast<int>(theta / kPi * kRows), 0, kRows - 1);
-  const int j = std::clamp(static_cast<int>(phi / (2.0f * kPi) * kCols), 0, kCols - 1);
-  return cell_pdf(i, j);
+  return {std::clamp(static_cast<int>(theta / theta_max * static_cast<float>(rows)), 0, rows - 1),
+          std::clamp(static_cast<int>(phi / (2.0f * kPi) * static_cast<float>(cols)), 0, cols - 1)};
 }
 
 }  // namespace landsim::renderer

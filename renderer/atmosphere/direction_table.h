@@ -4,12 +4,18 @@
 // cell weighed by a radiance's luminance at its centre times sin(theta) (its solid angle).
 // What a light of tabulated radiance is sampled by: the sky, and the hazy sky with its aureole.
 // Cells below the horizon get no weight: the plain there is a surface the paths meet.
+#include <array>
 #include <functional>
 #include <vector>
 
 #include "core/vec3.h"
 
 namespace landsim::renderer {
+
+// The (row, column) of unit direction d in a grid of `rows` over theta in [0, theta_max] from
+// +z and `cols` over phi in [0, 2 pi) from +x, clamped to the grid: the cell lookup of every
+// (theta, phi) table (this one, the sky's control variate, its normals' bins).
+std::array<int, 2> grid_cell(const Vec3f& d, int rows, float theta_max, int cols);
 
 class DirectionTable {
  public:

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/atmosphere/direction_table.h"
+
 namespace landsim::renderer {
 namespace {
 
@@ -74,14 +76,8 @@ bool SkyIrradiance::counts(int bin, int cell) const {
 }
 
 int SkyIrradiance::bin_of(const Vec3f& n) const {
-  const float theta = std::acos(std::clamp(n.z, -1.0f, 1.0f));
-  float phi = std::atan2(n.y, n.x);
-  if (phi < 0.0f) phi += 2.0f * std::numbers::pi_v<float>;
-  const int i = std::clamp(static_cast<int>(theta / std::numbers::pi_v<float> * kNormalRows), 0,
-                           kNormalRows - 1);
-  const int j = std::clamp(static_cast<int>(phi / (2.0f * std::numbers::pi_v<float>)*kNormalCols),
-                           0, kNormalCols - 1);
-  return i * kNormalCols + j;
+  const std::array<int, 2> cell = grid_cell(n, kNormalRows, std::numbers::pi_v<float>, kNormalCols);
+  return cell[0] * kNormalCols + cell[1];
 }
 
 Spectrum SkyIrradiance::irradiance(int bin, const Vec3f& n) const {
@@ -91,14 +87,8 @@ Spectrum SkyIrradiance::irradiance(int bin, const Vec3f& n) const {
 
 Spectrum SkyIrradiance::integrand(int bin, const Vec3f& n, const Vec3f& l) const {
   if (l.z <= 0.0f) return {};
-  const float theta = std::acos(std::min(l.z, 1.0f));
-  float phi = std::atan2(l.y, l.x);
-  if (phi < 0.0f) phi += 2.0f * std::numbers::pi_v<float>;
-  const int i =
-      std::clamp(static_cast<int>(theta / (0.5f * std::numbers::pi_v<float>)*kRows), 0, kRows - 1);
-  const int j =
-      std::clamp(static_cast<int>(phi / (2.0f * std::numbers::pi_v<float>)*kCols), 0, kCols - 1);
-  const int cell = i * kCols + j;
+  const std::array<int, 2> at = grid_cell(l, kRows, 0.5f * std::numbers::pi_v<float>, kCols);
+  const int cell = at[0] * kCols + at[1];
   if (!counts(bin, cell)) return {};
   return radiance_[static_cast<std::size_t>(cell)] * dot(n, l);
 }

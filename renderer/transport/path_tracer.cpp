@@ -101,7 +101,7 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
   sky_over_pdf_ =
       (hazy_table_ ? hazy_table_->integral() : sky_.table().integral()) * largest_bin_per_luminance;
   const Vec3f from{0.0f, 0.0f, plain_.height};
-  if (max_component(sky_.mean_radiance()) > 0.0f)
+  if (max_component(mean) > 0.0f)
     sky_model_ = SkyIrradiance([&](const Vec3f& d) { return surface_sky(from, d); });
 }
 
@@ -364,11 +364,14 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     // The camera path's first vertex traces its shadow rays outright: the pixel's own light,
     // where a roulette's noise costs most (docs/PERFORMANCE.md "Conserved light").
     const bool first = bounce == 0 && path.dimension_offset == 0;
-    const std::array<float, 2> shadow =
-        first ? std::array<float, 2>{} : rng.uniform2(dim + kSunRoulette);  // sun's, sky's
+    ShadowRoulette sun_roulette, sky_roulette;  // threshold 0: every ray traced
+    if (!first) {
+      const std::array<float, 2> u = rng.uniform2(dim + kSunRoulette);  // sun's, sky's
+      sun_roulette = roulette(u[0]);
+      sky_roulette = roulette(u[1]);
+    }
     bool sunlit = false;
-    Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen,
-                                first ? ShadowRoulette{} : roulette(shadow[0]), out.rays, sunlit);
+    Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, sun_roulette, out.rays, sunlit);
     // Where the sun finds the first vertex open, the sky most likely does too: its skylight
     // is the closed-form model's plus the Monte Carlo estimate of what differs (the choice
     // depends on the sun's ray alone, not on the sky's samples: unbiased). Not for leaves and
@@ -382,9 +385,8 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
       control = {sm.reflectance * std::numbers::inv_pi_v<float>, v.n, sky_model_->bin_of(v.n)};
       direct += control_integral(control);
     }
-    direct +=
-        sky_light(v, bsdf, sm, sky[0], sky[1], seen, first ? ShadowRoulette{} : roulette(shadow[1]),
-                  controlled ? &control : nullptr, out.rays);
+    direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, sky_roulette,
+                        controlled ? &control : nullptr, out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.
