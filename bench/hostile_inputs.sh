@@ -84,7 +84,8 @@ tail -c +2 fuzz/regressions/image_fuzz/slow-tiff-zstd-strip-byte-count-0 > "$W/z
 tail -c +2 fuzz/regressions/image_fuzz/slow-tiff-lerc-strip-byte-count-0 > "$W/lerc.tif"
 tail -c +2 fuzz/regressions/image_fuzz/oom-tiff-lerc-long-float-rows > "$W/rows.tif"
 tail -c +2 fuzz/regressions/image_fuzz/slow-tiff-tiles-8192-square-on-8x8 > "$W/tiles.tif"
-for t in lzw.tif fax.tif claims.webp unknown.tif hang.rla attribute.exr string.exr zstd.tif lerc.tif rows.tif tiles.tif; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
+tail -c +2 fuzz/regressions/image_fuzz/slow-webp-alpha-claiming-3085x6193 > "$W/alpha.webp"
+for t in lzw.tif fax.tif claims.webp unknown.tif hang.rla attribute.exr string.exr zstd.tif lerc.tif rows.tif tiles.tif alpha.webp; do scenario "texture_$t" "$(printf '[ground]\ntextures = { soil = "%s" }' "$W/$t")"; done
 printf 'camera { location <0, 1, -3> right x*image_width/image_height look_at <0, 0, 0> }\n#include "self.pov"\n' > "$W/self.pov"
 
 # Species.
@@ -144,6 +145,7 @@ run "texture: Zstandard TIFF of 185 bytes, 8 rows of 51 MB, no strip bytes" "$BI
 run "texture: the same in LERC (no ratio bound)" "$BIN/landsim" render "$W/texture_lerc.tif.toml" --out "$W/t9"
 run "texture: LERC TIFF of 8 rows of 128 MB floats, no strip bytes" "$BIN/landsim" render "$W/texture_rows.tif.toml" --out "$W/t10"
 run "texture: 8 x 8 TIFF in tiles of 8192 x 8192" "$BIN/landsim" render "$W/texture_tiles.tif.toml" --out "$W/t11"
+run "texture: WebP of 21 bytes with alpha claiming 19M pixels" "$BIN/landsim" render "$W/texture_alpha.webp.toml" --out "$W/t12"
 run "reference garbage" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c2" --reference "$W/strokes.toml"
 run "pov includes itself" "$BIN/landsim" crosscheck "$W/plain.toml" --out "$W/c3" --pov "$W/self.pov"
 run "harmonic explosive" "$BIN/landsim" tree "$W/harmonic.toml"

@@ -9,8 +9,8 @@ namespace landsim::images {
 // LZW about 2560 (a full 12-bit table's longest strings), PackBits 64, baseline or
 // progressive JPEG 2048 (every 8 x 8 block's DC coefficient takes a bit, four channels),
 // OpenEXR's RLE 64, PIZ and PXR24 and B44 less than deflate. Codecs whose ratio has no such
-// bound (OpenEXR's DWA, TIFF's WebP, LERC and JBIG, JPEG 2000, WebP, fax) keep only the value
-// limit.
+// bound (OpenEXR's DWA, TIFF's WebP, LERC and JBIG, JPEG 2000, fax) keep only the value limit.
+// WebP files are held to this ratio by landsim's choice, not the codec's (image_io.cpp).
 constexpr double kMaxCompression = 4096.0;
 // The same for the long-window codecs TIFF offers: Zstandard's RLE block is 4 bytes for 128 KiB
 // (32768; `zstd -19` of zeros reaches 32462), LZMA's most probable match of 273 bytes costs
