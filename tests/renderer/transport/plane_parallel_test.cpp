@@ -78,9 +78,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, Disort, ::testing::ValuesIn(cases()),
 // The tabulated haze light (HazeScattering::table, the landscape default) is exact where the
 // world is plane-parallel, but for the table's cells: DISORT's isotropic cases 1b and 11a
 // again, within three standard errors plus 3% (both agree within 0.5%). Case 3a
-// (Henyey-Greenstein 0.75 under an overhead sun) reads up to 3.2% off with the table: the
-// cells' own noise, an open finding (docs/ATMOSPHERE.md), not a tolerance;
-// LANDSIM_DISORT_TABLE=1 prints it.
+// (Henyey-Greenstein 0.75 under an overhead sun) reads up to 3.0% off with the table: the
+// cells' noise and, at mu 0.1, their size, an open finding (docs/ATMOSPHERE.md), not a
+// tolerance; LANDSIM_DISORT_TABLE=1 prints it.
 TEST(DisortTable, TheTabulatedHazeLightReproducesThePlaneParallelCases) {
   for (const char* name : {"1b", "11a", "3a"}) {
     const bool open_finding = std::string(name) == "3a";
@@ -92,8 +92,8 @@ TEST(DisortTable, TheTabulatedHazeLightReproducesThePlaneParallelCases) {
     for (const Intensity& i : c.top) {
       const testing::Estimate got = layer.top_intensity(i.mu, i.phi_deg, 4000);
       if (std::getenv("LANDSIM_DISORT_TABLE"))
-        std::printf("table %s mu %.3f: %.5g against %.5g (ratio %.4f)\n", name, i.mu, got.mean,
-                    i.value, got.mean / i.value);
+        std::printf("table %s mu %.3f: %.5g +- %.2g against %.5g (ratio %.4f)\n", name, i.mu,
+                    got.mean, got.error, i.value, got.mean / i.value);
       if (!open_finding) {
         EXPECT_NEAR(got.mean, i.value, 3.0 * got.error + 0.03 * i.value) << name << " mu " << i.mu;
       }
