@@ -7,7 +7,6 @@
 
 #include <cmath>
 
-
 namespace landsim::renderer {
 namespace {
 
@@ -71,16 +70,20 @@ TEST(Medium, RayleighColumnMatchesBodhaine) {
   EXPECT_LT(exponent, 4.2);
 }
 
+// Rising, falling and level rays; to a surface both components act (Newton's method), to
+// the sky the aerosol alone (closed form).
 TEST(Medium, DistanceAtInvertsTheOpticalDepth) {
   const Medium m(haze(3000.0));
   const Vec3 o{0, 0, 40};
-  const Vec3 d = normalize(Vec3{1, 0.2, 0.1});
-  for (bool surface : {true, false})
-    for (int k : {2, 12, 30})
-      for (double tau : {0.01, 0.3, 1.5}) {
-        const double s = m.distance_at(o, d, 1e5, surface, k, tau);
-        EXPECT_NEAR(m.optical_depth(m.unit_depths(o, d, s, surface), k), tau, 1e-6 * tau + 1e-9);
-      }
+  for (const Vec3& d :
+       {normalize(Vec3{1, 0.2, 0.1}), normalize(Vec3{1, -0.3, -0.05}), Vec3{0.6, 0.8, 0.0}})
+    for (bool surface : {true, false})
+      for (int k : {2, 12, 30})
+        for (double tau : {0.01, 0.3, 1.5}) {
+          const double s = m.distance_at(o, d, 1e5, surface, k, tau);
+          EXPECT_NEAR(m.optical_depth(m.unit_depths(o, d, s, surface), k), tau, 1e-6 * tau + 1e-9)
+              << d.z << " " << surface << " " << k << " " << tau;
+        }
 }
 
 TEST(Medium, ALayerIsHomogeneousBetweenItsBaseAndTop) {
