@@ -7,21 +7,18 @@ namespace landsim::renderer {
 
 namespace {
 
-// The single-scattering albedo of bin k over a segment: its components' scattering over their
-// extinction, each weighed by its depth along the segment (exact with one component). A
-// segment running level through a layer for ever has infinite depths: those components alone.
-float albedo_along(const Medium& medium, const UnitDepths& depths, int k) {
+// Each component's weight in the segment's single-scattering albedo: its depth along the
+// segment (exact with one component); a segment running level through a layer for ever has
+// infinite depths, and those components alone count.
+std::array<float, kMediumComponents> albedo_weights(const UnitDepths& depths) {
   const bool endless =
       std::any_of(depths.begin(), depths.end(), [](double d) { return std::isinf(d); });
-  double extinction = 0.0, scattering = 0.0;
-  for (int c = 0; c < kMediumComponents; ++c) {
-    const double depth = depths[static_cast<std::size_t>(c)];
-    const double d = endless ? (std::isinf(depth) ? 1.0 : 0.0) : depth;
-    if (!(d > 0.0)) continue;
-    extinction += d * medium.component(c).extinction[k];
-    scattering += d * medium.component(c).scattering[k];
+  std::array<float, kMediumComponents> w{};
+  for (std::size_t c = 0; c < w.size(); ++c) {
+    const double d = endless ? (std::isinf(depths[c]) ? 1.0 : 0.0) : depths[c];
+    w[c] = d > 0.0 ? static_cast<float>(d) : 0.0f;
   }
-  return extinction > 0.0 ? static_cast<float>(scattering / extinction) : 0.0f;
+  return w;
 }
 
 }  // namespace
@@ -36,6 +33,10 @@ MediumSegment::MediumSegment(const Medium& medium, const Ray& ray, double t, boo
       bins_(bins) {
   const UnitDepths depths = medium.unit_depths(origin_, direction_, t, ends_on_surface);
   transmittance_ = medium.transmittance(depths, bins);
+  // The segment's albedo per bin: its components' scattering over their extinction, each
+  // weighed by its depth.
+  const std::array<float, kMediumComponents> w = albedo_weights(depths);
+  const MediumComponent &c0 = medium.component(0), &c1 = medium.component(1);
   float q = 0.0f;
   for (int i = 0; i < bins.count; ++i) {
     const int k = bins.index[static_cast<std::size_t>(i)];
@@ -43,7 +44,9 @@ MediumSegment::MediumSegment(const Medium& medium, const Ray& ray, double t, boo
     scattered_[static_cast<std::size_t>(k)] = extinguished;
     if (extinguished <= 0.0f) continue;
     candidates_.index[static_cast<std::size_t>(candidates_.count++)] = static_cast<std::uint8_t>(k);
-    q += extinguished * albedo_along(medium, depths, k);
+    const float extinction = w[0] * c0.extinction[k] + w[1] * c1.extinction[k];
+    if (extinction > 0.0f)
+      q += extinguished * (w[0] * c0.scattering[k] + w[1] * c1.scattering[k]) / extinction;
   }
   if (candidates_.count > 0) continue_ = q / static_cast<float>(candidates_.count);
 }
