@@ -218,6 +218,19 @@ UnitDepths Medium::densities(double z, bool ends_on_surface) const {
   return out;
 }
 
+std::pair<UnitDepths, UnitDepths> Medium::depths_and_densities(const Vec3& o, const Vec3& d,
+                                                               double s,
+                                                               bool ends_on_surface) const {
+  std::pair<UnitDepths, UnitDepths> out{};
+  for (int c = 0; c < kMediumComponents; ++c) {
+    if (!acts(c, ends_on_surface)) continue;
+    const auto [depth, density] = AlongRay(component(c), o, d).at(s);
+    out.first[static_cast<std::size_t>(c)] = depth;
+    out.second[static_cast<std::size_t>(c)] = density;
+  }
+  return out;
+}
+
 Spectrum Medium::transmittance(const UnitDepths& depths) const {
   return transmittance(depths, BinSet::all());
 }

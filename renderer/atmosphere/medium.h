@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "core/vec3.h"
 #include "renderer/atmosphere/phase_function.h"
@@ -91,6 +92,10 @@ class Medium {
   }
   // Each component's unit density at height z (0 where it does not act).
   UnitDepths densities(double z, bool ends_on_surface) const;
+  // unit_depths over [0, s] and densities at o + s d together (an exponential component's
+  // both from one expm1).
+  std::pair<UnitDepths, UnitDepths> depths_and_densities(const Vec3& o, const Vec3& d, double s,
+                                                         bool ends_on_surface) const;
   // Optical depth of bin k.
   double optical_depth(const UnitDepths& depths, int k) const;
   // Extinction of bin k at height z, per metre.

@@ -61,10 +61,9 @@ MediumPoint MediumSegment::sample(float u_bin, float u_distance) const {
   double s = medium_.distance_at(origin_, direction_, t_, ends_on_surface_, j, tau);
   if (!std::isfinite(s)) s = 1e7;
   const Vec3 p = origin_ + direction_ * s;
-  const Spectrum to_point =
-      medium_.transmittance(medium_.unit_depths(origin_, direction_, s, ends_on_surface_), bins_);
+  const auto [depths, rho] = medium_.depths_and_densities(origin_, direction_, s, ends_on_surface_);
+  const Spectrum to_point = medium_.transmittance(depths, bins_);
   // Density of s, averaged over the candidate bins: sigma_t T(s) / (1 - T(t)) each.
-  const UnitDepths rho = medium_.densities(p.z, ends_on_surface_);
   const Spectrum& e0 = medium_.component(0).extinction;
   const Spectrum& e1 = medium_.component(1).extinction;
   const auto r0 = static_cast<float>(rho[0]), r1 = static_cast<float>(rho[1]);
