@@ -79,8 +79,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, Disort, ::testing::ValuesIn(cases()),
 // world is plane-parallel, but for the table's cells: DISORT's isotropic cases 1b and 11a
 // again, within three standard errors plus 3% (both agree within 0.5%). Case 3a
 // (Henyey-Greenstein 0.75 under an overhead sun) reads up to 3.0% off with the table: the
-// cells' noise and, at mu 0.1, their size, an open finding (docs/ATMOSPHERE.md), not a
-// tolerance; LANDSIM_DISORT_TABLE=1 prints it.
+// cells' noise and, at mu 0.1, the layer's levels 125 m apart under its top, an open finding
+// (docs/ATMOSPHERE.md), not a tolerance; LANDSIM_DISORT_TABLE=1 prints it.
 TEST(DisortTable, TheTabulatedHazeLightReproducesThePlaneParallelCases) {
   for (const char* name : {"1b", "11a", "3a"}) {
     const bool open_finding = std::string(name) == "3a";
