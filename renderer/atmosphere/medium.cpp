@@ -216,13 +216,6 @@ Spectrum Medium::transmittance(const UnitDepths& depths, const BinSet& bins) con
   return t;
 }
 
-UnitDepths Medium::densities(double z, bool ends_on_surface) const {
-  UnitDepths out{};
-  for (int c = 0; c < kMediumComponents; ++c)
-    if (acts(c, ends_on_surface)) out[static_cast<std::size_t>(c)] = component(c).density(z);
-  return out;
-}
-
 std::pair<UnitDepths, UnitDepths> Medium::depths_and_densities(const Vec3& o, const Vec3& d,
                                                                double s,
                                                                bool ends_on_surface) const {

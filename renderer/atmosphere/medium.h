@@ -90,10 +90,8 @@ class Medium {
                          const BinSet& bins) const {
     return transmittance(unit_depths(o, d, t, ends_on_surface), bins);
   }
-  // Each component's unit density at height z (0 where it does not act).
-  UnitDepths densities(double z, bool ends_on_surface) const;
-  // unit_depths over [0, s] and densities at o + s d together (an exponential component's
-  // both from one expm1).
+  // unit_depths over [0, s] and each component's unit density at o + s d (0 where it does
+  // not act) together: an exponential component's both from one expm1.
   std::pair<UnitDepths, UnitDepths> depths_and_densities(const Vec3& o, const Vec3& d, double s,
                                                          bool ends_on_surface) const;
   // Optical depth of bin k.
