@@ -123,6 +123,9 @@ struct Sun {
   // for a high sun in a clear sky.
   Vec3f irradiance{100000.0f, 96667.0f, 90000.0f};
   double angular_radius = 0.00465;  // radians; the real sun's 0.266 degrees
+  // The Earth's distance from the sun on the scenario's date, astronomical units: the
+  // atmosphere's sun (SkyKind::atmosphere) is the top-of-atmosphere spectrum over its square.
+  double earth_sun_distance = 1.0;
 };
 
 // Photometric units: radiance is linear Rec. 709 scaled so that Y = 0.2126 R + 0.7152 G +
@@ -133,6 +136,9 @@ enum class SkyKind {
   preetham,      // Preetham, Shirley and Smits 1999, kept for comparison
   gradient,      // a plain gradient from horizon to zenith (tests: zenith = horizon is uniform)
   none,          // no sky: the collimated sun alone (radiative-transfer benchmarks such as RAMI)
+  // The one atmosphere (docs/ATMOSPHERE.md "One atmosphere"): space is black, the sun its
+  // top-of-atmosphere spectrum, and the sky is what the medium (Haze::column) scatters.
+  atmosphere,
 };
 
 struct Sky {
@@ -161,8 +167,31 @@ enum class HazeScattering {
   paths,  // traced on every path (exact for any terrain; noisier)
 };
 
+// The molecules of the one atmosphere (docs/ATMOSPHERE.md "One atmosphere"): the AFGL 1986
+// U.S. Standard profile from the top of the atmosphere down to the ground, its air scattering
+// (Rayleigh, Bodhaine et al. 1999) and its ozone absorbing.
+struct MolecularColumn {
+  bool scattering = true;     // the air's Rayleigh scattering
+  bool absorption = true;     // ozone's
+  double ozone_column = 0.0;  // Dobson units; 0: the profile's own (345.9)
+};
+
+// How the aerosol's density runs with height (Haze::aerosol_profile).
+enum class AerosolProfile {
+  exponential,  // from the base up, falling by e every scale_height
+  uniform,      // constant between uniform_bottom and uniform_top above the base
+};
+
 struct Haze {
   bool enabled = false;
+  // [atmosphere]: the molecular column is part of the medium and every component, the air's
+  // included, acts on every segment (nothing is the sky model's any more).
+  std::optional<MolecularColumn> column;
+  AerosolProfile aerosol_profile = AerosolProfile::exponential;
+  double uniform_bottom = 0.0, uniform_top = 2000.0;  // metres above the base
+  // The aerosol's vertical optical depth at 550 nm; when set, instead of the visibility.
+  std::optional<double> aerosol_optical_depth;
+  bool aerosol = true;  // false: [atmosphere] without an aerosol
   HazeScattering scattering = HazeScattering::table;
   double visibility = 20000.0;   // meteorological range at the base height, metres
   double scale_height = 1200.0;  // metres

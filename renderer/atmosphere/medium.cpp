@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
+#include "renderer/atmosphere/standard_atmosphere.h"
 #include "renderer/spectra/spectral_colour.h"
 
 namespace landsim::renderer {
@@ -63,7 +65,7 @@ class AlongRay {
       : c_(c), o_(o), d_(d), at_origin_(c.density(o.z)), rate_(d.z / c.scale_height) {}
   std::pair<double, double> at(double s) const {
     if (!c_.present) return {0.0, 0.0};
-    if (c_.slab) return {c_.unit_depth(o_, d_, s), c_.density(o_.z + s * d_.z)};
+    if (c_.slab || c_.profile) return {c_.unit_depth(o_, d_, s), c_.density(o_.z + s * d_.z)};
     return exponential_along(at_origin_, rate_, s);
   }
 
@@ -87,12 +89,14 @@ double rayleigh_scattering(double nm) {
 
 double MediumComponent::density(double z) const {
   if (!present) return 0.0;
+  if (profile) return profile->density(z - z0);
   if (slab) return z >= z0 && z <= z1 ? density0 : 0.0;
   return density0 * std::exp(-(z - z0) / scale_height);
 }
 
 double MediumComponent::unit_depth(const Vec3& o, const Vec3& d, double t) const {
   if (!present || t <= 0.0) return 0.0;
+  if (profile) return profile->along(o.z - z0, d.z, t);
   if (slab) {
     double in = 0.0, out = t;
     if (std::abs(d.z) < 1e-12) {
@@ -109,6 +113,7 @@ double MediumComponent::unit_depth(const Vec3& o, const Vec3& d, double t) const
 
 double MediumComponent::distance_at(const Vec3& o, const Vec3& d, double t, double depth) const {
   if (!present || depth <= 0.0) return 0.0;
+  if (profile) return profile->length_at(o.z - z0, d.z, t, depth);
   if (slab) {
     double in = 0.0, out = t;
     if (std::abs(d.z) >= 1e-12) {
@@ -135,6 +140,10 @@ double MediumComponent::distance_at(const Vec3& o, const Vec3& d, double t, doub
 
 Medium::Medium(const Haze& h) {
   if (!h.enabled) return;
+  if (h.column) {
+    build_atmosphere(h);
+    return;
+  }
   MediumComponent& aerosol = components_[0];
   MediumComponent& air = components_[1];
   aerosol.phase = aerosol_phase(h);
@@ -180,10 +189,81 @@ Medium::Medium(const Haze& h) {
   enabled_ = aerosol.present || air.present;
 }
 
+void Medium::build_atmosphere(const Haze& h) {
+  // The heights: the base (the lowest ground) stands at its altitude above sea level; the
+  // tables are by altitude, so a component's z0 is the scene's sea level.
+  const double sea_level = h.base_height - h.base_altitude;
+  const MolecularColumn& column = *h.column;
+  const StandardAtmosphere& standard = us_standard_atmosphere();
+  MediumComponent& aerosol = components_[0];
+  MediumComponent& air = components_[1];
+  MediumComponent& ozone = components_[2];
+  if (column.scattering) {
+    // Rayleigh: the density is the molecules' number times the cross section at 550 nm.
+    const double sigma550 = rayleigh_cross_section(kReferenceWavelength);
+    auto profile = std::make_shared<DensityProfile>(standard.air);
+    profile->scale(sigma550);
+    air.present = true;
+    air.profile = std::move(profile);
+    air.z0 = sea_level;
+    air.phase = PhaseFunction::rayleigh();
+    air.extinction = rayleigh_cross_sections() * static_cast<float>(1.0 / sigma550);
+    air.scattering = air.extinction;  // the molecules' absorption is ozone's, below
+  }
+  if (column.absorption) {
+    // Ozone absorbs only; its profile's shape is the standard's, its column the key's.
+    const double sigma550 = ozone_cross_section(kReferenceWavelength);
+    auto profile = std::make_shared<DensityProfile>(standard.ozone);
+    const double own = profile->column_above(-1e9);
+    const double wanted = column.ozone_column > 0.0 ? column.ozone_column * kDobsonUnit : own;
+    profile->scale(sigma550 * wanted / own);
+    ozone.present = true;
+    ozone.profile = std::move(profile);
+    ozone.z0 = sea_level;
+    ozone.extinction = ozone_cross_sections() * static_cast<float>(1.0 / sigma550);
+    ozone.scattering = Spectrum{};
+  }
+  if (h.aerosol) {
+    aerosol.phase = aerosol_phase(h);
+    aerosol.z0 = h.base_height;
+    for (int k = 0; k < kSpectrumBins; ++k)
+      aerosol.extinction[k] =
+          static_cast<float>(std::pow(bin_centre(k) / kReferenceWavelength, -h.angstrom));
+    aerosol.scattering = aerosol.extinction * albedo_spectrum(h.albedo);
+    const bool uniform = h.aerosol_profile == AerosolProfile::uniform;
+    const double thickness = h.uniform_top - h.uniform_bottom;
+    if (uniform) {
+      aerosol.slab = true;
+      aerosol.z0 = h.base_height + h.uniform_bottom;
+      aerosol.z1 = h.base_height + h.uniform_top;
+    } else {
+      aerosol.scale_height = h.scale_height;
+    }
+    if (h.aerosol_optical_depth) {
+      aerosol.density0 = *h.aerosol_optical_depth / (uniform ? thickness : h.scale_height);
+    } else {
+      // Koschmieder's visibility holds for the whole extinction at the base at 550 nm: the
+      // aerosol takes what the air and ozone there leave.
+      double others = 0.0;
+      for (const MediumComponent* m : {&air, &ozone})
+        if (m->present) others += m->density(h.base_height);
+      aerosol.density0 = std::max(0.0, visibility_extinction(h) - others);
+    }
+    aerosol.present = aerosol.density0 > 0.0;
+  }
+  enabled_ = aerosol.present || air.present || ozone.present;
+}
+
 double Medium::top() const {
   double top = -kInfiniteDistance;
-  for (const MediumComponent& m : components_)
-    if (m.present) top = std::max(top, m.slab ? m.z1 : m.z0 + 40.0 * m.scale_height);
+  for (const MediumComponent& m : components_) {
+    if (!m.present) continue;
+    // A table's last node is 119.5 km: its top layer's upper edge.
+    const double t = m.profile ? m.z0 + m.profile->top() + 500.0
+                     : m.slab  ? m.z1
+                               : m.z0 + 40.0 * m.scale_height;
+    top = std::max(top, t);
+  }
   return top;
 }
 
@@ -205,13 +285,17 @@ double Medium::optical_depth(const UnitDepths& depths, int k) const {
 
 Spectrum Medium::transmittance(const UnitDepths& depths, const BinSet& bins) const {
   // Float exponentials: a quarter of a hazy render's time was spent in double ones.
-  const auto d0 = static_cast<float>(depths[0]), d1 = static_cast<float>(depths[1]);
+  const auto d0 = static_cast<float>(depths[0]), d1 = static_cast<float>(depths[1]),
+             d2 = static_cast<float>(depths[2]);
   const Spectrum& e0 = components_[0].extinction;
   const Spectrum& e1 = components_[1].extinction;
+  const Spectrum& e2 = components_[2].extinction;
   Spectrum t;
   for (int i = 0; i < bins.count; ++i) {
     const int k = bins.index[static_cast<std::size_t>(i)];
-    t[k] = std::exp(-(d0 * e0[k] + d1 * e1[k]));
+    // Ozone's depth only where it is present: the sum of the other two stays as it was.
+    const float tau = d0 * e0[k] + d1 * e1[k];
+    t[k] = std::exp(-(d2 > 0.0f ? tau + d2 * e2[k] : tau));
   }
   return t;
 }
@@ -250,23 +334,36 @@ double Medium::distance_at(const Vec3& o, const Vec3& d, double t, bool ends_on_
     }
   if (acting == 0) return t;
   if (acting == 1) return component(only).distance_at(o, d, t, tau / component(only).extinction[k]);
-  // Two components (the aerosol and the air on a segment to a surface, t finite): Newton's
-  // method, kept inside a shrinking bracket. The optical depth is increasing and concave or
-  // convex piecewise, so it converges in a few steps from the first component's own answer.
-  // Each step needs the depth and its slope (the extinction there): one expm1 a component.
-  const AlongRay first(component(0), o, d), second(component(1), o, d);
-  const double e0 = component(0).extinction[k], e1 = component(1).extinction[k];
+  // Two or more components (t finite, or a ray into the sky through the whole atmosphere):
+  // Newton's method, kept inside a shrinking bracket. The optical depth is increasing and
+  // concave or convex piecewise, so it converges in a few steps from the first acting
+  // component's own answer. Each step needs the depth and its slope (the extinction there).
+  std::array<std::optional<AlongRay>, kMediumComponents> along;
+  std::array<double, kMediumComponents> e{};
+  int first = -1;
+  for (int c = 0; c < kMediumComponents; ++c)
+    if (acts(c, ends_on_surface) && component(c).extinction[k] > 0.0f) {
+      along[static_cast<std::size_t>(c)].emplace(component(c), o, d);
+      e[static_cast<std::size_t>(c)] = component(c).extinction[k];
+      if (first < 0) first = c;
+    }
   double slope = 0.0;
   const auto excess = [&](double s) {  // the depth at s past tau; its slope in `slope`
-    const auto [u0, rho0] = first.at(s);
-    const auto [u1, rho1] = second.at(s);
-    slope = rho0 * e0 + rho1 * e1;
-    return u0 * e0 + u1 * e1 - tau;
+    double depth = 0.0;
+    slope = 0.0;
+    for (std::size_t c = 0; c < along.size(); ++c) {
+      if (!along[c]) continue;
+      const auto [u, rho] = along[c]->at(s);
+      depth += u * e[c];
+      slope += rho * e[c];
+    }
+    return depth - tau;
   };
   double lo = 0.0, hi = t;
   if (!std::isfinite(hi)) hi = 1e9;
   if (excess(hi) <= 0.0) return t;
-  double s = std::clamp(component(0).distance_at(o, d, hi, tau / e0), lo, hi);
+  double s = std::clamp(
+      component(first).distance_at(o, d, hi, tau / e[static_cast<std::size_t>(first)]), lo, hi);
   for (int i = 0; i < 60; ++i) {
     const double f = excess(s);
     if (std::abs(f) <= 1e-9 * std::max(tau, 1e-12)) break;

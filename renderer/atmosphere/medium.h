@@ -1,15 +1,18 @@
 #pragma once
-// The haze as a participating medium (docs/ATMOSPHERE.md "The medium"): up to two components,
-// each a density profile along z (exponential, or a homogeneous slab) times a spectral
+// The air as a participating medium (docs/ATMOSPHERE.md "The medium", "One atmosphere"): up
+// to three components (aerosol, the air's molecules, ozone), each a density profile along z
+// (exponential, a homogeneous slab, or tabulated: a standard atmosphere's) times a spectral
 // extinction per unit density, a single-scattering albedo per bin and a phase function.
-// Landscape scenes: aerosol (exponential, extinction from the visibility, Angstrom's
-// wavelength law, OPAC's albedo and asymmetry) and the air's molecules (Rayleigh, 8 km scale
-// height). The plane-parallel checks: one homogeneous layer.
 //
-// The molecular component acts only on segments that end on a surface: the Hosek-Wilkie sky
-// and sun already hold the whole clear atmosphere's Rayleigh scattering, seen from the ground,
-// so a segment that leaves into the sky must not take it again (nothing counted twice); the
-// aerosol haze is the turbid layer under that clear sky and acts on every segment.
+// [atmosphere] (Haze::column): the whole atmosphere from the ground to 120 km, the AFGL U.S.
+// Standard profile's air (Rayleigh) and ozone (absorption) and the aerosol layer, every
+// component acting on every segment: the sky is what this medium scatters.
+// [haze] under the Hosek-Wilkie sky: aerosol (exponential, extinction from the visibility,
+// Angstrom's wavelength law, OPAC's albedo and asymmetry) and the air's molecules (Rayleigh,
+// 8 km scale height), the molecular component only on segments that end on a surface: the
+// Hosek-Wilkie sky and sun already hold the clear atmosphere's Rayleigh scattering, so a
+// segment that leaves into the sky must not take it again. The plane-parallel checks: one
+// homogeneous layer.
 //
 // Optical depths have closed forms along any ray; a component's "unit depth" is the integral
 // of its density profile, and a bin's optical depth is the sum over components of the unit
@@ -17,16 +20,18 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 
 #include "core/vec3.h"
+#include "renderer/atmosphere/density_profile.h"
 #include "renderer/atmosphere/phase_function.h"
 #include "renderer/scene.h"
 #include "renderer/spectra/spectrum.h"
 
 namespace landsim::renderer {
 
-inline constexpr int kMediumComponents = 2;
+inline constexpr int kMediumComponents = 3;  // aerosol, air, ozone (by index)
 inline constexpr double kInfiniteDistance = std::numeric_limits<double>::infinity();
 
 // Koschmieder's law: the whole extinction at 550 nm, per metre, at the haze's base (0 without
@@ -54,6 +59,9 @@ struct MediumComponent {
   bool slab = false;          // homogeneous between z0 and z1; else exponential from z0 upward
   double density0 = 0.0;      // per metre, at z0 (the profile times the extinction at 550 nm)
   double z0 = 0.0, z1 = 0.0;  // the base; the slab's top
+  // Tabulated instead: the density at scene height z is profile(z - z0), z0 sea level, already
+  // in extinction at 550 nm per metre.
+  std::shared_ptr<const DensityProfile> profile;
   double scale_height = 1.0;
   bool reaches_sky = true;  // false: only on segments that end on a surface
   Spectrum extinction;      // per unit density (1 at 550 nm for the aerosol)
@@ -106,10 +114,16 @@ class Medium {
   // scale heights above an exponential component's base (its density down by e^-40 there).
   // What a sensor or sun infinitely far away starts its rays at. -infinity when disabled.
   double top() const;
-  // Extinction of bin k at 550 nm for the aerosol alone, at the base (the visibility's).
+  // Extinction at 550 nm for the aerosol alone, at the base (the visibility's).
   double aerosol_extinction_at_base() const { return components_[0].density0; }
+  // The column's vertical optical depth of component c from height z to the top, at 550 nm.
+  double vertical_depth(int c, double z) const {
+    return component(c).unit_depth({0.0, 0.0, z}, {0.0, 0.0, 1.0}, kInfiniteDistance);
+  }
 
  private:
+  void build_atmosphere(const Haze& haze);  // [atmosphere]: every component by its profile
+
   bool enabled_ = false;
   std::array<MediumComponent, kMediumComponents> components_;
 };

@@ -6,6 +6,7 @@
 
 #include "renderer/atmosphere/hosek_wilkie.h"
 #include "renderer/atmosphere/preetham.h"
+#include "renderer/atmosphere/standard_atmosphere.h"
 #include "renderer/spectra/near_infrared.h"
 #include "renderer/spectra/spectral_colour.h"
 
@@ -39,9 +40,10 @@ auto upper_hemisphere_integral(int steps, F&& f) {
 namespace {
 
 // No sky is a gradient of nothing: every direction above the horizon dark, so the sun is the
-// only light (its sampling table stays valid: DirectionTable's floor keeps it uniform).
+// only light (its sampling table stays valid: DirectionTable's floor keeps it uniform). The
+// one atmosphere's space is as dark: its sky is the medium's light, not the sky model's.
 Sky dark_if_none(Sky sky) {
-  if (sky.model != SkyKind::none) return sky;
+  if (sky.model != SkyKind::none && sky.model != SkyKind::atmosphere) return sky;
   sky.model = SkyKind::gradient;
   sky.zenith_radiance = sky.horizon_radiance = Vec3f{};
   return sky;
@@ -50,7 +52,9 @@ Sky dark_if_none(Sky sky) {
 }  // namespace
 
 SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
-    : sky_(dark_if_none(sky)), sun_direction_(normalize(Vec3f(sun.direction))) {
+    : sky_(dark_if_none(sky)),
+      atmosphere_(sky.model == SkyKind::atmosphere),
+      sun_direction_(normalize(Vec3f(sun.direction))) {
   const double elevation = std::asin(std::clamp(normalize(sun.direction).z, 0.0, 1.0));
   if (sky.model == SkyKind::preetham)
     preetham_ = std::make_unique<PreethamSky>(sun.direction, sky.turbidity);
@@ -204,6 +208,9 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
           reflectance_spectrum({ratio(sun.irradiance.x, rgb.x), ratio(sun.irradiance.y, rgb.y),
                                 ratio(sun.irradiance.z, rgb.z)});
     }
+  } else if (atmosphere_) {
+    // The sun above the atmosphere: the medium takes out what it extinguishes on the way.
+    sun_spectrum_ = solar_irradiance_toa(sun.earth_sun_distance);
   } else {
     sun_spectrum_ = emission_spectrum(sun.irradiance);
   }
@@ -297,9 +304,12 @@ Vec3f preetham_sun_irradiance(double elevation_deg, double turbidity) {
 
 }  // namespace
 
-Vec3f sun_irradiance(const Sky& sky, double elevation_deg, double angular_radius) {
+Vec3f sun_irradiance(const Sky& sky, double elevation_deg, double angular_radius,
+                     double earth_sun_distance) {
   if (elevation_deg <= 0.0) return {};
   switch (sky.model) {
+    case SkyKind::atmosphere:
+      return spectrum_to_rgb(solar_irradiance_toa(earth_sun_distance));
     case SkyKind::hosek_wilkie:
       return Vec3f(HosekWilkieSun(elevation_deg * std::numbers::pi / 180.0, sky.turbidity)
                        .irradiance(angular_radius));

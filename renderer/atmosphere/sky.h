@@ -71,6 +71,7 @@ class SkyModel {
   void build_sun_disc(const Sun& sun, double elevation);  // elevation in radians
 
   Sky sky_;
+  bool atmosphere_ = false;  // SkyKind::atmosphere: the sun at the top of the atmosphere
   std::unique_ptr<PreethamSky> preetham_;
   std::unique_ptr<HosekWilkieSky> hosek_wilkie_;
   Vec3f sun_direction_;
@@ -97,7 +98,9 @@ class SkyModel {
 // the Hosek-Wilkie solar radiance integrated over a disc of `angular_radius` and against the
 // CIE functions; Preetham's sun (128 klx outside the atmosphere, Rayleigh and aerosol
 // extinction by Angstrom turbidity from Preetham's relation, Kasten-Young air mass); or, for
-// the gradient sky, Sun's default.
-Vec3f sun_irradiance(const Sky& sky, double elevation_deg, double angular_radius);
+// the gradient sky, Sun's default; for the one atmosphere, Thuillier's spectrum above it at
+// `earth_sun_distance` (AU), whatever the elevation above the horizon.
+Vec3f sun_irradiance(const Sky& sky, double elevation_deg, double angular_radius,
+                     double earth_sun_distance = 1.0);
 
 }  // namespace landsim::renderer

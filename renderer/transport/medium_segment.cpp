@@ -36,7 +36,6 @@ MediumSegment::MediumSegment(const Medium& medium, const Ray& ray, double t, boo
   // The segment's albedo per bin: its components' scattering over their extinction, each
   // weighed by its depth.
   const std::array<float, kMediumComponents> w = albedo_weights(depths);
-  const MediumComponent &c0 = medium.component(0), &c1 = medium.component(1);
   float q = 0.0f;
   for (int i = 0; i < bins.count; ++i) {
     const int k = bins.index[static_cast<std::size_t>(i)];
@@ -44,9 +43,13 @@ MediumSegment::MediumSegment(const Medium& medium, const Ray& ray, double t, boo
     scattered_[static_cast<std::size_t>(k)] = extinguished;
     if (extinguished <= 0.0f) continue;
     candidates_.index[static_cast<std::size_t>(candidates_.count++)] = static_cast<std::uint8_t>(k);
-    const float extinction = w[0] * c0.extinction[k] + w[1] * c1.extinction[k];
-    if (extinction > 0.0f)
-      q += extinguished * (w[0] * c0.scattering[k] + w[1] * c1.scattering[k]) / extinction;
+    float extinction = 0.0f, scattering = 0.0f;
+    for (int c = 0; c < kMediumComponents; ++c) {
+      const MediumComponent& m = medium.component(c);
+      extinction += w[static_cast<std::size_t>(c)] * m.extinction[k];
+      scattering += w[static_cast<std::size_t>(c)] * m.scattering[k];
+    }
+    if (extinction > 0.0f) q += extinguished * scattering / extinction;
   }
   if (candidates_.count > 0) continue_ = q / static_cast<float>(candidates_.count);
 }
@@ -64,13 +67,14 @@ MediumPoint MediumSegment::sample(float u_bin, float u_distance) const {
   const auto [depths, rho] = medium_.depths_and_densities(origin_, direction_, s, ends_on_surface_);
   const Spectrum to_point = medium_.transmittance(depths, bins_);
   // Density of s, averaged over the candidate bins: sigma_t T(s) / (1 - T(t)) each.
-  const Spectrum& e0 = medium_.component(0).extinction;
-  const Spectrum& e1 = medium_.component(1).extinction;
-  const auto r0 = static_cast<float>(rho[0]), r1 = static_cast<float>(rho[1]);
   float pdf = 0.0f;
   for (int i = 0; i < n; ++i) {
     const int k = candidates_.index[static_cast<std::size_t>(i)];
-    pdf += (r0 * e0[k] + r1 * e1[k]) * to_point[k] / scattered_[static_cast<std::size_t>(k)];
+    float sigma = 0.0f;
+    for (int c = 0; c < kMediumComponents; ++c)
+      sigma +=
+          static_cast<float>(rho[static_cast<std::size_t>(c)]) * medium_.component(c).extinction[k];
+    pdf += sigma * to_point[k] / scattered_[static_cast<std::size_t>(k)];
   }
   pdf /= static_cast<float>(n);
   MediumPoint out;
@@ -110,7 +114,16 @@ float phase_pdf(const Medium& medium, const MediumPoint& p, float cos_theta) {
 
 Vec3f scatter_direction(const Medium& medium, const MediumPoint& p, const Vec3f& d,
                         float u_component, const std::array<float, 2>& u) {
-  const int c = u_component < p.share[0] ? 0 : 1;
+  // The component whose share's interval holds u_component (the last that scatters, where
+  // rounding leaves the shares' sum short of u_component).
+  int c = 0;
+  float below = 0.0f;
+  for (int i = 0; i < kMediumComponents; ++i) {
+    if (!(p.share[static_cast<std::size_t>(i)] > 0.0f)) continue;
+    c = i;
+    below += p.share[static_cast<std::size_t>(i)];
+    if (u_component < below) break;
+  }
   return medium.component(c).phase.sample(d, u[0], u[1]).direction;
 }
 

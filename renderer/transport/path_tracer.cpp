@@ -1,5 +1,7 @@
 #include "renderer/transport/path_tracer.h"
 
+#include "renderer/atmosphere/single_scattered_sky.h"
+
 #include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/glossy.h"
@@ -76,6 +78,7 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       sun_spectrum_(sky_.sun_spectral_irradiance()),
       seen_bins_(seen_bins(scene)),
       bounce_limit_(scene.settings.max_bounces < 0 ? kSafetyBounces : scene.settings.max_bounces),
+      atmosphere_(scene.sky.model == SkyKind::atmosphere && medium_.enabled()),
       table_(!wants_table(scene) ? nullptr
              : table             ? std::move(table)
                                  : ScatteringTable::build(scene)) {
@@ -89,6 +92,16 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
     hazy_table_ = DirectionTable([&](const Vec3f& d) {
       if (d.z <= 0.0f) return 0.0f;
       const Vec3f rgb = spectrum_to_rgb(surface_sky(from, d));
+      return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
+    });
+  }
+  if (atmosphere_) {
+    // The one atmosphere's sky is the medium's light: its single scattering seen from the
+    // plain's height is what surfaces draw their sky directions from.
+    const double z = plain_.height;
+    hazy_table_ = DirectionTable([&](const Vec3f& d) {
+      const Vec3f rgb =
+          spectrum_to_rgb(single_scattered_sky(medium_, sun_spectrum_, sun_direction_, z, d));
       return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
     });
   }
@@ -153,7 +166,7 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
 Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
                                float u1, float u2, const Spectrum& throughput,
                                const ShadowRoulette& r, const SkyControl* control,
-                               std::uint32_t& rays) const {
+                               const SkyPoint* point, std::uint32_t& rays) const {
   float pdf = 0.0f;
   const Vec3f l = sample_sky(u1, u2, pdf);
   if (pdf <= 0.0f) return {};
@@ -172,7 +185,22 @@ Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
   ++rays;
   const Vec3f origin = offset_point(v, front ? v.ng : -v.ng);
   if (occluded({origin, l}, v.mask)) return dark;
-  return f * surface_sky(origin, l) * (w * weight) - model;
+  const Spectrum sky = point ? atmosphere_sky(origin, l, *point, rays) : surface_sky(origin, l);
+  return f * sky * (w * weight) - model;
+}
+
+Spectrum PathTracer::atmosphere_sky(const Vec3f& origin, const Vec3f& l, const SkyPoint& point,
+                                    std::uint32_t& rays) const {
+  const MediumSegment segment(medium_, {origin, l}, kInfiniteDistance, false, seen_);
+  if (!segment.scatters()) return {};
+  const MediumPoint p = segment.sample(point.position[0], point.position[1]);
+  const Vec3f sun = sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius),
+                                point.sun[0], point.sun[1]);
+  const Spectrum lit = phase_weight(medium_, p, dot(l, sun)) * sun_spectrum_;
+  if (max_component(lit) <= 0.0f) return {};
+  ++rays;
+  if (occluded({p.position, sun}, point.mask)) return {};
+  return lit * to_sky(p.position, sun);
 }
 
 Spectrum PathTracer::control_integral(const SkyControl& c) const {
@@ -204,9 +232,28 @@ float PathTracer::sky_pdf(const Vec3f& l) const {
   return hazy_table_ ? hazy_table_->pdf(l) : sky_.pdf(l);
 }
 
+Spectrum PathTracer::haze_atmosphere_sky(const MediumPoint& p, const Vec3f& d,
+                                         const CounterRng& rng, std::uint32_t dim,
+                                         std::uint32_t mask, std::uint32_t& rays) const {
+  const std::array<float, 2> u = rng.uniform2(dim + kHazeSky0);
+  float pdf = 0.0f;
+  const Vec3f k = hazy_table_->sample(u[0], u[1], pdf);
+  if (!(pdf > 0.0f)) return {};
+  const float c = dot(d, k);
+  const Spectrum weight =
+      phase_weight(medium_, p, c) * (power_heuristic(pdf, phase_pdf(medium_, p, c)) / pdf);
+  if (max_component(weight) <= 0.0f) return {};
+  ++rays;
+  if (occluded({p.position, k}, mask)) return {};
+  const std::uint32_t at = dim + kHazeSkyOffset;
+  const SkyPoint point{rng.uniform2(at + kSkyPoint), rng.uniform2(at + kSkySun0), mask};
+  return weight * atmosphere_sky(p.position, k, point, rays);
+}
+
 Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
                                 const CounterRng& rng, std::uint32_t dim, bool trace_sun,
-                                std::uint32_t mask, std::uint32_t& rays) const {
+                                bool sky_nee, float sun_weight, std::uint32_t mask,
+                                std::uint32_t& rays) const {
   Spectrum out;
   const std::array<float, 2> sun = rng.uniform2(dim + kHazeSun0);
   // The roulettes' numbers only where a ray may be rouletted (a number costs a hash).
@@ -221,7 +268,8 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
                 : shadow_roulette_weight(importance(throughput * sunlit), roulette(shadow[0]));
   if (w_sun > 0.0f && max_component(sunlit) > 0.0f) {
     ++rays;
-    if (!occluded({p.position, l}, mask)) out += sunlit * to_sky(p.position, l) * w_sun;
+    if (!occluded({p.position, l}, mask))
+      out += sunlit * to_sky(p.position, l) * (w_sun * sun_weight);
   }
   if (table_) {
     // Everything else the haze point receives, tabulated (renderer/transport/scattering_table.h).
@@ -231,6 +279,7 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
                table_->in_scattered(c, static_cast<double>(p.position.z), d);
     return out;
   }
+  if (atmosphere_) return sky_nee ? out + haze_atmosphere_sky(p, d, rng, dim, mask, rays) : out;
   // The sky, combined with the phase function's own sampling.
   const std::array<float, 2> sky = rng.uniform2(dim + kHazeSky0);
   float pdf = 0.0f;
@@ -310,8 +359,12 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
         const MediumPoint p = segment.sample(u[0], u[1]);
         // The camera's own segment carries every pixel's haze veil: its sun ray is always
         // traced; later ones are rouletted by what they would add.
-        radiance += throughput *
-                    haze_light(p, ray.direction, throughput, rng, dim, bounce == 0, mask, out.rays);
+        // A ray into the one atmosphere's sky from a surface that took that sky by next-event
+        // estimation: its single scattering here is weighed against that estimate's density.
+        const float w_sky =
+            !hit && path.sky_nee ? power_heuristic(last_pdf, sky_pdf(ray.direction)) : 1.0f;
+        radiance += throughput * haze_light(p, ray.direction, throughput, rng, dim, bounce == 0,
+                                            bounce < bounce_limit_, w_sky, mask, out.rays);
         // With the table, which holds the haze's further light, the path goes on through.
         const float q = table_ ? 0.0f : segment.continue_probability();
         const bool scatter = q > 0.0f && rng.uniform(dim + kHazeContinue) < q;
@@ -385,8 +438,14 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
       control = {sm.reflectance * std::numbers::inv_pi_v<float>, v.n, sky_model_->bin_of(v.n)};
       direct += control_integral(control);
     }
-    direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, sky_roulette,
-                        controlled ? &control : nullptr, out.rays);
+    std::optional<SkyPoint> point;
+    // The atmosphere's sky is scattered light: one scattering event more than the vertex.
+    const bool sky_nee = atmosphere_ && bounce < bounce_limit_;
+    if (sky_nee)
+      point = SkyPoint{rng.uniform2(dim + kSkyPoint), rng.uniform2(dim + kSkySun0), v.mask};
+    if (!atmosphere_ || sky_nee)
+      direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, sky_roulette,
+                          controlled ? &control : nullptr, point ? &*point : nullptr, out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.
@@ -397,6 +456,7 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     if (next.kind == BsdfSample::Kind::absorbed) break;
     ray = {offset_point(v, next.side), next.direction};
     last_specular = next.kind == BsdfSample::Kind::mirror;
+    path.sky_nee = sky_nee && !last_specular;
     if (last_specular) continue;
     // The model's integrand along the BSDF's own direction, under the same MIS weight as
     // the sky this direction may meet next.
@@ -428,6 +488,9 @@ bool PathTracer::scatter_from(const MediumPoint& p, float q, const CounterRng& r
   path.ray = {p.position, next};
   path.last_pdf = pdf;
   path.last_specular = false;
+  // The point took the atmosphere's sky by next-event estimation (haze_light) unless it was
+  // the last bounce allowed, when no path goes on from it.
+  path.sky_nee = atmosphere_;
   return survives(path.throughput, path.bounce, rng.uniform(dim + kRoulette));
 }
 

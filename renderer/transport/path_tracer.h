@@ -63,6 +63,9 @@ class PathTracer : public Integrator {
     Spectrum throughput;
     float last_pdf = 0.0f;
     bool last_specular = true;
+    // Left a surface that took the one atmosphere's sky by next-event estimation: the sky's
+    // single scattering this ray meets is weighed against it (multiple importance sampling).
+    bool sky_nee = false;
     int bounce = 0;
     std::uint32_t dimension_offset = 0;
   };
@@ -96,14 +99,33 @@ class PathTracer : public Integrator {
                      std::uint32_t& rays, bool& open) const;
   // With `control`, the sky's estimate less the model's integrand there (its integral is
   // added at the vertex), and no roulette: an unoccluded ray then adds almost nothing.
+  // Under the one atmosphere, `point` (bin, distance, the sun's two) draws the scattering
+  // point on the sky ray and its sun direction: the sky's radiance there is estimated, not
+  // looked up (docs/ATMOSPHERE.md "Sampling the atmosphere's sky").
+  struct SkyPoint {
+    std::array<float, 2> position, sun;
+    std::uint32_t mask = 0;
+  };
   Spectrum sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
                      float u2, const Spectrum& throughput, const ShadowRoulette& r,
-                     const SkyControl* control, std::uint32_t& rays) const;
+                     const SkyControl* control, const SkyPoint* point, std::uint32_t& rays) const;
+  // The one atmosphere's single scattering along the sky ray from `origin` toward `l`: one
+  // point drawn on it, the sun by a shadow ray from there.
+  Spectrum atmosphere_sky(const Vec3f& origin, const Vec3f& l, const SkyPoint& point,
+                          std::uint32_t& rays) const;
   // Light scattered at haze point `p` along the path's direction `d` (the sun and sky by
   // next-event estimation); `trace_sun`: the sun's shadow ray is not rouletted.
+  // `sky_nee`: under the one atmosphere, the sky's single scattering by next-event estimation
+  // too (a scattering event more: not at the path's last allowed bounce).
+  // `sun_weight` multiplies the sun's single scattering alone (the MIS weight of a ray into
+  // the atmosphere's sky that a surface or haze point also took by next-event estimation).
   Spectrum haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
-                      const CounterRng& rng, std::uint32_t dim, bool trace_sun, std::uint32_t mask,
-                      std::uint32_t& rays) const;
+                      const CounterRng& rng, std::uint32_t dim, bool trace_sun, bool sky_nee,
+                      float sun_weight, std::uint32_t mask, std::uint32_t& rays) const;
+  // The one atmosphere's sky at haze point `p` by next-event estimation, combined with the
+  // phase function's sampling of the path that goes on.
+  Spectrum haze_atmosphere_sky(const MediumPoint& p, const Vec3f& d, const CounterRng& rng,
+                               std::uint32_t dim, std::uint32_t mask, std::uint32_t& rays) const;
   // The scene's geometry and, past it, the plain beyond the grid (renderer/transport/plain.h);
   // or, in a periodic cell, its endless repetition: `ray` then becomes the leg that hit.
   // `travelled`: as periodic_intersect's (0 outside a periodic cell).
@@ -144,9 +166,12 @@ class PathTracer : public Integrator {
   Spectrum seen_bins_;     // 1 in bins an output (RGB, a band) sees, 0 elsewhere
   BinSet seen_;            // the same as indices
   int bounce_limit_;
+  bool atmosphere_ = false;  // SkyKind::atmosphere: the sky is the medium's light
   // HazeScattering::table: the haze's light but the sun's single scattering; null: traced.
   std::shared_ptr<const ScatteringTable> table_;
-  // With the table's hazy sky: surface_sky's luminance from the plain's height, to sample by.
+  // With the table's hazy sky: surface_sky's luminance from the plain's height, to sample by;
+  // under the one atmosphere, its single-scattered sky's (renderer/atmosphere/
+  // single_scattered_sky.h).
   std::optional<DirectionTable> hazy_table_;
   // The sky surfaces see (surface_sky from the plain's height), cell by cell: the control
   // variate of open surfaces' skylight. Null where the sky is dark.

@@ -16,6 +16,7 @@
 #include "core/input_error.h"
 #include "featuremaps/placement.h"
 #include "renderer/atmosphere/sky.h"
+#include "renderer/atmosphere/standard_atmosphere.h"
 #include "renderer/materials/bark_texture.h"
 #include "scenes/builder/detail/camera_check.h"
 #include "scenes/builder/detail/context_terrain.h"
@@ -292,11 +293,16 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.ground.shading = ground_shading(scenario);
   scene.sun.direction = sun_direction(scenario.sun.elevation_deg, scenario.sun.azimuth_deg);
   scene.sky = scenario.sky;
+  // The Earth-Sun distance of the date (the atmosphere's sun); a sun given by its angles alone
+  // is at the mean distance.
+  if (scenario.sun.day_of_year)
+    scene.sun.earth_sun_distance = renderer::earth_sun_distance(*scenario.sun.day_of_year);
   if (scenario.sun.irradiance) {
     scene.sun.irradiance = *scenario.sun.irradiance;
   } else {
-    scene.sun.irradiance = renderer::sun_irradiance(scenario.sky, scenario.sun.elevation_deg,
-                                                    scene.sun.angular_radius);
+    scene.sun.irradiance =
+        renderer::sun_irradiance(scenario.sky, scenario.sun.elevation_deg, scene.sun.angular_radius,
+                                 scene.sun.earth_sun_distance);
   }
   scene.haze = scenario.haze;
   scene.haze.base_height =

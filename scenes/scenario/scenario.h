@@ -37,6 +37,8 @@ struct SunSettings {
   double azimuth_deg = 135.0;  // clockwise from north
   // On a surface facing the sun; empty: from the sky model (or 3.0 for the gradient sky).
   std::optional<Vec3f> irradiance;
+  // Given by date: the day of the year (the Earth-Sun distance of the atmosphere's sun).
+  std::optional<int> day_of_year;
 };
 
 // A [[views]] table (docs/CAMERAS.md): the camera as the renderer takes it, in terrain

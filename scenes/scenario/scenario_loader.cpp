@@ -12,6 +12,7 @@
 #include "params/table_reader.h"
 #include "scenes/scenario/scenario.h"
 
+#include "scenes/scenario/detail/atmosphere_reader.h"
 #include "scenes/scenario/detail/canopy_reader.h"
 #include "scenes/scenario/detail/ground_reader.h"
 #include "scenes/scenario/detail/haze_reader.h"
@@ -35,8 +36,9 @@ namespace {
 
 void refuse_unknown_tables(const toml::table& root, const std::string& file) {
   static const std::set<std::string, std::less<>> kKnown{
-      "terrain", "sun", "views", "render",  "featuremaps", "species", "grass",  "ground",
-      "wind",    "sky", "haze",  "objects", "bands",       "sensor",  "canopy", "randomise"};
+      "terrain", "sun",    "views",  "render", "featuremaps", "species",
+      "grass",   "ground", "wind",   "sky",    "haze",        "atmosphere",
+      "objects", "bands",  "sensor", "canopy", "randomise"};
   for (auto&& [key, value] : root) {
     if (kKnown.count(key.str()) != 0) continue;
     const auto& b = key.source().begin;
@@ -45,7 +47,7 @@ void refuse_unknown_tables(const toml::table& root, const std::string& file) {
         ": unknown table or key '" + std::string(key.str()) + "'" +
         params::did_you_mean(key.str(), std::vector<std::string>(kKnown.begin(), kKnown.end())) +
         " (expected terrain, featuremaps, species, grass, ground, wind, sun, sky, "
-        "haze, views, render, objects, canopy, bands, sensor, randomise)");
+        "haze, atmosphere, views, render, objects, canopy, bands, sensor, randomise)");
   }
 }
 
@@ -136,6 +138,7 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   s.wind = read_wind(sub_table(root, "wind", source, false), source);
   s.sky = read_sky(sub_table(root, "sky", source, false), source);
   s.haze = read_haze(root, source);
+  read_atmosphere(root, source, s);
   s.objects = read_objects(root, source, base_dir);
   check_object_views(s);
   s.randomise = read_randomise(root, source, text, base_dir, sets);

@@ -41,6 +41,7 @@ SolarPosition solar_position(int year, int month, int day, double hour_utc, doub
                       kDeg +
                   180.0;
   p.azimuth_deg = std::fmod(p.azimuth_deg + 360.0, 360.0);
+  p.day_of_year = day_of_year(year, month, day);
   return p;
 }
 

@@ -7,6 +7,7 @@ namespace landsim::scenes {
 struct SolarPosition {
   double elevation_deg = 0.0;  // above the horizon
   double azimuth_deg = 0.0;    // clockwise from north
+  int day_of_year = 1;         // 1 on 1 January
 };
 
 // `hour` in decimal hours of Coordinated Universal Time; latitude north and longitude east

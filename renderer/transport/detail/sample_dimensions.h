@@ -34,7 +34,17 @@ enum Dim : std::uint32_t {
   kHazeContinue,  // whether the path goes on from the haze point or through to the surface
   kRoulette,
   kFresnel,  // a surface's mirror choice, or which haze component scatters
+  // The one atmosphere's sky at a surface: the scattering point on the sky ray (bin,
+  // distance) and the sun's direction from it.
+  kSkyPoint = 20,
+  kSkyPointDistance,
+  kSkySun0,
+  kSkySun1,
 };
+
+// A haze point's own draws for the one atmosphere's sky (kSkyPoint to kSkySun1 past this
+// offset): far above every bounce's dimensions and below a branch's.
+inline constexpr std::uint32_t kHazeSkyOffset = 1u << 29;
 
 // Pairs drawn together (CounterRng::uniform2: one Sobol pair) start at an even dimension.
 static_assert(kFirstBounceDim % 2 == 0 && kDimsPerBounce % 2 == 0 && kLens0 % 2 == 0);
@@ -42,6 +52,7 @@ static_assert(kSun0 % 2 == 0 && kSky0 % 2 == 0 && kChoice % 2 == 0 && kDir == kC
 static_assert(kSunRoulette % 2 == 0 && kSkyRoulette == kSunRoulette + 1);
 static_assert(kHaze % 2 == 0 && kHazeDistance == kHaze + 1);
 static_assert(kHazeSun0 % 2 == 0 && kHazeSky0 % 2 == 0 && kHazeSunRoulette % 2 == 0);
-static_assert(kFresnel < kDimsPerBounce);
+static_assert(kFresnel < kSkyPoint && kSkyPoint % 2 == 0 && kSkySun0 % 2 == 0);
+static_assert(kSkySun1 < kDimsPerBounce);
 
 }  // namespace landsim::renderer::detail

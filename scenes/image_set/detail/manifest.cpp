@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/atomic_file.h"
+#include "renderer/atmosphere/medium.h"
 #include "renderer/camera.h"
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
@@ -27,6 +28,8 @@ std::string sky_text(const renderer::Sky& sky) {
       return fmt::format("preetham turbidity {}", sky.turbidity);
     case renderer::SkyKind::none:
       return "none";
+    case renderer::SkyKind::atmosphere:
+      return "atmosphere";
     case renderer::SkyKind::gradient:
       break;
   }
@@ -77,8 +80,45 @@ std::string haze_phase(renderer::AerosolPhase p) {
   return "henyey-greenstein";
 }
 
+// [atmosphere]: what it holds and, from the lowest ground, its vertical optical depths at
+// 550 nm (what Beer-Lambert takes the beam through, docs/ATMOSPHERE.md "One atmosphere").
+nlohmann::json atmosphere_json(const renderer::Scene& scene) {
+  const renderer::Haze& h = scene.haze;
+  if (!h.enabled || !h.column) return nullptr;
+  const renderer::Medium medium(h);
+  nlohmann::json out = {{"profile", "us-standard"},
+                        {"rayleigh", h.column->scattering},
+                        {"ozone", h.column->absorption},
+                        {"earth_sun_distance_au", scene.sun.earth_sun_distance}};
+  if (h.column->ozone_column > 0.0) out["ozone_column_du"] = h.column->ozone_column;
+  const char* names[renderer::kMediumComponents] = {"aerosol", "rayleigh", "ozone"};
+  nlohmann::json depths = nlohmann::json::object();
+  for (int c = 0; c < renderer::kMediumComponents; ++c)
+    if (medium.component(c).present) depths[names[c]] = medium.vertical_depth(c, h.base_height);
+  out["optical_depth_550nm"] = depths;
+  if (h.aerosol) {
+    nlohmann::json a = {
+        {"single_scattering_albedo", {h.albedo.x, h.albedo.y, h.albedo.z}},
+        {"phase", haze_phase(h.phase)},
+        {"angstrom", h.angstrom},
+        {"profile",
+         h.aerosol_profile == renderer::AerosolProfile::uniform ? "uniform" : "exponential"}};
+    if (h.phase == renderer::AerosolPhase::henyey_greenstein) a["asymmetry"] = h.asymmetry;
+    if (h.aerosol_optical_depth)
+      a["optical_depth"] = *h.aerosol_optical_depth;
+    else
+      a["visibility_m"] = h.visibility;
+    if (h.aerosol_profile == renderer::AerosolProfile::uniform)
+      a["bottom_top_m"] = {h.uniform_bottom, h.uniform_top};
+    else
+      a["scale_height_m"] = h.scale_height;
+    out["aerosol"] = a;
+  }
+  return out;
+}
+
 nlohmann::json haze_json(const renderer::Haze& h) {
-  if (!h.enabled) return nullptr;
+  if (!h.enabled || h.column) return nullptr;
   nlohmann::json out = {
       {"single_scattering_albedo", {h.albedo.x, h.albedo.y, h.albedo.z}},
       {"phase", haze_phase(h.phase)},
@@ -112,7 +152,8 @@ nlohmann::json settings_json(const Scenario& s, const renderer::Scene& scene) {
         {"direction", vec_json(scene.sun.direction)},
         {"irradiance_lux", {e.x, e.y, e.z}}}},
       {"sky", sky_text(s.sky)},
-      {"haze", haze_json(s.haze)},
+      {"haze", haze_json(scene.haze)},
+      {"atmosphere", atmosphere_json(scene)},
       {"wind",
        {{"speed", s.wind.speed}, {"gust", s.wind.gust}, {"direction_deg", s.wind.direction_deg}}},
       {"render",

@@ -43,6 +43,15 @@ void read_phase(TableReader& r, renderer::Haze& h) {
 
 }  // namespace
 
+void read_aerosol_optics(TableReader& r, renderer::Haze& h) {
+  if (r.has("colour") && r.has("single_scattering_albedo"))
+    r.fail("single_scattering_albedo", "give either colour or single_scattering_albedo");
+  h.albedo = to_vec3f(r.vec3("colour", kUnit, Vec3(h.albedo)));
+  if (const auto a = r.optional_number("single_scattering_albedo", Range{0.0, 1.0}))
+    h.albedo = Vec3f{static_cast<float>(*a), static_cast<float>(*a), static_cast<float>(*a)};
+  read_phase(r, h);
+}
+
 renderer::Haze read_haze(const toml::table& root, const std::string& file) {
   renderer::Haze h;
   if (!root.contains("haze")) return h;
@@ -69,12 +78,7 @@ renderer::Haze read_haze(const toml::table& root, const std::string& file) {
       r.choice("multiple_scattering", {"table", "paths"}, h.layer ? "paths" : "table");
   h.scattering =
       light == "paths" ? renderer::HazeScattering::paths : renderer::HazeScattering::table;
-  if (r.has("colour") && r.has("single_scattering_albedo"))
-    r.fail("single_scattering_albedo", "give either colour or single_scattering_albedo");
-  h.albedo = to_vec3f(r.vec3("colour", kUnit, Vec3(h.albedo)));
-  if (const auto a = r.optional_number("single_scattering_albedo", Range{0.0, 1.0}))
-    h.albedo = Vec3f{static_cast<float>(*a), static_cast<float>(*a), static_cast<float>(*a)};
-  read_phase(r, h);
+  read_aerosol_optics(r, h);
   r.finish();
   return h;
 }

@@ -9,7 +9,15 @@
 
 #include "scenes/scenario/scenario.h"
 
+namespace landsim::params {
+class TableReader;
+}
+
 namespace landsim::scenes::detail {
+
+// An aerosol's optical type, as [haze] and [atmosphere.aerosol] give it: the single-scattering
+// albedo (or colour) and the phase function.
+void read_aerosol_optics(params::TableReader& r, renderer::Haze& h);
 
 // [haze]; a haze that is not enabled when the scenario has none.
 renderer::Haze read_haze(const toml::table& root, const std::string& file);

@@ -33,6 +33,7 @@ void read_sun_by_date(TableReader& r, const toml::table& t, SunSettings& s) {
   }
   s.elevation_deg = p.elevation_deg;
   s.azimuth_deg = p.azimuth_deg;
+  s.day_of_year = p.day_of_year;
 }
 
 }  // namespace
@@ -60,12 +61,14 @@ SunSettings read_sun(const toml::table& t, const std::string& file) {
 renderer::Sky read_sky(const toml::table& t, const std::string& file) {
   TableReader r(t, "sky", file);
   renderer::Sky s;
-  const std::string model =
-      r.choice("model", {"hosek-wilkie", "preetham", "gradient", "none"}, "hosek-wilkie");
+  const std::string model = r.choice(
+      "model", {"hosek-wilkie", "preetham", "gradient", "none", "atmosphere"}, "hosek-wilkie");
   // "none": the collimated sun alone, as radiative-transfer benchmarks light a scene (RAMI).
+  // "atmosphere": the sky is the one atmosphere's light ([atmosphere], docs/ATMOSPHERE.md).
   s.model = model == "hosek-wilkie" ? renderer::SkyKind::hosek_wilkie
             : model == "preetham"   ? renderer::SkyKind::preetham
             : model == "none"       ? renderer::SkyKind::none
+            : model == "atmosphere" ? renderer::SkyKind::atmosphere
                                     : renderer::SkyKind::gradient;
   // Hosek-Wilkie's tables span turbidity 1-10; Preetham's fit is not valid below 1.7.
   s.turbidity = r.number(

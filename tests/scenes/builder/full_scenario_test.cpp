@@ -418,6 +418,22 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
     EXPECT_TRUE(load_scenario(path).haze.layer.has_value()) << scene;
     text += landsim::testing::read_file(path);
   }
+  // The one atmosphere (docs/ATMOSPHERE.md "One atmosphere"): the shipped RAMI4ATM cases and
+  // example, and the keys they leave at their defaults.
+  for (const char* scene :
+       {"scenes/rami4atm/hom00_whi_s00s_m04.toml", "scenes/rami4atm/hom00_bla_sd2s_m03.toml",
+        "scenes/examples/one_atmosphere.toml"}) {
+    EXPECT_TRUE(load_scenario(source_file(scene)).haze.column.has_value()) << scene;
+    text += landsim::testing::read_file(source_file(scene));
+  }
+  const std::string column = terrain + views +
+                             "[atmosphere]\nozone_column = 300\n[atmosphere.aerosol]\n"
+                             "optical_depth = 0.1\ntype = \"continental-average\"\n"
+                             "profile = \"uniform\"\nbottom = 100\ntop = 1500\n";
+  const Scenario with_column = load_scenario(f.dir.write("column.toml", column));
+  EXPECT_EQ(with_column.haze.column->ozone_column, 300.0);
+  EXPECT_EQ(with_column.haze.uniform_bottom, 100.0);
+  text += column;
   // Detection sets (docs/OBJECTS.md, SCENARIO.md [randomise]): objects placed by a view, in
   // copies, and a randomised set; the shipped example, and the keys it writes inline.
   const auto detection = source_file("scenes/examples/detection_set.toml");

@@ -1,0 +1,86 @@
+// [atmosphere] (docs/ATMOSPHERE.md "One atmosphere", docs/SCENARIO.md): read into the medium
+// and the sky, and every second description of the same atmosphere refused with the key to
+// use instead.
+#include <gtest/gtest.h>
+
+#include "core/input_error.h"
+#include "scenes/scenario/scenario.h"
+#include "tests/support/temp_dir.h"
+
+namespace landsim::scenes {
+namespace {
+
+using landsim::testing::TempDir;
+
+std::string base(const std::string& sun_extra = "") {
+  return "[terrain]\nelevation = \"" +
+         landsim::testing::source_file("data/terrain/volcano.asc").string() +
+         "\"\n[sun]\nelevation = 30.0\nazimuth = 200\n" + sun_extra +
+         "\n[[views]]\nname = \"a\"\nposition = [0.0, 0.0, 300.0]\n"
+         "target = [300.0, 400.0, 150.0]\n";
+}
+
+Scenario load(const std::string& text) {
+  TempDir dir;
+  return load_scenario(dir.write("scene.toml", text));
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    load(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(AtmosphereReader, ReadsTheMoleculesAndTheAerosolLayer) {
+  const Scenario s = load(base() +
+                          "[atmosphere]\nozone_column = 300\n"
+                          "[atmosphere.aerosol]\noptical_depth = 0.2\nprofile = \"uniform\"\n"
+                          "top = 2000\nsingle_scattering_albedo = 0.9\nasymmetry = 0.6\n");
+  EXPECT_EQ(s.sky.model, renderer::SkyKind::atmosphere);
+  ASSERT_TRUE(s.haze.enabled);
+  ASSERT_TRUE(s.haze.column.has_value());
+  EXPECT_TRUE(s.haze.column->scattering);
+  EXPECT_TRUE(s.haze.column->absorption);
+  EXPECT_EQ(s.haze.column->ozone_column, 300.0);
+  EXPECT_TRUE(s.haze.aerosol);
+  EXPECT_EQ(s.haze.aerosol_optical_depth, 0.2);
+  EXPECT_EQ(s.haze.aerosol_profile, renderer::AerosolProfile::uniform);
+  EXPECT_EQ(s.haze.uniform_top, 2000.0);
+  EXPECT_EQ(s.haze.asymmetry, 0.6);
+  EXPECT_EQ(s.haze.scattering, renderer::HazeScattering::paths);
+  // Molecules alone: no aerosol table, no aerosol; the model by name alone is the same.
+  const Scenario clear = load(base() + "[atmosphere]\nozone = false\n");
+  EXPECT_FALSE(clear.haze.aerosol);
+  EXPECT_FALSE(clear.haze.column->absorption);
+  EXPECT_TRUE(load(base() + "[sky]\nmodel = \"atmosphere\"\n").haze.column.has_value());
+}
+
+TEST(AtmosphereReader, RefusesASecondDescriptionNamingTheKeyToUse) {
+  const std::string atmosphere = "[atmosphere]\n[atmosphere.aerosol]\nvisibility = 15000\n";
+  const std::string haze = error_of(base() + "[haze]\nvisibility = 15000\n" + atmosphere);
+  EXPECT_NE(haze.find("[haze]"), std::string::npos) << haze;
+  EXPECT_NE(haze.find("[atmosphere.aerosol]"), std::string::npos) << haze;
+  const std::string turbidity = error_of(base() + "[sky]\nturbidity = 3\n" + atmosphere);
+  EXPECT_NE(turbidity.find("[sky] turbidity"), std::string::npos) << turbidity;
+  EXPECT_NE(turbidity.find("visibility or optical_depth"), std::string::npos) << turbidity;
+  const std::string model = error_of(base() + "[sky]\nmodel = \"hosek-wilkie\"\n" + atmosphere);
+  EXPECT_NE(model.find("[sky] model"), std::string::npos) << model;
+  const std::string sun = error_of(base("irradiance = [1e5, 1e5, 1e5]\n") + atmosphere);
+  EXPECT_NE(sun.find("[sun] irradiance"), std::string::npos) << sun;
+  const std::string both = error_of(
+      base() + "[atmosphere]\n[atmosphere.aerosol]\nvisibility = 9000\noptical_depth = 0.3\n");
+  EXPECT_NE(both.find("either visibility"), std::string::npos) << both;
+  const std::string table = error_of(base() + "[atmosphere]\nmultiple_scattering = \"table\"\n");
+  EXPECT_NE(table.find("[atmosphere] multiple_scattering"), std::string::npos) << table;
+  const std::string heights =
+      error_of(base() +
+               "[atmosphere]\n[atmosphere.aerosol]\noptical_depth = 0.2\nprofile = "
+               "\"uniform\"\nbottom = 500\ntop = 400\n");
+  EXPECT_NE(heights.find("top"), std::string::npos) << heights;
+}
+
+}  // namespace
+}  // namespace landsim::scenes
