@@ -8,6 +8,7 @@
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
+#include "renderer/transport/detail/cell_mixture.h"
 #include "renderer/transport/path_tracer.h"
 #include "renderer/transport/plane_parallel_scene.h"
 
@@ -48,67 +49,6 @@ float cell(float x, float first, float step, int n) {
   return std::clamp((x - first) / step, 0.0f, static_cast<float>(n - 1));
 }
 
-// The directions a height's paths leave in, and their density (balance heuristic): each
-// present component's phase function about each cell's direction in turn, the whole sphere
-// (defensive: a forward-peaked phase function alone seldom looks back at bright light behind
-// it), and the aerosol's phase function about the sun (the light inside a haze peaks there,
-// its aureole seen from within), in equal shares.
-class CellMixture {
- public:
-  static constexpr int kDirections = ScatteringTable::kCosines * ScatteringTable::kAzimuths;
-  using Phases = std::array<std::array<float, kDirections>, kMediumComponents>;
-
-  CellMixture(const Medium& medium, const std::array<Vec3f, kDirections>& directions,
-              const Vec3f& sun)
-      : medium_(medium), directions_(directions), sun_(sun) {
-    for (int c = 0; c < kMediumComponents; ++c)
-      if (medium.component(c).present) present_.push_back(c);
-    strategies_ = static_cast<int>(present_.size()) + 2;
-  }
-  const std::vector<int>& present() const { return present_; }
-
-  // Path i's direction from the pair u.
-  Vec3f draw(int i, const std::array<float, 2>& u) const {
-    const int strategy = i % strategies_, n = static_cast<int>(present_.size());
-    if (strategy == n + 1) return medium_.component(0).phase.sample(sun_, u[0], u[1]).direction;
-    if (strategy == n) {
-      const float z = 1.0f - 2.0f * u[0], radius = std::sqrt(std::max(0.0f, 1.0f - z * z));
-      const float a = 2.0f * std::numbers::pi_v<float> * u[1];
-      return {radius * std::cos(a), radius * std::sin(a), z};
-    }
-    const Vec3f& d = directions_[static_cast<std::size_t>(i / strategies_ % kDirections)];
-    return medium_.component(present_[static_cast<std::size_t>(strategy)])
-        .phase.sample(d, u[0], u[1])
-        .direction;
-  }
-
-  // The mixture's density at `next`, and each component's phase function at every cell's
-  // direction in `phases` (the cells' weights are phase / density).
-  float density(const Vec3f& next, Phases& phases) const {
-    float cells = 0.0f;
-    for (const int c : present_) {
-      const PhaseFunction& phase = medium_.component(c).phase;
-      auto& row = phases[static_cast<std::size_t>(c)];
-      for (int j = 0; j < kDirections; ++j) {
-        row[static_cast<std::size_t>(j)] =
-            phase.eval(dot(directions_[static_cast<std::size_t>(j)], next));
-        cells += row[static_cast<std::size_t>(j)];
-      }
-    }
-    return (0.25f * std::numbers::inv_pi_v<float> +
-            medium_.component(0).phase.eval(dot(next, sun_)) +
-            cells / static_cast<float>(kDirections)) /
-           static_cast<float>(strategies_);
-  }
-
- private:
-  const Medium& medium_;
-  const std::array<Vec3f, kDirections>& directions_;
-  Vec3f sun_;
-  std::vector<int> present_;
-  int strategies_ = 2;
-};
-
 }  // namespace
 
 std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene) {
@@ -136,11 +76,13 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
   // about one cell's direction serves its neighbours too, and the aureole's strategy serves
   // them all). The paths go in chunks, summed separately and then in order: the same table on
   // any number of threads.
-  constexpr int kDirections = CellMixture::kDirections;
+  using detail::CellMixture;
+  constexpr int kDirections = CellMixture::kCells;
+  static_assert(kDirections == kCosines * kAzimuths);
   std::array<Vec3f, kDirections> directions{};
   for (int j = 0; j < kDirections; ++j)
     directions[static_cast<std::size_t>(j)] = table->cell_direction(j);
-  const CellMixture mixture(medium, directions, Vec3f(sun));
+  const CellMixture mixture(medium, directions, Vec3f(sun), kPathsPerHeight);
   constexpr int kChunk = 256, kChunks = kPathsPerHeight / kChunk;
   using Sums = std::array<std::array<Spectrum, kDirections>, kMediumComponents>;
   std::vector<Sums> partial(static_cast<std::size_t>(kHeights * kChunks));
@@ -276,24 +218,20 @@ Spectrum ScatteringTable::aureole(double z, const Vec3f& d, const BinSet& bins) 
 }
 
 Spectrum ScatteringTable::rest_along(double z, const Vec3f& d) const {
-  // (rho H / mu) s integral over x in (0, 1] of exp(-a (1 - x)) S(z - H ln x, d), midpoints.
+  // (rho H / mu) s integral over x in (0, 1] of exp(-a (1 - x)) S(z - H ln x, d), a the
+  // ray's optical depth in the bin: x = 1 is the point, x -> 0 the top of the haze.
   constexpr int kSteps = 32;
   const double h = aerosol_.scale_height;
   const double rho_h = aerosol_.density(z) * h;
   const double mu = std::max(1e-3, static_cast<double>(d.z));
-  std::array<double, kSpectrumBins> sum{};
-  for (int i = 0; i < kSteps; ++i) {
-    const double x = (i + 0.5) / kSteps;
-    const Spectrum s = in_scattered(0, z - h * std::log(x), d);
-    for (int k = 0; k < kSpectrumBins; ++k) {
-      const double a = aerosol_.extinction[k] * rho_h / mu;
-      sum[static_cast<std::size_t>(k)] += std::exp(-a * (1.0 - x)) * s[k];
-    }
-  }
   Spectrum out;
-  for (int k = 0; k < kSpectrumBins; ++k)
-    out[k] = static_cast<float>(rho_h / mu * aerosol_.scattering[k] *
-                                sum[static_cast<std::size_t>(k)] / kSteps);
+  for (int k = 0; k < kSpectrumBins; ++k) {
+    if (aerosol_.scattering[k] <= 0.0f) continue;
+    const double a = aerosol_.extinction[k] * rho_h / mu;
+    const double sum = exponential_mass_quadrature(
+        a, kSteps, [&](double x) { return in_scattered(0, z - h * std::log(x), d)[k]; });
+    out[k] = static_cast<float>(rho_h / mu * aerosol_.scattering[k] * sum);
+  }
   return out;
 }
 

@@ -14,6 +14,7 @@
 // zenith (13 nodes from -1 to 1, the horizon one of them), and its azimuth from the sun's (the
 // field is symmetric about the sun's vertical plane); linear between cells.
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -23,6 +24,30 @@
 #include "renderer/spectra/spectrum.h"
 
 namespace landsim::renderer {
+
+// The integral over x in (0, 1] of exp(-a (1 - x)) f(x) (a >= 0): n nodes at equal shares of
+// the exponential weight's own mass, so that a constant f is integrated exactly however large
+// a (a ray's optical depth through the haze: near the horizon hundreds, all its light within
+// the first thousandth of x). Midpoints evenly in x lost most of that light (issue 70: at a =
+// 300, 0.086 of it with 32 nodes).
+template <class F>
+double exponential_mass_quadrature(double a, int n, F&& f) {
+  if (a < 1e-9) {  // the weight is 1: midpoints
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += f((i + 0.5) / n);
+    return sum / n;
+  }
+  // u = (1 - e^-t) / (1 - e^-a) with t = a (1 - x) the optical depth back from x = 1: the
+  // weight's mass is uniform in u, and the integral is (1 - e^-a) / a times f's mean over it.
+  const double mass = -std::expm1(-a);
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double u = (i + 0.5) / n;
+    const double t = -std::log1p(-u * mass);
+    sum += f(1.0 - t / a);
+  }
+  return mass / a * sum / n;
+}
 
 class ScatteringTable {
  public:
