@@ -26,6 +26,11 @@ constexpr std::uint64_t kTableSeed = 0x7461626c65ULL;  // fixed: the same scene,
 constexpr std::array<double, ScatteringTable::kHeights> kLevels = {0.0,  0.25, 0.5, 1.0, 1.5,
                                                                    2.25, 3.25, 4.5, 6.5};
 
+// The one atmosphere's heights above the plain, metres: an aerosol of a few hundred metres to
+// 2 km of scale height low down, the air's column (8 km) above.
+constexpr std::array<double, ScatteringTable::kHeights> kAtmosphereLevels = {
+    0.0, 100.0, 300.0, 700.0, 1500.0, 3000.0, 6000.0, 15000.0, 40000.0};
+
 // Nodes from straight down to straight up, the horizon among them.
 float cosine_of(int m) {
   return -1.0f + static_cast<float>(m) * 2.0f / (ScatteringTable::kCosines - 1);
@@ -58,12 +63,15 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
   const EmbreeScene embree(pp);
   const PathTracer tracer(pp, embree);
   const Medium& medium = tracer.medium();
-  // Levels closer together low down, where an exponential haze is dense; a layer evenly.
-  for (int i = 0; i < kHeights; ++i)
-    table->heights_[static_cast<std::size_t>(i)] =
-        ground + 0.5 +
-        (scene.haze.layer ? scene.haze.layer->top * i / (kHeights - 1)
-                          : scene.haze.scale_height * kLevels[static_cast<std::size_t>(i)]);
+  // Levels closer together low down, where an exponential haze is dense; a layer evenly; the
+  // one atmosphere from the boundary layer's aerosol up through the air's column.
+  for (int i = 0; i < kHeights; ++i) {
+    const auto level = static_cast<std::size_t>(i);
+    table->heights_[level] = ground + 0.5 +
+                             (scene.haze.layer    ? scene.haze.layer->top * i / (kHeights - 1)
+                              : scene.haze.column ? kAtmosphereLevels[level]
+                                                  : scene.haze.scale_height * kLevels[level]);
+  }
   const Vec3 sun = normalize(scene.sun.direction);
   if (sun.x * sun.x + sun.y * sun.y > 1e-12) {
     table->sun_horizontal_ = Vec3f(normalize(Vec3{sun.x, sun.y, 0.0}));
@@ -121,8 +129,10 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
       }
   // The hazy sky's own light: the aerosol alone acts on rays into the sky (the air's is in the
   // sky model), exponential (a layer has none).
+  // Under the one atmosphere the sky is the medium's own light, which surfaces take by
+  // next-event estimation of its single scattering and paths (renderer/transport/path_tracer).
   const MediumComponent& aerosol = medium.component(0);
-  table->has_sky_ = aerosol.present && !aerosol.slab;
+  table->has_sky_ = aerosol.present && !aerosol.slab && !scene.haze.column;
   table->aerosol_ = aerosol;
   table->sun_spectrum_ = tracer.sky().sun_spectral_irradiance();
   table->sun_direction_ = Vec3f(sun);

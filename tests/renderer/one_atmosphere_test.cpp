@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <tuple>
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
@@ -175,11 +176,18 @@ TEST(OneAtmosphere, AConservativeAtmosphereOverAWhiteGroundReturnsAllTheLight) {
 // atmosphere's sky by next-event estimation, weighed against the paths that meet it) over
 // the downwelling irradiance (traced from a horizontal meter, no next-event estimation of
 // the sky): two estimators of the same light, which disagree if either is biased.
+// With the table (multiple scattering looked up over the plain, exact here where the world is
+// the plain) as with the paths.
 TEST(OneAtmosphere, AFlatGroundReadsItsAlbedo) {
   const float albedo = 0.3f;
-  for (const auto& [visibility, elevation] :
-       {std::pair{5000.0, 15.0}, {10000.0, 35.0}, {40000.0, 60.0}}) {
+  for (const auto& [visibility, elevation, scattering] :
+       {std::tuple{5000.0, 15.0, HazeScattering::paths},
+        {10000.0, 35.0, HazeScattering::paths},
+        {40000.0, 60.0, HazeScattering::paths},
+        {5000.0, 15.0, HazeScattering::table},
+        {10000.0, 35.0, HazeScattering::table}}) {
     Scene s = atmosphere_scene(elevation, visibility, albedo);
+    s.haze.scattering = scattering;
     s.settings.spp = 256;
     SpectralBand green{"550", {}};
     green.weight[kGreen] = 1.0f;
@@ -191,7 +199,8 @@ TEST(OneAtmosphere, AFlatGroundReadsItsAlbedo) {
     const double radiance = sum / static_cast<double>(film.pixel_count());
     const double e = downwelling_irradiance(s, 10.0).total()[kGreen];
     const double factor = std::numbers::pi * radiance / e / albedo;
-    std::printf("%g m, sun %g: reflectance factor / albedo %.4f\n", visibility, elevation, factor);
+    std::printf("%g m, sun %g, %s: reflectance factor / albedo %.4f\n", visibility, elevation,
+                scattering == HazeScattering::table ? "table" : "paths", factor);
     EXPECT_NEAR(factor, 1.0, 0.02) << visibility << " m, sun " << elevation;
   }
 }

@@ -77,7 +77,6 @@ void read_atmosphere(const toml::table& root, const std::string& file, Scenario&
   s.sky.model = renderer::SkyKind::atmosphere;
   renderer::Haze h;
   h.enabled = true;
-  h.scattering = renderer::HazeScattering::paths;
   h.aerosol = false;
   renderer::MolecularColumn column;
   if (table) {
@@ -89,9 +88,12 @@ void read_atmosphere(const toml::table& root, const std::string& file, Scenario&
       if (!column.absorption) r.fail("ozone_column", "only with ozone = true");
       column.ozone_column = *du;
     }
-    // The tabulated haze light assumes one exponential aerosol under a sky model: the one
-    // atmosphere's light is traced (docs/ATMOSPHERE.md "One atmosphere").
-    r.choice("multiple_scattering", {"paths"}, "paths");
+    // Every scattering event traced by default (exact); or a haze point's light but the sun's
+    // beam looked up in a table traced once over the plain (docs/ATMOSPHERE.md "One
+    // atmosphere": its error measured on a valley).
+    const std::string light = r.choice("multiple_scattering", {"paths", "table"}, "paths");
+    h.scattering =
+        light == "table" ? renderer::HazeScattering::table : renderer::HazeScattering::paths;
     if (r.has("aerosol")) {
       TableReader a = r.table("aerosol");
       h.aerosol = true;

@@ -56,6 +56,8 @@ TEST(AtmosphereReader, ReadsTheMoleculesAndTheAerosolLayer) {
   EXPECT_FALSE(clear.haze.aerosol);
   EXPECT_FALSE(clear.haze.column->absorption);
   EXPECT_TRUE(load(base() + "[sky]\nmodel = \"atmosphere\"\n").haze.column.has_value());
+  EXPECT_EQ(load(base() + "[atmosphere]\nmultiple_scattering = \"table\"\n").haze.scattering,
+            renderer::HazeScattering::table);
 }
 
 TEST(AtmosphereReader, RefusesASecondDescriptionNamingTheKeyToUse) {
@@ -73,7 +75,7 @@ TEST(AtmosphereReader, RefusesASecondDescriptionNamingTheKeyToUse) {
   const std::string both = error_of(
       base() + "[atmosphere]\n[atmosphere.aerosol]\nvisibility = 9000\noptical_depth = 0.3\n");
   EXPECT_NE(both.find("either visibility"), std::string::npos) << both;
-  const std::string table = error_of(base() + "[atmosphere]\nmultiple_scattering = \"table\"\n");
+  const std::string table = error_of(base() + "[atmosphere]\nmultiple_scattering = \"tables\"\n");
   EXPECT_NE(table.find("[atmosphere] multiple_scattering"), std::string::npos) << table;
   const std::string heights =
       error_of(base() +
