@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/detail/number_table.h"
+#include "renderer/spectra/spectral_colour.h"
 
 namespace landsim::renderer {
 
@@ -37,19 +38,6 @@ StandardAtmosphere load_us_standard() {
   a.air = DensityProfile(a.heights, air);
   a.ozone = DensityProfile(a.heights, ozone);
   return a;
-}
-
-// A bin's mean of f, at 1 nm steps.
-template <typename F>
-Spectrum bin_means(F f) {
-  Spectrum s;
-  const int steps = static_cast<int>(kBinWidth);
-  for (int k = 0; k < kSpectrumBins; ++k) {
-    double sum = 0.0;
-    for (int i = 0; i < steps; ++i) sum += f(bin_start(k) + i + 0.5);
-    s[k] = static_cast<float>(sum / steps);
-  }
-  return s;
 }
 
 struct Tabulated {
@@ -107,12 +95,12 @@ double ozone_cross_section(double nm) {
   return t.y[std::min(i, t.y.size() - 1)];
 }
 
-Spectrum rayleigh_cross_sections() { return bin_means(rayleigh_cross_section); }
-Spectrum ozone_cross_sections() { return bin_means(ozone_cross_section); }
+Spectrum rayleigh_cross_sections() { return bin_average(rayleigh_cross_section); }
+Spectrum ozone_cross_sections() { return bin_average(ozone_cross_section); }
 
 Spectrum solar_irradiance_toa(double distance) {
   const double f = 1.0 / (distance * distance);
-  return bin_means([&](double nm) { return thuillier().linear(nm) * f; });
+  return bin_average([&](double nm) { return thuillier().linear(nm) * f; });
 }
 
 double earth_sun_distance(int day_of_year) {
