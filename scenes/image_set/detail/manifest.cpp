@@ -20,6 +20,25 @@ std::string vec_text(const Vec3& v) { return fmt::format("{} {} {}", v.x, v.y, v
 
 nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
+// The EXR's one-line account of the medium: [haze]'s visibility, or [atmosphere]'s parts.
+std::string haze_text(const renderer::Haze& h) {
+  if (!h.enabled) return "none";
+  if (!h.column)
+    return fmt::format("visibility {} m, scale height {} m", h.visibility, h.scale_height);
+  std::string out = "atmosphere: U.S. Standard";
+  if (h.column->scattering) out += ", Rayleigh";
+  if (h.column->absorption)
+    out += h.column->ozone_column > 0.0 ? fmt::format(", ozone {} DU", h.column->ozone_column)
+                                        : std::string(", ozone");
+  if (!h.aerosol) return out + ", no aerosol";
+  out += h.aerosol_optical_depth
+             ? fmt::format(", aerosol optical depth {}", *h.aerosol_optical_depth)
+             : fmt::format(", aerosol visibility {} m", h.visibility);
+  return out + (h.aerosol_profile == renderer::AerosolProfile::uniform
+                    ? fmt::format(" uniform {}-{} m", h.uniform_bottom, h.uniform_top)
+                    : fmt::format(", scale height {} m", h.scale_height));
+}
+
 std::string sky_text(const renderer::Sky& sky) {
   switch (sky.model) {
     case renderer::SkyKind::hosek_wilkie:
@@ -218,28 +237,25 @@ nlohmann::json camera_json(const renderer::View& v, const Vec3& origin) {
 renderer::ImageMetadata metadata(const Scenario& s, const renderer::View& v,
                                  const renderer::Scene& scene, const nlohmann::json& camera) {
   const Vec3& sun = scene.sun.direction;
-  renderer::ImageMetadata out = {
-      {"version", LANDSIM_VERSION},
-      {"scenario", s.source},
-      {"scenario_hash", s.text_hash},
-      {"view", v.name},
-      {"camera_position", vec_text(v.position + scene.origin)},
-      {"camera_target", vec_text(v.target + scene.origin)},
-      {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
-      {"camera", camera.dump()},
-      {"legend", legend(s).dump()},
-      {"scene_origin", vec_text(scene.origin)},
-      {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
-      {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
-      {"sun_direction", vec_text(sun)},
-      {"sky", sky_text(s.sky)},
-      {"haze", s.haze.enabled ? fmt::format("visibility {} m, scale height {} m", s.haze.visibility,
-                                            s.haze.scale_height)
-                              : std::string("none")},
-      {"spp", std::to_string(s.render.spp)},
-      {"noise_threshold", fmt::format("{}", s.render.noise_threshold)},
-      {"seed", std::to_string(s.render.seed)},
-      {"sampling_seed", std::to_string(scene.settings.seed)}};
+  renderer::ImageMetadata out = {{"version", LANDSIM_VERSION},
+                                 {"scenario", s.source},
+                                 {"scenario_hash", s.text_hash},
+                                 {"view", v.name},
+                                 {"camera_position", vec_text(v.position + scene.origin)},
+                                 {"camera_target", vec_text(v.target + scene.origin)},
+                                 {"fov_y_deg", fmt::format("{}", v.fov_y_deg)},
+                                 {"camera", camera.dump()},
+                                 {"legend", legend(s).dump()},
+                                 {"scene_origin", vec_text(scene.origin)},
+                                 {"sun_elevation_deg", fmt::format("{}", s.sun.elevation_deg)},
+                                 {"sun_azimuth_deg", fmt::format("{}", s.sun.azimuth_deg)},
+                                 {"sun_direction", vec_text(sun)},
+                                 {"sky", sky_text(s.sky)},
+                                 {"haze", haze_text(s.haze)},
+                                 {"spp", std::to_string(s.render.spp)},
+                                 {"noise_threshold", fmt::format("{}", s.render.noise_threshold)},
+                                 {"seed", std::to_string(s.render.seed)},
+                                 {"sampling_seed", std::to_string(scene.settings.seed)}};
   // What each band layer measures: its box or response file.
   for (const BandSettings& b : s.bands) out.emplace_back("band." + b.name, b.description);
   return out;

@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <set>
 #include <string>
 
 #include "core/input_error.h"
 #include "renderer/output/image_output.h"
+#include "tests/support/rendered_set.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -177,6 +179,41 @@ TEST(ImageSet, TheLegendNamesEveryIdInTheLayers) {
   EXPECT_EQ(targets_seen, (std::set<std::uint64_t>{1}));  // the truck, id 1
   for (const auto c : classes_seen)
     EXPECT_TRUE(legend["object"]["values"].contains(std::to_string(c))) << c;
+}
+
+}  // namespace
+}  // namespace landsim::scenes
+
+namespace landsim::scenes {
+namespace {
+
+// The manifest states the one atmosphere's optical depths at 550 nm from the lowest ground,
+// what the sun's beam is dimmed by: each as worked out apart from the medium (Hansen and
+// Travis 1974's Rayleigh depth of the sea-level column scaled by the U.S. Standard's
+// pressure at the ground's altitude; 345.9 DU of ozone times its cross section at 550 nm;
+// Koschmieder's 3.912 / V less the air's share, over the scale height), and the EXR says it.
+TEST(ImageSet, TheManifestStatesTheAtmospheresOpticalDepths) {
+  Scenario s = load_scenario(landsim::testing::source_file("scenes/examples/one_atmosphere.toml"));
+  s.views[0].width = 16;
+  s.views[0].height = 9;
+  s.render.spp = 1;
+  s.species.clear();
+  s.grass.clear();
+  const auto images = landsim::testing::render_in_memory(s);
+  ASSERT_EQ(images.size(), 1u);
+  const nlohmann::json e = nlohmann::json::parse(images[0].manifest_entry);
+  const nlohmann::json& tau = e["settings"]["atmosphere"]["optical_depth_550nm"];
+  // The volcano's lowest ground is about 95 m up: 98.9% of the sea-level pressure.
+  const double rayleigh = 0.008569 / std::pow(0.55, 4) *
+                          (1.0 + 0.0113 / (0.55 * 0.55) + 0.00013 / std::pow(0.55, 4)) * 0.989;
+  EXPECT_NEAR(tau["rayleigh"].get<double>() / rayleigh, 1.0, 0.01) << tau.dump();
+  EXPECT_NEAR(tau["ozone"].get<double>() / (345.86 * 2.6867e20 * 3.5e-25), 1.0, 0.01);
+  EXPECT_NEAR(tau["aerosol"].get<double>() / ((3.912 / 15000.0 - 1.14e-5) * 600.0), 1.0, 0.01);
+  EXPECT_EQ(e["settings"]["haze"], nullptr);
+  bool stated = false;
+  for (const auto& [key, value] : images[0].metadata)
+    if (key == "haze") stated = value.find("aerosol visibility 15000 m") != std::string::npos;
+  EXPECT_TRUE(stated);
 }
 
 }  // namespace
