@@ -97,8 +97,13 @@ void define(NetcdfFile& f, const Quantity& q, const std::vector<int>& dims,
 }
 
 std::vector<Quantity> direction_quantities(const MeasureRecord& r) {
-  Quantity brf{"brf", "bidirectional reflectance factor of the luminance", "1",
-               "surface_bidirectional_reflectance"};
+  Quantity brf = r.bottom_of_atmosphere
+                     ? Quantity{"hdrf",
+                                "hemispherical-directional reflectance factor of the luminance at "
+                                "the bottom of the atmosphere",
+                                "1", ""}
+                     : Quantity{"brf", "bidirectional reflectance factor of the luminance", "1",
+                                "surface_bidirectional_reflectance"};
   Quantity radiance{"radiance", "luminance leaving the cell towards the sensor", "cd m-2", ""};
   for (const renderer::DistantResult& d : r.directions) {
     brf.mean.push_back(d.brf.mean);
@@ -111,8 +116,11 @@ std::vector<Quantity> direction_quantities(const MeasureRecord& r) {
 
 // Each band's BRF, direction by direction (the band varying fastest).
 Quantity band_quantity(const MeasureRecord& r) {
-  Quantity q{"band_brf", "bidirectional reflectance factor in each band", "1",
-             "surface_bidirectional_reflectance"};
+  Quantity q = r.bottom_of_atmosphere
+                   ? Quantity{"band_hdrf",
+                              "hemispherical-directional reflectance factor in each band", "1", ""}
+                   : Quantity{"band_brf", "bidirectional reflectance factor in each band", "1",
+                              "surface_bidirectional_reflectance"};
   for (const renderer::DistantResult& d : r.directions)
     for (std::size_t b = 0; b < r.band_names.size(); ++b) {
       q.mean.push_back(d.band_brf.at(b).mean);
@@ -174,6 +182,11 @@ void write_measure_netcdf(const std::filesystem::path& path, const MeasureRecord
   f.text(NC_GLOBAL, "source", "landsim brf (spectral Monte Carlo path tracer)");
   f.text(NC_GLOBAL, "scenario", r.scenario);
   f.number(NC_GLOBAL, "samples_per_direction", static_cast<double>(r.samples));
+  f.text(NC_GLOBAL, "level", r.bottom_of_atmosphere ? "bottom of atmosphere" : "top of atmosphere");
+  if (r.bhr) {
+    f.number(NC_GLOBAL, "bhr", r.bhr->brf.mean);
+    f.number(NC_GLOBAL, "bhr_standard_error", r.bhr->brf.standard_error);
+  }
 
   const int direction = f.dimension("direction", r.directions.size());
   const int zenith = f.variable("sensor_zenith_angle", NC_DOUBLE, {direction});

@@ -23,6 +23,10 @@ struct MeasureRecord {
   // RAMI's signed view zenith of each direction, in the principal plane (else empty).
   std::vector<double> signed_view_zenith_deg;
   std::vector<std::string> band_names;
+  // At the bottom of the atmosphere: the directions' values are HDRFs, and `bhr` the
+  // bi-hemispherical reflectance there.
+  bool bottom_of_atmosphere = false;
+  std::optional<renderer::DistantResult> bhr;
   std::uint64_t budget_paths = 0;
   std::optional<renderer::EnergyBudget> budget_sun, budget_isotropic;
 };

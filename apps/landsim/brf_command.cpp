@@ -55,19 +55,23 @@ nlohmann::json budget_json(const renderer::EnergyBudget& b, int paths) {
           {"total", value_json(b.total)}};
 }
 
+// A reflectance factor's key: the BRF above the atmosphere, the HDRF at its bottom.
+std::string factor_key(bool bottom) { return bottom ? "hdrf" : "brf"; }
+
 nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& scene,
-                           const std::vector<renderer::DistantResult>& results, int spp,
-                           bool plane) {
+                           const std::vector<renderer::DistantResult>& results, int spp, bool plane,
+                           bool bottom) {
+  const std::string key = factor_key(bottom);
   nlohmann::json directions = nlohmann::json::array();
   for (const renderer::DistantResult& r : results) {
     nlohmann::json bands = nlohmann::json::object();
     for (std::size_t b = 0; b < r.band_brf.size(); ++b)
-      bands[scene.bands[b].name] = {{"brf", r.band_brf[b].mean},
-                                    {"brf_se", r.band_brf[b].standard_error}};
+      bands[scene.bands[b].name] = {{key, r.band_brf[b].mean},
+                                    {key + "_se", r.band_brf[b].standard_error}};
     nlohmann::json d = {{"zenith_deg", r.direction.zenith_deg},
                         {"azimuth_deg", r.direction.azimuth_deg},
-                        {"brf", r.brf.mean},
-                        {"brf_se", r.brf.standard_error},
+                        {key, r.brf.mean},
+                        {key + "_se", r.brf.standard_error},
                         {"radiance", r.radiance.mean},
                         {"radiance_se", r.radiance.standard_error},
                         {"paths", r.paths},
@@ -76,6 +80,7 @@ nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& sce
     directions.push_back(std::move(d));
   }
   return {{"scenario", s.source},
+          {"level", bottom ? "boa" : "toa"},
           {"sun_zenith_deg", 90.0 - s.sun.elevation_deg},
           {"sun_azimuth_deg", s.sun.azimuth_deg},
           {"samples", spp},
@@ -83,13 +88,24 @@ nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& sce
 }
 
 std::string result_csv(const nlohmann::json& j) {
-  std::string out = "view_zenith_deg,zenith_deg,azimuth_deg,brf,brf_se,radiance,radiance_se\n";
+  const std::string key = factor_key(j["level"] == "boa");
+  std::string out =
+      fmt::format("view_zenith_deg,zenith_deg,azimuth_deg,{0},{0}_se,radiance,radiance_se\n", key);
   for (const auto& d : j["directions"])
     out += fmt::format(
         "{},{},{},{},{},{},{}\n", d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
-        d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>(), d["brf"].get<double>(),
-        d["brf_se"].get<double>(), d["radiance"].get<double>(), d["radiance_se"].get<double>());
+        d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>(), d[key].get<double>(),
+        d[key + "_se"].get<double>(), d["radiance"].get<double>(), d["radiance_se"].get<double>());
   return out;
+}
+
+// The bi-hemispherical reflectance at the bottom of the atmosphere, luminance and bands.
+nlohmann::json bhr_json(const renderer::DistantResult& r, const renderer::Scene& scene) {
+  nlohmann::json bands = nlohmann::json::object();
+  for (std::size_t b = 0; b < r.band_brf.size(); ++b)
+    bands[scene.bands[b].name] = {{"mean", r.band_brf[b].mean},
+                                  {"se", r.band_brf[b].standard_error}};
+  return {{"mean", r.brf.mean}, {"se", r.brf.standard_error}, {"paths", r.paths}, {"bands", bands}};
 }
 
 }  // namespace
@@ -114,6 +130,10 @@ CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
       ->check(CLI::Range(0, 1 << 28));
   cmd->add_option("--threads", args.threads, "Worker threads (0: every core)")
       ->check(CLI::Range(0, 1024));
+  cmd->add_option("--level", args.level,
+                  "toa: the BRF seen from above the atmosphere (default); boa: the HDRF and BHR "
+                  "just above the cell, under the atmosphere's light")
+      ->check(CLI::IsMember({"toa", "boa"}));
   cmd->add_flag("--json", args.json, "Print the measure as one JSON object on stdout");
   add_set_option(*cmd, args.sets);
   return cmd;
@@ -136,6 +156,8 @@ int run_brf(const BrfArgs& args) {
   options.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   options.threads = args.threads;
   options.target_relative_error = args.target_se;
+  const bool bottom = args.level == "boa";
+  options.bottom_of_atmosphere = bottom;
   exporters::MeasureRecord record;
   record.scenario = scenario.source;
   record.sun_zenith_deg = 90.0 - scenario.sun.elevation_deg;
@@ -146,7 +168,12 @@ int run_brf(const BrfArgs& args) {
     if (plane)
       record.signed_view_zenith_deg.push_back(signed_zenith(r.direction, scenario.sun.azimuth_deg));
   for (const renderer::SpectralBand& b : scene.bands) record.band_names.push_back(b.name);
-  nlohmann::json j = result_json(scenario, scene, record.directions, args.spp, plane);
+  record.bottom_of_atmosphere = bottom;
+  nlohmann::json j = result_json(scenario, scene, record.directions, args.spp, plane, bottom);
+  if (bottom) {
+    record.bhr = renderer::measure_bhr(scene, options);
+    j["bhr"] = bhr_json(*record.bhr, scene);
+  }
   if (args.budget_paths > 0) {
     renderer::EnergyOptions budget;
     budget.samples = static_cast<std::uint64_t>(args.budget_paths);
@@ -187,11 +214,16 @@ int run_brf(const BrfArgs& args) {
       std::cout << fmt::format("{:<16} {}  {}\n", k, share("budget", k),
                                share("budget_isotropic", k));
   }
+  const std::string key = factor_key(bottom);
+  if (bottom)
+    std::cout << fmt::format("BHR {:.4f} +- {:.4f}\n", j["bhr"]["mean"].get<double>(),
+                             j["bhr"]["se"].get<double>());
   for (const auto& d : j["directions"])
-    std::cout << fmt::format("{:>7.1f} {:>7.1f}  BRF {:.4f} +- {:.4f}  radiance {:.6g}\n",
+    std::cout << fmt::format("{:>7.1f} {:>7.1f}  {} {:.4f} +- {:.4f}  radiance {:.6g}\n",
                              d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
-                             d["azimuth_deg"].get<double>(), d.value("brf", std::nan("")),
-                             d.value("brf_se", std::nan("")), d["radiance"].get<double>());
+                             d["azimuth_deg"].get<double>(), bottom ? "HDRF" : "BRF",
+                             d.value(key, std::nan("")), d.value(key + "_se", std::nan("")),
+                             d["radiance"].get<double>());
   return 0;
 }
 

@@ -23,6 +23,9 @@ struct BrfArgs {
   int budget_paths = 100000;            // paths from the sun for the energy budget; 0: none
   int threads = 0;
   bool json = false;
+  // "toa": the BRF above the atmosphere (or the cell); "boa": the HDRF and BHR just above the
+  // cell, under the atmosphere's light.
+  std::string level = "toa";
 };
 
 CLI::App* add_brf_command(CLI::App& app, BrfArgs& args);

@@ -13,10 +13,12 @@
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
 #include "renderer/acceleration/stochastic_lod.h"
+#include "renderer/atmosphere/downwelling.h"
 #include "renderer/atmosphere/medium.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/spectra/colour_matching.h"
 #include "renderer/spectra/spectral_colour.h"
+#include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/path_tracer.h"
 
 namespace landsim::renderer {
@@ -26,6 +28,8 @@ constexpr double kPi = std::numbers::pi;
 // Paths are summed in blocks of this many, the blocks in order: the sums do not depend on
 // which thread took which block.
 constexpr std::uint64_t kBlock = 256;
+// How far above the cell's top a bottom-of-atmosphere measure's rays start, metres.
+constexpr double kAboveCell = 0.01;
 
 // Sums of a block's samples: luminance and each band.
 struct Sums {
@@ -40,7 +44,15 @@ Vec3f towards(const DistantDirection& d) {
 
 // Paths i in [first, end) of one batch: a stream of its own (an independently scrambled Sobol
 // sequence), its points stratified over the cell and over every later pair of dimensions.
-Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, double top, const Vec3f& down,
+// A cosine-distributed direction down, from the lens's dimensions (a measure has no lens).
+Vec3f cosine_down(const CounterRng& rng) {
+  const std::array<float, 2> u = rng.uniform2(detail::kLens0);
+  const float r = std::sqrt(u[0]), a = 2.0f * std::numbers::pi_v<float> * u[1];
+  return {r * std::cos(a), r * std::sin(a), -std::sqrt(std::max(0.0f, 1.0f - u[0]))};
+}
+
+// `down` null: every path its own cosine-distributed direction (the upward flux's estimate).
+Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, double top, const Vec3f* down,
                  std::uint64_t seed, std::uint64_t key, std::uint64_t first, std::uint64_t end,
                  std::size_t bands) {
   Sums s;
@@ -51,7 +63,8 @@ Sums trace_block(const PathTracer& tracer, const PeriodicCell& cell, double top,
     const Vec3f origin{static_cast<float>(cell.x0 + (cell.x1 - cell.x0) * u[0]),
                        static_cast<float>(cell.y0 + (cell.y1 - cell.y0) * u[1]),
                        static_cast<float>(top)};
-    const PathSample p = tracer.trace({origin, down}, rng, pixel_ray_mask(i));
+    const PathSample p =
+        tracer.trace({origin, down ? *down : cosine_down(rng)}, rng, pixel_ray_mask(i));
     s.y += rec709_luminance(Vec3(p.radiance));
     for (std::size_t b = 0; b < bands; ++b) s.b[b] += p.bands[b];
   }
@@ -89,7 +102,7 @@ struct Batches {
 
 // Every batch's paths from its `per_batch` on to `to`: blocks traced in parallel, added to the
 // batch's sums in order (the same bits on any thread count).
-void extend(const Tracing& t, const Vec3f& down, Batches& b, std::uint64_t to) {
+void extend(const Tracing& t, const Vec3f* down, Batches& b, std::uint64_t to) {
   const std::uint64_t from = b.per_batch, blocks = (to - from + kBlock - 1) / kBlock;
   std::vector<Sums> block(b.sums.size() * blocks);
   t.arena.execute([&] {
@@ -132,6 +145,33 @@ DistantResult result_of(const Batches& b, const DistantDirection& direction, con
   return r;
 }
 
+// The factors from a mean radiance to the reflectance factor, luminance and each band: at the
+// top, pi / (E cos theta_sun) with E the sun's irradiance normal to its beam (the BRF); at the
+// bottom, pi / E with E the downwelling irradiance at `top` (the HDRF, a white Lambertian
+// reference's radiance being E / pi). A dark light (a sky alone lights the cell above the
+// atmosphere) has none: not a number, the radiance stands.
+Scales reference_scales(const Scene& scene, const DistantMeasureOptions& options, double top,
+                        double cos_sun, std::size_t bands) {
+  Spectrum e;
+  double per = cos_sun;
+  if (options.bottom_of_atmosphere) {
+    e = downwelling_irradiance(scene, top).total();
+    per = 1.0;
+  } else {
+    e = SkyModel(scene.sky, scene.sun, scene.ground.plain_albedo()).sun_spectral_irradiance();
+  }
+  const auto scale = [&](double irradiance) {
+    return irradiance > 0.0 ? kPi / (irradiance * per) : std::numeric_limits<double>::quiet_NaN();
+  };
+  Scales s{scale(rec709_luminance(Vec3(spectrum_to_rgb(e)))), {}};
+  for (std::size_t b = 0; b < bands; ++b) {
+    double band = 0.0;
+    for (int k = 0; k < kSpectrumBins; ++k) band += scene.bands[b].weight[k] * e[k];
+    s.band.push_back(scale(band));
+  }
+  return s;
+}
+
 }  // namespace
 
 double entry_height(const Scene& scene, const PeriodicCell& cell) {
@@ -162,31 +202,19 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
   if (!(cos_sun > 0.0)) throw std::invalid_argument("the sun is below the horizon");
   const EmbreeScene embree(scene);
   const PathTracer tracer(scene, embree);
-  const double top = entry_height(scene, cell);
-  // E normal to the beam, as the tracer's sun gives it: luminance and each band.
-  const SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
-  const Spectrum& sun = sky.sun_spectral_irradiance();
-  const double e_y = rec709_luminance(Vec3(spectrum_to_rgb(sun)));
+  const double top =
+      options.bottom_of_atmosphere ? cell.top + kAboveCell : entry_height(scene, cell);
   const std::size_t bands = std::min<std::size_t>(scene.bands.size(), kMaxBands);
-  std::vector<double> e_band(bands);
-  for (std::size_t b = 0; b < bands; ++b)
-    for (int k = 0; k < kSpectrumBins; ++k) e_band[b] += scene.bands[b].weight[k] * sun[k];
-
+  const Scales scales = reference_scales(scene, options, top, cos_sun, bands);
   const auto batches = static_cast<std::uint64_t>(std::max(options.batches, 2));
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   const Tracing t{tracer, cell, top, options.seed, bands, arena};
-  // A dark sun (a sky alone lights the cell) has no BRF: not a number, the radiance stands.
-  const auto brf_scale = [&](double e) {
-    return e > 0.0 ? kPi / (e * cos_sun) : std::numeric_limits<double>::quiet_NaN();
-  };
-  Scales scales{brf_scale(e_y), {}};
-  for (std::size_t b = 0; b < bands; ++b) scales.band.push_back(brf_scale(e_band[b]));
   const std::uint64_t cap = std::max<std::uint64_t>(options.max_samples / batches, 1);
   std::vector<DistantResult> out;
   for (std::size_t d = 0; d < directions.size(); ++d) {
     const Vec3f down = towards(directions[d]) * -1.0f;
     Batches sums(batches, d * batches);
-    extend(t, down, sums, std::max<std::uint64_t>((options.samples + batches - 1) / batches, 1));
+    extend(t, &down, sums, std::max<std::uint64_t>((options.samples + batches - 1) / batches, 1));
     DistantResult r = result_of(sums, directions[d], scales);
     // Until the BRF's relative standard error reaches the target: the paths needed, estimated
     // from the error so far (it falls as 1 / sqrt(paths)) with a tenth more, and at least a
@@ -197,12 +225,34 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
       const double needed =
           std::max(1.1 * ratio * ratio, 1.25) * static_cast<double>(sums.per_batch);
       const auto blocks = static_cast<std::uint64_t>(std::ceil(needed / kBlock));
-      extend(t, down, sums, std::min(cap, blocks * kBlock));
+      extend(t, &down, sums, std::min(cap, blocks * kBlock));
       r = result_of(sums, directions[d], scales);
     }
     out.push_back(std::move(r));
   }
   return out;
+}
+
+DistantResult measure_bhr(const Scene& scene, const DistantMeasureOptions& options) {
+  if (!scene.periodic && !options.region)
+    throw std::invalid_argument("a distant measure needs a periodic cell or a region");
+  const PeriodicCell& cell = options.region ? *options.region : *scene.periodic;
+  const double cos_sun = normalize(scene.sun.direction).z;
+  if (!(cos_sun > 0.0)) throw std::invalid_argument("the sun is below the horizon");
+  const EmbreeScene embree(scene);
+  const PathTracer tracer(scene, embree);
+  DistantMeasureOptions bottom = options;
+  bottom.bottom_of_atmosphere = true;
+  const double top = cell.top + kAboveCell;
+  const std::size_t bands = std::min<std::size_t>(scene.bands.size(), kMaxBands);
+  const Scales scales = reference_scales(scene, bottom, top, cos_sun, bands);
+  const auto batches = static_cast<std::uint64_t>(std::max(options.batches, 2));
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  const Tracing t{tracer, cell, top, options.seed, bands, arena};
+  // Its own streams, after every direction's.
+  Batches sums(batches, std::uint64_t{1} << 32);
+  extend(t, nullptr, sums, std::max<std::uint64_t>((options.samples + batches - 1) / batches, 1));
+  return result_of(sums, {0.0, 0.0}, scales);
 }
 
 }  // namespace landsim::renderer

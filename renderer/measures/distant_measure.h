@@ -52,6 +52,11 @@ struct DistantMeasureOptions {
   std::uint64_t max_samples = std::uint64_t{1} << 26;
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
+  // At the bottom of the atmosphere (docs/CANOPIES.md "Measures"): rays start just above the
+  // cell instead of above the medium, and each BRF becomes the HDRF, the radiance over a white
+  // Lambertian reference's under the same light: pi L / E, E the downwelling irradiance there
+  // (renderer/atmosphere/downwelling.h, from the same medium over the plain's albedo).
+  bool bottom_of_atmosphere = false;
   // Where the rays start, uniformly over x0-x1, y0-y1 at height `top`; empty: the scene's
   // periodic cell. A scene that is not periodic (the cell copied around itself) is measured
   // over a region of it.
@@ -63,6 +68,12 @@ struct DistantMeasureOptions {
 std::vector<DistantResult> measure_distant(const Scene& scene,
                                            const std::vector<DistantDirection>& directions,
                                            const DistantMeasureOptions& options);
+
+// The cell's bi-hemispherical reflectance at the bottom of the atmosphere under the scene's own
+// sun and sky (RAMI4ATM's BHR): the upward flux just above the cell (pi x the mean radiance
+// of cosine-distributed views down) over the downwelling irradiance there; in `brf` and
+// `band_brf` (direction zenith 0), the upward radiance's mean in `radiance`.
+DistantResult measure_bhr(const Scene& scene, const DistantMeasureOptions& options);
 
 // RAMI's principal plane: view zeniths -75 to 75 every 2 degrees, negative ones on the sun's
 // side (azimuth of the sun), positive ones opposite.

@@ -98,6 +98,15 @@ TEST(JsonContract, Brf) {
                   dir);
 }
 
+// At the bottom of the one atmosphere: the HDRF in place of the BRF, and the BHR.
+TEST(JsonContract, BrfAtTheBottomOfTheAtmosphere) {
+  TempDir dir;
+  expect_contract("brf",
+                  testing::source_file("scenes/rami4atm/hom00_whi_s00s_m04.toml").string() +
+                      " --level boa --direction 0,0 --spp 64 --budget-paths 1000",
+                  dir);
+}
+
 TEST(JsonContract, Info) {
   TempDir dir;
   expect_contract("info", "", dir);

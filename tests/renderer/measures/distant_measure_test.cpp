@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/counter_rng.h"
+#include "renderer/atmosphere/sky.h"
 #include "tests/renderer/measures/canopy_cells.h"
 
 namespace landsim::renderer {
@@ -25,6 +26,30 @@ TEST(DistantMeasure, ALambertianSoilHasItsAlbedoForBrfInEveryDirection) {
   for (const DistantResult& r :
        measure_distant(s, {{0.0, 0.0}, {40.0, 0.0}, {60.0, 180.0}, {75.0, 90.0}}, samples(512)))
     EXPECT_NEAR(r.brf.mean, 0.3, 2e-3) << r.direction.zenith_deg << " " << r.direction.azimuth_deg;
+}
+
+// At the bottom of the one atmosphere a Lambertian soil's HDRF and BHR are its albedo: the
+// reference is the light that reaches it, the sun through the air and the sky the air makes
+// (RAMI4ATM's boa measures). Above the atmosphere the same soil's BRF is not: the air adds its
+// own light and takes some of the soil's.
+TEST(DistantMeasure, AtTheBottomOfTheAtmosphereALambertianSoilsHdrfAndBhrAreItsAlbedo) {
+  Scene s = bare_cell(0.3, 40.0, 0.0);
+  s.ground.albedo = {0.3f, 0.3f, 0.3f};
+  s.ground.edge_albedo = Vec3f{0.3f, 0.3f, 0.3f};
+  s.sky.model = SkyKind::atmosphere;
+  s.sun.irradiance = sun_irradiance(s.sky, 50.0, s.sun.angular_radius);
+  s.haze.enabled = true;
+  s.haze.column = MolecularColumn{};
+  s.haze.visibility = 10000.0;
+  s.haze.scale_height = 1000.0;
+  DistantMeasureOptions o = samples(4096);
+  o.bottom_of_atmosphere = true;
+  for (const DistantResult& r : measure_distant(s, {{0.0, 0.0}, {40.0, 0.0}, {60.0, 180.0}}, o))
+    EXPECT_NEAR(r.brf.mean, 0.3, 0.006) << r.direction.zenith_deg << " +- " << r.brf.standard_error;
+  const DistantResult bhr = measure_bhr(s, o);
+  EXPECT_NEAR(bhr.brf.mean, 0.3, 0.006) << "+- " << bhr.brf.standard_error;
+  o.bottom_of_atmosphere = false;
+  EXPECT_GT(std::abs(measure_distant(s, {{0.0, 0.0}}, o)[0].brf.mean - 0.3), 0.02);
 }
 
 TEST(DistantMeasure, PrincipalPlaneRunsFromTheSunsSideAcrossNadir) {
