@@ -192,6 +192,9 @@ struct Haze {
   // The aerosol's vertical optical depth at 550 nm; when set, instead of the visibility.
   std::optional<double> aerosol_optical_depth;
   bool aerosol = true;  // false: [atmosphere] without an aerosol
+  // [atmosphere] by paths: the higher orders through a control variate (renderer/transport/
+  // radiance_model.h); off where the model itself is traced.
+  bool control_variate = true;
   HazeScattering scattering = HazeScattering::table;
   double visibility = 20000.0;   // meteorological range at the base height, metres
   double scale_height = 1200.0;  // metres

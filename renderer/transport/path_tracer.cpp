@@ -6,6 +6,7 @@
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/glossy.h"
 #include "renderer/transport/periodic_cell.h"
+#include "renderer/transport/radiance_model.h"
 #include "renderer/transport/scattering_table.h"
 
 #include <algorithm>
@@ -95,6 +96,8 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
     });
   }
+  if (atmosphere_ && !table_ && scene.haze.control_variate && bounce_limit_ != 0)
+    model_ = RadianceModel::build(scene);
   if (atmosphere_) {
     // The one atmosphere's sky is the medium's light: its single scattering seen from the
     // plain's height is what surfaces draw their sky directions from.
@@ -279,6 +282,11 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
                table_->in_scattered(c, static_cast<double>(p.position.z), d);
     return out;
   }
+  if (atmosphere_ && sky_nee && model_) {
+    // The sky's single scattering by next-event estimation (below); the rest of the light
+    // from the model in closed form, the path that goes on adding what differs from it.
+    out += model_->in_scattered(p.weight, static_cast<double>(p.position.z), d);
+  }
   if (atmosphere_) return sky_nee ? out + haze_atmosphere_sky(p, d, rng, dim, mask, rays) : out;
   // The sky, combined with the phase function's own sampling.
   const std::array<float, 2> sky = rng.uniform2(dim + kHazeSky0);
@@ -316,10 +324,15 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
 }
 
 Spectrum PathTracer::radiance(const Ray& camera_ray, const CounterRng& rng, std::uint32_t mask,
-                              bool sun_disc, PathSample& out) const {
+                              bool sun_disc, PathSample& out, bool sky_single_scattering) const {
   out.first.depth = kInfinity;
   Spectrum radiance;
-  PathState camera{camera_ray, Spectrum::constant(1.0f), 0.0f, true, 0, 0};
+  PathState camera;
+  camera.ray = camera_ray;
+  camera.throughput = Spectrum::constant(1.0f);
+  // Without the sky's single scattering on the first segment, if it leaves into the sky: as
+  // if a vertex had taken it by next-event estimation with a density of its own of zero.
+  camera.sky_nee = !sky_single_scattering;
   std::optional<PathState> branch;
   follow(camera, rng, mask, sun_disc, out, radiance, &branch);
   if (branch) follow(*branch, rng, mask, sun_disc, out, radiance, nullptr);
@@ -362,7 +375,9 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
         // A ray into the one atmosphere's sky from a surface that took that sky by next-event
         // estimation: its single scattering here is weighed against that estimate's density.
         const float w_sky =
-            !hit && path.sky_nee ? power_heuristic(last_pdf, sky_pdf(ray.direction)) : 1.0f;
+            !hit && path.sky_nee
+                ? (last_pdf > 0.0f ? power_heuristic(last_pdf, sky_pdf(ray.direction)) : 0.0f)
+                : 1.0f;
         radiance += throughput * haze_light(p, ray.direction, throughput, rng, dim, bounce == 0,
                                             bounce < bounce_limit_, w_sky, mask, out.rays);
         // With the table, which holds the haze's further light, the path goes on through.
@@ -377,6 +392,12 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
           PathState next = path;
           next.dimension_offset = split ? kBranchDimensions : path.dimension_offset;
           if (scatter_from(p, q, rng, dim, next)) {
+            // The control variate: the model's radiance along the way the path goes on, under
+            // the path's own weight, is what its estimate stands in for.
+            if (model_ && bounce < bounce_limit_)
+              radiance =
+                  radiance - next.throughput * model_->radiance(static_cast<double>(p.position.z),
+                                                                next.ray.direction);
             ++next.bounce;
             if (split) {
               *branch = next;

@@ -29,6 +29,7 @@
 namespace landsim::renderer {
 
 class ScatteringTable;
+class RadianceModel;
 
 // A path's longest run of scattering events when the scene sets no limit: a guard against
 // a path that never ends, not a bias (docs/ATMOSPHERE.md "Paths": no measured band moves by
@@ -48,9 +49,11 @@ class PathTracer : public Integrator {
                    std::uint32_t mask = kAllBuckets) const override;
   // The spectral radiance arriving along -ray.direction at ray.origin. `sun_disc`: whether a
   // ray that meets the sun's disc sees it (false: diffuse light alone, as irradiance
-  // meters split it).
+  // meters split it). `sky_single_scattering` false: without the sun's single scattering on
+  // the ray's own segment where it leaves into the sky (what the one atmosphere's haze points
+  // take by next-event estimation; renderer/transport/radiance_model.h models the rest).
   Spectrum radiance(const Ray& ray, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
-                    PathSample& out) const;
+                    PathSample& out, bool sky_single_scattering = true) const;
 
   const SkyModel& sky() const { return sky_; }
   const Medium& medium() const { return medium_; }
@@ -167,6 +170,9 @@ class PathTracer : public Integrator {
   BinSet seen_;            // the same as indices
   int bounce_limit_;
   bool atmosphere_ = false;  // SkyKind::atmosphere: the sky is the medium's light
+  // The one atmosphere by paths: the radiance model whose light haze points take in closed
+  // form, their paths adding only what differs from it (a control variate; null: none).
+  std::shared_ptr<const RadianceModel> model_;
   // HazeScattering::table: the haze's light but the sun's single scattering; null: traced.
   std::shared_ptr<const ScatteringTable> table_;
   // With the table's hazy sky: surface_sky's luminance from the plain's height, to sample by;

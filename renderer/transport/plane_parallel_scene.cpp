@@ -10,6 +10,7 @@ Scene plane_parallel_scene(const Scene& scene, float ground_height) {
   pp.sun = scene.sun;
   pp.haze = scene.haze;
   pp.haze.scattering = HazeScattering::paths;
+  pp.haze.control_variate = false;  // the plain's paths are what a model is traced from
   pp.bands = scene.bands;
   pp.settings.max_bounces = scene.settings.max_bounces;
   const Vec3f albedo = scene.ground.plain_albedo();

@@ -26,11 +26,6 @@ constexpr std::uint64_t kTableSeed = 0x7461626c65ULL;  // fixed: the same scene,
 constexpr std::array<double, ScatteringTable::kHeights> kLevels = {0.0,  0.25, 0.5, 1.0, 1.5,
                                                                    2.25, 3.25, 4.5, 6.5};
 
-// The one atmosphere's heights above the plain, metres: an aerosol of a few hundred metres to
-// 2 km of scale height low down, the air's column (8 km) above.
-constexpr std::array<double, ScatteringTable::kHeights> kAtmosphereLevels = {
-    0.0, 100.0, 300.0, 700.0, 1500.0, 3000.0, 6000.0, 15000.0, 40000.0};
-
 // Nodes from straight down to straight up, the horizon among them.
 float cosine_of(int m) {
   return -1.0f + static_cast<float>(m) * 2.0f / (ScatteringTable::kCosines - 1);
@@ -69,7 +64,7 @@ std::shared_ptr<const ScatteringTable> ScatteringTable::build(const Scene& scene
     const auto level = static_cast<std::size_t>(i);
     table->heights_[level] = ground + 0.5 +
                              (scene.haze.layer    ? scene.haze.layer->top * i / (kHeights - 1)
-                              : scene.haze.column ? kAtmosphereLevels[level]
+                              : scene.haze.column ? ScatteringTable::kAtmosphereLevels[level]
                                                   : scene.haze.scale_height * kLevels[level]);
   }
   const Vec3 sun = normalize(scene.sun.direction);

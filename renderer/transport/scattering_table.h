@@ -71,6 +71,10 @@ class ScatteringTable {
   Spectrum sky_rest(double z, const Vec3f& d) const;
 
   static constexpr int kHeights = 9, kCosines = 13, kAzimuths = 7;
+  // The one atmosphere's heights above the plain, metres: an aerosol of a few hundred metres
+  // to 2 km of scale height low down, the air's column (8 km scale height) above.
+  static constexpr std::array<double, kHeights> kAtmosphereLevels = {
+      0.0, 100.0, 300.0, 700.0, 1500.0, 3000.0, 6000.0, 15000.0, 40000.0};
 
  private:
   // Cell `index`'s direction (a path's, in the scene frame) and height.

@@ -139,37 +139,42 @@ TEST(OneAtmosphere, ARidgeSkyIsDarkerByTheColumnAboveIt) {
   EXPECT_LT(got[1] / got[0], 0.83);  // the column above 2 km is 78% of the whole
 }
 
+// With the higher orders' control variate (renderer/transport/radiance_model.h) and without.
 TEST(OneAtmosphere, AConservativeAtmosphereOverAWhiteGroundReturnsAllTheLight) {
-  const double elevation = 40.0, mu0 = std::sin(elevation * kDeg);
-  Scene s = atmosphere_scene(elevation, 10000.0, 1.0f);
-  s.haze.column->absorption = false;
-  s.haze.albedo = {1.0f, 1.0f, 1.0f};
-  const Scene pp = plane_parallel_scene(s, 0.0f);
-  const EmbreeScene embree(pp);
-  const PathTracer tracer(pp, embree);
-  const double top = Medium(pp.haze).top() + 1.0;
-  // The upward flux through the top: pi x the mean radiance over cosine-distributed views
-  // looking down, against the beam's mu0 E.
-  constexpr int kPaths = 1 << 14;
-  double sum = 0.0, sum2 = 0.0;
-  const Spectrum toa = solar_irradiance_toa(1.0);
-  for (int i = 0; i < kPaths; ++i) {
-    const CounterRng rng(5, 3, static_cast<std::uint64_t>(i), SampleSequence::sobol);
-    const std::array<float, 2> u = rng.uniform2(0);
-    const float r = std::sqrt(u[0]), a = 2.0f * std::numbers::pi_v<float> * u[1];
-    const Vec3f d{r * std::cos(a), r * std::sin(a), -std::sqrt(std::max(0.0f, 1.0f - u[0]))};
-    PathSample sample;
-    const Spectrum l = tracer.radiance({{0.0f, 0.0f, static_cast<float>(top)}, d}, rng, kAllBuckets,
-                                       false, sample);
-    const double x = std::numbers::pi * l[kGreen] / (mu0 * toa[kGreen]);
-    sum += x;
-    sum2 += x * x;
+  for (const bool control : {false, true}) {
+    const double elevation = 40.0, mu0 = std::sin(elevation * kDeg);
+    Scene s = atmosphere_scene(elevation, 10000.0, 1.0f);
+    s.haze.column->absorption = false;
+    s.haze.albedo = {1.0f, 1.0f, 1.0f};
+    Scene pp = plane_parallel_scene(s, 0.0f);
+    pp.haze.control_variate = control;
+    const EmbreeScene embree(pp);
+    const PathTracer tracer(pp, embree);
+    const double top = Medium(pp.haze).top() + 1.0;
+    // The upward flux through the top: pi x the mean radiance over cosine-distributed views
+    // looking down, against the beam's mu0 E.
+    constexpr int kPaths = 1 << 14;
+    double sum = 0.0, sum2 = 0.0;
+    const Spectrum toa = solar_irradiance_toa(1.0);
+    for (int i = 0; i < kPaths; ++i) {
+      const CounterRng rng(5, 3, static_cast<std::uint64_t>(i), SampleSequence::sobol);
+      const std::array<float, 2> u = rng.uniform2(0);
+      const float r = std::sqrt(u[0]), a = 2.0f * std::numbers::pi_v<float> * u[1];
+      const Vec3f d{r * std::cos(a), r * std::sin(a), -std::sqrt(std::max(0.0f, 1.0f - u[0]))};
+      PathSample sample;
+      const Spectrum l = tracer.radiance({{0.0f, 0.0f, static_cast<float>(top)}, d}, rng,
+                                         kAllBuckets, false, sample);
+      const double x = std::numbers::pi * l[kGreen] / (mu0 * toa[kGreen]);
+      sum += x;
+      sum2 += x * x;
+    }
+    const double mean = sum / kPaths;
+    const double error = std::sqrt(std::max(0.0, sum2 / kPaths - mean * mean) / kPaths);
+    std::printf("top-of-atmosphere albedo %.4f +- %.4f (control variate %s)\n", mean, error,
+                control ? "on" : "off");
+    EXPECT_NEAR(mean, 1.0, std::max(0.01, 3.0 * error)) << control;
+    EXPECT_LT(error, 0.01);  // sharp enough to mean something
   }
-  const double mean = sum / kPaths;
-  const double error = std::sqrt(std::max(0.0, sum2 / kPaths - mean * mean) / kPaths);
-  std::printf("top-of-atmosphere albedo %.4f +- %.4f\n", mean, error);
-  EXPECT_NEAR(mean, 1.0, std::max(0.01, 3.0 * error));
-  EXPECT_LT(error, 0.01);  // sharp enough to mean something
 }
 
 // A flat Lambertian ground seen from 10 m reads its albedo: its radiance (surfaces take the
