@@ -83,7 +83,7 @@ double DensityProfile::height_of_column(double column) const {
     const double h = scale_heights_[last];
     return heights_[last] - h * std::log(column / (densities_[last] * h));
   }
-  if (column > column_[0]) {
+  if (column >= column_[0]) {  // below the first node (or at it)
     const double h = scale_heights_[0];
     return heights_[0] - h * std::log1p((column - column_[0]) / (densities_[0] * h));
   }
