@@ -172,6 +172,31 @@ Scales reference_scales(const Scene& scene, const DistantMeasureOptions& options
   return s;
 }
 
+const PeriodicCell& cell_of(const Scene& scene, const DistantMeasureOptions& options) {
+  if (!scene.periodic && !options.region)
+    throw std::invalid_argument("a distant measure needs a periodic cell or a region");
+  return options.region ? *options.region : *scene.periodic;
+}
+
+double sun_cosine(const Scene& scene) {
+  const double c = normalize(scene.sun.direction).z;
+  if (!(c > 0.0)) throw std::invalid_argument("the sun is below the horizon");
+  return c;
+}
+
+// What every measure starts from: the cell, the sun's height, the scene's tracer.
+struct Measuring {
+  Measuring(const Scene& scene, const DistantMeasureOptions& options)
+      : cell(cell_of(scene, options)),
+        cos_sun(sun_cosine(scene)),
+        embree(scene),
+        tracer(scene, embree) {}
+  const PeriodicCell& cell;
+  double cos_sun;
+  EmbreeScene embree;
+  PathTracer tracer;
+};
+
 }  // namespace
 
 double entry_height(const Scene& scene, const PeriodicCell& cell) {
@@ -195,20 +220,14 @@ std::vector<DistantDirection> principal_plane(double sun_azimuth_deg) {
 std::vector<DistantResult> measure_distant(const Scene& scene,
                                            const std::vector<DistantDirection>& directions,
                                            const DistantMeasureOptions& options) {
-  if (!scene.periodic && !options.region)
-    throw std::invalid_argument("a distant measure needs a periodic cell or a region");
-  const PeriodicCell& cell = options.region ? *options.region : *scene.periodic;
-  const double cos_sun = normalize(scene.sun.direction).z;
-  if (!(cos_sun > 0.0)) throw std::invalid_argument("the sun is below the horizon");
-  const EmbreeScene embree(scene);
-  const PathTracer tracer(scene, embree);
+  const Measuring m(scene, options);
   const double top =
-      options.bottom_of_atmosphere ? cell.top + kAboveCell : entry_height(scene, cell);
+      options.bottom_of_atmosphere ? m.cell.top + kAboveCell : entry_height(scene, m.cell);
   const std::size_t bands = std::min<std::size_t>(scene.bands.size(), kMaxBands);
-  const Scales scales = reference_scales(scene, options, top, cos_sun, bands);
+  const Scales scales = reference_scales(scene, options, top, m.cos_sun, bands);
   const auto batches = static_cast<std::uint64_t>(std::max(options.batches, 2));
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  const Tracing t{tracer, cell, top, options.seed, bands, arena};
+  const Tracing t{m.tracer, m.cell, top, options.seed, bands, arena};
   const std::uint64_t cap = std::max<std::uint64_t>(options.max_samples / batches, 1);
   std::vector<DistantResult> out;
   for (std::size_t d = 0; d < directions.size(); ++d) {
@@ -234,21 +253,15 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
 }
 
 DistantResult measure_bhr(const Scene& scene, const DistantMeasureOptions& options) {
-  if (!scene.periodic && !options.region)
-    throw std::invalid_argument("a distant measure needs a periodic cell or a region");
-  const PeriodicCell& cell = options.region ? *options.region : *scene.periodic;
-  const double cos_sun = normalize(scene.sun.direction).z;
-  if (!(cos_sun > 0.0)) throw std::invalid_argument("the sun is below the horizon");
-  const EmbreeScene embree(scene);
-  const PathTracer tracer(scene, embree);
+  const Measuring m(scene, options);
   DistantMeasureOptions bottom = options;
   bottom.bottom_of_atmosphere = true;
-  const double top = cell.top + kAboveCell;
+  const double top = m.cell.top + kAboveCell;
   const std::size_t bands = std::min<std::size_t>(scene.bands.size(), kMaxBands);
-  const Scales scales = reference_scales(scene, bottom, top, cos_sun, bands);
+  const Scales scales = reference_scales(scene, bottom, top, m.cos_sun, bands);
   const auto batches = static_cast<std::uint64_t>(std::max(options.batches, 2));
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  const Tracing t{tracer, cell, top, options.seed, bands, arena};
+  const Tracing t{m.tracer, m.cell, top, options.seed, bands, arena};
   // Its own streams, after every direction's.
   Batches sums(batches, std::uint64_t{1} << 32);
   extend(t, nullptr, sums, std::max<std::uint64_t>((options.samples + batches - 1) / batches, 1));
