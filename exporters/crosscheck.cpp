@@ -19,6 +19,7 @@
 #include "core/input_error.h"
 #include "exporters/pov_camera.h"
 #include "exporters/pov_export.h"
+#include "renderer/atmosphere/ground_level_sky.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/output/exposure.h"
 #include "renderer/output/image_output.h"
@@ -592,7 +593,9 @@ CrosscheckReport crosscheck(const scenes::Scenario& scenario, const renderer::Sc
   // folder if this run made it, else what this run writes in it.
   const bool fresh = !std::filesystem::exists(o.out_dir);
   try {
-    return run_crosscheck(scenario, scene, o);
+    // Under [atmosphere], its sun, sky and fog as seen from the ground: POV-Ray's lights, and
+    // the comparable tracer's.
+    return run_crosscheck(scenario, renderer::ground_level_equivalent(scene), o);
   } catch (const InputError&) {
     std::error_code ignored;
     if (fresh) {

@@ -11,6 +11,7 @@
 
 #include "core/input_error.h"
 #include "exporters/pov_export.h"
+#include "renderer/atmosphere/ground_level_sky.h"
 #include "renderer/atmosphere/sky.h"
 #include "renderer/output/exposure.h"
 #include "renderer/spectra/colour_matching.h"
@@ -33,8 +34,9 @@ int run_export_pov(const ExportPovArgs& args) {
   if (args.frame >= static_cast<int>(s.render.frames.size())) {
     throw InputError(fmt::format("--frame: {} has {} frames", s.source, s.render.frames.size()));
   }
-  const renderer::Scene scene =
-      scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]);
+  // Under [atmosphere], its sun, sky and fog as seen from the ground: POV-Ray's lights.
+  const renderer::Scene scene = renderer::ground_level_equivalent(
+      scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]));
   const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
   exporters::PovExportOptions o;
   o.ambient_irradiance = sky.horizontal_irradiance();
