@@ -65,8 +65,15 @@ bool PathTracer::wants_table(const Scene& scene) {
          scene.settings.max_bounces != 0;
 }
 
+bool PathTracer::wants_radiance_model(const Scene& scene) {
+  return scene.sky.model == SkyKind::atmosphere && Medium(scene.haze).enabled() &&
+         !wants_table(scene) && scene.haze.scattering == HazeScattering::paths &&
+         scene.haze.control_variate && scene.settings.max_bounces != 0;
+}
+
 PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
-                       std::shared_ptr<const ScatteringTable> table)
+                       std::shared_ptr<const ScatteringTable> table,
+                       std::shared_ptr<const RadianceModel> model)
     : scene_(scene),
       embree_(embree),
       sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
@@ -96,8 +103,7 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
     });
   }
-  if (atmosphere_ && !table_ && scene.haze.control_variate && bounce_limit_ != 0)
-    model_ = RadianceModel::build(scene);
+  if (wants_radiance_model(scene)) model_ = model ? std::move(model) : RadianceModel::build(scene);
   if (atmosphere_) {
     // The one atmosphere's sky is the medium's light: its single scattering seen from the
     // plain's height is what surfaces draw their sky directions from.

@@ -40,10 +40,16 @@ class PathTracer : public Integrator {
  public:
   // `table`: the scene's haze table when one is at hand (a renderer shares one among its
   // views); built here when the scene asks for one and none is given.
+  // `table`, `model`: built already for the scene (shared by its views); null: built here
+  // when the scene wants them.
   PathTracer(const Scene& scene, const EmbreeScene& embree,
-             std::shared_ptr<const ScatteringTable> table = nullptr);
+             std::shared_ptr<const ScatteringTable> table = nullptr,
+             std::shared_ptr<const RadianceModel> model = nullptr);
   // Whether `scene` takes its haze's further light from a table (HazeScattering::table).
   static bool wants_table(const Scene& scene);
+  // Whether `scene`'s paths take the one atmosphere's higher orders through the radiance
+  // model's control variate (renderer/transport/radiance_model.h).
+  static bool wants_radiance_model(const Scene& scene);
 
   PathSample trace(const Ray& camera_ray, const CounterRng& rng,
                    std::uint32_t mask = kAllBuckets) const override;

@@ -21,6 +21,7 @@
 #include "renderer/transport/comparable_tracer.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/path_tracer.h"
+#include "renderer/transport/radiance_model.h"
 #include "renderer/transport/scattering_table.h"
 
 #include <spdlog/spdlog.h>
@@ -249,7 +250,10 @@ ViewRenderer::ViewRenderer(const Renderer& renderer, const View& view, const Ren
   else {
     if (PathTracer::wants_table(scene_) && !renderer.haze_table_)
       renderer.haze_table_ = ScatteringTable::build(scene_);
-    state_->tracer = std::make_unique<PathTracer>(scene_, embree, renderer.haze_table_);
+    if (PathTracer::wants_radiance_model(scene_) && !renderer.radiance_model_)
+      renderer.radiance_model_ = RadianceModel::build(scene_);
+    state_->tracer = std::make_unique<PathTracer>(scene_, embree, renderer.haze_table_,
+                                                  renderer.radiance_model_);
   }
   const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
   state_->arena = std::make_unique<tbb::task_arena>(threads);

@@ -20,6 +20,7 @@
 namespace landsim::renderer {
 
 class ScatteringTable;
+class RadianceModel;
 
 struct RenderOptions {
   int threads = 0;  // 0: every core
@@ -83,6 +84,8 @@ class Renderer {
   // The haze's table (renderer/transport/scattering_table.h), built for the first view and
   // shared by the rest: it depends on the scene alone.
   mutable std::shared_ptr<const ScatteringTable> haze_table_;
+  // The one atmosphere's radiance model (renderer/transport/radiance_model.h), likewise.
+  mutable std::shared_ptr<const RadianceModel> radiance_model_;
 };
 
 // One view ready to trace (camera, tracer, worker arena): renders any range of its tiles, so
