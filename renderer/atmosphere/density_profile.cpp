@@ -33,6 +33,13 @@ DensityProfile::DensityProfile(std::vector<double> heights, std::vector<double> 
     if (i > 0 && !(heights_[i] > heights_[i - 1]))
       throw std::logic_error("DensityProfile: heights must increase");
   }
+  // Evenly spaced nodes find their piece by division rather than by search.
+  const double step = (heights_[n - 1] - heights_[0]) / static_cast<double>(n - 1);
+  bool even = true;
+  for (std::size_t i = 1; i < n; ++i)
+    even =
+        even && std::abs(heights_[i] - heights_[0] - step * static_cast<double>(i)) <= 1e-9 * step;
+  step_ = even ? step : 0.0;
   scale_heights_.resize(n);
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const double ratio = std::log(densities_[i] / densities_[i + 1]);
@@ -50,6 +57,15 @@ DensityProfile::DensityProfile(std::vector<double> heights, std::vector<double> 
 
 int DensityProfile::piece(double z) const {
   if (z < heights_.front()) return -1;
+  const int last = static_cast<int>(heights_.size()) - 1;
+  if (step_ > 0.0) {
+    // The node at or below z; a height a rounding below a node takes the piece under it,
+    // the one whose closed forms hold there.
+    int i = static_cast<int>(std::min((z - heights_.front()) / step_, static_cast<double>(last)));
+    while (i < last && heights_[static_cast<std::size_t>(i + 1)] <= z) ++i;
+    while (i > 0 && heights_[static_cast<std::size_t>(i)] > z) --i;
+    return i;
+  }
   const auto it = std::upper_bound(heights_.begin(), heights_.end(), z);
   return static_cast<int>(it - heights_.begin()) - 1;
 }

@@ -37,6 +37,7 @@ class DensityProfile {
  private:
   int piece(double z) const;  // -1 below the first node, n-1 above the last
   std::vector<double> heights_, densities_;
+  double step_ = 0.0;  // the nodes' spacing when even (a standard profile's 1 km), else 0
   std::vector<double> scale_heights_;  // of the piece above each node (the last: continued)
   std::vector<double> column_;         // column above each node
 };

@@ -51,7 +51,16 @@ void spherical_harmonics(const Vec3f& d, std::array<float, RadianceModel::kCoeff
   constexpr int n = RadianceModel::kOrder;
   const double x = std::clamp(static_cast<double>(d.z), -1.0, 1.0);
   const double s = std::sqrt(std::max(0.0, 1.0 - x * x));
-  const double phi = std::atan2(static_cast<double>(d.y), static_cast<double>(d.x));
+  // cos(m phi) and sin(m phi) by the angle-addition recurrence from the direction's own
+  // horizontal part (no trigonometric calls: the model is evaluated at every haze point).
+  const double h = std::hypot(static_cast<double>(d.x), static_cast<double>(d.y));
+  const double c1 = h > 0.0 ? d.x / h : 1.0, s1 = h > 0.0 ? d.y / h : 0.0;
+  std::array<double, n + 1> cos_m{}, sin_m{};
+  cos_m[0] = 1.0;
+  for (std::size_t m = 1; m <= static_cast<std::size_t>(n); ++m) {
+    cos_m[m] = cos_m[m - 1] * c1 - sin_m[m - 1] * s1;
+    sin_m[m] = sin_m[m - 1] * c1 + cos_m[m - 1] * s1;
+  }
   // Associated Legendre functions P_l^m(x) (m >= 0) by the standard recurrences, and the
   // normalisation sqrt((2l + 1) / (4 pi) (l - m)! / (l + m)!).
   std::array<std::array<double, n + 1>, n + 1> p{};
@@ -77,8 +86,10 @@ void spherical_harmonics(const Vec3f& d, std::array<float, RadianceModel::kCoeff
       if (m == 0) {
         out[at(0)] = static_cast<float>(k * plm);
       } else {
-        out[at(m)] = static_cast<float>(std::numbers::sqrt2 * k * std::cos(m * phi) * plm);
-        out[at(-m)] = static_cast<float>(std::numbers::sqrt2 * k * std::sin(m * phi) * plm);
+        out[at(m)] =
+            static_cast<float>(std::numbers::sqrt2 * k * cos_m[static_cast<std::size_t>(m)] * plm);
+        out[at(-m)] =
+            static_cast<float>(std::numbers::sqrt2 * k * sin_m[static_cast<std::size_t>(m)] * plm);
       }
     }
   }

@@ -56,10 +56,13 @@ TEST(DensityProfile, ARisingAndFallingLayerIntegratesAsQuadratureDoes) {
     const double x = (z.back() - 22000.0) / 6000.0;
     n.push_back(1e-3 + std::exp(-x * x));
   }
-  const DensityProfile p(z, n);
-  for (const auto& [a, b] : {std::pair{0.0, 5000.0}, {10000.0, 30000.0}, {21500.0, 22700.0}})
-    EXPECT_NEAR(p.column_above(a) - p.column_above(b), simpson(p, a, b), 1e-7 * p.column_above(a))
-        << a << " to " << b;
+  // Evenly spaced (pieces found by division) and unevenly (by search).
+  std::vector<double> uneven = z;
+  for (std::size_t i = 1; i + 1 < uneven.size(); i += 2) uneven[i] += 300.0;
+  for (const DensityProfile& p : {DensityProfile(z, n), DensityProfile(uneven, n)})
+    for (const auto& [a, b] : {std::pair{0.0, 5000.0}, {10000.0, 30000.0}, {21500.0, 22700.0}})
+      EXPECT_NEAR(p.column_above(a) - p.column_above(b), simpson(p, a, b), 1e-7 * p.column_above(a))
+          << a << " to " << b;
 }
 
 TEST(DensityProfile, LengthAtInvertsAlongRisingFallingAndLevel) {
