@@ -57,6 +57,16 @@ Spectrum seen_bins(const Scene& scene) {
   return seen;
 }
 
+// A sampling table over directions in proportion to the luminance of `light` (a direction's
+// spectral radiance).
+template <class Light>
+DirectionTable luminance_table(Light&& light) {
+  return DirectionTable([&](const Vec3f& d) {
+    const Vec3f rgb = spectrum_to_rgb(light(d));
+    return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
+  });
+}
+
 }  // namespace
 
 bool PathTracer::wants_table(const Scene& scene) {
@@ -66,9 +76,9 @@ bool PathTracer::wants_table(const Scene& scene) {
 }
 
 bool PathTracer::wants_radiance_model(const Scene& scene) {
-  return scene.sky.model == SkyKind::atmosphere && Medium(scene.haze).enabled() &&
-         !wants_table(scene) && scene.haze.scattering == HazeScattering::paths &&
-         scene.haze.control_variate && scene.settings.max_bounces != 0;
+  return scene.sky.model == SkyKind::atmosphere && scene.haze.enabled && scene.haze.column &&
+         scene.haze.scattering == HazeScattering::paths && scene.haze.control_variate &&
+         scene.settings.max_bounces != 0;
 }
 
 PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
@@ -97,21 +107,16 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
     // The hazy sky varies with height through the haze's profile; its shape seen from the
     // plain is close enough everywhere to sample by (any density is unbiased).
     const Vec3f from{0.0f, 0.0f, plain_.height};
-    hazy_table_ = DirectionTable([&](const Vec3f& d) {
-      if (d.z <= 0.0f) return 0.0f;
-      const Vec3f rgb = spectrum_to_rgb(surface_sky(from, d));
-      return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
-    });
+    hazy_table_ = luminance_table(
+        [&](const Vec3f& d) { return d.z > 0.0f ? surface_sky(from, d) : Spectrum{}; });
   }
   if (wants_radiance_model(scene)) model_ = model ? std::move(model) : RadianceModel::build(scene);
   if (atmosphere_) {
     // The one atmosphere's sky is the medium's light: its single scattering seen from the
     // plain's height is what surfaces draw their sky directions from.
     const double z = plain_.height;
-    hazy_table_ = DirectionTable([&](const Vec3f& d) {
-      const Vec3f rgb =
-          spectrum_to_rgb(single_scattered_sky(medium_, sun_spectrum_, sun_direction_, z, d));
-      return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
+    hazy_table_ = luminance_table([&](const Vec3f& d) {
+      return single_scattered_sky(medium_, sun_spectrum_, sun_direction_, z, d);
     });
   }
   // Positive even for a black sky (the table's floor), so that a hazy sky's light over it
@@ -288,12 +293,13 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
                table_->in_scattered(c, static_cast<double>(p.position.z), d);
     return out;
   }
-  if (atmosphere_ && sky_nee && model_) {
-    // The sky's single scattering by next-event estimation (below); the rest of the light
-    // from the model in closed form, the path that goes on adding what differs from it.
-    out += model_->in_scattered(p.weight, static_cast<double>(p.position.z), d);
+  if (atmosphere_) {
+    // The sky's single scattering by next-event estimation; the rest of the light from the
+    // model in closed form, the path that goes on adding what differs from it.
+    if (!sky_nee) return out;
+    if (model_) out += model_->in_scattered(p.weight, static_cast<double>(p.position.z), d);
+    return out + haze_atmosphere_sky(p, d, rng, dim, mask, rays);
   }
-  if (atmosphere_) return sky_nee ? out + haze_atmosphere_sky(p, d, rng, dim, mask, rays) : out;
   // The sky, combined with the phase function's own sampling.
   const std::array<float, 2> sky = rng.uniform2(dim + kHazeSky0);
   float pdf = 0.0f;

@@ -181,19 +181,26 @@ RadianceModel::Between RadianceModel::between(double z) const {
   return b;
 }
 
-Spectrum RadianceModel::radiance(double z, const Vec3f& from) const {
-  std::array<float, kCoefficients> y{};
-  spherical_harmonics(from, y);
+template <class AtHeight>
+Spectrum RadianceModel::between_heights(double z, AtHeight&& at_height) const {
   const Between b = between(z);
   Spectrum out;
   for (int i = 0; i < 2; ++i) {
     const auto h = static_cast<std::size_t>(b.h + i);
+    out += spectrum_[h] * at_height(h) * (i == 0 ? b.w0 : b.w1);
+  }
+  return out;
+}
+
+Spectrum RadianceModel::radiance(double z, const Vec3f& from) const {
+  std::array<float, kCoefficients> y{};
+  spherical_harmonics(from, y);
+  return between_heights(z, [&](std::size_t h) {
     float sum = 0.0f;
     for (int k = 0; k < kCoefficients; ++k)
       sum += coefficients_[h][static_cast<std::size_t>(k)] * y[static_cast<std::size_t>(k)];
-    out += spectrum_[h] * (sum * (i == 0 ? b.w0 : b.w1));
-  }
-  return out;
+    return Spectrum::constant(sum);
+  });
 }
 
 Spectrum RadianceModel::in_scattered(int c, double z, const Vec3f& d) const {
@@ -206,10 +213,7 @@ Spectrum RadianceModel::in_scattered(const std::array<Spectrum, kMediumComponent
                                      double z, const Vec3f& d) const {
   std::array<float, kCoefficients> y{};
   spherical_harmonics(d, y);
-  const Between b = between(z);
-  Spectrum out;
-  for (int i = 0; i < 2; ++i) {
-    const auto h = static_cast<std::size_t>(b.h + i);
+  return between_heights(z, [&](std::size_t h) {
     // Each band of the model's harmonics at d, then each component's moments over them.
     std::array<float, kOrder + 1> bands{};
     for (int l = 0; l <= kOrder; ++l)
@@ -217,18 +221,18 @@ Spectrum RadianceModel::in_scattered(const std::array<Spectrum, kMediumComponent
         const auto k = static_cast<std::size_t>(l * l + l + m);
         bands[static_cast<std::size_t>(l)] += coefficients_[h][k] * y[k];
       }
-    const Spectrum per_luminance = spectrum_[h] * (i == 0 ? b.w0 : b.w1);
+    Spectrum sum;
     for (int c = 0; c < kMediumComponents; ++c) {
       const auto& w = weights[static_cast<std::size_t>(c)];
       if (max_component(w) <= 0.0f) continue;
       const auto& chi = moments_[static_cast<std::size_t>(c)];
-      float sum = 0.0f;
+      float component = 0.0f;
       for (int l = 0; l <= kOrder; ++l)
-        sum += chi[static_cast<std::size_t>(l)] * bands[static_cast<std::size_t>(l)];
-      out += w * per_luminance * sum;
+        component += chi[static_cast<std::size_t>(l)] * bands[static_cast<std::size_t>(l)];
+      sum += w * component;
     }
-  }
-  return out;
+    return sum;
+  });
 }
 
 }  // namespace landsim::renderer

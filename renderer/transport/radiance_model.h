@@ -47,6 +47,10 @@ class RadianceModel {
     float w0 = 1.0f, w1 = 0.0f;
   };
   Between between(double z) const;
+  // The sum over the two heights about z of their weight x spectrum x at_height(h), a
+  // spectral factor from height h's coefficients.
+  template <class AtHeight>
+  Spectrum between_heights(double z, AtHeight&& at_height) const;
   std::array<double, kHeights> heights_{};
   // Per height: the luminance's harmonic coefficients, and the spectrum per unit luminance.
   std::array<std::array<float, kCoefficients>, kHeights> coefficients_{};

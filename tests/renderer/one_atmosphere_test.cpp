@@ -36,21 +36,9 @@ double hansen_travis(double um) {
 // An open sea-level landscape under the one atmosphere: the sun `elevation` up in the south,
 // flat ground of `albedo` at sea level, the aerosol exponential of 600 m scale height.
 Scene atmosphere_scene(double elevation_deg, double visibility, float albedo) {
-  Scene s;
-  s.sky.model = SkyKind::atmosphere;
   const double e = elevation_deg * kDeg;
-  s.sun.direction = {0.0, -std::cos(e), std::sin(e)};
-  s.sun.irradiance = sun_irradiance(s.sky, elevation_deg, s.sun.angular_radius);
-  s.ground.mesh = testing::flat_ground(2000.0, 0.0f);
-  s.ground.albedo = {albedo, albedo, albedo};
-  s.ground.edge_albedo = Vec3f{albedo, albedo, albedo};
-  s.ground.plain_height = 0.0f;
-  s.haze.enabled = true;
-  s.haze.scattering = HazeScattering::paths;
-  s.haze.column = MolecularColumn{};
-  s.haze.visibility = visibility;
-  s.haze.scale_height = 600.0;
-  return s;
+  return testing::one_atmosphere_scene({0.0, -std::cos(e), std::sin(e)}, visibility, 600.0, albedo,
+                                       2000.0);
 }
 
 TEST(OneAtmosphere, TheDirectBeamIsBeerLambertThroughTheStatedAtmosphere) {

@@ -2,6 +2,7 @@
 // Small synthetic scenes for renderer tests.
 #include <cmath>
 
+#include "renderer/atmosphere/sky.h"
 #include "renderer/scene.h"
 #include "terrain/elevation_grid.h"
 #include "terrain/ground_mesh.h"
@@ -70,6 +71,28 @@ inline Scene ridge_scene() {
   scene.settings.spp = 4;
   scene.settings.seed = 9;
   return scene;
+}
+
+// An open landscape under the one atmosphere ([atmosphere], docs/ATMOSPHERE.md): flat ground
+// of `albedo` at sea level, `half` metres each way and the plain beyond, the sun toward `sun`
+// (Thuillier's above the atmosphere), the U.S. Standard molecules and an aerosol of
+// `visibility` thinning over `scale_height`, traced by paths.
+inline Scene one_atmosphere_scene(const Vec3& sun, double visibility, double scale_height,
+                                  float albedo, double half) {
+  Scene s;
+  s.sky.model = SkyKind::atmosphere;
+  s.sun.direction = normalize(sun);
+  s.sun.irradiance = sun_irradiance(s.sky, 90.0, s.sun.angular_radius);  // any elevation above 0
+  s.ground.mesh = flat_ground(half, 0.0f);
+  s.ground.albedo = {albedo, albedo, albedo};
+  s.ground.edge_albedo = Vec3f{albedo, albedo, albedo};
+  s.ground.plain_height = 0.0f;
+  s.haze.enabled = true;
+  s.haze.scattering = HazeScattering::paths;
+  s.haze.column = MolecularColumn{};
+  s.haze.visibility = visibility;
+  s.haze.scale_height = scale_height;
+  return s;
 }
 
 }  // namespace landsim::renderer::testing

@@ -17,18 +17,7 @@ namespace {
 double luminance(const Vec3f& c) { return rec709_luminance(Vec3(c)); }
 
 TEST(GroundLevelSky, TheAtmosphereSeenFromTheGroundGivesItsBeamSkyAndVisibility) {
-  Scene s;
-  s.sky.model = SkyKind::atmosphere;
-  s.sun.direction = normalize(Vec3{0.3, -0.7, 0.5});
-  s.sun.irradiance = sun_irradiance(s.sky, 30.0, s.sun.angular_radius);
-  s.ground.mesh = testing::flat_ground(1000.0, 0.0f);
-  s.ground.albedo = {0.2f, 0.2f, 0.2f};
-  s.ground.edge_albedo = Vec3f{0.2f, 0.2f, 0.2f};
-  s.ground.plain_height = 0.0f;
-  s.haze.enabled = true;
-  s.haze.column = MolecularColumn{};
-  s.haze.visibility = 12000.0;
-  s.haze.scale_height = 900.0;
+  const Scene s = testing::one_atmosphere_scene({0.3, -0.7, 0.5}, 12000.0, 900.0, 0.2f, 1000.0);
   const Scene g = ground_level_equivalent(s);
   EXPECT_FALSE(g.haze.column.has_value());
   EXPECT_EQ(g.sky.model, SkyKind::gradient);

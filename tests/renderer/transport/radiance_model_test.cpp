@@ -13,7 +13,6 @@
 
 #include "core/counter_rng.h"
 #include "renderer/atmosphere/phase_function.h"
-#include "renderer/atmosphere/sky.h"
 #include "tests/renderer/test_scenes.h"
 
 namespace landsim::renderer {
@@ -87,18 +86,7 @@ TEST(RadianceModel, APhaseFunctionTimesAHarmonicIntegratesToItsMomentTimesTheHar
 // component is the mean of its own radiance over directions drawn from that component's phase
 // function (what the paths subtract), at two heights and three directions of travel.
 TEST(RadianceModel, ItsClosedFormIsTheMeanOfItsRadianceUnderThePhaseFunction) {
-  Scene s;
-  s.sky.model = SkyKind::atmosphere;
-  s.sun.direction = normalize(Vec3{0.0, -0.8, 0.45});
-  s.sun.irradiance = sun_irradiance(s.sky, 26.7, s.sun.angular_radius);
-  s.ground.mesh = testing::flat_ground(1000.0, 0.0f);
-  s.ground.albedo = {0.2f, 0.2f, 0.2f};
-  s.ground.edge_albedo = Vec3f{0.2f, 0.2f, 0.2f};
-  s.ground.plain_height = 0.0f;
-  s.haze.enabled = true;
-  s.haze.column = MolecularColumn{};
-  s.haze.visibility = 10000.0;
-  s.haze.scale_height = 800.0;
+  const Scene s = testing::one_atmosphere_scene({0.0, -0.8, 0.45}, 10000.0, 800.0, 0.2f, 1000.0);
   const auto model = RadianceModel::build(s);
   ASSERT_NE(model, nullptr);
   const Medium medium(s.haze);
