@@ -273,6 +273,10 @@ struct RenderSettings {
   // Benchmarks only: false snaps each tree to its ladder step's level (no blending), to
   // measure the popping that blending removes.
   bool degradation_blend = true;
+  // The atmosphere's parts per pixel (renderer/output/atmosphere_layers.h): path radiance,
+  // transmittance, surface radiance, direct and diffuse irradiance; each sample traces one
+  // more path for the diffuse irradiance.
+  bool atmosphere_layers = false;
 };
 
 // One unique tree (a species variant), stored once and instanced many times.

@@ -27,12 +27,16 @@ struct FirstHit {
 // Sensor bands a sample is also measured in (renderer/scene.h SpectralBand); at most this
 // many per image set.
 inline constexpr int kMaxBands = 8;
+// The film planes a sample fills beyond RGB: the bands, and with the atmosphere's parts
+// (renderer/output/atmosphere_layers.h) five parts of RGB and every band.
+inline constexpr int kMaxLayers = kMaxBands + 5 * (3 + kMaxBands);
 
 struct PathSample {
   Vec3f radiance;  // linear Rec. 709, Y in cd/m2
-  // Band radiance, W m^-2 sr^-1, of the scene's bands in order (zero beyond them, and from
-  // integrators that are not spectral).
-  std::array<float, kMaxBands> bands{};
+  // Band radiance, W m^-2 sr^-1, of the scene's bands in order, then (with
+  // RenderSettings::atmosphere_layers) the atmosphere's parts; zero beyond them, and from
+  // integrators that are not spectral.
+  std::array<float, kMaxLayers> bands{};
   FirstHit first;
   std::uint32_t rays = 0;  // rays traced for this sample (camera, bounce and shadow rays)
 };

@@ -32,6 +32,15 @@ constexpr float kLeastSurvival = 0.05f;
 // component) to the pixel are rouletted (renderer/transport/shadow_roulette.h); chosen by
 // measurement: 0.2 adds 3% to the noise of the forest benchmark, 0.5 adds 20%.
 constexpr float kShadowRouletteFraction = 0.2f;
+// A haze point's sky direction follows the sky's table this often, else the phase function
+// (the sky's radiance near the sun and the horizon, the phase function's peak about the
+// path's direction). Chosen by measurement (docs/ATMOSPHERE.md "Sampling the atmosphere's
+// sky"): 0.25 gives the least noise of 0, 0.25, 0.5, 0.75 and 1.
+constexpr float kSkyTableShare = 0.25f;
+// The least probability of a branch from the camera segment's haze point (measured on
+// one_atmosphere.toml: 0.5 cuts the noise's variance by a fifth at the same time; 1 costs
+// 17% more time for a little less).
+constexpr float kLeastCameraBranch = 0.5f;
 
 float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
 
@@ -97,6 +106,7 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       seen_bins_(seen_bins(scene)),
       bounce_limit_(scene.settings.max_bounces < 0 ? kSafetyBounces : scene.settings.max_bounces),
       atmosphere_(scene.sky.model == SkyKind::atmosphere && medium_.enabled()),
+      ground_below_(plain_.present || scene.periodic.has_value()),
       table_(!wants_table(scene) ? nullptr
              : table             ? std::move(table)
                                  : ScatteringTable::build(scene)) {
@@ -250,16 +260,26 @@ Spectrum PathTracer::haze_atmosphere_sky(const MediumPoint& p, const Vec3f& d,
                                          const CounterRng& rng, std::uint32_t dim,
                                          std::uint32_t mask, std::uint32_t& rays) const {
   const std::array<float, 2> u = rng.uniform2(dim + kHazeSky0);
-  float pdf = 0.0f;
-  const Vec3f k = hazy_table_->sample(u[0], u[1], pdf);
-  if (!(pdf > 0.0f)) return {};
+  const std::uint32_t at = dim + kHazeSkyOffset;
+  const std::array<float, 2> choice = rng.uniform2(at + kChoice);  // strategy, component
+  const bool table = choice[0] < kSkyTableShare;
+  float table_pdf = 0.0f;
+  Vec3f k = table ? hazy_table_->sample(u[0], u[1], table_pdf)
+                  : scatter_direction(medium_, p, d, choice[1], u);
+  // Where every ray below the horizon meets the ground, no sky lies there: a direction the
+  // phase function draws below is mirrored above it, its density the sum of the two.
+  const bool fold = ground_below_ && k.z < 0.0f;
+  if (fold) k.z = -k.z;
+  if (!table) table_pdf = hazy_table_->pdf(k);
   const float c = dot(d, k);
-  const Spectrum weight =
-      phase_weight(medium_, p, c) * (power_heuristic(pdf, phase_pdf(medium_, p, c)) / pdf);
+  float phase = phase_pdf(medium_, p, c);
+  if (ground_below_) phase += phase_pdf(medium_, p, dot(Vec3f{d.x, d.y, -d.z}, k));
+  const float pdf = kSkyTableShare * table_pdf + (1.0f - kSkyTableShare) * phase;
+  if (!(pdf > 0.0f)) return {};
+  const Spectrum weight = phase_weight(medium_, p, c) / pdf;
   if (max_component(weight) <= 0.0f) return {};
   ++rays;
   if (occluded({p.position, k}, mask)) return {};
-  const std::uint32_t at = dim + kHazeSkyOffset;
   const SkyPoint point{rng.uniform2(at + kSkyPoint), rng.uniform2(at + kSkySun0), mask};
   return weight * atmosphere_sky(p.position, k, point, rays);
 }
@@ -317,7 +337,8 @@ Spectrum PathTracer::haze_light(const MediumPoint& p, const Vec3f& d, const Spec
   return out;
 }
 
-void PathTracer::finish(PathSample& out, const Spectrum& radiance) const {
+void PathTracer::finish(PathSample& out, const Spectrum& radiance,
+                        const AtmosphereSample* parts) const {
   out.radiance = spectrum_to_rgb(radiance);
   const std::size_t bands = std::min<std::size_t>(scene_.bands.size(), kMaxBands);
   for (std::size_t b = 0; b < bands; ++b) {
@@ -326,17 +347,28 @@ void PathTracer::finish(PathSample& out, const Spectrum& radiance) const {
     for (int k = 0; k < kSpectrumBins; ++k) sum += w[k] * radiance[k];
     out.bands[b] = sum;
   }
+  if (parts)
+    atmosphere_layer_values(
+        *parts, scene_.bands,
+        out.bands.data() + atmosphere_layer(AtmospherePart::path, 0, static_cast<int>(bands)));
 }
 
 PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
                              std::uint32_t mask) const {
   PathSample out;
-  finish(out, radiance(camera_ray, rng, mask, true, out));
+  if (!scene_.settings.atmosphere_layers) {
+    finish(out, radiance(camera_ray, rng, mask, true, out));
+    return out;
+  }
+  AtmosphereSample parts;
+  const Spectrum l = radiance(camera_ray, rng, mask, true, out, true, &parts);
+  finish(out, l, &parts);
   return out;
 }
 
 Spectrum PathTracer::radiance(const Ray& camera_ray, const CounterRng& rng, std::uint32_t mask,
-                              bool sun_disc, PathSample& out, bool sky_single_scattering) const {
+                              bool sun_disc, PathSample& out, bool sky_single_scattering,
+                              AtmosphereSample* parts) const {
   out.first.depth = kInfinity;
   Spectrum radiance;
   PathState camera;
@@ -344,16 +376,48 @@ Spectrum PathTracer::radiance(const Ray& camera_ray, const CounterRng& rng, std:
   camera.throughput = Spectrum::constant(1.0f);
   // Without the sky's single scattering on the first segment, if it leaves into the sky: as
   // if a vertex had taken it by next-event estimation with a density of its own of zero.
-  camera.sky_nee = !sky_single_scattering;
+  camera.sky_taken = sky_single_scattering ? PathState::SkyTaken::no : PathState::SkyTaken::whole;
   std::optional<PathState> branch;
-  follow(camera, rng, mask, sun_disc, out, radiance, &branch);
+  follow(camera, rng, mask, sun_disc, out, radiance, &branch, parts);
+  // What the camera path added from its first vertex on (or the sky beyond the air) is the
+  // surface's radiance through the camera segment's transmittance.
+  if (parts) parts->through = radiance - parts->path;
+  const Spectrum before_branch = radiance;
   if (branch) follow(*branch, rng, mask, sun_disc, out, radiance, nullptr);
+  if (parts) parts->path += radiance - before_branch;  // the haze's light, scattered again
   return radiance;
 }
 
+void PathTracer::irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const Vec3f& sun,
+                               const CounterRng& rng, std::uint32_t mask, PathSample& out,
+                               AtmosphereSample& parts) const {
+  const Vec3f n = dot(v.n, incoming) < 0.0f ? v.n : -v.n;
+  const Vec3f ng = dot(v.ng, incoming) < 0.0f ? v.ng : -v.ng;
+  const Vec3f origin = offset_point(v, ng);
+  const float cos_sun = dot(n, sun);
+  if (cos_sun > 0.0f && dot(ng, sun) > 0.0f) {
+    ++out.rays;
+    if (!occluded({origin, sun}, mask))
+      parts.direct = sun_spectrum_ * cos_sun * to_sky(origin, sun);
+  }
+  // Everything else from the side facing the camera: cosine-distributed directions, so that
+  // the irradiance is pi times the radiance the path finds. As a camera ray sees: the sky
+  // unweighted, the sun's disc left out (it is the direct part).
+  const std::array<float, 2> u = rng.uniform2(kIrradianceDimensions);
+  PathState path;
+  path.ray = {origin, sample_cosine(n, u[0], u[1])};
+  if (!(dot(ng, path.ray.direction) > 0.0f)) return;  // into the surface itself
+  path.throughput = Spectrum::constant(1.0f);
+  path.bounce = 1;  // as the vertex's own path after it
+  path.dimension_offset = kIrradianceDimensions;
+  Spectrum l;
+  follow(path, rng, mask, false, out, l, nullptr);
+  parts.diffuse = l * std::numbers::pi_v<float>;
+}
+
 void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
-                        PathSample& out, Spectrum& radiance,
-                        std::optional<PathState>* branch) const {
+                        PathSample& out, Spectrum& radiance, std::optional<PathState>* branch,
+                        AtmosphereSample* parts) const {
   Ray& ray = path.ray;
   Spectrum& throughput = path.throughput;
   float& last_pdf = path.last_pdf;           // pdf of the direction being traced (MIS)
@@ -385,15 +449,21 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
         // The camera's own segment carries every pixel's haze veil: its sun ray is always
         // traced; later ones are rouletted by what they would add.
         // A ray into the one atmosphere's sky from a surface that took that sky by next-event
-        // estimation: its single scattering here is weighed against that estimate's density.
-        const float w_sky =
-            !hit && path.sky_nee
-                ? (last_pdf > 0.0f ? power_heuristic(last_pdf, sky_pdf(ray.direction)) : 0.0f)
-                : 1.0f;
+        // estimation: its single scattering here is weighed against that estimate's density;
+        // from a haze point, which took all of it, it is not counted.
+        const float w_sky = hit || path.sky_taken == PathState::SkyTaken::no ? 1.0f
+                            : path.sky_taken == PathState::SkyTaken::whole
+                                ? 0.0f
+                                : power_heuristic(last_pdf, sky_pdf(ray.direction));
         radiance += throughput * haze_light(p, ray.direction, throughput, rng, dim, bounce == 0,
                                             bounce < bounce_limit_, w_sky, mask, out.rays);
         // With the table, which holds the haze's further light, the path goes on through.
-        const float q = table_ ? 0.0f : segment.continue_probability();
+        // Under the one atmosphere the camera's segment branches at least every other time: a
+        // branch's weight of 1 / q multiplies its noise, and the pixel's own haze is where
+        // that costs most.
+        float q = table_ ? 0.0f : segment.continue_probability();
+        if (atmosphere_ && q > 0.0f && branch != nullptr && bounce == 0)
+          q = std::max(q, kLeastCameraBranch);
         const bool scatter = q > 0.0f && rng.uniform(dim + kHazeContinue) < q;
         // The camera's segment splits: the path goes on through to the surface whatever
         // happens, and with probability q a second path leaves from the haze point (one
@@ -427,6 +497,11 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
         throughput = throughput * segment.transmittance();
       }
     }
+    if (parts != nullptr && bounce == 0 && path.dimension_offset == 0) {
+      // The camera segment's part: the air's light so far, and what it lets through.
+      parts->path = radiance;
+      parts->transmittance = throughput;
+    }
     if (!hit) {
       // The sky, the haze's light and the aureole are one light (surface_sky), sampled as one.
       const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_pdf(ray.direction));
@@ -458,6 +533,11 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     }
     bool sunlit = false;
     Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, sun_roulette, out.rays, sunlit);
+    if (parts != nullptr && first)
+      irradiance_at(v, ray.direction,
+                    sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius),
+                                sun[0], sun[1]),
+                    rng, mask, out, *parts);
     // Where the sun finds the first vertex open, the sky most likely does too: its skylight
     // is the closed-form model's plus the Monte Carlo estimate of what differs (the choice
     // depends on the sun's ray alone, not on the sky's samples: unbiased). Not for leaves and
@@ -489,7 +569,8 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     if (next.kind == BsdfSample::Kind::absorbed) break;
     ray = {offset_point(v, next.side), next.direction};
     last_specular = next.kind == BsdfSample::Kind::mirror;
-    path.sky_nee = sky_nee && !last_specular;
+    path.sky_taken =
+        sky_nee && !last_specular ? PathState::SkyTaken::shared : PathState::SkyTaken::no;
     if (last_specular) continue;
     // The model's integrand along the BSDF's own direction, under the same MIS weight as
     // the sky this direction may meet next.
@@ -523,7 +604,7 @@ bool PathTracer::scatter_from(const MediumPoint& p, float q, const CounterRng& r
   path.last_specular = false;
   // The point took the atmosphere's sky by next-event estimation (haze_light) unless it was
   // the last bounce allowed, when no path goes on from it.
-  path.sky_nee = atmosphere_;
+  path.sky_taken = atmosphere_ ? PathState::SkyTaken::whole : PathState::SkyTaken::no;
   return survives(path.throughput, path.bounce, rng.uniform(dim + kRoulette));
 }
 

@@ -21,6 +21,7 @@
 #include "renderer/atmosphere/sky.h"
 #include "renderer/atmosphere/sky_irradiance.h"
 #include "renderer/camera.h"
+#include "renderer/output/atmosphere_layers.h"
 #include "renderer/transport/integrator.h"
 #include "renderer/transport/medium_segment.h"
 #include "renderer/transport/plain.h"
@@ -58,11 +59,15 @@ class PathTracer : public Integrator {
   // meters split it). `sky_single_scattering` false: without the sun's single scattering on
   // the ray's own segment where it leaves into the sky (what the one atmosphere's haze points
   // take by next-event estimation; renderer/transport/radiance_model.h models the rest).
+  // `parts`: the atmosphere's parts of the camera ray's light (renderer/output/
+  // atmosphere_layers.h), filled when given.
   Spectrum radiance(const Ray& ray, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
-                    PathSample& out, bool sky_single_scattering = true) const;
+                    PathSample& out, bool sky_single_scattering = true,
+                    AtmosphereSample* parts = nullptr) const;
 
   const SkyModel& sky() const { return sky_; }
   const Medium& medium() const { return medium_; }
+  const Vec3f& sun_direction() const { return sun_direction_; }
 
  private:
   // A path between vertices: where it goes, what it carries, and the dimensions of its
@@ -72,17 +77,32 @@ class PathTracer : public Integrator {
     Spectrum throughput;
     float last_pdf = 0.0f;
     bool last_specular = true;
-    // Left a surface that took the one atmosphere's sky by next-event estimation: the sky's
-    // single scattering this ray meets is weighed against it (multiple importance sampling).
-    bool sky_nee = false;
+    // How the one atmosphere's single-scattered sky that this ray meets where it leaves into
+    // the sky counts: whole (no vertex took it), weighed against the surface's next-event
+    // estimation that took it too (multiple importance sampling), or not at all (a haze point
+    // took all of it: haze_atmosphere_sky).
+    enum class SkyTaken : std::uint8_t { no, shared, whole };
+    SkyTaken sky_taken = SkyTaken::no;
     int bounce = 0;
     std::uint32_t dimension_offset = 0;
   };
   static constexpr std::uint32_t kBranchDimensions = 1u << 30;
+  // The first vertex's path for the diffuse irradiance (atmosphere layers): above a branch's
+  // dimensions and its haze points' (kBranchDimensions + kHazeSkyOffset).
+  static constexpr std::uint32_t kIrradianceDimensions = 1u << 31;
   // Follows `path` to its end, adding what it sees to `radiance`; its camera segment may
-  // leave a branch from the haze (`branch` null: none).
+  // leave a branch from the haze (`branch` null: none). `parts`: the camera path's light
+  // before its first vertex (path radiance), the camera segment's transmittance, and the
+  // irradiance at the first vertex.
   void follow(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
-              PathSample& out, Spectrum& radiance, std::optional<PathState>* branch) const;
+              PathSample& out, Spectrum& radiance, std::optional<PathState>* branch,
+              AtmosphereSample* parts = nullptr) const;
+  // The direct and diffuse irradiance on the side of `v` facing the camera ray `incoming`:
+  // the sun by a shadow ray along `sun` (the vertex's own sun direction), the rest by one
+  // path from a cosine-distributed direction.
+  void irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const Vec3f& sun,
+                     const CounterRng& rng, std::uint32_t mask, PathSample& out,
+                     AtmosphereSample& parts) const;
   // Turns `path` at haze point `p` (reached with probability q); false when it ends there.
   bool scatter_from(const MediumPoint& p, float q, const CounterRng& rng, std::uint32_t dim,
                     PathState& path) const;
@@ -131,8 +151,9 @@ class PathTracer : public Integrator {
   Spectrum haze_light(const MediumPoint& p, const Vec3f& d, const Spectrum& throughput,
                       const CounterRng& rng, std::uint32_t dim, bool trace_sun, bool sky_nee,
                       float sun_weight, std::uint32_t mask, std::uint32_t& rays) const;
-  // The one atmosphere's sky at haze point `p` by next-event estimation, combined with the
-  // phase function's sampling of the path that goes on.
+  // The one atmosphere's sky at haze point `p` by next-event estimation, all of it: the
+  // direction from a mixture of the sky's table and the phase function (a path goes on from a
+  // haze point only now and then, and would carry a share of it with a weight of 1 / q).
   Spectrum haze_atmosphere_sky(const MediumPoint& p, const Vec3f& d, const CounterRng& rng,
                                std::uint32_t dim, std::uint32_t mask, std::uint32_t& rays) const;
   // The scene's geometry and, past it, the plain beyond the grid (renderer/transport/plain.h);
@@ -157,8 +178,10 @@ class PathTracer : public Integrator {
   // What the roulettes weigh a spectrum by: its largest bin among those an output sees (the
   // near infrared keeps a canopy's paths alive; without a band there it is not worth it).
   float importance(const Spectrum& s) const { return max_component(s * seen_bins_); }
-  // The sun, sky and ground colours of `settings`' bands, and the RGB, from a path's spectrum.
-  void finish(PathSample& out, const Spectrum& radiance) const;
+  // The sun, sky and ground colours of `settings`' bands, and the RGB, from a path's spectrum;
+  // the atmosphere's parts after the bands when given.
+  void finish(PathSample& out, const Spectrum& radiance,
+              const AtmosphereSample* parts = nullptr) const;
 
   const Scene& scene_;
   const EmbreeScene& embree_;
@@ -176,6 +199,9 @@ class PathTracer : public Integrator {
   BinSet seen_;            // the same as indices
   int bounce_limit_;
   bool atmosphere_ = false;  // SkyKind::atmosphere: the sky is the medium's light
+  // Every ray below the horizon meets the ground (the plain, or a periodic cell's ground): no
+  // sky is seen below it.
+  bool ground_below_ = false;
   // The one atmosphere by paths: the radiance model whose light haze points take in closed
   // form, their paths adding only what differs from it (a control variate; null: none).
   std::shared_ptr<const RadianceModel> model_;

@@ -16,6 +16,7 @@
 #include "renderer/acceleration/embree_scene.h"
 #include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
+#include "renderer/output/atmosphere_layers.h"
 #include "renderer/output/image_output.h"
 #include "renderer/spectra/colour_matching.h"
 #include "renderer/transport/comparable_tracer.h"
@@ -126,7 +127,7 @@ std::uint64_t render_tile(const Integrator& tracer, const Camera& camera, const 
       const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(view.width) +
                          static_cast<std::uint64_t>(x);
       Vec3f sum{};
-      std::array<float, kMaxBands> band_sum{};
+      std::array<float, kMaxLayers> band_sum{};
       double luminance_sum = 0.0, luminance_squares = 0.0;  // for the variance
       FirstHit first;
       PixelAovs aovs;
@@ -353,6 +354,8 @@ void write_checkpoint(const RenderOptions& options, const Film& film, int tiles_
 Film make_film(const Scene& scene, const View& view) {
   std::vector<std::string> names;
   for (const SpectralBand& b : scene.bands) names.push_back(b.name);
+  if (scene.settings.atmosphere_layers)
+    for (std::string& name : atmosphere_layer_names(scene.bands)) names.push_back(std::move(name));
   return Film(view.width, view.height, std::move(names));
 }
 
@@ -416,7 +419,7 @@ void unpack_tiles(const std::vector<std::uint32_t>& words, int first, int last, 
       film.set(x, y, {f(k), f(k + 1), f(k + 2)}, aovs);
       film.set_luminance_variance(x, y, f(k + 19));
       film.set_samples(x, y, words[k + 20]);
-      std::array<float, kMaxBands> bands{};
+      std::array<float, kMaxLayers> bands{};
       for (int b = 0; b < film.band_count(); ++b)
         bands[static_cast<std::size_t>(b)] = f(k + kWordsPerPixel + static_cast<std::size_t>(b));
       film.set_bands(x, y, bands.data());

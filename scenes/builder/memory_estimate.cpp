@@ -269,8 +269,11 @@ static double film_pixel_bytes(const Scenario& s) {
   const double bands = static_cast<double>(s.bands.size());
   const double channels = s.sensor ? static_cast<double>(s.sensor->model.channels.size()) : 0.0;
   const double reflectance = s.render.reflectance ? 3.0 + bands + channels : 0.0;
+  // The atmosphere's five parts and the surface's reflectance factor, each RGB and every layer.
+  const double atmosphere = s.render.atmosphere_layers ? 6.0 * (3.0 + bands + channels) : 0.0;
   const double sensor = channels > 0.0 ? channels * (4.0 + 2.0) + 2.0 * 8.0 * 1.2 : 0.0;
-  return mm::kFilmPixel + mm::kFilmBandPixel * (bands + channels + reflectance) + sensor;
+  return mm::kFilmPixel + mm::kFilmBandPixel * (bands + channels + reflectance + atmosphere) +
+         sensor;
 }
 
 MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {

@@ -13,6 +13,7 @@
 #include "core/input_error.h"
 #include "core/process_memory.h"
 #include "renderer/camera.h"
+#include "renderer/output/atmosphere_layers.h"
 #include "renderer/output/exposure.h"
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
@@ -182,6 +183,8 @@ nlohmann::json add_light_and_sensor(const SetRun& run, const renderer::Scene& sc
   entries["irradiance"] = irradiance_json(irradiance, scene);
   meta.emplace_back("irradiance", entries["irradiance"].dump());
   if (run.scenario.render.reflectance) renderer::add_reflectance(film, irradiance);
+  if (run.scenario.render.atmosphere_layers)
+    renderer::finish_atmosphere_layers(film, static_cast<int>(scene.bands.size()));
   const std::optional<renderer::SensorModel>& sensor = run.scenario.views[image.view].sensor;
   if (sensor && run.writes_files()) {
     const renderer::View& view = scene.views[image.view];

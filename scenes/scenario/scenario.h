@@ -86,6 +86,10 @@ struct RenderSection {
   bool envi = false;
   // Reflectance-factor layers pi L / E (docs/SENSOR.md): for RGB, every band and channel.
   bool reflectance = false;
+  // The atmosphere's parts per pixel (docs/SENSOR.md "The atmosphere's parts per pixel"):
+  // path radiance, transmittance, surface radiance, direct and diffuse irradiance and the
+  // surface's reflectance factor, for RGB, every band and channel.
+  bool atmosphere_layers = false;
 };
 
 struct WindSettings {

@@ -83,6 +83,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.quality = r.number("quality", Range{0.0, 1.0, true, false}, s.quality);
   s.max_memory = r.byte_size("max_memory");
   s.reflectance = r.boolean("reflectance", s.reflectance);
+  s.atmosphere_layers = r.boolean("atmosphere_layers", s.atmosphere_layers);
   read_formats(r, s);
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");

@@ -359,7 +359,8 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "[terrain]\nelevation = \"" + source_file("data/terrain/volcano.asc").string() +
       "\"\n[sun]\nelevation = 30\nazimuth = 200\n"
       "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\ntarget = [300.0, 400.0, 150.0]\n"
-      "sensor = { exposure_time = 0.002 }\n[render]\nreflectance = true\nnoise_threshold = "
+      "sensor = { exposure_time = 0.002 }\n[render]\nreflectance = true\n"
+      "atmosphere_layers = true\nnoise_threshold = "
       "0.05\nmin_spp = 8\n";
   const std::string sensor = sensor_view +
                              "[sensor]\nchannels = \"xyz\"\nquantum_efficiency = 0.5\n"
@@ -372,6 +373,7 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   EXPECT_DOUBLE_EQ(*with_sensor.views[0].sensor->exposure_time_s, 0.002);
   EXPECT_EQ(with_sensor.views[0].sensor->black_level_dn, 64);
   EXPECT_TRUE(with_sensor.views[0].sensor->vignetting.natural);
+  EXPECT_TRUE(with_sensor.render.atmosphere_layers);
   const std::string iso = sensor_view + "[sensor]\niso = 400\n";
   EXPECT_DOUBLE_EQ(*load_scenario(f.dir.write("iso.toml", iso)).sensor->model.iso, 400.0);
   // The haze's medium keys (docs/ATMOSPHERE.md): an aerosol of tabulated phase, and the

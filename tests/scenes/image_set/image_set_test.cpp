@@ -216,5 +216,49 @@ TEST(ImageSet, TheManifestStatesTheAtmospheresOpticalDepths) {
   EXPECT_TRUE(stated);
 }
 
+// [render] atmosphere_layers: the image holds the atmosphere's parts, finished (the surface
+// divided by the transmittance), and the surface's reflectance factor, in RGB and every band.
+TEST(ImageSet, AtmosphereLayersAreFinishedInTheImage) {
+  Scenario s = load_scenario(landsim::testing::source_file("scenes/examples/one_atmosphere.toml"));
+  s.views[0].width = 16;
+  s.views[0].height = 9;
+  s.render.spp = 2;
+  s.render.atmosphere_layers = true;
+  s.species.clear();
+  s.grass.clear();
+  const auto images = landsim::testing::render_in_memory(s);
+  ASSERT_EQ(images.size(), 1u);
+  const renderer::Film& film = images[0].film;
+  const auto plane = [&](const std::string& name) -> const std::vector<float>& {
+    for (int b = 0; b < film.band_count(); ++b)
+      if (film.band_name(b) == name) return film.band_data(b);
+    ADD_FAILURE() << "no layer " << name;
+    static const std::vector<float> none;
+    return none;
+  };
+  for (const char* part : {"path", "transmittance", "surface", "direct", "diffuse", "reflectance"})
+    for (const char* c : {"R", "G", "B"}) plane(std::string("atmosphere.") + part + "." + c);
+  const std::vector<float>& path = plane("atmosphere.path.G");
+  const std::vector<float>& t = plane("atmosphere.transmittance.G");
+  const std::vector<float>& surface = plane("atmosphere.surface.G");
+  const std::vector<float>& reflectance = plane("atmosphere.reflectance.G");
+  ASSERT_EQ(path.size(), film.pixel_count());
+  int ground = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * film.width() + x);
+      const float apparent = film.rgb(x, y).y;
+      EXPECT_NEAR(path[i] + t[i] * surface[i], apparent, 1e-4f * std::abs(apparent) + 1e-3f);
+      if (film.object(x, y) == static_cast<std::uint8_t>(renderer::ObjectClass::ground)) {
+        ++ground;
+        EXPECT_GT(t[i], 0.5f);  // a few hundred metres of 15 km visibility
+      }
+    }
+  EXPECT_GT(ground, 0);
+  double r = 0.0;
+  for (float v : reflectance) r += v;
+  EXPECT_GT(r, 0.0);
+}
+
 }  // namespace
 }  // namespace landsim::scenes
