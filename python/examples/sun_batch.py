@@ -39,7 +39,7 @@ def main():
         for visibility in VISIBILITIES:
             for elevation in ELEVATIONS:
                 s = base.copy()
-                s.set("render.season", season).set("haze.visibility", visibility)
+                s.set("render.season", season).set("atmosphere.aerosol.visibility", visibility)
                 s.set("sun.elevation", elevation)
                 image = landsim.render(s, spp=args.spp, width=args.width)
                 rows.append((season, visibility, elevation, canopy_luminance(image)))

@@ -26,11 +26,12 @@ def test_set_changes_the_key_and_the_hash():
 
 def test_set_indexes_arrays_of_tables_and_takes_strings_lists_and_bools():
     s = landsim.Scenario.default()
-    s.set("views.0.fov", 25.5).set("render.season", "winter").set("haze.colour", [0.9, 0.9, 1.0])
+    s.set("views.0.fov", 25.5).set("render.season", "winter")
+    s.set("atmosphere.aerosol.colour", [0.9, 0.9, 1.0])
     d = s.to_dict()
     assert d["views"][0]["fov"] == 25.5
     assert d["render"]["season"] == "winter"
-    assert d["haze"]["colour"] == [0.9, 0.9, 1.0]
+    assert d["atmosphere"]["aerosol"]["colour"] == [0.9, 0.9, 1.0]
 
 
 def test_a_value_out_of_range_is_refused_with_key_and_reason_and_nothing_changes():
