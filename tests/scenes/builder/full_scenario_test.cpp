@@ -424,6 +424,7 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   // example, and the keys they leave at their defaults.
   for (const char* scene :
        {"scenes/rami4atm/hom00_whi_s00s_m04.toml", "scenes/rami4atm/hom00_bla_sd2s_m03.toml",
+        "scenes/rami4atm/hom00_lam_ec2s_m04.toml", "scenes/rami4atm/hom00_bla_a00s_m04.toml",
         "scenes/examples/one_atmosphere.toml"}) {
     EXPECT_TRUE(load_scenario(source_file(scene)).haze.column.has_value()) << scene;
     text += landsim::testing::read_file(source_file(scene));
