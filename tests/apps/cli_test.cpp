@@ -773,7 +773,7 @@ TEST(Cli, RenderedExrHoldsEveryLayerAndTheDocumentedMetadata) {
   // its target straight ahead, at the image's centre.
   TempDir dir;
   std::string text = scenario("", "", "spp = 1\nseed = 7");
-  text += "\n[sky]\nturbidity = 4.0\n[haze]\nvisibility = 9000.0\n";
+  text += "\n[atmosphere]\n[atmosphere.aerosol]\nvisibility = 9000.0\n";
   const auto file = dir.write("meta.toml", text);
   const auto out = dir / "out";
   const Result r = run("render " + file.string() + " --out " + out.string(), dir);
@@ -789,8 +789,10 @@ TEST(Cli, RenderedExrHoldsEveryLayerAndTheDocumentedMetadata) {
   };
   EXPECT_EQ(meta("sun_elevation_deg"), "30");
   EXPECT_EQ(meta("sun_azimuth_deg"), "300");
-  EXPECT_EQ(meta("sky"), "hosek-wilkie turbidity 4");
-  EXPECT_EQ(meta("haze"), "visibility 9000 m, scale height 1200 m");
+  EXPECT_EQ(meta("sky"), "atmosphere");
+  EXPECT_EQ(meta("haze"),
+            "atmosphere: U.S. Standard, Rayleigh, ozone, aerosol visibility 9000 m, scale height "
+            "1200 m");
   EXPECT_EQ(meta("spp"), "1");
   EXPECT_EQ(meta("seed"), "7");
   EXPECT_EQ(meta("view"), "v");

@@ -68,11 +68,34 @@ void refuse_second_descriptions(const toml::table& root, const std::string& file
   }
 }
 
+// Hosek-Wilkie's and Preetham's skies carry an aerosol of their own (their turbidity), in the
+// sun's beam as in the sky: a [haze] aerosol beside them would count the aerosol twice
+// (docs/ATMOSPHERE.md "One atmosphere"). A plane-parallel [haze] layer under a sky of no
+// atmosphere of its own (none, gradient) is the radiative-transfer checks' medium.
+void refuse_an_aerosol_beside_a_sky_of_its_own(const toml::table& root, const std::string& file,
+                                               const Scenario& s) {
+  const bool own =
+      s.sky.model == renderer::SkyKind::hosek_wilkie || s.sky.model == renderer::SkyKind::preetham;
+  if (!own || !root.contains("haze")) return;
+  TableReader r(root, "", file);
+  r.fail_at(*root.get("haze"), "[haze]",
+            std::string("the ") +
+                (s.sky.model == renderer::SkyKind::preetham ? "Preetham" : "Hosek-Wilkie") +
+                " sky (the default without [atmosphere]) carries an aerosol of its own (its "
+                "turbidity), and [haze] would add the aerosol a second time: describe the "
+                "atmosphere once as [atmosphere] and [atmosphere.aerosol] (visibility or "
+                "optical_depth, scale_height, asymmetry, ...), or remove [haze] to keep the "
+                "sky as a look-development sky");
+}
+
 }  // namespace
 
 void read_atmosphere(const toml::table& root, const std::string& file, Scenario& s) {
   const bool table = root.contains("atmosphere");
-  if (!table && s.sky.model != renderer::SkyKind::atmosphere) return;
+  if (!table && s.sky.model != renderer::SkyKind::atmosphere) {
+    refuse_an_aerosol_beside_a_sky_of_its_own(root, file, s);
+    return;
+  }
   refuse_second_descriptions(root, file, s);
   s.sky.model = renderer::SkyKind::atmosphere;
   renderer::Haze h;

@@ -86,7 +86,7 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "2\n\n"
          "[sun]\ndate = 2026-06-21\ntime = 13:00:00\nutc_offset = 12.0\nlatitude = "
          "-36.88\nlongitude = 174.76\n"
-         "irradiance = [3.0, 3.0, 3.0]\n\n[sky]\nmodel = \"preetham\"\nturbidity = 2.5\n\n"
+         "irradiance = [3.0, 3.0, 3.0]\n\n[sky]\nmodel = \"gradient\"\n\n"
          "[haze]\nvisibility = 9000.0\nscale_height = 900.0\ncolour = [0.9, 0.9, 0.9]\nasymmetry = "
          "0.6\n\n"
          "[[views]]\nname = \"all\"\nposition = [300.0, -100.0, 250.0]\ntarget = [300.0, 400.0, "
@@ -215,13 +215,12 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(s.species[1].age_min, 15.0);
   EXPECT_DOUBLE_EQ(s.species[1].age_max, 40.0);
   EXPECT_EQ(s.species[0].bark_texture, (f.dir / "bark.png").string());
-  EXPECT_DOUBLE_EQ(s.sky.turbidity, 2.5);
   EXPECT_TRUE(s.haze.enabled);
   EXPECT_DOUBLE_EQ(s.haze.visibility, 9000.0);
   EXPECT_DOUBLE_EQ(s.haze.asymmetry, 0.6);
   EXPECT_DOUBLE_EQ(s.haze.scale_height, 900.0);
   EXPECT_EQ(s.haze.albedo, (Vec3f{0.9f, 0.9f, 0.9f}));
-  EXPECT_EQ(s.sky.model, renderer::SkyKind::preetham);
+  EXPECT_EQ(s.sky.model, renderer::SkyKind::gradient);  // [haze] beside a sky of no aerosol
   ASSERT_TRUE(s.sun.irradiance.has_value());
   EXPECT_EQ(*s.sun.irradiance, (Vec3f{3.0f, 3.0f, 3.0f}));
   // [terrain]
@@ -384,8 +383,14 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   const std::string views =
       "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\n"
       "target = [300.0, 400.0, 150.0]\n";
+  // Preetham's sky and its turbidity (an aerosol of its own: no [haze] beside it).
+  const std::string preetham_text =
+      terrain + views + "[sky]\nmodel = \"preetham\"\nturbidity = 2.5\n";
+  const Scenario preetham = load_scenario(f.dir.write("preetham.toml", preetham_text));
+  EXPECT_EQ(preetham.sky.model, renderer::SkyKind::preetham);
+  EXPECT_DOUBLE_EQ(preetham.sky.turbidity, 2.5);
   const std::string aerosol =
-      terrain + views +
+      terrain + views + "[sky]\nmodel = \"none\"\n" +
       "[haze]\nvisibility = 8000\nsingle_scattering_albedo = 0.9\nmultiple_scattering = \"paths\"\n"
       "angstrom = 1.1\nmolecular = false\nphase = \"table\"\n"
       "phase_angles = [0.0, 90.0, 180.0]\nphase_values = [5.0, 1.0, 0.5]\n";
@@ -394,14 +399,14 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   EXPECT_EQ(with_aerosol.haze.phase_values.size(), 3u);
   EXPECT_FALSE(with_aerosol.haze.molecular);
   EXPECT_EQ(with_aerosol.haze.scattering, renderer::HazeScattering::paths);
-  const std::string layer = terrain + views +
+  const std::string layer = terrain + views + "[sky]\nmodel = \"none\"\n" +
                             "[haze]\nlayer = { optical_depth = 2.0, top = 500.0 }\n"
                             "phase = \"legendre\"\nphase_moments = [1.0, 0.5, 0.25]\n";
   const Scenario with_layer = load_scenario(f.dir.write("layer.toml", layer));
   ASSERT_TRUE(with_layer.haze.layer.has_value());
   EXPECT_DOUBLE_EQ(with_layer.haze.layer->optical_depth, 2.0);
   std::string text =
-      f.text() + aerosol + layer +
+      f.text() + aerosol + layer + preetham_text +
       landsim::testing::read_file(source_file("scenes/examples/default.toml")) +
       landsim::testing::read_file(source_file("scenes/examples/kagwene_cameras.toml")) + cameras +
       sensor + iso;

@@ -162,9 +162,10 @@ TEST(ObjectTruth, HazeLowersAnObjectsContrast) {
   // A ground fog 20 m deep of 60 m visibility, water droplets (albedo 1): the car 25 m away
   // through an optical depth of 1.6. (A haze that deep 1200 m up would leave the scene dark:
   // its light scattered dozens of times, absorbed a little each time.)
-  const renderer::Scene hazy = build(
-      dir, scenario(dir, "car.obj") +
-               "[haze]\nvisibility = 60.0\nscale_height = 20.0\nsingle_scattering_albedo = 1.0\n");
+  const renderer::Scene hazy =
+      build(dir, scenario(dir, "car.obj") +
+                     "[sky]\nmodel = \"gradient\"\n[haze]\nvisibility = 60.0\nscale_height = "
+                     "20.0\nsingle_scattering_albedo = 1.0\n");
   const auto c = renderer::object_truth(clear, clear.views[0], render(clear), false);
   const auto h = renderer::object_truth(hazy, hazy.views[0], render(hazy), false);
   ASSERT_TRUE(c[0].contrast && h[0].contrast);

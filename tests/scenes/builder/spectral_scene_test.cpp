@@ -12,8 +12,8 @@
 #include "renderer/output/reflectance.h"
 #include "renderer/transport/plain.h"
 #include "renderer/transport/render.h"
-#include "scenes/scenario/scenario.h"
 #include "scenes/builder/scene_builder.h"
+#include "scenes/scenario/scenario.h"
 #include "tests/support/temp_dir.h"
 #include "trees/species.h"
 
@@ -204,8 +204,13 @@ namespace {
 TEST(SpectralScene, SunIrradianceOverrideSetsTheSunsStrengthAndColour) {
   // [sun] irradiance replaces the model's sun: its value reaches the scene, and the sunlight
   // a render shows scales with it (the sky's part, rendered with the sun off, held apart).
-  const std::string text =
+  // Under Hosek-Wilkie's sky (a sun of its own to replace): the example without its one
+  // atmosphere, whose sun is the spectrum above the air.
+  std::string text =
       landsim::testing::read_file(landsim::testing::source_file("scenes/examples/ndvi.toml"));
+  const std::size_t atmosphere = text.find("[atmosphere]");
+  ASSERT_NE(atmosphere, std::string::npos);
+  text.erase(atmosphere, text.find("[[", atmosphere) - atmosphere);
   const auto scene_with = [&](const std::string& irradiance) {
     std::string t = text;
     t.replace(t.find("azimuth = 30.0"), 14, "azimuth = 30.0\nirradiance = " + irradiance);

@@ -84,5 +84,23 @@ TEST(AtmosphereReader, RefusesASecondDescriptionNamingTheKeyToUse) {
   EXPECT_NE(heights.find("top"), std::string::npos) << heights;
 }
 
+// Hosek-Wilkie's and Preetham's skies hold an aerosol (their turbidity): a [haze] aerosol beside
+// either counts it twice, and is refused naming [atmosphere.aerosol]; Hosek-Wilkie alone, and a
+// plane-parallel [haze] layer under a sky without an atmosphere of its own, stay.
+TEST(AtmosphereReader, RefusesAHazeBesideASkyThatCarriesItsOwnAerosol) {
+  for (const std::string sky :
+       {"", "[sky]\nmodel = \"hosek-wilkie\"\n", "[sky]\nmodel = \"preetham\"\nturbidity = 3\n"}) {
+    const std::string e = error_of(base() + sky + "[haze]\nvisibility = 15000\n");
+    EXPECT_NE(e.find("[haze]"), std::string::npos) << sky << e;
+    EXPECT_NE(e.find("[atmosphere.aerosol]"), std::string::npos) << e;
+    EXPECT_NE(e.find("a second time"), std::string::npos) << e;
+  }
+  EXPECT_EQ(load(base() + "[sky]\nturbidity = 3\n").sky.model, renderer::SkyKind::hosek_wilkie);
+  const Scenario slab = load(base() +
+                             "[sky]\nmodel = \"none\"\n[haze]\n[haze.layer]\n"
+                             "optical_depth = 0.5\ntop = 1000\n");
+  EXPECT_TRUE(slab.haze.layer.has_value());
+}
+
 }  // namespace
 }  // namespace landsim::scenes

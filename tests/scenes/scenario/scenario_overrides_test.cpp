@@ -35,7 +35,7 @@ std::string refusal(const std::vector<std::string>& sets) {
 
 TEST(ScenarioOverrides, SetKeysWinOverTheFileAndCreateTables) {
   const Scenario s = with({"sun.elevation=45", "views.1.fov=25", "render.season=winter",
-                           "render.frames=[0.0, 2.5]", "haze.visibility=8000"});
+                           "render.frames=[0.0, 2.5]", "atmosphere.aerosol.visibility=8000"});
   EXPECT_DOUBLE_EQ(s.sun.elevation_deg, 45.0);
   EXPECT_DOUBLE_EQ(s.views[1].fov_y_deg, 25.0);
   EXPECT_DOUBLE_EQ(s.views[0].fov_y_deg, 40.0);  // the other view keeps the default
