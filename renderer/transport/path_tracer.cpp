@@ -452,9 +452,9 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
         // estimation: its single scattering here is weighed against that estimate's density;
         // from a haze point, which took all of it, it is not counted.
         const float w_sky = hit || path.sky_taken == PathState::SkyTaken::no ? 1.0f
-                            : path.sky_taken == PathState::SkyTaken::whole
-                                ? 0.0f
-                                : power_heuristic(last_pdf, sky_pdf(ray.direction));
+                            : path.sky_taken == PathState::SkyTaken::whole   ? 0.0f
+                            : last_pdf > 0.0f ? power_heuristic(last_pdf, sky_pdf(ray.direction))
+                                              : 0.0f;
         radiance += throughput * haze_light(p, ray.direction, throughput, rng, dim, bounce == 0,
                                             bounce < bounce_limit_, w_sky, mask, out.rays);
         // With the table, which holds the haze's further light, the path goes on through.
