@@ -7,9 +7,13 @@
 #include "renderer/output/image_output.h"
 #include "renderer/scene.h"
 #include "renderer/spectra/spectral_colour.h"
+#include "renderer/transport/integrator.h"
 
 namespace landsim::renderer {
 namespace {
+
+static_assert(kMaxLayers == kMaxBands + kAtmosphereParts * (3 + kMaxBands),
+              "a sample's planes (renderer/transport/integrator.h) hold every part");
 
 constexpr std::array<const char*, kAtmosphereParts> kPartNames = {"path", "transmittance",
                                                                   "surface", "direct", "diffuse"};
@@ -21,12 +25,6 @@ const Spectrum& part_of(const AtmosphereSample& s, int part) {
   const std::array<const Spectrum*, kAtmosphereParts> parts = {&s.path, &s.transmittance,
                                                                &s.through, &s.direct, &s.diffuse};
   return *parts[static_cast<std::size_t>(part)];
-}
-
-float band_integral(const Spectrum& w, const Spectrum& x) {
-  float sum = 0.0f;
-  for (int k = 0; k < kSpectrumBins; ++k) sum += w[k] * x[k];
-  return sum;
 }
 
 }  // namespace
@@ -59,7 +57,7 @@ void atmosphere_layer_values(const AtmosphereSample& s, const std::vector<Spectr
       out[c] = !transmittance ? rgb[c] : white[c] > 0.0f ? rgb[c] / white[c] : 0.0f;
     for (int b = 0; b < n; ++b) {
       const Spectrum& w = bands[static_cast<std::size_t>(b)].weight;
-      const float sum = band_integral(w, x), weight = band_integral(w, Spectrum::constant(1.0f));
+      const float sum = dot(w, x), weight = dot(w, Spectrum::constant(1.0f));
       out[3 + b] = !transmittance ? sum : weight > 0.0f ? sum / weight : 0.0f;
     }
   }

@@ -53,6 +53,13 @@ struct Spectrum {
   friend bool operator==(const Spectrum&, const Spectrum&) = default;
 };
 
+// The sum over the bins of a x b: a band's response `a` (renderer/spectra/sensor_band.h)
+// integrated against a spectrum `b`.
+inline float dot(const Spectrum& a, const Spectrum& b) {
+  float sum = 0.0f;
+  for (int k = 0; k < kSpectrumBins; ++k) sum += a[k] * b[k];
+  return sum;
+}
 inline float max_component(const Spectrum& s) { return *std::max_element(s.v.begin(), s.v.end()); }
 inline float min_component(const Spectrum& s) { return *std::min_element(s.v.begin(), s.v.end()); }
 // Bin by bin a / b, 0 where b is 0.

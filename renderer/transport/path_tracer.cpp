@@ -168,23 +168,23 @@ Spectrum PathTracer::to_sky(const Vec3f& origin, const Vec3f& l) const {
 
 Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
                                float u1, float u2, const Spectrum& throughput,
-                               const ShadowRoulette& r, std::uint32_t& rays, bool& open) const {
-  open = false;
+                               const ShadowRoulette& r, std::uint32_t& rays, SunRay& sun) const {
   // As sample_sun (renderer/transport/surface.h) with the spectral material: one direction in the
   // disc.
-  const Vec3f l =
-      sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
-  bool front = false;
-  const Spectrum f = bsdf.eval(s, l, front);
+  sun = {};
+  sun.l = sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius), u1, u2);
+  const Spectrum f = bsdf.eval(s, sun.l, sun.front);
   if (max_component(f) <= 0.0f) return {};
   const Spectrum light = f * sun_spectrum_;
   const float weight = shadow_roulette_weight(importance(throughput * light), r);
   if (weight == 0.0f) return {};
   ++rays;
-  const Ray ray{offset_point(v, front ? v.ng : -v.ng), l};
+  sun.traced = true;
+  const Ray ray{offset_point(v, sun.front ? v.ng : -v.ng), sun.l};
   if (occluded(ray, v.mask)) return {};
-  open = true;
-  return light * to_sky(ray.origin, l) * weight;
+  sun.open = true;
+  sun.transmittance = to_sky(ray.origin, sun.l);
+  return light * sun.transmittance * weight;
 }
 
 Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
@@ -342,10 +342,7 @@ void PathTracer::finish(PathSample& out, const Spectrum& radiance,
   out.radiance = spectrum_to_rgb(radiance);
   const std::size_t bands = std::min<std::size_t>(scene_.bands.size(), kMaxBands);
   for (std::size_t b = 0; b < bands; ++b) {
-    const Spectrum& w = scene_.bands[b].weight;
-    float sum = 0.0f;
-    for (int k = 0; k < kSpectrumBins; ++k) sum += w[k] * radiance[k];
-    out.bands[b] = sum;
+    out.bands[b] = dot(scene_.bands[b].weight, radiance);
   }
   if (parts)
     atmosphere_layer_values(
@@ -388,17 +385,24 @@ Spectrum PathTracer::radiance(const Ray& camera_ray, const CounterRng& rng, std:
   return radiance;
 }
 
-void PathTracer::irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const Vec3f& sun,
+void PathTracer::irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const SunRay& sun,
                                const CounterRng& rng, std::uint32_t mask, PathSample& out,
                                AtmosphereSample& parts) const {
-  const Vec3f n = dot(v.n, incoming) < 0.0f ? v.n : -v.n;
-  const Vec3f ng = dot(v.ng, incoming) < 0.0f ? v.ng : -v.ng;
+  // The side facing the camera (a shading point's normals may part from it at grazing hits).
+  const bool n_faces = dot(v.n, incoming) < 0.0f, ng_faces = dot(v.ng, incoming) < 0.0f;
+  const Vec3f n = n_faces ? v.n : -v.n;
+  const Vec3f ng = ng_faces ? v.ng : -v.ng;
   const Vec3f origin = offset_point(v, ng);
-  const float cos_sun = dot(n, sun);
-  if (cos_sun > 0.0f && dot(ng, sun) > 0.0f) {
-    ++out.rays;
-    if (!occluded({origin, sun}, mask))
-      parts.direct = sun_spectrum_ * cos_sun * to_sky(origin, sun);
+  const float cos_sun = dot(n, sun.l);
+  if (cos_sun > 0.0f && dot(ng, sun.l) > 0.0f) {
+    // sun_light's own shadow ray where it traced it from this side, else one of its own.
+    if (sun.traced && sun.front && n_faces && ng_faces) {
+      if (sun.open) parts.direct = sun_spectrum_ * cos_sun * sun.transmittance;
+    } else {
+      ++out.rays;
+      if (!occluded({origin, sun.l}, mask))
+        parts.direct = sun_spectrum_ * cos_sun * to_sky(origin, sun.l);
+    }
   }
   // Everything else from the side facing the camera: cosine-distributed directions, so that
   // the irradiance is pi times the radiance the path finds. As a camera ray sees: the sky
@@ -531,13 +535,10 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
       sun_roulette = roulette(u[0]);
       sky_roulette = roulette(u[1]);
     }
-    bool sunlit = false;
-    Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, sun_roulette, out.rays, sunlit);
-    if (parts != nullptr && first)
-      irradiance_at(v, ray.direction,
-                    sample_cone(sun_direction_, static_cast<float>(scene_.sun.angular_radius),
-                                sun[0], sun[1]),
-                    rng, mask, out, *parts);
+    SunRay sun_ray;
+    Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, sun_roulette, out.rays, sun_ray);
+    const bool sunlit = sun_ray.open;
+    if (parts != nullptr && first) irradiance_at(v, ray.direction, sun_ray, rng, mask, out, *parts);
     // Where the sun finds the first vertex open, the sky most likely does too: its skylight
     // is the closed-form model's plus the Monte Carlo estimate of what differs (the choice
     // depends on the sun's ray alone, not on the sky's samples: unbiased). Not for leaves and

@@ -67,7 +67,6 @@ class PathTracer : public Integrator {
 
   const SkyModel& sky() const { return sky_; }
   const Medium& medium() const { return medium_; }
-  const Vec3f& sun_direction() const { return sun_direction_; }
 
  private:
   // A path between vertices: where it goes, what it carries, and the dimensions of its
@@ -86,6 +85,14 @@ class PathTracer : public Integrator {
     int bounce = 0;
     std::uint32_t dimension_offset = 0;
   };
+  // The sun's shadow ray at a surface vertex, as sun_light traced it: its direction, whether
+  // it was traced from the side the vertex was seen from (`front`), whether it found the sun,
+  // and the air's transmittance to it there.
+  struct SunRay {
+    Vec3f l;
+    bool traced = false, front = false, open = false;
+    Spectrum transmittance;
+  };
   static constexpr std::uint32_t kBranchDimensions = 1u << 30;
   // The first vertex's path for the diffuse irradiance (atmosphere layers): above a branch's
   // dimensions and its haze points' (kBranchDimensions + kHazeSkyOffset).
@@ -97,10 +104,10 @@ class PathTracer : public Integrator {
   void follow(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
               PathSample& out, Spectrum& radiance, std::optional<PathState>* branch,
               AtmosphereSample* parts = nullptr) const;
-  // The direct and diffuse irradiance on the side of `v` facing the camera ray `incoming`:
-  // the sun by a shadow ray along `sun` (the vertex's own sun direction), the rest by one
-  // path from a cosine-distributed direction.
-  void irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const Vec3f& sun,
+  // The direct and diffuse irradiance on the side of `v` facing the camera ray `incoming`: the
+  // sun along the vertex's own sun ray `sun` (its shadow ray reused where sun_light traced it
+  // from that side), the rest by one path from a cosine-distributed direction.
+  void irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const SunRay& sun,
                      const CounterRng& rng, std::uint32_t mask, PathSample& out,
                      AtmosphereSample& parts) const;
   // Turns `path` at haze point `p` (reached with probability q); false when it ends there.
@@ -121,11 +128,10 @@ class PathTracer : public Integrator {
   Spectrum control_integral(const SkyControl& c) const;
   Spectrum control_integrand(const SkyControl& c, const Vec3f& l) const;
   // Light at a surface vertex, as the path's `throughput` so far will see it (the throughput
-  // decides the shadow ray's roulette `r`; it is not applied to the result). `open`: whether
-  // the sun's ray was traced and found the sun.
+  // decides the shadow ray's roulette `r`; it is not applied to the result).
   Spectrum sun_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
                      float u2, const Spectrum& throughput, const ShadowRoulette& r,
-                     std::uint32_t& rays, bool& open) const;
+                     std::uint32_t& rays, SunRay& ray) const;
   // With `control`, the sky's estimate less the model's integrand there (its integral is
   // added at the vertex), and no roulette: an unoccluded ray then adds almost nothing.
   // Under the one atmosphere, `point` (bin, distance, the sun's two) draws the scattering

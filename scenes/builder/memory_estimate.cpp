@@ -20,6 +20,7 @@
 #include "renderer/acceleration/level_ladder.h"
 #include "renderer/acceleration/memory_model.h"
 #include "renderer/materials/grass_patch.h"
+#include "renderer/output/atmosphere_layers.h"
 #include "renderer/output/image_io.h"
 #include "scenes/builder/detail/camera_check.h"
 #include "scenes/builder/detail/context_terrain.h"
@@ -270,7 +271,9 @@ static double film_pixel_bytes(const Scenario& s) {
   const double channels = s.sensor ? static_cast<double>(s.sensor->model.channels.size()) : 0.0;
   const double reflectance = s.render.reflectance ? 3.0 + bands + channels : 0.0;
   // The atmosphere's five parts and the surface's reflectance factor, each RGB and every layer.
-  const double atmosphere = s.render.atmosphere_layers ? 6.0 * (3.0 + bands + channels) : 0.0;
+  const double atmosphere = s.render.atmosphere_layers
+                                ? (renderer::kAtmosphereParts + 1.0) * (3.0 + bands + channels)
+                                : 0.0;
   const double sensor = channels > 0.0 ? channels * (4.0 + 2.0) + 2.0 * 8.0 * 1.2 : 0.0;
   return mm::kFilmPixel + mm::kFilmBandPixel * (bands + channels + reflectance + atmosphere) +
          sensor;
