@@ -17,6 +17,7 @@
 #include "core/vec3.h"
 #include "renderer/camera_model.h"
 #include "renderer/materials/ground_shading.h"
+#include "renderer/spectra/spectral_grid.h"
 #include "renderer/spectra/spectrum.h"
 #include "terrain/ground_mesh.h"
 #include "trees/degradation.h"
@@ -212,7 +213,11 @@ struct Haze {
   std::vector<double> phase_moments;
   // Aerosol extinction falls with wavelength as (lambda / 550 nm)^-angstrom.
   double angstrom = 1.42;  // OPAC continental average
-  bool molecular = true;   // the air's Rayleigh scattering
+  // [atmosphere]: a named model's optics by wavelength (renderer/atmosphere/aerosol_model.h,
+  // "rami4atm-continental" or "rami4atm-desert") instead of albedo, phase and angstrom;
+  // empty: those keys'.
+  std::string aerosol_model;
+  bool molecular = true;  // the air's Rayleigh scattering
   std::optional<HazeLayer> layer;
 };
 
@@ -403,6 +408,9 @@ struct Scene {
   std::optional<PeriodicCell> periodic;  // empty: the scene is what is drawn, and the plain
   RenderSettings settings;
   std::vector<SpectralBand> bands;
+  // What the wavelength bins stand for: their means, or a monochromatic run's wavelength
+  // (renderer/spectra/spectral_grid.h; the medium and the sun are evaluated at it).
+  SpectralGrid spectral_grid;
 };
 
 }  // namespace landsim::renderer

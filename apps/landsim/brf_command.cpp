@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <numbers>
 
 #include "core/atomic_file.h"
@@ -14,6 +15,7 @@
 #include "exporters/measure_netcdf.h"
 #include "renderer/measures/distant_measure.h"
 #include "renderer/measures/energy_budget.h"
+#include "renderer/spectra/sensor_band.h"
 #include "scenario_input.h"
 #include "scenes/builder/scene_builder.h"
 
@@ -58,7 +60,7 @@ nlohmann::json budget_json(const renderer::EnergyBudget& b, int paths) {
 // A reflectance factor's key: the BRF above the atmosphere, the HDRF at its bottom.
 std::string factor_key(bool bottom) { return bottom ? "hdrf" : "brf"; }
 
-nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& scene,
+nlohmann::json result_json(const scenes::Scenario& s, const std::vector<std::string>& band_names,
                            const std::vector<renderer::DistantResult>& results, int spp, bool plane,
                            bool bottom) {
   const std::string key = factor_key(bottom);
@@ -66,8 +68,8 @@ nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& sce
   for (const renderer::DistantResult& r : results) {
     nlohmann::json bands = nlohmann::json::object();
     for (std::size_t b = 0; b < r.band_brf.size(); ++b)
-      bands[scene.bands[b].name] = {{key, r.band_brf[b].mean},
-                                    {key + "_se", r.band_brf[b].standard_error}};
+      bands[band_names[b]] = {{key, r.band_brf[b].mean},
+                              {key + "_se", r.band_brf[b].standard_error}};
     nlohmann::json d = {{"zenith_deg", r.direction.zenith_deg},
                         {"azimuth_deg", r.direction.azimuth_deg},
                         {key, r.brf.mean},
@@ -87,25 +89,123 @@ nlohmann::json result_json(const scenes::Scenario& s, const renderer::Scene& sce
           {"directions", directions}};
 }
 
-std::string result_csv(const nlohmann::json& j) {
+// A number of the JSON, or NaN where it holds null (a monochromatic run's luminance).
+double number(const nlohmann::json& v) {
+  return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+// One row per direction: the luminance's factor and radiance, then each band's factor.
+std::string result_csv(const nlohmann::json& j, const std::vector<std::string>& band_names) {
   const std::string key = factor_key(j["level"] == "boa");
   std::string out =
-      fmt::format("view_zenith_deg,zenith_deg,azimuth_deg,{0},{0}_se,radiance,radiance_se\n", key);
-  for (const auto& d : j["directions"])
+      fmt::format("view_zenith_deg,zenith_deg,azimuth_deg,{0},{0}_se,radiance,radiance_se", key);
+  for (const std::string& b : band_names) out += fmt::format(",{0}_{1},{0}_{1}_se", key, b);
+  out += "\n";
+  for (const auto& d : j["directions"]) {
     out += fmt::format(
-        "{},{},{},{},{},{},{}\n", d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
-        d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>(), d[key].get<double>(),
-        d[key + "_se"].get<double>(), d["radiance"].get<double>(), d["radiance_se"].get<double>());
+        "{},{},{},{},{},{},{}", d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
+        d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>(), number(d[key]),
+        number(d[key + "_se"]), number(d["radiance"]), number(d["radiance_se"]));
+    for (const std::string& b : band_names)
+      out += fmt::format(",{},{}", d["bands"][b][key].get<double>(),
+                         d["bands"][b][key + "_se"].get<double>());
+    out += "\n";
+  }
   return out;
 }
 
 // The bi-hemispherical reflectance at the bottom of the atmosphere, luminance and bands.
-nlohmann::json bhr_json(const renderer::DistantResult& r, const renderer::Scene& scene) {
+nlohmann::json bhr_json(const renderer::DistantResult& r,
+                        const std::vector<std::string>& band_names) {
   nlohmann::json bands = nlohmann::json::object();
   for (std::size_t b = 0; b < r.band_brf.size(); ++b)
-    bands[scene.bands[b].name] = {{"mean", r.band_brf[b].mean},
-                                  {"se", r.band_brf[b].standard_error}};
+    bands[band_names[b]] = {{"mean", r.band_brf[b].mean}, {"se", r.band_brf[b].standard_error}};
   return {{"mean", r.brf.mean}, {"se", r.brf.standard_error}, {"paths", r.paths}, {"bands", bands}};
+}
+
+// A monochromatic run's table: a row per direction, a column per wavelength.
+void print_monochromatic(const nlohmann::json& j, const std::vector<std::string>& names,
+                         const std::string& key) {
+  std::string head = fmt::format("{:>7} {:>7}", "zenith", "azimuth");
+  for (const std::string& n : names) head += fmt::format("  {:>17}", n);
+  std::cout << head << "\n";
+  if (j.contains("bhr")) {
+    std::string row = fmt::format("{:>15}", "BHR");
+    for (const std::string& n : names)
+      row += fmt::format("  {:.4f} +- {:.4f}", j["bhr"]["bands"][n]["mean"].get<double>(),
+                         j["bhr"]["bands"][n]["se"].get<double>());
+    std::cout << row << "\n";
+  }
+  for (const auto& d : j["directions"]) {
+    std::string row =
+        fmt::format("{:>7.1f} {:>7.1f}", d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
+                    d["azimuth_deg"].get<double>());
+    for (const std::string& n : names)
+      row += fmt::format("  {:.4f} +- {:.4f}", d["bands"][n][key].get<double>(),
+                         d["bands"][n][key + "_se"].get<double>());
+    std::cout << row << "\n";
+  }
+}
+
+// The measures of one scene: each direction's, and the BHR at the bottom of the atmosphere.
+struct Measured {
+  std::vector<renderer::DistantResult> directions;
+  std::optional<renderer::DistantResult> bhr;
+};
+
+Measured measure(const renderer::Scene& scene,
+                 const std::vector<renderer::DistantDirection>& directions,
+                 const renderer::DistantMeasureOptions& options) {
+  Measured m{renderer::measure_distant(scene, directions, options), std::nullopt};
+  if (options.bottom_of_atmosphere) m.bhr = renderer::measure_bhr(scene, options);
+  return m;
+}
+
+// Each wavelength's own factor appended as a band; the luminance, which a single wavelength
+// has none of, NaN.
+void append_wavelength(renderer::DistantResult& into, const renderer::DistantResult& run) {
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  into.brf = {kNone, kNone};
+  into.radiance = {kNone, kNone};
+  into.band_brf.push_back(run.band_brf.at(0));
+  into.paths += run.paths;
+}
+
+// Monochromatic runs (docs/CANOPIES.md "Measures"): the scene measured once per wavelength,
+// the medium and the sun evaluated at it, its one band that wavelength's bin.
+Measured measure_monochromatic(renderer::Scene scene, const std::vector<double>& wavelengths,
+                               const std::vector<renderer::DistantDirection>& directions,
+                               const renderer::DistantMeasureOptions& options) {
+  Measured all;
+  all.directions.resize(directions.size());
+  for (std::size_t i = 0; i < directions.size(); ++i) all.directions[i].direction = directions[i];
+  if (options.bottom_of_atmosphere) all.bhr.emplace();
+  for (const double nm : wavelengths) {
+    scene.spectral_grid.monochromatic_nm = nm;
+    scene.bands = {renderer::monochromatic_band(nm)};
+    const Measured one = measure(scene, directions, options);
+    for (std::size_t i = 0; i < directions.size(); ++i)
+      append_wavelength(all.directions[i], one.directions[i]);
+    if (all.bhr) append_wavelength(*all.bhr, *one.bhr);
+  }
+  return all;
+}
+
+// The wavelengths of --wavelength: within landsim's bins, each once.
+void check_wavelengths(const BrfArgs& args) {
+  for (std::size_t i = 0; i < args.wavelengths.size(); ++i) {
+    const double nm = args.wavelengths[i];
+    if (!(nm >= renderer::kFirstWavelength && nm <= renderer::kLastWavelength))
+      throw InputError(fmt::format("--wavelength {}: expected {} to {} nm (landsim's bins)", nm,
+                                   renderer::kFirstWavelength, renderer::kLastWavelength));
+    for (std::size_t j = 0; j < i; ++j)
+      if (args.wavelengths[j] == nm)
+        throw InputError(fmt::format("--wavelength {}: given twice", nm));
+  }
+  if (!args.wavelengths.empty() && args.budget_paths_given && args.budget_paths > 0)
+    throw InputError(
+        "--budget-paths: the energy budget is of the luminance, which a monochromatic run "
+        "(--wavelength) has none of: measure it in a run without --wavelength");
 }
 
 }  // namespace
@@ -127,19 +227,25 @@ CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
   cmd->add_option("--out", args.out, "Directory for brf.json, brf.csv and brf.nc (NetCDF-4, CF)");
   cmd->add_option("--budget-paths", args.budget_paths,
                   "Paths from the sun for the energy budget (albedo, absorption; 0: none)")
-      ->check(CLI::Range(0, 1 << 28));
+      ->check(CLI::Range(0, 1 << 28))
+      ->each([&args](const std::string&) { args.budget_paths_given = true; });
   cmd->add_option("--threads", args.threads, "Worker threads (0: every core)")
       ->check(CLI::Range(0, 1024));
   cmd->add_option("--level", args.level,
                   "toa: the BRF seen from above the atmosphere (default); boa: the HDRF and BHR "
                   "just above the cell, under the atmosphere's light")
       ->check(CLI::IsMember({"toa", "boa"}));
+  cmd->add_option("--wavelength", args.wavelengths,
+                  "Monochromatic runs at these wavelengths, nm (comma-separated or repeated): "
+                  "the medium and the sun evaluated at each, one factor per wavelength")
+      ->delimiter(',');
   cmd->add_flag("--json", args.json, "Print the measure as one JSON object on stdout");
   add_set_option(*cmd, args.sets);
   return cmd;
 }
 
 int run_brf(const BrfArgs& args) {
+  check_wavelengths(args);
   scenes::Scenario scenario = scenario_or_default(args.scenario, args.sets);
   if (!scenario.terrain.periodic)
     throw InputError(scenario.source +
@@ -158,23 +264,33 @@ int run_brf(const BrfArgs& args) {
   options.target_relative_error = args.target_se;
   const bool bottom = args.level == "boa";
   options.bottom_of_atmosphere = bottom;
+  const bool monochromatic = !args.wavelengths.empty();
+  Measured measured = monochromatic
+                          ? measure_monochromatic(scene, args.wavelengths, directions, options)
+                          : measure(scene, directions, options);
   exporters::MeasureRecord record;
   record.scenario = scenario.source;
   record.sun_zenith_deg = 90.0 - scenario.sun.elevation_deg;
   record.sun_azimuth_deg = scenario.sun.azimuth_deg;
   record.samples = options.samples;
-  record.directions = renderer::measure_distant(scene, directions, options);
+  record.directions = std::move(measured.directions);
   for (const renderer::DistantResult& r : record.directions)
     if (plane)
       record.signed_view_zenith_deg.push_back(signed_zenith(r.direction, scenario.sun.azimuth_deg));
-  for (const renderer::SpectralBand& b : scene.bands) record.band_names.push_back(b.name);
+  if (monochromatic)
+    for (const double nm : args.wavelengths)
+      record.band_names.push_back(renderer::monochromatic_band(nm).name);
+  else
+    for (const renderer::SpectralBand& b : scene.bands) record.band_names.push_back(b.name);
   record.bottom_of_atmosphere = bottom;
-  nlohmann::json j = result_json(scenario, scene, record.directions, args.spp, plane, bottom);
+  nlohmann::json j =
+      result_json(scenario, record.band_names, record.directions, args.spp, plane, bottom);
+  if (monochromatic) j["wavelengths_nm"] = args.wavelengths;
   if (bottom) {
-    record.bhr = renderer::measure_bhr(scene, options);
-    j["bhr"] = bhr_json(*record.bhr, scene);
+    record.bhr = measured.bhr;
+    j["bhr"] = bhr_json(*record.bhr, record.band_names);
   }
-  if (args.budget_paths > 0) {
+  if (args.budget_paths > 0 && !monochromatic) {
     renderer::EnergyOptions budget;
     budget.samples = static_cast<std::uint64_t>(args.budget_paths);
     budget.seed = options.seed;
@@ -195,7 +311,8 @@ int run_brf(const BrfArgs& args) {
   if (!args.out.empty()) {
     std::filesystem::create_directories(args.out);
     write_file_atomically(std::filesystem::path(args.out) / "brf.json", j.dump(2) + "\n");
-    write_file_atomically(std::filesystem::path(args.out) / "brf.csv", result_csv(j));
+    write_file_atomically(std::filesystem::path(args.out) / "brf.csv",
+                          result_csv(j, record.band_names));
     exporters::write_measure_netcdf(std::filesystem::path(args.out) / "brf.nc", record);
   }
   if (args.json) {
@@ -215,6 +332,10 @@ int run_brf(const BrfArgs& args) {
                                share("budget_isotropic", k));
   }
   const std::string key = factor_key(bottom);
+  if (monochromatic) {
+    print_monochromatic(j, record.band_names, key);
+    return 0;
+  }
   if (bottom)
     std::cout << fmt::format("BHR {:.4f} +- {:.4f}\n", j["bhr"]["mean"].get<double>(),
                              j["bhr"]["se"].get<double>());

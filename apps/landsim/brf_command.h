@@ -26,6 +26,10 @@ struct BrfArgs {
   // "toa": the BRF above the atmosphere (or the cell); "boa": the HDRF and BHR just above the
   // cell, under the atmosphere's light.
   std::string level = "toa";
+  // Monochromatic runs (docs/CANOPIES.md "Measures"): one measure per wavelength, nm, the
+  // medium and the sun evaluated there; empty: the scenario's bins and bands.
+  std::vector<double> wavelengths;
+  bool budget_paths_given = false;  // --budget-paths on the command line
 };
 
 CLI::App* add_brf_command(CLI::App& app, BrfArgs& args);

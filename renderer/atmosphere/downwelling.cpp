@@ -75,7 +75,7 @@ Spectrum hazy_sky(const Scene& scene, double z) {
 
 Downwelling downwelling_irradiance(const Scene& scene, double z) {
   const SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
-  const Medium medium(scene.haze);
+  const Medium medium(scene.haze, scene.spectral_grid);
   const Vec3 at{0.0, 0.0, z};
   Downwelling out;
   const Vec3 sun = normalize(scene.sun.direction);

@@ -24,7 +24,7 @@ Vec3f ratio(const Vec3f& a, const Vec3f& b) {
 Scene ground_level_equivalent(const Scene& scene) {
   if (!scene.haze.enabled || !scene.haze.column) return scene;
   Scene out = scene;
-  const Medium medium(scene.haze);
+  const Medium medium(scene.haze, scene.spectral_grid);
   const double base = scene.haze.base_height;
   const Downwelling light = downwelling_irradiance(scene, base);
   const Vec3f sun = Vec3f(normalize(scene.sun.direction));
@@ -32,7 +32,7 @@ Scene ground_level_equivalent(const Scene& scene) {
   out.sun.irradiance = spectrum_to_rgb(light.direct) * (1.0f / std::max(sun.z, 1e-3f));
   // The single-scattered sky's colours, straight up and 2 degrees over the horizon across
   // the sun's azimuth, scaled to the diffuse light the paths find.
-  const Spectrum toa = solar_irradiance_toa(scene.sun.earth_sun_distance);
+  const Spectrum toa = solar_irradiance_toa(scene.sun.earth_sun_distance, scene.spectral_grid);
   const Vec3f across = normalize(Vec3f{-sun.y, sun.x, 0.0f} + Vec3f{0.0f, 0.0f, 1e-6f});
   const Vec3f horizon = normalize(Vec3f{across.x, across.y, 0.035f});
   out.sky.model = SkyKind::gradient;

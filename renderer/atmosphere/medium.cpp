@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "renderer/atmosphere/aerosol_model.h"
 #include "renderer/atmosphere/standard_atmosphere.h"
 #include "renderer/spectra/spectral_colour.h"
 
@@ -43,6 +44,27 @@ Spectrum albedo_spectrum(const Vec3f& a) {
   Spectrum s = reflectance_spectrum(a);
   for (float& v : s.v) v = std::clamp(v, 0.0f, 1.0f);
   return s;
+}
+
+// Angstrom's law per bin, relative to 550 nm, at each bin's wavelength.
+Spectrum angstrom_extinction(double angstrom, const SpectralGrid& grid) {
+  Spectrum s;
+  for (int k = 0; k < kSpectrumBins; ++k)
+    s[k] = static_cast<float>(std::pow(grid.wavelength(k) / kReferenceWavelength, -angstrom));
+  return s;
+}
+
+// A named model's optics: per bin its extinction (relative to 550 nm) and scattering, means
+// over the bin as for the air; one phase function for every bin, the model's at the
+// monochromatic wavelength or else at 550 nm (docs/ATMOSPHERE.md "Aerosol models": the
+// continental model's asymmetry moves by 0.03 across the visible).
+void set_model_optics(MediumComponent& aerosol, const AerosolModel& model,
+                      const SpectralGrid& grid) {
+  aerosol.extinction = grid.average([&](double nm) { return model.relative_extinction(nm); });
+  aerosol.scattering = grid.average([&](double nm) {
+    return model.relative_extinction(nm) * model.single_scattering_albedo(nm);
+  });
+  aerosol.phase = model.phase(grid.monochromatic_nm.value_or(kReferenceWavelength));
 }
 
 // An exponential profile along a ray, its density `at_origin` at the ray's origin and its
@@ -138,10 +160,10 @@ double MediumComponent::distance_at(const Vec3& o, const Vec3& d, double t, doub
   return std::isfinite(s) ? std::min(s, t) : t;
 }
 
-Medium::Medium(const Haze& h) {
+Medium::Medium(const Haze& h, const SpectralGrid& grid) {
   if (!h.enabled) return;
   if (h.column) {
-    build_atmosphere(h);
+    build_atmosphere(h, grid);
     return;
   }
   MediumComponent& aerosol = components_[0];
@@ -172,7 +194,7 @@ Medium::Medium(const Haze& h) {
     air.density0 = air_at_base;
     air.phase = PhaseFunction::rayleigh();
     for (int k = 0; k < kSpectrumBins; ++k)
-      air.extinction[k] = static_cast<float>(rayleigh_scattering(bin_centre(k)) /
+      air.extinction[k] = static_cast<float>(rayleigh_scattering(grid.wavelength(k)) /
                                              rayleigh_scattering(kReferenceWavelength));
     air.scattering = air.extinction;  // molecules absorb nothing here
   }
@@ -182,14 +204,12 @@ Medium::Medium(const Haze& h) {
   aerosol.present = aerosol.density0 > 0.0;
   aerosol.z0 = h.base_height;
   aerosol.scale_height = h.scale_height;
-  for (int k = 0; k < kSpectrumBins; ++k)
-    aerosol.extinction[k] =
-        static_cast<float>(std::pow(bin_centre(k) / kReferenceWavelength, -h.angstrom));
+  aerosol.extinction = angstrom_extinction(h.angstrom, grid);
   aerosol.scattering = aerosol.extinction * albedo;
   enabled_ = aerosol.present || air.present;
 }
 
-void Medium::build_atmosphere(const Haze& h) {
+void Medium::build_atmosphere(const Haze& h, const SpectralGrid& grid) {
   // The heights: the base (the lowest ground) stands at its altitude above sea level; the
   // tables are by altitude, so a component's z0 is the scene's sea level.
   const double sea_level = h.base_height - h.base_altitude;
@@ -207,7 +227,7 @@ void Medium::build_atmosphere(const Haze& h) {
     air.profile = std::move(profile);
     air.z0 = sea_level;
     air.phase = PhaseFunction::rayleigh();
-    air.extinction = rayleigh_cross_sections() * static_cast<float>(1.0 / sigma550);
+    air.extinction = rayleigh_cross_sections(grid) * static_cast<float>(1.0 / sigma550);
     air.scattering = air.extinction;  // the molecules' absorption is ozone's, below
   }
   if (column.absorption) {
@@ -220,16 +240,18 @@ void Medium::build_atmosphere(const Haze& h) {
     ozone.present = true;
     ozone.profile = std::move(profile);
     ozone.z0 = sea_level;
-    ozone.extinction = ozone_cross_sections() * static_cast<float>(1.0 / sigma550);
+    ozone.extinction = ozone_cross_sections(grid) * static_cast<float>(1.0 / sigma550);
     ozone.scattering = Spectrum{};
   }
   if (h.aerosol) {
-    aerosol.phase = aerosol_phase(h);
     aerosol.z0 = h.base_height;
-    for (int k = 0; k < kSpectrumBins; ++k)
-      aerosol.extinction[k] =
-          static_cast<float>(std::pow(bin_centre(k) / kReferenceWavelength, -h.angstrom));
-    aerosol.scattering = aerosol.extinction * albedo_spectrum(h.albedo);
+    if (!h.aerosol_model.empty()) {
+      set_model_optics(aerosol, *AerosolModel::named(h.aerosol_model), grid);
+    } else {
+      aerosol.phase = aerosol_phase(h);
+      aerosol.extinction = angstrom_extinction(h.angstrom, grid);
+      aerosol.scattering = aerosol.extinction * albedo_spectrum(h.albedo);
+    }
     const bool uniform = h.aerosol_profile == AerosolProfile::uniform;
     const double thickness = h.uniform_top - h.uniform_bottom;
     if (uniform) {

@@ -27,6 +27,7 @@
 #include "renderer/atmosphere/density_profile.h"
 #include "renderer/atmosphere/phase_function.h"
 #include "renderer/scene.h"
+#include "renderer/spectra/spectral_grid.h"
 #include "renderer/spectra/spectrum.h"
 
 namespace landsim::renderer {
@@ -77,7 +78,8 @@ struct MediumComponent {
 
 class Medium {
  public:
-  explicit Medium(const Haze& haze);
+  // Each bin's optics as `grid` says (its mean, or a monochromatic run's wavelength).
+  explicit Medium(const Haze& haze, const SpectralGrid& grid = {});
 
   bool enabled() const { return enabled_; }
   const MediumComponent& component(int c) const { return components_[static_cast<std::size_t>(c)]; }
@@ -122,7 +124,8 @@ class Medium {
   }
 
  private:
-  void build_atmosphere(const Haze& haze);  // [atmosphere]: every component by its profile
+  void build_atmosphere(const Haze& haze,
+                        const SpectralGrid& grid);  // [atmosphere]: every component by its profile
 
   bool enabled_ = false;
   std::array<MediumComponent, kMediumComponents> components_;

@@ -51,7 +51,7 @@ Sky dark_if_none(Sky sky) {
 
 }  // namespace
 
-SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
+SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo, const SpectralGrid& grid)
     : sky_(dark_if_none(sky)),
       atmosphere_(sky.model == SkyKind::atmosphere),
       sun_direction_(normalize(Vec3f(sun.direction))) {
@@ -74,7 +74,7 @@ SkyModel::SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo)
       (1.0f / (2.0f * kPi));
   mean_radiance_ = (upper + below_horizon_) * 0.5f;
   table_ = DirectionTable([&](const Vec3f& d) { return luminance(radiance(d)); });
-  build_spectra(sun, elevation, ground_albedo);
+  build_spectra(sun, elevation, ground_albedo, grid);
 }
 
 SkyModel::~SkyModel() = default;
@@ -148,7 +148,8 @@ double disc_irradiance(const HosekWilkieSun& sun, double wavelength_nm, double r
 
 }  // namespace
 
-void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albedo) {
+void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albedo,
+                             const SpectralGrid& grid) {
   const Spectrum ground = reflectance_spectrum(ground_albedo);
   if (hosek_wilkie_) {
     const NearInfrared infrared(elevation, sky_.turbidity);
@@ -210,7 +211,7 @@ void SkyModel::build_spectra(const Sun& sun, double elevation, Vec3f ground_albe
     }
   } else if (atmosphere_) {
     // The sun above the atmosphere: the medium takes out what it extinguishes on the way.
-    sun_spectrum_ = solar_irradiance_toa(sun.earth_sun_distance);
+    sun_spectrum_ = solar_irradiance_toa(sun.earth_sun_distance, grid);
   } else {
     sun_spectrum_ = emission_spectrum(sun.irradiance);
   }

@@ -18,7 +18,9 @@ class HosekWilkieSky;
 
 class SkyModel {
  public:
-  SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo);
+  // `grid`: what the bins of the atmosphere's sun spectrum stand for (a monochromatic run's
+  // wavelength, or their means).
+  SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo, const SpectralGrid& grid = {});
   ~SkyModel();
   SkyModel(SkyModel&&) noexcept;
 
@@ -66,7 +68,8 @@ class SkyModel {
  private:
   Vec3f above_horizon(const Vec3f& direction) const;
   Spectrum above_horizon_spectral(const Vec3f& direction) const;
-  void build_spectra(const Sun& sun, double elevation, Vec3f ground_albedo);
+  void build_spectra(const Sun& sun, double elevation, Vec3f ground_albedo,
+                     const SpectralGrid& grid);
 
   void build_sun_disc(const Sun& sun, double elevation);  // elevation in radians
 

@@ -95,12 +95,16 @@ double ozone_cross_section(double nm) {
   return t.y[std::min(i, t.y.size() - 1)];
 }
 
-Spectrum rayleigh_cross_sections() { return bin_average(rayleigh_cross_section); }
-Spectrum ozone_cross_sections() { return bin_average(ozone_cross_section); }
+Spectrum rayleigh_cross_sections(const SpectralGrid& grid) {
+  return grid.average(rayleigh_cross_section);
+}
+Spectrum ozone_cross_sections(const SpectralGrid& grid) {
+  return grid.average(ozone_cross_section);
+}
 
-Spectrum solar_irradiance_toa(double distance) {
+Spectrum solar_irradiance_toa(double distance, const SpectralGrid& grid) {
   const double f = 1.0 / (distance * distance);
-  return bin_average([&](double nm) { return thuillier().linear(nm) * f; });
+  return grid.average([&](double nm) { return thuillier().linear(nm) * f; });
 }
 
 double earth_sun_distance(int day_of_year) {

@@ -158,7 +158,8 @@ Scales reference_scales(const Scene& scene, const DistantMeasureOptions& options
     e = downwelling_irradiance(scene, top).total();
     per = 1.0;
   } else {
-    e = SkyModel(scene.sky, scene.sun, scene.ground.plain_albedo()).sun_spectral_irradiance();
+    e = SkyModel(scene.sky, scene.sun, scene.ground.plain_albedo(), scene.spectral_grid)
+            .sun_spectral_irradiance();
   }
   const auto scale = [&](double irradiance) {
     return irradiance > 0.0 ? kPi / (irradiance * per) : std::numeric_limits<double>::quiet_NaN();
@@ -200,7 +201,7 @@ struct Measuring {
 }  // namespace
 
 double entry_height(const Scene& scene, const PeriodicCell& cell) {
-  return std::max(cell.top, Medium(scene.haze).top());
+  return std::max(cell.top, Medium(scene.haze, scene.spectral_grid).top());
 }
 
 DistantValue mean_with_error(double sum, double squares, double n, double scale) {

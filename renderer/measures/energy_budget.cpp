@@ -192,7 +192,7 @@ EnergyBudget measure_energy(const Scene& scene, const EnergyOptions& options) {
   if (options.illumination == Illumination::sun && !(sun.z > 0.0f))
     throw std::invalid_argument("the sun is below the horizon");
   const EmbreeScene embree(scene);
-  const Medium medium(scene.haze);
+  const Medium medium(scene.haze, scene.spectral_grid);
   Setting setting{scene,
                   embree,
                   *scene.periodic,

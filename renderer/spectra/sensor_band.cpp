@@ -1,7 +1,10 @@
 #include "renderer/spectra/sensor_band.h"
 
 #include <algorithm>
+#include <sstream>
 #include <utility>
+
+#include "renderer/spectra/spectral_grid.h"
 
 namespace landsim::renderer {
 
@@ -67,6 +70,14 @@ SpectralBand sensor_band(std::string name, const std::vector<ResponsePoint>& poi
 std::vector<ResponsePoint> box_response(double centre, double width) {
   const double a = centre - 0.5 * width, b = centre + 0.5 * width;
   return {{a, 0.0}, {a, 1.0}, {b, 1.0}, {b, 0.0}};
+}
+
+SpectralBand monochromatic_band(double nm) {
+  std::ostringstream name;
+  name << nm << "nm";
+  SpectralBand b{name.str(), Spectrum{}};
+  b.weight[bin_of(nm)] = 1.0f;
+  return b;
 }
 
 }  // namespace landsim::renderer

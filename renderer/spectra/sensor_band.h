@@ -27,6 +27,10 @@ SpectralBand photon_band(std::string name, const std::vector<ResponsePoint>& poi
 // diffraction is evaluated at. Zero for a response that is zero everywhere.
 double centroid_wavelength(const std::vector<ResponsePoint>& points);
 
+// A monochromatic run's band (renderer/spectra/spectral_grid.h): weight 1 in the bin that
+// holds `nm`, so that its "band radiance" is the spectral radiance there, named "<nm>nm".
+SpectralBand monochromatic_band(double nm);
+
 // A box: response 1 from centre - width / 2 to centre + width / 2, 0 elsewhere.
 std::vector<ResponsePoint> box_response(double centre_nm, double width_nm);
 

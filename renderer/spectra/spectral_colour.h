@@ -3,8 +3,10 @@
 // radiance through the CIE 1931 functions, and the spectra that stand for an RGB colour where
 // no measured spectrum exists (bark, rock, road, a scene object's paint, a gradient sky).
 #include <array>
+#include <utility>
 
 #include "core/vec3.h"
+#include "renderer/spectra/spectral_grid.h"
 #include "renderer/spectra/spectrum.h"
 
 namespace landsim::renderer {
@@ -35,14 +37,7 @@ double planck_radiance(double wavelength_nm, double kelvin);
 // The mean of f(wavelength in nm) over each bin, sampled at 1 nm midpoints.
 template <class F>
 Spectrum bin_average(F&& f) {
-  Spectrum s;
-  const int steps = static_cast<int>(kBinWidth);
-  for (int k = 0; k < kSpectrumBins; ++k) {
-    double sum = 0.0;
-    for (int i = 0; i < steps; ++i) sum += f(bin_start(k) + i + 0.5);
-    s[k] = static_cast<float>(sum / steps);
-  }
-  return s;
+  return SpectralGrid{}.average(std::forward<F>(f));
 }
 
 }  // namespace landsim::renderer

@@ -21,7 +21,7 @@ ComparableTracer::ComparableTracer(const Scene& scene, const EmbreeScene& embree
     : scene_(scene),
       embree_(embree),
       light_(light),
-      sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
+      sky_(scene.sky, scene.sun, scene.ground.plain_albedo(), scene.spectral_grid),
       fog_extinction_(visibility_extinction(scene.haze)),
       sun_direction_(Vec3f(normalize(scene.sun.direction))) {}
 

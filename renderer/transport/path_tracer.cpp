@@ -80,8 +80,8 @@ DirectionTable luminance_table(Light&& light) {
 
 bool PathTracer::wants_table(const Scene& scene) {
   // Direct light only (max_bounces 0) has no use for the haze's further light.
-  return Medium(scene.haze).enabled() && scene.haze.scattering == HazeScattering::table &&
-         scene.settings.max_bounces != 0;
+  return Medium(scene.haze, scene.spectral_grid).enabled() &&
+         scene.haze.scattering == HazeScattering::table && scene.settings.max_bounces != 0;
 }
 
 bool PathTracer::wants_radiance_model(const Scene& scene) {
@@ -95,9 +95,9 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
                        std::shared_ptr<const RadianceModel> model)
     : scene_(scene),
       embree_(embree),
-      sky_(scene.sky, scene.sun, scene.ground.plain_albedo()),
+      sky_(scene.sky, scene.sun, scene.ground.plain_albedo(), scene.spectral_grid),
       plain_(plain_surface(scene.ground)),
-      medium_(scene.haze),
+      medium_(scene.haze, scene.spectral_grid),
       sun_direction_(Vec3f(normalize(scene.sun.direction))),
       // The roulette compares spectral contributions: the sky's mean as a spectrum.
       roulette_threshold_(kShadowRouletteFraction *

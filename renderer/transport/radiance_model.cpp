@@ -97,7 +97,7 @@ void spherical_harmonics(const Vec3f& d, std::array<float, RadianceModel::kCoeff
 
 std::shared_ptr<const RadianceModel> RadianceModel::build(const Scene& scene) {
   auto model = std::make_shared<RadianceModel>();
-  const Medium medium(scene.haze);
+  const Medium medium(scene.haze, scene.spectral_grid);
   for (int c = 0; c < kMediumComponents; ++c) {
     const MediumComponent& m = medium.component(c);
     const bool scatters = m.present && max_component(m.scattering) > 0.0f;

@@ -163,6 +163,42 @@ TEST(Cli, BrfMeasuresAPeriodicCellAndRefusesWhatIsNot) {
   EXPECT_TRUE(std::filesystem::exists(out / "brf.nc"));  // read by tests/python/test_brf_netcdf.py
 }
 
+// Monochromatic runs (docs/CANOPIES.md "Measures"): one factor per wavelength, the medium
+// evaluated at each (661 and 679 nm share a bin, yet not their Rayleigh depth), the luminance
+// none; a wavelength beyond the bins, or a budget asked of one, refused.
+TEST(Cli, BrfMeasuresEachNamedWavelengthOnItsOwn) {
+  TempDir dir;
+  const std::string cell = testing::source_file("scenes/rami4atm/hom00_bla_sd2s_m03.toml").string();
+  const auto out = dir / "mono";
+  Result r =
+      run("brf " + cell + " --spp 4096 --direction 0,0 --wavelength 661,679 --out " + out.string(),
+          dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = testing::read_file(out / "brf.csv");
+  EXPECT_EQ(csv.rfind("view_zenith_deg,zenith_deg,azimuth_deg,brf,brf_se,radiance,radiance_se,"
+                      "brf_661nm,brf_661nm_se,brf_679nm,brf_679nm_se\n",
+                      0),
+            0u)
+      << csv;
+  EXPECT_NE(csv.find("\n0,0,0,nan,nan,nan,nan,"), std::string::npos) << csv;  // no luminance
+  const auto j = nlohmann::json::parse(testing::read_file(out / "brf.json"));
+  EXPECT_EQ(j["wavelengths_nm"], nlohmann::json({661.0, 679.0}));
+  const auto& bands = j["directions"][0]["bands"];
+  EXPECT_TRUE(j["directions"][0]["brf"].is_null());
+  const double short_brf = bands["661nm"]["brf"], long_brf = bands["679nm"]["brf"];
+  const double se =
+      std::hypot(bands["661nm"]["brf_se"].get<double>(), bands["679nm"]["brf_se"].get<double>());
+  // Over black ground the air's light alone: Rayleigh's lambda^-4 makes 661 nm brighter by
+  // several standard errors (the bins' means would make the two the same).
+  EXPECT_GT(short_brf - long_brf, 5.0 * se) << short_brf << " " << long_brf;
+  r = run("brf " + cell + " --wavelength 300", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--wavelength 300: expected 380 to 1020 nm"), std::string::npos) << r.err;
+  r = run("brf " + cell + " --wavelength 550 --budget-paths 1000", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--budget-paths"), std::string::npos) << r.err;
+}
+
 TEST(Cli, AGroundTextureThatCannotBeReadExitsTwoAtItsEntry) {
   TempDir dir;
   const auto junk = dir.write("rock.png", "not an image");

@@ -80,6 +80,28 @@ TEST(OneAtmosphere, RayleighOpticalDepthOfTheStandardColumnIsHansenAndTravis) {
               0.005);
 }
 
+// A monochromatic run (docs/SPECTRAL.md "Monochromatic runs"): the bin that holds 665 nm
+// carries the air's depth and the sun at 665 nm itself, where the bin's mean (660-680 nm)
+// is 3% thinner in Rayleigh.
+TEST(OneAtmosphere, AMonochromaticRunTakesTheMediumAndTheSunAtItsWavelength) {
+  Scene s = atmosphere_scene(45.0, 15000.0, 0.0f);
+  s.haze.aerosol = false;
+  s.haze.column->absorption = false;
+  SpectralGrid mono;
+  mono.monochromatic_nm = 665.0;
+  const int k = bin_of(665.0);
+  const auto rayleigh_depth = [&](const SpectralGrid& grid) {
+    const Medium medium(s.haze, grid);
+    return medium.vertical_depth(1, 0.0) * medium.component(1).extinction[k];
+  };
+  const double want = hansen_travis(0.665);
+  EXPECT_NEAR(rayleigh_depth(mono) / want, 1.0, 0.005) << rayleigh_depth(mono);
+  EXPECT_LT(rayleigh_depth(SpectralGrid{}) / want, 0.98);  // the bin's mean is another's
+  // Thuillier et al. 2003 at 665 nm: 1.53577 W m-2 nm-1 at 1 AU.
+  EXPECT_NEAR(solar_irradiance_toa(1.0, mono)[k], 1.53577, 1e-5);
+  EXPECT_NEAR(solar_irradiance_toa(1.0 / std::sqrt(2.0), mono)[k], 2.0 * 1.53577, 1e-4);
+}
+
 // Single scattering of the sun into a view straight up from height h through molecules
 // alone (Rayleigh phase, albedo 1): E p integral_h^inf beta(z) exp(-tau(z) / mu0 -
 // (tau(h) - tau(z))) dz, by Simpson's rule over the standard's densities.

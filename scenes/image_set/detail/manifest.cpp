@@ -104,7 +104,7 @@ std::string haze_phase(renderer::AerosolPhase p) {
 nlohmann::json atmosphere_json(const renderer::Scene& scene) {
   const renderer::Haze& h = scene.haze;
   if (!h.enabled || !h.column) return nullptr;
-  const renderer::Medium medium(h);
+  const renderer::Medium medium(h, scene.spectral_grid);
   nlohmann::json out = {{"profile", "us-standard"},
                         {"rayleigh", h.column->scattering},
                         {"ozone", h.column->absorption},
@@ -116,13 +116,18 @@ nlohmann::json atmosphere_json(const renderer::Scene& scene) {
     if (medium.component(c).present) depths[names[c]] = medium.vertical_depth(c, h.base_height);
   out["optical_depth_550nm"] = depths;
   if (h.aerosol) {
-    nlohmann::json a = {
-        {"single_scattering_albedo", {h.albedo.x, h.albedo.y, h.albedo.z}},
-        {"phase", haze_phase(h.phase)},
-        {"angstrom", h.angstrom},
-        {"profile",
-         h.aerosol_profile == renderer::AerosolProfile::uniform ? "uniform" : "exponential"}};
-    if (h.phase == renderer::AerosolPhase::henyey_greenstein) a["asymmetry"] = h.asymmetry;
+    nlohmann::json a = {{"profile", h.aerosol_profile == renderer::AerosolProfile::uniform
+                                        ? "uniform"
+                                        : "exponential"}};
+    if (!h.aerosol_model.empty()) {
+      a["type"] = h.aerosol_model;  // its optics by wavelength
+    } else {
+      a["type"] = "continental-average";
+      a["single_scattering_albedo"] = {h.albedo.x, h.albedo.y, h.albedo.z};
+      a["phase"] = haze_phase(h.phase);
+      a["angstrom"] = h.angstrom;
+      if (h.phase == renderer::AerosolPhase::henyey_greenstein) a["asymmetry"] = h.asymmetry;
+    }
     if (h.aerosol_optical_depth)
       a["optical_depth"] = *h.aerosol_optical_depth;
     else

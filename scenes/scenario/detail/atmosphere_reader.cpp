@@ -32,8 +32,24 @@ void read_aerosol(TableReader& r, renderer::Haze& h) {
       if (r.has(k)) r.fail(k, "only with profile = \"uniform\"");
     h.scale_height = r.number("scale_height", Range{10.0, 1e5}, h.scale_height);
   }
-  // The optical type: OPAC's continental average unless told (docs/ATMOSPHERE.md).
-  r.choice("type", {"continental-average"}, "continental-average");
+  // The optical type (docs/ATMOSPHERE.md "Aerosol models"): OPAC's continental average,
+  // shaped by the optics keys, unless a dataset by wavelength is named (the names
+  // renderer::AerosolModel knows).
+  const std::string type =
+      r.choice("type", {"continental-average", "rami4atm-continental", "rami4atm-desert"},
+               "continental-average");
+  if (type != "continental-average") {
+    for (const char* k : {"angstrom", "colour", "single_scattering_albedo", "phase", "asymmetry",
+                          "phase_angles", "phase_values", "phase_moments"})
+      if (r.has(k))
+        r.fail(k, "type = \"" + type +
+                      "\" gives the extinction, albedo and phase function "
+                      "by wavelength: remove " +
+                      k + " (or use type = \"continental-average\")");
+    h.aerosol_model = type;
+    r.finish();
+    return;
+  }
   h.angstrom = r.number("angstrom", Range{-1.0, 4.0}, h.angstrom);
   read_aerosol_optics(r, h);
   r.finish();

@@ -60,6 +60,26 @@ TEST(AtmosphereReader, ReadsTheMoleculesAndTheAerosolLayer) {
             renderer::HazeScattering::table);
 }
 
+TEST(AtmosphereReader, ReadsANamedAerosolModelAndRefusesTheOpticsItGives) {
+  const std::string aerosol = "[atmosphere]\n[atmosphere.aerosol]\noptical_depth = 0.2\n";
+  EXPECT_EQ(load(base() + aerosol + "type = \"rami4atm-desert\"\n").haze.aerosol_model,
+            "rami4atm-desert");
+  EXPECT_EQ(load(base() + aerosol + "type = \"rami4atm-continental\"\n").haze.aerosol_model,
+            "rami4atm-continental");
+  EXPECT_EQ(load(base() + aerosol).haze.aerosol_model, "");  // OPAC's, shaped by the keys
+  // The dataset gives the albedo, the phase function and the wavelength law: a key that
+  // would give them again is refused by name.
+  for (const char* key : {"asymmetry = 0.6", "single_scattering_albedo = 0.9", "angstrom = 1.2",
+                          "phase = \"isotropic\""}) {
+    const std::string e =
+        error_of(base() + aerosol + "type = \"rami4atm-continental\"\n" + key + "\n");
+    EXPECT_NE(e.find(std::string(key).substr(0, std::string(key).find(' '))), std::string::npos)
+        << e;
+    EXPECT_NE(e.find("by wavelength"), std::string::npos) << e;
+  }
+  EXPECT_NE(error_of(base() + aerosol + "type = \"maritime\"\n").find("type"), std::string::npos);
+}
+
 TEST(AtmosphereReader, RefusesASecondDescriptionNamingTheKeyToUse) {
   const std::string atmosphere = "[atmosphere]\n[atmosphere.aerosol]\nvisibility = 15000\n";
   const std::string haze = error_of(base() + "[haze]\nvisibility = 15000\n" + atmosphere);
