@@ -109,7 +109,7 @@ int chart(const std::string& out) {
                         fmt::format("sun {:g} deg", elevations[col])});
       for (int row = 0; row < 3; ++row) {
         const SkyAndSun s = setting(kind, elevations[col], turbidities[row]);
-        const renderer::SkyModel sky(s.sky, s.sun, kGroundAlbedo);
+        const renderer::SkyModel sky(s.sky, s.sun, kGroundAlbedo, renderer::SpectralGrid{});
         draw_dome(film, x_base + col * (kDome + kGap), kTop + row * (kDome + kGap), kDome, sky);
       }
     }
@@ -132,7 +132,7 @@ int horizon_table() {
         std::printf("| %g | %g | %g |", elevation, turbidity, azimuth);
         for (SkyKind kind : {SkyKind::hosek_wilkie, SkyKind::preetham}) {
           const SkyAndSun s = setting(kind, elevation, turbidity);
-          const renderer::SkyModel sky(s.sky, s.sun, kGroundAlbedo);
+          const renderer::SkyModel sky(s.sky, s.sun, kGroundAlbedo, renderer::SpectralGrid{});
           // The sun is in the south (azimuth 180); this view is `azimuth` degrees from it.
           const Vec3 c(sky.radiance(Vec3f(toward(4.0, 180.0 + azimuth))));
           const renderer::Chromaticity xy = renderer::chromaticity_of(renderer::rec709_to_xyz(c));
@@ -151,7 +151,7 @@ int illuminance() {
     for (double elevation : {10.0, 30.0, 60.0})
       for (double turbidity : {2.5, 4.0}) {
         const SkyAndSun s = setting(kind, elevation, turbidity);
-        const renderer::SkyModel sky(s.sky, s.sun, kGroundAlbedo);
+        const renderer::SkyModel sky(s.sky, s.sun, kGroundAlbedo, renderer::SpectralGrid{});
         const double sun =
             renderer::rec709_luminance(Vec3(s.sun.irradiance)) * std::sin(elevation * kDeg);
         const double diffuse = renderer::rec709_luminance(Vec3(sky.horizontal_irradiance()));

@@ -477,7 +477,8 @@ static CrosscheckReport run_crosscheck(const scenes::Scenario& scenario,
     r.camera = view;
   }
   check_reference(o, view);
-  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo(),
+                               scene.spectral_grid);
   PovExportOptions pov_options;
   pov_options.ambient_irradiance = sky.horizontal_irradiance();
   pov_options.fog_colour = horizon_mean(sky);

@@ -37,7 +37,8 @@ int run_export_pov(const ExportPovArgs& args) {
   // Under [atmosphere], its sun, sky and fog as seen from the ground: POV-Ray's lights.
   const renderer::Scene scene = renderer::ground_level_equivalent(
       scenes::build_scene(s, s.render.frames[static_cast<std::size_t>(args.frame)]));
-  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo(),
+                               scene.spectral_grid);
   exporters::PovExportOptions o;
   o.ambient_irradiance = sky.horizontal_irradiance();
   o.fog_colour = sky.radiance({1.0f, 0.0f, 0.02f});

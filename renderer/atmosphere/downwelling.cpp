@@ -74,7 +74,7 @@ Spectrum hazy_sky(const Scene& scene, double z) {
 }  // namespace
 
 Downwelling downwelling_irradiance(const Scene& scene, double z) {
-  const SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
+  const SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo(), scene.spectral_grid);
   const Medium medium(scene.haze, scene.spectral_grid);
   const Vec3 at{0.0, 0.0, z};
   Downwelling out;

@@ -40,7 +40,8 @@ Scene ground_level_equivalent(const Scene& scene) {
       spectrum_to_rgb(single_scattered_sky(medium, toa, sun, base, {0.0f, 0.0f, 1.0f}));
   out.sky.horizon_radiance = spectrum_to_rgb(single_scattered_sky(medium, toa, sun, base, horizon));
   const Vec3f gradient =
-      SkyModel(out.sky, out.sun, scene.ground.plain_albedo()).horizontal_irradiance();
+      SkyModel(out.sky, out.sun, scene.ground.plain_albedo(), scene.spectral_grid)
+          .horizontal_irradiance();
   const Vec3f scale = ratio(spectrum_to_rgb(light.diffuse), gradient);
   out.sky.zenith_radiance = out.sky.zenith_radiance * scale;
   out.sky.horizon_radiance = out.sky.horizon_radiance * scale;

@@ -20,7 +20,7 @@ class SkyModel {
  public:
   // `grid`: what the bins of the atmosphere's sun spectrum stand for (a monochromatic run's
   // wavelength, or their means).
-  SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo, const SpectralGrid& grid = {});
+  SkyModel(const Sky& sky, const Sun& sun, Vec3f ground_albedo, const SpectralGrid& grid);
   ~SkyModel();
   SkyModel(SkyModel&&) noexcept;
 

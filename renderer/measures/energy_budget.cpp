@@ -40,7 +40,7 @@ float weigh(const Spectrum& s, const Spectrum& w) {
 
 // Each bin's share of the sun's luminance.
 Spectrum luminance_weights(const Scene& scene) {
-  const SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
+  const SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo(), scene.spectral_grid);
   const Spectrum& e = sky.sun_spectral_irradiance();
   const auto& rgb = rgb_weights();
   Spectrum w;

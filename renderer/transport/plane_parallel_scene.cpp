@@ -12,6 +12,7 @@ Scene plane_parallel_scene(const Scene& scene, float ground_height) {
   pp.haze.scattering = HazeScattering::paths;
   pp.haze.control_variate = false;  // the plain's paths are what a model is traced from
   pp.bands = scene.bands;
+  pp.spectral_grid = scene.spectral_grid;  // the medium and the sun at the same wavelengths
   pp.settings.max_bounces = scene.settings.max_bounces;
   const Vec3f albedo = scene.ground.plain_albedo();
   pp.ground.albedo = albedo;

@@ -240,7 +240,8 @@ TEST(Crosscheck, AReferenceImageComparesLikePovRayRunOnTheSpot) {
   ref.align = 0;
   ref.max_region_diff = o.max_region_diff;
   // An 8-bit sRGB image of the render at the export's exposure: within the quantisation.
-  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo());
+  const renderer::SkyModel sky(scene.sky, scene.sun, scene.ground.plain_albedo(),
+                               scene.spectral_grid);
   const auto gain = static_cast<float>(pov_exposure_gain(scene, sky));
   renderer::FloatImage png{film.width(), film.height(), 3, film.rgb_data()};
   for (float& v : png.pixels) v = std::min(1.0f, v * gain);

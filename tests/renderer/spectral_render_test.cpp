@@ -42,7 +42,7 @@ TEST(SpectralRender, WhitePlaneBandRadianceIsBandIrradianceOverPi) {
   ASSERT_EQ(film.band_count(), 3);
   // The irradiance on the plane, bin by bin: the sun's spectrum x sin(elevation), plus the
   // sky's radiance integrated over the upper hemisphere (midpoint rule, 1 degree steps).
-  const SkyModel sky(s.sky, s.sun, s.ground.albedo);
+  const SkyModel sky(s.sky, s.sun, s.ground.albedo, s.spectral_grid);
   const Spectrum e = sky.sun_spectral_irradiance() * static_cast<float>(s.sun.direction.z) +
                      testing::sky_hemisphere_irradiance(sky);
   for (int b = 0; b < 3; ++b) {

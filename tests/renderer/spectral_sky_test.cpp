@@ -27,7 +27,7 @@ SkyModel sky_at(double elevation_deg, double turbidity, std::optional<Vec3f> irr
   Sun sun;
   sun.direction = Vec3(toward(elevation_deg, 180.0));
   sun.irradiance = irradiance.value_or(sun_irradiance(sky, elevation_deg, sun.angular_radius));
-  return SkyModel(sky, sun, {0.2f, 0.2f, 0.2f});
+  return SkyModel(sky, sun, {0.2f, 0.2f, 0.2f}, SpectralGrid{});
 }
 
 TEST(SpectralSky, AgreesWithTheRgbTablesInLuminance) {

@@ -27,7 +27,7 @@ Scene sunny(double elevation_deg) {
 TEST(Downwelling, SunOnTheHorizontalAndTheSkysHemisphere) {
   const Scene s = sunny(35.0);
   const Downwelling e = downwelling_irradiance(s, 0.0);
-  const SkyModel sky(s.sky, s.sun, s.ground.plain_albedo());
+  const SkyModel sky(s.sky, s.sun, s.ground.plain_albedo(), s.spectral_grid);
   // The beam: the sun's irradiance times the sine of its elevation, bin by bin.
   for (int k = 0; k < kSpectrumBins; ++k)
     EXPECT_NEAR(e.direct[k], sky.sun_spectral_irradiance()[k] * std::sin(35.0 * kDeg),

@@ -24,7 +24,7 @@ TEST(GroundLevelSky, TheAtmosphereSeenFromTheGroundGivesItsBeamSkyAndVisibility)
   const Downwelling d = downwelling_irradiance(s, 0.0);
   const double mu = normalize(s.sun.direction).z;
   EXPECT_NEAR(luminance(g.sun.irradiance) * mu / luminance(spectrum_to_rgb(d.direct)), 1.0, 1e-3);
-  const Vec3f sky = SkyModel(g.sky, g.sun, g.ground.plain_albedo()).horizontal_irradiance();
+  const Vec3f sky = SkyModel(g.sky, g.sun, g.ground.plain_albedo(), g.spectral_grid).horizontal_irradiance();
   EXPECT_NEAR(luminance(sky) / luminance(spectrum_to_rgb(d.diffuse)), 1.0, 0.01);
   // Koschmieder's visibility is the whole extinction's at the ground: the stated one.
   EXPECT_NEAR(g.haze.visibility, 12000.0, 1.0);

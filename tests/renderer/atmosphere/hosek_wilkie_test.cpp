@@ -108,7 +108,7 @@ TEST(AbsoluteLight, ZenithAndSunAtStatedConditionsMatchThePublishedFormulas) {
     model.turbidity = c.turbidity;
     Sun sun = sun_at(c.elevation);
     sun.irradiance = sun_irradiance(model, c.elevation, sun.angular_radius);
-    const SkyModel rendered(model, sun, Vec3f{0.2f, 0.2f, 0.2f});
+    const SkyModel rendered(model, sun, Vec3f{0.2f, 0.2f, 0.2f}, SpectralGrid{});
     const double zenith_y =
         rec709_luminance(Vec3(spectrum_to_rgb(rendered.spectral_radiance({0.0f, 0.0f, 1.0f}))));
     EXPECT_NEAR(zenith_y / rec709_luminance(c.zenith), 1.0, 0.025) << at;
@@ -125,7 +125,7 @@ TEST(HosekWilkie, ClearSkyGlobalIlluminanceMatchesMeasuredDaylight) {
   sky.turbidity = 2.5;
   Sun sun = sun_at(60.0);
   sun.irradiance = sun_irradiance(sky, 60.0, sun.angular_radius);
-  const SkyModel model(sky, sun, Vec3f{0.2f, 0.2f, 0.2f});
+  const SkyModel model(sky, sun, Vec3f{0.2f, 0.2f, 0.2f}, SpectralGrid{});
   const double direct = rec709_luminance(Vec3(sun.irradiance)) * std::sin(60.0 * kDeg);
   const double diffuse = rec709_luminance(Vec3(model.horizontal_irradiance()));
   EXPECT_NEAR((direct + diffuse) / 101800.0, 1.0, 0.15) << direct << " + " << diffuse;
@@ -136,7 +136,7 @@ TEST(HosekWilkie, SkyIsBluishWhiteAtTheHorizonAndBlueAtTheZenith) {
   for (double elevation : {25.0, 45.0, 70.0}) {  // lower suns warm the horizon (physical)
     Sky sky;
     sky.turbidity = 3.0;
-    const SkyModel model(sky, sun_at(elevation, 180.0), Vec3f{0.18f, 0.17f, 0.12f});
+    const SkyModel model(sky, sun_at(elevation, 180.0), Vec3f{0.18f, 0.17f, 0.12f}, SpectralGrid{});
     const Vec3f zenith = model.radiance({0.0f, 0.0f, 1.0f});
     EXPECT_GT(zenith.z, 1.3f * zenith.x) << elevation;
     // Away from the sun, 4 degrees up: blue at least equals red (Preetham's horizon is pink).
@@ -156,7 +156,7 @@ TEST(HosekWilkie, SunDiscIsLimbDarkenedAndGivesTheSunsIrradiance) {
   Sky sky;
   Sun sun = sun_at(40.0);
   sun.irradiance = sun_irradiance(sky, 40.0, sun.angular_radius);
-  const SkyModel sky_model(sky, sun, Vec3f{0.2f, 0.2f, 0.2f});
+  const SkyModel sky_model(sky, sun, Vec3f{0.2f, 0.2f, 0.2f}, SpectralGrid{});
   const Vec3 axis = normalize(sun.direction);
   Vec3 t, b;
   orthonormal_basis(axis, t, b);

@@ -33,12 +33,14 @@ Vec3f dir(double elevation_deg, double azimuth_deg) {
 float lum(const Vec3f& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 TEST(SkyModel, UniformSkyGivesPiTimesRadianceOnAHorizontalSurface) {
-  const SkyModel model(gradient({0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}), Sun{}, Vec3f{});
+  const SkyModel model(gradient({0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}), Sun{}, Vec3f{},
+                       SpectralGrid{});
   EXPECT_NEAR(model.horizontal_irradiance().x, std::numbers::pi * 0.5, 2e-3);
 }
 
 TEST(SkyModel, GradientRunsFromHorizonToZenith) {
-  const SkyModel model(gradient({0.1f, 0.2f, 0.4f}, {0.6f, 0.6f, 0.6f}), Sun{}, Vec3f{});
+  const SkyModel model(gradient({0.1f, 0.2f, 0.4f}, {0.6f, 0.6f, 0.6f}), Sun{}, Vec3f{},
+                       SpectralGrid{});
   EXPECT_NEAR(model.radiance({0.0f, 0.0f, 1.0f}).z, 0.4f, 1e-6);
   EXPECT_NEAR(model.radiance({1.0f, 0.0f, 0.0f}).z, 0.6f, 1e-6);
 }
@@ -47,7 +49,7 @@ TEST(SkyModel, BelowTheHorizonIsASunlitPlainOfTheGroundAlbedo) {
   Sun sun = sun_at(30.0);
   sun.irradiance = {2.0f, 2.0f, 2.0f};
   const SkyModel model(gradient({0.2f, 0.2f, 0.2f}, {0.2f, 0.2f, 0.2f}), sun,
-                       Vec3f{0.5f, 0.5f, 0.5f});
+                       Vec3f{0.5f, 0.5f, 0.5f}, SpectralGrid{});
   const float e = 2.0f * 0.5f + std::numbers::pi_v<float> * 0.2f;
   EXPECT_NEAR(model.radiance({0.0f, 0.6f, -0.8f}).x, 0.5f * e / std::numbers::pi_v<float>, 2e-3);
 }
@@ -57,7 +59,7 @@ TEST(SkyModel, NoSkyLeavesTheSunAlone) {
   none.model = SkyKind::none;  // its gradient radiances, left at their defaults, must not show
   Sun sun = sun_at(50.0);
   sun.irradiance = {3.0f, 3.0f, 3.0f};
-  const SkyModel model(none, sun, Vec3f{0.5f, 0.5f, 0.5f});
+  const SkyModel model(none, sun, Vec3f{0.5f, 0.5f, 0.5f}, SpectralGrid{});
   EXPECT_EQ(model.horizontal_irradiance().y, 0.0f);
   EXPECT_EQ(lum(model.radiance(dir(10.0, 90.0))), 0.0f);
   EXPECT_EQ(max_component(model.spectral_radiance(dir(60.0, 200.0))), 0.0f);
@@ -78,7 +80,7 @@ Sky model_sky(SkyKind kind, double turbidity = 3.0) {
 
 TEST(PreethamSky, BlueBrightTowardTheSunAndAtTheHorizon) {
   const Sky sky = model_sky(SkyKind::preetham);
-  const SkyModel model(sky, sun_at(40.0, 180.0), Vec3f{});
+  const SkyModel model(sky, sun_at(40.0, 180.0), Vec3f{}, SpectralGrid{});
   const Vec3f zenith = model.radiance(dir(90.0, 0.0));
   EXPECT_GT(zenith.z, zenith.x);  // blue
   EXPECT_GT(lum(model.radiance(dir(45.0, 180.0))),
@@ -91,14 +93,14 @@ TEST(PreethamSky, BlueBrightTowardTheSunAndAtTheHorizon) {
 
 TEST(PreethamSky, HazierSkiesAreWhiter) {
   const Sky clear = model_sky(SkyKind::preetham, 2.0), hazy = model_sky(SkyKind::preetham, 8.0);
-  const Vec3f c = SkyModel(clear, sun_at(50.0), Vec3f{}).radiance(dir(60.0, 0.0));
-  const Vec3f h = SkyModel(hazy, sun_at(50.0), Vec3f{}).radiance(dir(60.0, 0.0));
+  const Vec3f c = SkyModel(clear, sun_at(50.0), Vec3f{}, SpectralGrid{}).radiance(dir(60.0, 0.0));
+  const Vec3f h = SkyModel(hazy, sun_at(50.0), Vec3f{}, SpectralGrid{}).radiance(dir(60.0, 0.0));
   EXPECT_GT(c.z / c.x, h.z / h.x);
 }
 
 TEST(SkyModel, ImportanceSamplingIsUnbiased) {
   Sky sky;
-  const SkyModel model(sky, sun_at(30.0, 200.0), Vec3f{0.2f, 0.2f, 0.2f});
+  const SkyModel model(sky, sun_at(30.0, 200.0), Vec3f{0.2f, 0.2f, 0.2f}, SpectralGrid{});
   // Reference: the upper hemisphere's integral of luminance by the midpoint rule (below the
   // horizon the path tracer meets the plain as a surface: renderer/transport/plain.h).
   double reference = 0.0;

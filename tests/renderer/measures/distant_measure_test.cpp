@@ -1,8 +1,11 @@
 #include "renderer/measures/distant_measure.h"
 
+#include "renderer/spectra/sensor_band.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/counter_rng.h"
@@ -50,6 +53,18 @@ TEST(DistantMeasure, AtTheBottomOfTheAtmosphereALambertianSoilsHdrfAndBhrAreItsA
   EXPECT_NEAR(bhr.brf.mean, 0.3, 0.006) << "+- " << bhr.brf.standard_error;
   o.bottom_of_atmosphere = false;
   EXPECT_GT(std::abs(measure_distant(s, {{0.0, 0.0}}, o)[0].brf.mean - 0.3), 0.02);
+  // A monochromatic run at 656 nm, on the sun's H-alpha line (3% under its bin's mean): the
+  // downwelling light the HDRF divides by is the same wavelength's.
+  s.spectral_grid.monochromatic_nm = 656.0;
+  s.bands = {monochromatic_band(656.0)};
+  o.bottom_of_atmosphere = true;
+  const DistantResult mono = measure_distant(s, {{0.0, 0.0}}, o)[0];
+  const DistantResult mono_bhr = measure_bhr(s, o);
+  std::printf("monochromatic HDRF %.5f +- %.5f, BHR %.5f +- %.5f\n", mono.band_brf[0].mean,
+              mono.band_brf[0].standard_error, mono_bhr.band_brf[0].mean,
+              mono_bhr.band_brf[0].standard_error);
+  EXPECT_NEAR(mono.band_brf[0].mean, 0.3, 0.001);
+  EXPECT_NEAR(mono_bhr.band_brf[0].mean, 0.3, 0.001);
 }
 
 TEST(DistantMeasure, PrincipalPlaneRunsFromTheSunsSideAcrossNadir) {
