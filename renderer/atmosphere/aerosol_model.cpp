@@ -48,11 +48,13 @@ std::shared_ptr<const AerosolModel> AerosolModel::load(const std::string& name,
       m->albedo_.push_back(row[2]);
       m->phase_.emplace_back();
     }
-    if (m->wavelengths_.size() == 1) m->cosines_.push_back(row[3]);
+    // The table wants increasing angles: the dataset's cosines run from 1 down to -1.
+    if (m->wavelengths_.size() == 1)
+      m->angles_.push_back(std::acos(std::clamp(row[3], -1.0, 1.0)) * 180.0 / std::numbers::pi);
     m->phase_.back().push_back(row[4]);
   }
   for (const auto& p : m->phase_)
-    if (p.size() != m->cosines_.size())
+    if (p.size() != m->angles_.size())
       throw std::logic_error("embedded " + file + ": the same cosines at every wavelength");
   return m;
 }
@@ -76,15 +78,16 @@ double AerosolModel::relative_extinction(double nm) const {
 
 double AerosolModel::single_scattering_albedo(double nm) const { return linear(albedo_, nm); }
 
-PhaseFunction AerosolModel::phase(double nm) const {
+std::vector<double> AerosolModel::phase_values(double nm) const {
   const Bracket b = bracket(nm);
-  // The table wants increasing angles: the dataset's cosines run from 1 down to -1.
-  std::vector<double> angles(cosines_.size()), values(cosines_.size());
-  for (std::size_t j = 0; j < cosines_.size(); ++j) {
-    angles[j] = std::acos(std::clamp(cosines_[j], -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  std::vector<double> values(angles_.size());
+  for (std::size_t j = 0; j < angles_.size(); ++j)
     values[j] = (1.0 - b.f) * phase_[b.i][j] + b.f * phase_[b.i + 1][j];
-  }
-  return PhaseFunction::table(angles, values);
+  return values;
+}
+
+PhaseFunction AerosolModel::phase(double nm) const {
+  return PhaseFunction::table(angles_, phase_values(nm));
 }
 
 }  // namespace landsim::renderer

@@ -28,6 +28,10 @@ class AerosolModel {
   // The phase function at `nm`: the two nearest wavelengths' tables mixed linearly, on the
   // dataset's scattering angles.
   PhaseFunction phase(double nm) const;
+  // Its values there (sr^-1, the dataset's normalisation) at the dataset's scattering angles
+  // (degrees, increasing): what a mean over wavelengths is taken of.
+  std::vector<double> phase_values(double nm) const;
+  const std::vector<double>& angles_deg() const { return angles_; }
 
  private:
   static std::shared_ptr<const AerosolModel> load(const std::string& name, const std::string& file,
@@ -41,7 +45,7 @@ class AerosolModel {
 
   std::string name_;
   std::vector<double> wavelengths_, extinction_, albedo_;
-  std::vector<double> cosines_;             // 1 down to -1, as the dataset gives them
+  std::vector<double> angles_;              // 0 to 180 degrees, from the dataset's cosines
   std::vector<std::vector<double>> phase_;  // per wavelength, per cosine, sr^-1
 };
 

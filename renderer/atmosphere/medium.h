@@ -67,7 +67,14 @@ struct MediumComponent {
   bool reaches_sky = true;  // false: only on segments that end on a surface
   Spectrum extinction;      // per unit density (1 at 550 nm for the aerosol)
   Spectrum scattering;      // extinction x single-scattering albedo
+  // Every bin's phase function; where `bin_phase` is set, the one directions are drawn from.
   PhaseFunction phase;
+  // Each bin's own (an aerosol dataset by wavelength, docs/ATMOSPHERE.md "Aerosol models by
+  // wavelength"); empty: `phase` in every bin.
+  std::shared_ptr<const std::array<PhaseFunction, kSpectrumBins>> bin_phase;
+
+  // The phase function's value per bin at the scattering angle's cosine.
+  Spectrum phase_values(float cos_theta) const;
 
   double density(double z) const;
   // Integral of the density along o + s d for s in [0, t] (t may be infinite).

@@ -25,11 +25,11 @@ Spectrum single_scattered_sky(const Medium& medium, const Spectrum& sun, const V
   const double mu0 = std::max(static_cast<double>(sun_direction.z), kLeastSlope);
   // Per component its phase toward d, its column above z and, at each height, its column
   // above and density.
-  std::array<float, kMediumComponents> phase{};
+  std::array<Spectrum, kMediumComponents> phase{};
   std::array<double, kMediumComponents> column0{};
   for (int c = 0; c < kMediumComponents; ++c) {
     if (!medium.component(c).present) continue;
-    phase[static_cast<std::size_t>(c)] = medium.component(c).phase.eval(dot(d, sun_direction));
+    phase[static_cast<std::size_t>(c)] = medium.component(c).phase_values(dot(d, sun_direction));
     column0[static_cast<std::size_t>(c)] = medium.vertical_depth(c, z);
   }
   std::array<double, kSpectrumBins> sum{};
@@ -51,7 +51,7 @@ Spectrum single_scattered_sky(const Medium& medium, const Spectrum& sun, const V
         if (!m.present) continue;
         path += (column0[i_c] - above[i_c]) * m.extinction[k];
         to_sun += above[i_c] * m.extinction[k];
-        scattered += density[i_c] * m.scattering[k] * phase[i_c];
+        scattered += density[i_c] * m.scattering[k] * phase[i_c][k];
       }
       value[static_cast<std::size_t>(k)] =
           scattered * std::exp(-path / slope - to_sun / mu0) / slope;

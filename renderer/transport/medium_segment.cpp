@@ -100,7 +100,7 @@ Spectrum phase_weight(const Medium& medium, const MediumPoint& p, float cos_thet
   Spectrum f;
   for (int i = 0; i < kMediumComponents; ++i)
     if (max_component(p.weight[static_cast<std::size_t>(i)]) > 0.0f)
-      f += p.weight[static_cast<std::size_t>(i)] * medium.component(i).phase.eval(cos_theta);
+      f += p.weight[static_cast<std::size_t>(i)] * medium.component(i).phase_values(cos_theta);
   return f;
 }
 

@@ -207,7 +207,7 @@ Spectrum ScatteringTable::aureole(double z, const Vec3f& d, const BinSet& bins) 
   const auto rho_h = static_cast<float>(aerosol_.density(z) * aerosol_.scale_height);
   const float mu = std::max(1e-3f, d.z);
   const float mu0 = std::max(1e-3f, sun_direction_.z);
-  const float phase = aerosol_.phase.eval(dot(d, sun_direction_));
+  const Spectrum phase = aerosol_.phase_values(dot(d, sun_direction_));
   Spectrum out;
   for (int i = 0; i < bins.count; ++i) {
     const int k = bins.index[static_cast<std::size_t>(i)];
@@ -217,7 +217,7 @@ Spectrum ScatteringTable::aureole(double z, const Vec3f& d, const BinSet& bins) 
     const float share = std::abs(a - b) < 1e-4f * std::max(a, 1e-6f)
                             ? a * std::exp(-a)
                             : a * (std::exp(-b) - std::exp(-a)) / (a - b);
-    out[k] = sun_spectrum_[k] * phase * (aerosol_.scattering[k] / e) * share;
+    out[k] = sun_spectrum_[k] * phase[k] * (aerosol_.scattering[k] / e) * share;
   }
   return out;
 }

@@ -67,6 +67,30 @@ TEST(DistantMeasure, AtTheBottomOfTheAtmosphereALambertianSoilsHdrfAndBhrAreItsA
   EXPECT_NEAR(mono_bhr.band_brf[0].mean, 0.3, 0.001);
 }
 
+// An aerosol dataset by wavelength (docs/ATMOSPHERE.md "Aerosol models by wavelength"): a band
+// run's bin 660-680 nm takes the bin's own phase function, so its BRF straight back towards
+// the sun (single scattering over black ground: the phase function at 180 degrees, 30% above
+// its 550 nm value) is the monochromatic run's at the bin's centre.
+TEST(DistantMeasure, ABandRunTakesEachBinsOwnAerosolPhaseFunction) {
+  Scene s = bare_cell(0.0, 30.0, 0.0);
+  s.sky.model = SkyKind::atmosphere;
+  s.haze.enabled = true;
+  s.haze.column = MolecularColumn{false, false, 0.0};
+  s.haze.aerosol_model = "rami4atm-continental";
+  s.haze.aerosol_optical_depth = 0.3;
+  s.haze.aerosol_profile = AerosolProfile::uniform;
+  s.bands = {sensor_band("box", box_response(670.0, 20.0))};
+  const DistantDirection back{30.0, 0.0};
+  const DistantResult band = measure_distant(s, {back}, samples(4096))[0];
+  s.spectral_grid.monochromatic_nm = 670.0;
+  s.bands = {monochromatic_band(670.0)};
+  const DistantResult mono = measure_distant(s, {back}, samples(4096))[0];
+  std::printf("backscatter BRF: band %.5f +- %.5f, 670 nm %.5f +- %.5f\n", band.band_brf[0].mean,
+              band.band_brf[0].standard_error, mono.band_brf[0].mean,
+              mono.band_brf[0].standard_error);
+  EXPECT_NEAR(band.band_brf[0].mean / mono.band_brf[0].mean, 1.0, 0.015);
+}
+
 TEST(DistantMeasure, PrincipalPlaneRunsFromTheSunsSideAcrossNadir) {
   const auto plane = principal_plane(30.0);
   ASSERT_EQ(plane.size(), 76u);
