@@ -42,6 +42,7 @@ void add_spp_option(CLI::App& cmd, int& spp, const std::string& help) {
 }
 
 std::size_t view_index(const scenes::Scenario& s, const std::string& name) {
+  scenes::require_views(s);
   if (name.empty()) return 0;
   for (std::size_t i = 0; i < s.views.size(); ++i) {
     if (s.views[i].name == name) return i;

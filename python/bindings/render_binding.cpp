@@ -9,8 +9,8 @@
 
 #include "python/bindings/cancellable_call.h"
 #include "python/bindings/scenario_binding.h"
-#include "scenes/image_set/image_set.h"
 #include "scenes/builder/memory_estimate.h"
+#include "scenes/image_set/image_set.h"
 #include "scenes/scenario/render_choices.h"
 
 namespace py = pybind11;
@@ -37,6 +37,7 @@ std::optional<std::uint64_t> memory_budget(std::optional<double> max_memory) {
 
 // The view `view` names, or the first: render() renders one view as `--view` does.
 std::string view_name(const PyScenario& s, const std::optional<std::string>& view) {
+  scenes::require_views(s.scenario());
   return view ? *view : s.scenario().views.front().name;
 }
 

@@ -331,7 +331,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
           photon_layer(scenario.sensor->model.channels[c].name), scenario.sensor->responses[c]));
   if (map && !scenario.species.empty())
     add_trees(scenario, *map, grid, relief ? &*relief : nullptr, time, reuse, scene);
-  detail::add_canopies(scenario, scene);
+  detail::add_canopies(scenario, grid, scene);
   // Objects after the trees: each clears the trunks within its radius.
   detail::add_objects(scenario, scene, reuse != nullptr ? &reuse->meshes : nullptr);
   if (map) {

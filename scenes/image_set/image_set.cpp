@@ -286,6 +286,7 @@ MemoryEstimate check_memory(const Scenario& scenario, const ImageSetOptions& o,
 }  // namespace
 
 ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions& options) {
+  require_views(scenario);
   const std::vector<Image> images = images_to_render(scenario, options);
   const std::vector<Scenario> scenarios = image_scenarios(scenario, images);
   const SetRun run{scenario, options, Clock::now()};

@@ -50,24 +50,37 @@ void for_each_row(std::string_view text, const std::string& file, std::size_t co
 
 std::vector<LeafDisc> parse_leaf_discs(std::string_view text, const std::string& file) {
   std::vector<LeafDisc> out;
-  for_each_row(text, file, 7, kMaxCloudDiscs, "radius x y z nx ny nz",
-               [&](const std::vector<double>& v, std::size_t line) {
-                 const Vec3 n{v[4], v[5], v[6]};
-                 const double length = std::sqrt(dot(n, n));
-                 if (!(v[0] > 0.0) || !(length > 0.0))
-                   throw InputError(fmt::format(
-                       "{}:{}: expected a positive radius and a non-zero normal", file, line));
-                 out.push_back({Vec3f(Vec3{v[1], v[2], v[3]}), static_cast<float>(v[0]),
-                                Vec3f(n * (1.0 / length))});
-               });
+  for_each_row(
+      text, file, 7, kMaxCloudDiscs, "radius x y z nx ny nz",
+      [&](const std::vector<double>& v, std::size_t line) {
+        const Vec3 n{v[4], v[5], v[6]};
+        const double length = std::sqrt(dot(n, n));
+        if (!(v[0] > 0.0) || !(length > 0.0))
+          throw InputError(
+              fmt::format("{}:{}: expected a positive radius and a non-zero normal", file, line));
+        // A generated cloud's own bounds (its disc_radius and size keys).
+        if (v[0] > kMaxDiscRadius)
+          throw InputError(fmt::format("{}:{}: a disc radius of {} m: expected at most {} m", file,
+                                       line, v[0], kMaxDiscRadius));
+        const double reach = std::hypot(v[1], v[2], v[3]);  // no overflow
+        if (!(reach <= kMaxCloudReach))
+          throw InputError(
+              fmt::format("{}:{}: a disc {} m from the cloud's origin: expected at most {} m (the "
+                          "discs are relative to the origin each copy is placed at)",
+                          file, line, reach, kMaxCloudReach));
+        out.push_back(
+            {Vec3f(Vec3{v[1], v[2], v[3]}), static_cast<float>(v[0]), Vec3f(n * (1.0 / length))});
+      });
   return out;
 }
 
-std::vector<Vec3> parse_positions(std::string_view text, const std::string& file) {
+std::vector<Vec3> parse_positions(std::string_view text, const std::string& file,
+                                  std::vector<std::uint32_t>* lines) {
   std::vector<Vec3> out;
   for_each_row(text, file, 3, kMaxCanopyCopies, "x y z",
-               [&](const std::vector<double>& v, std::size_t) {
+               [&](const std::vector<double>& v, std::size_t line) {
                  out.push_back({v[0], v[1], v[2]});
+                 if (lines != nullptr) lines->push_back(static_cast<std::uint32_t>(line));
                });
   return out;
 }

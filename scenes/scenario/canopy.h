@@ -5,6 +5,7 @@
 // distribution), where its copies stand, its bi-Lambertian leaves and, for abstract trees, a
 // trunk under it. The text forms of disc and position files are read here, each mistake named
 // at its file:line.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -57,7 +58,10 @@ struct CanopySettings {
   std::vector<LeafDisc> discs;  // read from `leaves`, or empty when generated
   std::optional<GeneratedCloud> generated;
   std::vector<Vec3> positions;  // where each copy's origin goes, terrain coordinates
-  double reflectance = 0.5;     // the leaves', each side (bi-Lambertian)
+  // Where each position was given, for messages: `positions_file`:`position_lines[i]`.
+  std::string positions_file;
+  std::vector<std::uint32_t> position_lines;
+  double reflectance = 0.5;  // the leaves', each side (bi-Lambertian)
   double transmittance = 0.4;
   std::optional<CanopyTrunk> trunk;
 };
@@ -66,12 +70,18 @@ struct CanopySettings {
 // normals are made unit. Throws InputError naming `file`:line.
 std::vector<LeafDisc> parse_leaf_discs(std::string_view text, const std::string& file);
 
-// Positions as `x y z` per line. Throws InputError naming `file`:line.
-std::vector<Vec3> parse_positions(std::string_view text, const std::string& file);
+// Positions as `x y z` per line, each one's line number in `lines` when given. Throws
+// InputError naming `file`:line.
+std::vector<Vec3> parse_positions(std::string_view text, const std::string& file,
+                                  std::vector<std::uint32_t>* lines = nullptr);
 
 // At most this many discs in one cloud, and copies of one canopy (RAMI's largest scene, HET06,
 // has 10,000 trees of 6,480 discs).
 inline constexpr int kMaxCloudDiscs = 10'000'000;
+// A disc file's bounds, a generated cloud's (its disc_radius and size keys): a disc's radius,
+// and how far its centre lies from the cloud's origin, metres.
+inline constexpr double kMaxDiscRadius = 100.0;
+inline constexpr double kMaxCloudReach = 1e4;
 inline constexpr int kMaxCanopyCopies = 1'000'000;
 
 }  // namespace landsim::scenes

@@ -338,4 +338,8 @@ SensorSettings load_sensor(const std::filesystem::path& file);
 // Checks an image size (also used for command-line overrides); throws InputError.
 void check_image_size(int width, int height, const std::string& where);
 
+// A command that needs a camera: InputError when the scenario has no [[views]] (a periodic
+// cell measured by landsim brf may have none).
+void require_views(const Scenario& s);
+
 }  // namespace landsim::scenes

@@ -66,6 +66,13 @@ void check_object_views(const Scenario& s) {
 
 }  // namespace
 
+void require_views(const Scenario& s) {
+  if (s.views.empty())
+    throw InputError(s.source +
+                     ": at least one [[views]] table is required to render (a periodic cell "
+                     "without one can only be measured: landsim brf)");
+}
+
 void check_image_size(int width, int height, const std::string& where) {
   const std::string prefix = where.empty() ? "" : where + ": ";
   if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
@@ -133,7 +140,10 @@ Scenario parse_scenario(std::string_view text, const std::string& source,
   // layers, and each view may override the sensor.
   s.bands = read_bands(root, source, base_dir);
   s.sensor = read_sensor(root, source, base_dir, s.bands.size());
-  s.views = read_views(root, source, s.sensor);
+  // A periodic cell is measured from infinitely far (landsim brf): it needs no camera, and a
+  // command that does says so (scenes::require_views).
+  if (!(s.terrain.periodic && !root.contains("views")))
+    s.views = read_views(root, source, s.sensor);
   s.render = read_render(sub_table(root, "render", source, false), source);
   s.wind = read_wind(sub_table(root, "wind", source, false), source);
   s.sky = read_sky(sub_table(root, "sky", source, false), source);

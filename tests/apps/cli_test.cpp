@@ -199,6 +199,27 @@ TEST(Cli, BrfMeasuresEachNamedWavelengthOnItsOwn) {
   EXPECT_NE(r.err.find("--budget-paths"), std::string::npos) << r.err;
 }
 
+// A periodic cell is measured without a camera (issue 71): brf takes it without [[views]];
+// rendering it says what is missing.
+TEST(Cli, APeriodicCellWithoutViewsIsMeasuredButNotRendered) {
+  TempDir dir;
+  const auto cell = dir.write(
+      "cell.toml", "[terrain]\nelevation = \"" +
+                       testing::source_file("data/radiative_transfer/flat_cell.asc").string() +
+                       "\"\nperiodic = true\nalbedo = [0.3, 0.3, 0.3]\n[ground]\n"
+                       "soil_spectrum = \"flat\"\n[sun]\nelevation = 60\nazimuth = 90\n[sky]\n"
+                       "model = \"none\"\n");
+  Result r = run("brf " + cell.string() + " --direction 0,0 --spp 64 --budget-paths 0 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["directions"][0]["brf"].get<double>(), 0.3, 0.01);  // a Lambertian soil's
+  r = run("render " + cell.string() + " --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("at least one [[views]] table is required to render"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "manifest.json"));
+}
+
 TEST(Cli, AGroundTextureThatCannotBeReadExitsTwoAtItsEntry) {
   TempDir dir;
   const auto junk = dir.write("rock.png", "not an image");

@@ -1,9 +1,13 @@
 #include "scenes/builder/detail/leaf_cloud.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/counter_rng.h"
+#include "core/input_error.h"
 #include "renderer/spectra/spectrum.h"
 
 namespace landsim::scenes::detail {
@@ -160,15 +164,58 @@ std::vector<LeafDisc> generate_cloud(const GeneratedCloud& g, std::uint64_t seed
   return discs;
 }
 
-void add_canopies(const Scenario& s, renderer::Scene& scene) {
+namespace {
+
+// How far a cloud's discs reach from its origin, metres.
+double reach_of(const std::vector<LeafDisc>& discs) {
+  double reach = 0.0;
+  for (const LeafDisc& d : discs)
+    reach = std::max(reach, static_cast<double>(length(d.centre)) + d.radius);
+  return reach;
+}
+
+// Each copy must touch the terrain's extent: its origin within the cloud's reach of the grid's
+// outer edges, and within 10 km (plus that reach) of its heights. A position a typing slip or
+// a foreign coordinate system put kilometres away would otherwise render an empty image (or
+// stretch the acceleration structure over 10^9 m).
+void check_positions(const CanopySettings& c, const terrain::ElevationGrid& grid, double reach) {
+  constexpr double kHeightSlack = 1e4;
+  const terrain::GeoTransform& t = grid.transform();
+  const double x0 = t.origin_x - reach, x1 = t.origin_x + grid.cols() * t.cell_size_x + reach;
+  const double y0 = t.origin_y - grid.rows() * t.cell_size_y - reach, y1 = t.origin_y + reach;
+  const double z0 = grid.min_height() - kHeightSlack - reach;
+  const double z1 = grid.max_height() + kHeightSlack + reach;
+  for (std::size_t i = 0; i < c.positions.size(); ++i) {
+    const Vec3& p = c.positions[i];
+    if (p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1 && p.z >= z0 && p.z <= z1) continue;
+    const std::string where = i < c.position_lines.size()
+                                  ? c.positions_file + ":" + std::to_string(c.position_lines[i])
+                                  : c.location;
+    throw InputError(fmt::format(
+        "{}: [canopy \"{}\"] positions: a copy at ({}, {}, {}) lies off the terrain (x {:.0f} "
+        "to {:.0f}, y {:.0f} to {:.0f}, heights {:.0f} to {:.0f} m, the cloud's reach of {:.1f} m "
+        "included): each copy's origin is in the elevation grid's coordinates",
+        where, c.name, p.x, p.y, p.z, x0, x1, y0, y1, z0, z1, reach));
+  }
+}
+
+}  // namespace
+
+void add_canopies(const Scenario& s, const terrain::ElevationGrid& grid, renderer::Scene& scene) {
   for (std::size_t k = 0; k < s.canopies.size(); ++k) {
     const CanopySettings& c = s.canopies[k];
     const auto species = static_cast<std::uint16_t>(s.species.size() + k);
     const auto first = static_cast<std::uint32_t>(scene.prototypes.size());
     const int variants = c.generated ? c.generated->variants : 1;
-    for (int v = 0; v < variants; ++v)
-      scene.prototypes.push_back(cloud_prototype(
-          c, c.generated ? generate_cloud(*c.generated, s.render.seed, k, v) : c.discs, species));
+    double reach = 0.0;
+    for (int v = 0; v < variants; ++v) {
+      const std::vector<LeafDisc> discs =
+          c.generated ? generate_cloud(*c.generated, s.render.seed, k, v) : c.discs;
+      reach = std::max(reach, reach_of(discs));
+      scene.prototypes.push_back(cloud_prototype(c, discs, species));
+    }
+    if (c.trunk) reach = std::max(reach, std::hypot(c.trunk->radius, c.trunk->height));
+    check_positions(c, grid, reach);
     for (std::size_t i = 0; i < c.positions.size(); ++i)
       scene.instances.push_back({first + static_cast<std::uint32_t>(i % variants),
                                  c.positions[i] - scene.origin, 0.0, 1.0});

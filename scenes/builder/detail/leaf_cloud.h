@@ -7,6 +7,7 @@
 
 #include "renderer/scene.h"
 #include "scenes/scenario/scenario.h"
+#include "terrain/elevation_grid.h"
 
 namespace landsim::scenes::detail {
 
@@ -16,6 +17,8 @@ std::vector<LeafDisc> generate_cloud(const GeneratedCloud& g, std::uint64_t seed
 
 // Appends every [[canopy]]'s prototypes and instances to `scene` (positions in terrain
 // coordinates, shifted by the scene's origin). Their species index follows the species'.
-void add_canopies(const Scenario& s, renderer::Scene& scene);
+// A copy whose cloud would lie wholly off the elevation grid's extent, or farther than 10 km
+// above or below its heights, is refused (InputError at the position's file:line).
+void add_canopies(const Scenario& s, const terrain::ElevationGrid& grid, renderer::Scene& scene);
 
 }  // namespace landsim::scenes::detail

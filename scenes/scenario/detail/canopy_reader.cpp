@@ -71,18 +71,21 @@ GeneratedCloud read_generated(TableReader& r) {
   return g;
 }
 
-// `positions`: a file of `x y z` lines, or an array of [x, y, z].
-std::vector<Vec3> read_positions(TableReader& r, const std::string& base_dir) {
+// `positions`: a file of `x y z` lines, or an array of [x, y, z]; where each was given.
+void read_positions(TableReader& r, const std::string& base_dir, const std::string& file,
+                    CanopySettings& c) {
   const toml::node* n = r.value("positions", "a file of x y z lines, or [[x, y, z], ...]");
   if (n == nullptr) r.fail("positions", "required key is missing: a file or [[x, y, z], ...]");
   if (n->is_string()) {
     const auto [path, text] = text_of(r, "positions", base_dir);
-    return parse_positions(text, path);
+    c.positions_file = path;
+    c.positions = parse_positions(text, path, &c.position_lines);
+    return;
   }
+  c.positions_file = file;
   const toml::array* a = n->as_array();
   if (a == nullptr || a->empty() || a->size() > static_cast<std::size_t>(kMaxCanopyCopies))
     r.fail_at(*n, "positions", "expected a file name or [[x, y, z], ...]");
-  std::vector<Vec3> out;
   for (const toml::node& p : *a) {
     const toml::array* xyz = p.as_array();
     if (xyz == nullptr || xyz->size() != 3) r.fail_at(p, "positions", "expected [x, y, z]");
@@ -92,12 +95,12 @@ std::vector<Vec3> read_positions(TableReader& r, const std::string& base_dir) {
       if (!x || !std::isfinite(*x)) r.fail_at(p, "positions", "expected numbers [x, y, z]");
       v[k] = *x;
     }
-    out.push_back({v[0], v[1], v[2]});
+    c.positions.push_back({v[0], v[1], v[2]});
+    c.position_lines.push_back(static_cast<std::uint32_t>(p.source().begin.line));
   }
-  return out;
 }
 
-CanopySettings read_canopy(TableReader& r, const std::string& base_dir) {
+CanopySettings read_canopy(TableReader& r, const std::string& base_dir, const std::string& file) {
   CanopySettings c;
   c.location = r.location(nullptr);
   c.name = r.string("name");
@@ -109,7 +112,7 @@ CanopySettings read_canopy(TableReader& r, const std::string& base_dir) {
   } else {
     c.generated = read_generated(r);
   }
-  c.positions = read_positions(r, base_dir);
+  read_positions(r, base_dir, file, c);
   c.reflectance = r.number("reflectance", kUnit, c.reflectance);
   c.transmittance = r.number("transmittance", kUnit, c.transmittance);
   if (c.reflectance + c.transmittance > 1.0)
@@ -135,7 +138,7 @@ std::vector<CanopySettings> read_canopies(const toml::table& root, const std::st
   TableReader top(root, "", file);
   std::set<std::string> names;
   for (TableReader& r : top.tables("canopy")) {
-    out.push_back(read_canopy(r, base_dir));
+    out.push_back(read_canopy(r, base_dir, file));
     if (!names.insert(out.back().name).second)
       r.fail("name", "the name '" + out.back().name + "' is used by another [[canopy]]");
   }

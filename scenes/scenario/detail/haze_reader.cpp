@@ -1,5 +1,7 @@
 #include "scenes/scenario/detail/haze_reader.h"
 
+#include <algorithm>
+
 #include "params/table_reader.h"
 #include "scenes/scenario/detail/toml_tables.h"
 
@@ -30,6 +32,11 @@ void read_phase(TableReader& r, renderer::Haze& h) {
         r.fail("phase_angles", "expected increasing angles");
     if (h.phase_angles.front() != 0.0 || h.phase_angles.back() != 180.0)
       r.fail("phase_angles", "expected angles from 0 to 180 degrees");
+    // Normalised over the sphere, the table must hold some light: all zeros scatter nothing.
+    if (std::none_of(h.phase_values.begin(), h.phase_values.end(),
+                     [](double v) { return v > 0.0; }))
+      r.fail("phase_values",
+             "expected a positive value at some angle (all zeros scatter no light)");
   } else if (phase == "legendre") {
     h.phase = renderer::AerosolPhase::legendre;
     if (h.phase_moments.empty() || h.phase_moments.front() != 1.0)

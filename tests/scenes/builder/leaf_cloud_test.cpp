@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/input_error.h"
 #include "scenes/builder/scene_builder.h"
 #include "tests/support/temp_dir.h"
 
@@ -120,6 +121,41 @@ TEST(LeafCloud, Het01BuildsAsRamiDefinesIt) {
   EXPECT_FALSE(scene.ground.plain);
   EXPECT_FLOAT_EQ(scene.ground.optics[0]->reflectance[3], 0.159f);
   EXPECT_FLOAT_EQ(scene.ground.optics[0]->reflectance[30], 0.159f);
+}
+
+// A copy placed 10^9 m away (issue 71) is refused at the position's own file and line, from a
+// positions file or an array in the scenario; copies within the grid (or overhanging its edge
+// by the cloud's reach) build.
+TEST(LeafCloud, ACopyOffTheTerrainIsRefusedAtItsPosition) {
+  landsim::testing::TempDir dir;
+  const std::string cell = landsim::testing::source_file("data/rami/het01_cell.asc").string();
+  const auto scenario = [&](const std::string& positions) {
+    return "[terrain]\nelevation = \"" + cell +
+           "\"\nperiodic = true\n[sun]\nelevation = 60\nazimuth = 90\n[sky]\nmodel = \"none\"\n"
+           "[[canopy]]\nname = \"balls\"\nshape = \"sphere\"\nsize = 2.0\ndiscs = 100\n"
+           "disc_radius = 0.1\npositions = " +
+           positions + "\n";
+  };
+  const auto message = [&](const std::string& name, const std::string& text) {
+    try {
+      build_scene(load_scenario(dir.write(name, text)));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  dir.write("far.txt", "# x y z\n10 10 5\n1e9 10 5\n");
+  const std::string from_file = message("file.toml", scenario("\"far.txt\""));
+  EXPECT_NE(from_file.find("far.txt:3: [canopy \"balls\"] positions: a copy at (1000000000, 10, 5) "
+                           "lies off the terrain"),
+            std::string::npos)
+      << from_file;
+  const std::string from_array =
+      message("array.toml", scenario("[\n  [10.0, 10.0, 5.0],\n  [10.0, 10.0, -1e9],\n]"));
+  EXPECT_NE(from_array.find("array.toml:17: [canopy \"balls\"] positions"), std::string::npos)
+      << from_array;
+  // Overhanging the cell's edge by less than the cloud's reach: built.
+  EXPECT_EQ(message("edge.toml", scenario("[[-51.0, 0.0, 3.0], [50.0, 50.0, 3.0]]")), "");
 }
 
 }  // namespace

@@ -80,6 +80,23 @@ TEST(AtmosphereReader, ReadsANamedAerosolModelAndRefusesTheOpticsItGives) {
   EXPECT_NE(error_of(base() + aerosol + "type = \"maritime\"\n").find("type"), std::string::npos);
 }
 
+// A phase table of zeros scatters no light (issue 71): refused at its key, in [haze] as in
+// [atmosphere.aerosol], where it used to end in an internal error.
+TEST(AtmosphereReader, RefusesAPhaseTableOfZeros) {
+  const std::string zeros =
+      "phase = \"table\"\nphase_angles = [0.0, 90.0, 180.0]\nphase_values = [0.0, 0.0, 0.0]\n";
+  const std::string in_atmosphere =
+      error_of(base() + "[atmosphere]\n[atmosphere.aerosol]\noptical_depth = 0.2\n" + zeros);
+  EXPECT_NE(in_atmosphere.find("phase_values"), std::string::npos) << in_atmosphere;
+  EXPECT_NE(in_atmosphere.find("all zeros scatter no light"), std::string::npos) << in_atmosphere;
+  const std::string in_haze = error_of(base() +
+                                       "[sky]\nmodel = \"none\"\n[haze]\n"
+                                       "layer = { optical_depth = 1.0 }\n" +
+                                       zeros);
+  EXPECT_NE(in_haze.find("scene.toml:"), std::string::npos) << in_haze;
+  EXPECT_NE(in_haze.find("phase_values"), std::string::npos) << in_haze;
+}
+
 TEST(AtmosphereReader, RefusesASecondDescriptionNamingTheKeyToUse) {
   const std::string atmosphere = "[atmosphere]\n[atmosphere.aerosol]\nvisibility = 15000\n";
   const std::string haze = error_of(base() + "[haze]\nvisibility = 15000\n" + atmosphere);

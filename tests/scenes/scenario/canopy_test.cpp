@@ -44,6 +44,21 @@ TEST(LeafDiscFile, EachMistakeIsNamedAtItsLine) {
             "p.def:2: 2 numbers, expected x y z");
 }
 
+// Discs a generated cloud could not hold (issue 71): a radius of 10^30 m, a disc 10^300 m from
+// the cloud's origin; each refused at its line, not built into a cloud that spans the world.
+TEST(LeafDiscFile, DiscsBeyondAnyCloudAreRefusedAtTheirLine) {
+  const std::string huge =
+      message_of([] { parse_leaf_discs("0.1 0 0 0 0 0 1\n1e30 0 0 0 0 0 1\n", "d.def"); });
+  EXPECT_EQ(huge.rfind("d.def:2: a disc radius of 1e+30 m: expected at most 100 m", 0), 0u) << huge;
+  const std::string far =
+      message_of([] { parse_leaf_discs("# far\n\n0.1 1e300 0 0 0 0 1\n", "d.def"); });
+  EXPECT_EQ(
+      far.rfind("d.def:3: a disc 1e+300 m from the cloud's origin: expected at most 10000 m", 0),
+      0u)
+      << far;
+  EXPECT_EQ(parse_leaf_discs("100 0 0 9999 0 0 1\n", "d.def").size(), 1u);  // at the bounds
+}
+
 // The RAMI files shipped in data/rami read whole.
 TEST(LeafDiscFile, TheShippedRamiFilesRead) {
   const auto text = [](const std::string& f) {
