@@ -10,8 +10,10 @@ from conftest import fenced, run_in
 def test_python_batch_snippet_measures_the_canopy(tmp_path, small_renders):
     """PYTHON.md's batch: twenty renders, each line a finite canopy luminance; the classes it
     takes for bark and leaf are the legend's."""
-    code = fenced("docs/PYTHON.md", "base = landsim.Scenario.default()")
-    names = {"landsim": small_renders, "np": np}
+    code = fenced("docs/PYTHON.md", "import landsim\nimport numpy as np\n\nbase = ")
+    # As a user pastes it: a namespace of its own, nothing carried over (its `import landsim`
+    # finds the module whose renders small_renders made small).
+    names = {}
     printed = run_in(tmp_path, code, names).strip().split("\n")
     assert len(printed) == 20, printed
     luminance = [float(line.split()[-1]) for line in printed]
