@@ -58,6 +58,9 @@ struct Ground {
   // (scenes/builder/detail/plain_albedo); empty: `albedo`.
   std::optional<Vec3f> edge_albedo;
   Vec3f plain_albedo() const { return edge_albedo.value_or(albedo); }
+  // The plain's reflectance spectrum, the edge's mean (scenes/builder/detail/plain_albedo);
+  // null: plain_albedo upsampled.
+  std::shared_ptr<const SpectralOptics> plain_optics;
   // The plain's height, scene frame z (renderer/transport/plain.h): the mean along the grid's edge
   // (scenes/builder/detail/plain_albedo); empty: the mean of the mesh's rim.
   std::optional<float> plain_height;

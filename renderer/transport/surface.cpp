@@ -46,9 +46,14 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
     m.optics_factor = {f, f, f};
     return m;
   }
-  // The plain beyond the grid: the surroundings' colour (the mean along the grid's edge),
-  // upsampled as the context terrain's is.
-  if (hit.plain) return {scene.ground.plain_albedo(), {}};
+  // The plain beyond the grid: the surroundings' colour and spectrum (the means along the
+  // grid's edge), as the context terrain's.
+  if (hit.plain) {
+    SurfaceMaterial m{scene.ground.plain_albedo(), {}};
+    m.optics = scene.ground.plain_optics.get();
+    m.optics_factor = {1.0f, 1.0f, 1.0f};
+    return m;
+  }
   if (hit.prototype < 0) {
     const ShadedGround g = shade_ground(scene.ground, scene.ground.material_id(hit.primitive), p,
                                         normalize(Vec3(hit.shading_normal)), scene.sun.direction);

@@ -352,6 +352,9 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   detail::warn_cameras_under_the_plain(scenario, scene);
   scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();
   set_spectral_optics(scenario, scene);
+  // The plain and the surroundings continue the edge's spectrum, not only its colour.
+  scene.ground.plain_optics = detail::edge_optics(scene.ground, grid, scene.origin);
+  scene.ground.optics[kSurroundings] = scene.ground.plain_optics;
   if (scenario.terrain.periodic) detail::make_periodic(grid, scene);
   return scene;
 }

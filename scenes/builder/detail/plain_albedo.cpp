@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "renderer/spectra/spectral_colour.h"
+
 namespace landsim::scenes::detail {
 namespace {
 
@@ -16,11 +18,15 @@ bool edge_cell(const terrain::ElevationGrid& g, int c, int r) {
 
 }  // namespace
 
-Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
-                  const Vec3& origin) {
+namespace {
+
+// Calls f(material id) for every ground triangle on the grid's edge (the surroundings'
+// context triangles left out: they take the plain's own); returns how many.
+template <typename F>
+std::size_t for_each_edge_triangle(const renderer::Ground& ground,
+                                   const terrain::ElevationGrid& grid, const Vec3& origin, F f) {
   const terrain::GeoTransform& t = grid.transform();
   const terrain::GroundMesh& mesh = ground.mesh;
-  Vec3 sum{};
   std::size_t n = 0;
   for (std::size_t k = 0; k < mesh.triangle_count(); ++k) {
     const Vec3f a = mesh.vertices[mesh.indices[3 * k]], b = mesh.vertices[mesh.indices[3 * k + 1]],
@@ -30,10 +36,35 @@ Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& 
     const auto row = static_cast<int>(std::floor((t.origin_y - centre.y) / t.cell_size_y));
     if (!edge_cell(grid, col, row) || ground.material_id(k) == renderer::Ground::kSurroundings)
       continue;
-    sum += Vec3(ground.material(ground.material_id(k)).albedo);
+    f(ground.material_id(k));
     ++n;
   }
+  return n;
+}
+
+}  // namespace
+
+Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
+                  const Vec3& origin) {
+  Vec3 sum{};
+  const std::size_t n = for_each_edge_triangle(
+      ground, grid, origin, [&](std::uint8_t id) { sum += Vec3(ground.material(id).albedo); });
   return n == 0 ? ground.albedo : Vec3f(sum / static_cast<double>(n));
+}
+
+std::shared_ptr<const renderer::SpectralOptics> edge_optics(const renderer::Ground& ground,
+                                                            const terrain::ElevationGrid& grid,
+                                                            const Vec3& origin) {
+  const auto spectrum = [&](std::uint8_t id) {
+    const auto& o = ground.optics[id];
+    return o ? o->reflectance : renderer::reflectance_spectrum(ground.material(id).albedo);
+  };
+  renderer::Spectrum sum;
+  const std::size_t n =
+      for_each_edge_triangle(ground, grid, origin, [&](std::uint8_t id) { sum += spectrum(id); });
+  auto out = std::make_shared<renderer::SpectralOptics>();
+  out->reflectance = n == 0 ? spectrum(0) : sum * (1.0f / static_cast<float>(n));
+  return out;
 }
 
 std::optional<float> edge_height(const terrain::ElevationGrid& grid, const Vec3& origin) {

@@ -10,8 +10,11 @@
 #include "renderer/atmosphere/sky.h"
 #include "renderer/camera.h"
 #include "renderer/output/reflectance.h"
+#include "renderer/spectra/spectral_colour.h"
+#include "renderer/transport/bsdf.h"
 #include "renderer/transport/plain.h"
 #include "renderer/transport/render.h"
+#include "renderer/transport/surface.h"
 #include "scenes/builder/scene_builder.h"
 #include "scenes/scenario/scenario.h"
 #include "tests/support/temp_dir.h"
@@ -193,6 +196,33 @@ TEST(SpectralScene, BareGroundTakesTheMeasuredSoilAndItsMoisture) {
   ASSERT_TRUE(dry.ground.optics[4]);
   EXPECT_FALSE(dry.ground.optics[3]);  // rock: its colour upsampled
   EXPECT_LT(wet.ground.optics[0]->reflectance[14], 0.5f * dry.ground.optics[0]->reflectance[14]);
+}
+
+// The plain beyond the grid continues the edge's spectrum, not only its colour (issue 73):
+// over bare soil its near infrared is the soil's (NDVI about 0.12), where the colour
+// upsampled alone is flat past the red (NDVI about 0).
+TEST(SpectralScene, ThePlainContinuesTheEdgesSpectrum) {
+  Scenario s = ndvi_example(32, 24, 1);
+  s.species.clear();
+  s.grass.clear();
+  const renderer::Scene scene = build_scene(s);
+  ASSERT_TRUE(scene.ground.plain_optics);
+  constexpr int kRed = 14, kInfrared = 24;  // 660-680 nm, 860-880 nm
+  const auto ndvi = [&](const renderer::Spectrum& r) {
+    return (r[kInfrared] - r[kRed]) / (r[kInfrared] + r[kRed]);
+  };
+  const float soil = ndvi(scene.ground.optics[0]->reflectance);
+  renderer::Hit hit;
+  hit.plain = true;
+  hit.object = renderer::ObjectClass::ground;
+  const renderer::ShadingPoint v{{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f}, 0};
+  const renderer::Spectrum plain =
+      renderer::spectral_material(renderer::surface_material(scene, hit, v)).reflectance;
+  EXPECT_GT(soil, 0.08f);
+  EXPECT_NEAR(ndvi(plain), soil, 0.03f) << "the plain's NDVI against the bare soil's";
+  EXPECT_LT(std::abs(ndvi(renderer::reflectance_spectrum(scene.ground.plain_albedo()))), 0.03f);
+  // The context terrain beyond takes the same spectrum.
+  EXPECT_EQ(scene.ground.optics[renderer::Ground::kSurroundings], scene.ground.plain_optics);
 }
 
 }  // namespace
