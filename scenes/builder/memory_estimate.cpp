@@ -279,14 +279,16 @@ static double film_pixel_bytes(const Scenario& s) {
          sensor;
 }
 
-MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep) {
+MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep,
+                               std::optional<std::size_t> program) {
   MemoryEstimate e;
   e.scenario = s.source;
   // The program as the render will have it: with its image module (loaded by render before
   // this estimate; counted, not loaded, by info).
-  e.program_bytes =
-      resident_bytes() +
-      (renderer::image_io_loaded() ? std::size_t{0} : static_cast<std::size_t>(mm::kImageModule));
+  e.program_bytes = program ? *program
+                            : resident_bytes() + (renderer::image_io_loaded()
+                                                      ? std::size_t{0}
+                                                      : static_cast<std::size_t>(mm::kImageModule));
   // The build's own first stages: the grid, the ground rasters and the vegetation map.
   const detail::SceneFoundation foundation = detail::lay_foundation(s);
   const terrain::ElevationGrid& grid = foundation.grid;

@@ -8,6 +8,7 @@
 // total comes to measured peaks.
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,8 +47,12 @@ struct MemoryEstimate {
 nlohmann::json estimate_json(const Scenario& scenario, const MemoryEstimate& e);
 
 // Loads the terrain and feature map and generates one variant per species; places nothing.
-// The variants are left in `keep`, when given, for build_scene to reuse.
-MemoryEstimate estimate_memory(const Scenario& scenario, VariantCache* keep = nullptr);
+// The variants are left in `keep`, when given, for build_scene to reuse. `program`: the
+// program's own size to count (an image set's later estimates take the one measured before
+// its first scene: the process's size since then holds the freed scenes' memory the
+// allocator keeps for the next); empty: the process's resident size now.
+MemoryEstimate estimate_memory(const Scenario& scenario, VariantCache* keep = nullptr,
+                               std::optional<std::size_t> program = std::nullopt);
 
 struct MemoryBudget {
   std::size_t bytes = 0;

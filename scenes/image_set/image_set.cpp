@@ -260,9 +260,9 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
 // options' max_memory, [render] max_memory, or a share of this machine's memory
 // (InputError when over).
 MemoryEstimate check_memory(const Scenario& scenario, const ImageSetOptions& o,
-                            VariantCache& variants) {
+                            VariantCache& variants, std::optional<std::size_t> program) {
   const auto start = Clock::now();
-  MemoryEstimate estimate = estimate_memory(scenario, &variants);
+  MemoryEstimate estimate = estimate_memory(scenario, &variants, program);
   std::size_t budget = 0;
   std::string source;
   if (o.max_memory) {
@@ -299,10 +299,12 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
   // image's scenario is estimated before its scene is built; the first one now.
   std::optional<std::size_t> estimated_variation;
   if (!images.empty()) estimated_variation = images.front().variation;
-  const MemoryEstimate estimate = check_memory(
-      images.empty() ? scenario : scenarios[images.front().variation], options, variants);
+  const MemoryEstimate estimate =
+      check_memory(images.empty() ? scenario : scenarios[images.front().variation], options,
+                   variants, std::nullopt);
   ImageSetResult result;
   result.memory_estimate_bytes = estimate.total_bytes();
+  result.memory_estimates_bytes = {estimate.total_bytes()};
   std::optional<renderer::Scene> scene;
   std::optional<renderer::Renderer> renderer;
   std::size_t scene_frame = 0, scene_variation = 0;
@@ -339,8 +341,13 @@ ImageSetResult render_image_set(const Scenario& scenario, const ImageSetOptions&
         scene.reset();  // one scene at a time: the memory estimate counts one
         if (estimated_variation != image.variation) {
           variants.clear();
-          result.memory_estimate_bytes = std::max(
-              result.memory_estimate_bytes, check_memory(drawn, options, variants).total_bytes());
+          // The program as it was before the first scene: what the process has grown by
+          // since is the freed scenes' memory, which the next scene reuses.
+          const std::size_t bytes =
+              check_memory(drawn, options, variants, estimate.program_bytes).total_bytes();
+          result.memory_estimates_bytes.push_back(bytes);
+          result.memory_estimate_bytes =
+              std::max<std::uint64_t>(result.memory_estimate_bytes, bytes);
           estimated_variation = image.variation;
         }
         const auto build_start = Clock::now();

@@ -80,10 +80,11 @@ struct ImageSetOptions {
 };
 
 struct ImageSetResult {
-  std::vector<ImageReport> images;  // written by this process
-  std::size_t skipped = 0;          // finished images kept (resume)
-  double scene_seconds = 0.0;       // building scenes
-  std::uint64_t memory_estimate_bytes = 0;
+  std::vector<ImageReport> images;                    // written by this process
+  std::size_t skipped = 0;                            // finished images kept (resume)
+  double scene_seconds = 0.0;                         // building scenes
+  std::uint64_t memory_estimate_bytes = 0;            // the largest of
+  std::vector<std::uint64_t> memory_estimates_bytes;  // each scene's estimate, in order
   // Set when `stop` stopped the render: the image it stopped at; its checkpoint holds the
   // progress unless the stop came before its scene was built (`stopped_before_tracing`).
   std::optional<std::string> stopped_at;
