@@ -265,6 +265,7 @@ int run_brf(const BrfArgs& args) {
   const bool bottom = args.level == "boa";
   options.bottom_of_atmosphere = bottom;
   const bool monochromatic = !args.wavelengths.empty();
+  if (monochromatic) options.target_band = 0;  // --target-se bounds each wavelength's factor
   Measured measured = monochromatic
                           ? measure_monochromatic(scene, args.wavelengths, directions, options)
                           : measure(scene, directions, options);

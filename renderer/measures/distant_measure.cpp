@@ -239,9 +239,14 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
     // Until the BRF's relative standard error reaches the target: the paths needed, estimated
     // from the error so far (it falls as 1 / sqrt(paths)) with a tenth more, and at least a
     // quarter more than so far, in whole blocks.
+    const auto aimed = [&]() -> const DistantValue& {
+      return options.target_band >= 0 ? r.band_brf.at(static_cast<std::size_t>(options.target_band))
+                                      : r.brf;
+    };
     while (options.target_relative_error > 0.0 && sums.per_batch < cap &&
-           r.brf.standard_error > options.target_relative_error * std::abs(r.brf.mean)) {
-      const double ratio = r.brf.standard_error / (options.target_relative_error * r.brf.mean);
+           aimed().standard_error > options.target_relative_error * std::abs(aimed().mean)) {
+      const double ratio =
+          aimed().standard_error / (options.target_relative_error * std::abs(aimed().mean));
       const double needed =
           std::max(1.1 * ratio * ratio, 1.25) * static_cast<double>(sums.per_batch);
       const auto blocks = static_cast<std::uint64_t>(std::ceil(needed / kBlock));

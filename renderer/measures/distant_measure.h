@@ -50,6 +50,9 @@ struct DistantMeasureOptions {
   // error is at most this fraction of it; `samples` is then where each direction starts.
   double target_relative_error = 0.0;
   std::uint64_t max_samples = std::uint64_t{1} << 26;
+  // The band whose BRF the target bounds (a monochromatic run's wavelength); -1: the
+  // luminance's.
+  int target_band = -1;
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
   // At the bottom of the atmosphere (docs/CANOPIES.md "Measures"): rays start just above the

@@ -191,6 +191,14 @@ TEST(Cli, BrfMeasuresEachNamedWavelengthOnItsOwn) {
   // Over black ground the air's light alone: Rayleigh's lambda^-4 makes 661 nm brighter by
   // several standard errors (the bins' means would make the two the same).
   EXPECT_GT(short_brf - long_brf, 5.0 * se) << short_brf << " " << long_brf;
+  // --target-se bounds each wavelength's own factor (not the luminance, which it has none of).
+  r = run("brf " + cell + " --spp 256 --direction 0,0 --wavelength 560 --target-se 0.002 --json",
+          dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto aimed = nlohmann::json::parse(r.out)["directions"][0];
+  const double brf = aimed["bands"]["560nm"]["brf"], brf_se = aimed["bands"]["560nm"]["brf_se"];
+  EXPECT_LE(brf_se, 0.002 * brf);
+  EXPECT_GT(aimed["paths"].get<int>(), 256);
   r = run("brf " + cell + " --wavelength 300", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--wavelength 300: expected 380 to 1020 nm"), std::string::npos) << r.err;
