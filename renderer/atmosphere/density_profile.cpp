@@ -15,6 +15,10 @@ constexpr double kLevel = 1e-12;
 // Two equal neighbouring densities make a piece of infinite scale height; this stands in.
 constexpr double kFlat = 1e15;
 
+// exp(-x), 0 past e^-700 (1e-304): nothing any sum can see, where exp's underflow would take
+// glibc's slow error path (3% of a render, measured by perf).
+double decay(double x) { return x > 700.0 ? 0.0 : std::exp(-x); }
+
 // The integral of n0 exp(-x / h) for x in [a, b] (a <= b), with expm1 for short pieces and
 // long scale heights.
 double piece_integral(double n0, double h, double a, double b) {
@@ -74,7 +78,7 @@ double DensityProfile::density(double z) const {
   const int i = std::max(piece(z), 0);
   const auto k = static_cast<std::size_t>(i);
   const double h = i < 0 ? scale_heights_[0] : scale_heights_[k];
-  return densities_[k] * std::exp(-(z - heights_[k]) / h);
+  return densities_[k] * decay((z - heights_[k]) / h);
 }
 
 double DensityProfile::column_above(double z) const {
@@ -87,7 +91,7 @@ double DensityProfile::column_above(double z) const {
   }
   const auto k = static_cast<std::size_t>(i);
   if (k == last)
-    return densities_[k] * scale_heights_[k] * std::exp(-(z - heights_[k]) / scale_heights_[k]);
+    return densities_[k] * scale_heights_[k] * decay((z - heights_[k]) / scale_heights_[k]);
   return column_[k + 1] + piece_integral(densities_[k], scale_heights_[k], z - heights_[k],
                                          heights_[k + 1] - heights_[k]);
 }

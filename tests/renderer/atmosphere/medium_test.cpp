@@ -38,6 +38,25 @@ TEST(Medium, OpticalDepthsHaveClosedForms) {
     }
 }
 
+// Far above an exponential aerosol (e^-1224 at 734 km over a 600 m scale height) and through
+// an optical depth past float's range, the density and the transmittance are exactly zero,
+// not a subnormal from exp's slow underflow path; just below those bounds they are exp's own.
+TEST(Medium, NegligibleDensitiesAndTransmittancesAreExactlyZero) {
+  Haze h = haze(8000.0);
+  h.scale_height = 600.0;
+  const Medium m(h);
+  const MediumComponent& aerosol = m.component(0);
+  EXPECT_EQ(aerosol.density(aerosol.z0 + 734000.0), 0.0);
+  EXPECT_NEAR(aerosol.density(aerosol.z0 + aerosol.scale_height * 699.0) /
+                  (aerosol.density0 * std::exp(-699.0)),
+              1.0, 1e-9);
+  UnitDepths deep{200.0, 0.0, 0.0};  // aerosol unit depth: 200 at 550 nm
+  const Spectrum t = m.transmittance(deep);
+  EXPECT_EQ(t[8], 0.0f);
+  UnitDepths shallow{2.0, 0.0, 0.0};
+  EXPECT_FLOAT_EQ(m.transmittance(shallow)[8], std::exp(-2.0f * aerosol.extinction[8]));
+}
+
 TEST(Medium, VisibilityIsTheWholeExtinctionAt550Nm) {
   Haze h = haze(5000.0);
   const Medium m(h);
