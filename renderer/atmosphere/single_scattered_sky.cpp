@@ -7,9 +7,10 @@
 namespace landsim::renderer {
 namespace {
 
-// Heights above z at which the integrand is taken: 10 m growing by a quarter a step, to
-// 360 km (past the table's top); the trapezoid rule between them. Coarse, and enough for a
-// sampling density (any density is unbiased).
+// Heights above z at which the integrand is taken: 10 m growing by a quarter a step, 49 of
+// them to about 1,800 km above z (far past the table's 120 km top: the last dozen add
+// nothing); the trapezoid rule between them. Coarse, and enough for a sampling density (any
+// density is unbiased).
 constexpr int kHeights = 48;
 constexpr double kFirstStep = 10.0, kGrowth = 1.25;
 // Rays closer to level than this take its slope: a sampling density needs no horizon detail.
