@@ -252,7 +252,7 @@ int run_brf(const BrfArgs& args) {
                      ": landsim brf measures a periodic cell: set [terrain] periodic = true");
   // Every tree and cloud at full detail: a measure has no camera to range them from.
   scenario.render.degradation = false;
-  const renderer::Scene scene = scenes::build_scene(scenario);
+  renderer::Scene scene = scenes::build_scene(scenario);
   std::vector<renderer::DistantDirection> directions;
   for (const std::string& d : args.directions) directions.push_back(parse_direction(d));
   const bool plane = directions.empty();
@@ -266,9 +266,11 @@ int run_brf(const BrfArgs& args) {
   options.bottom_of_atmosphere = bottom;
   const bool monochromatic = !args.wavelengths.empty();
   if (monochromatic) options.target_band = 0;  // --target-se bounds each wavelength's factor
-  Measured measured = monochromatic
-                          ? measure_monochromatic(scene, args.wavelengths, directions, options)
-                          : measure(scene, directions, options);
+  // A monochromatic run takes the scene over (its grid and band are set per wavelength): a
+  // canopy's scene is not copied; nothing below reads it then but the budget, which it skips.
+  Measured measured =
+      monochromatic ? measure_monochromatic(std::move(scene), args.wavelengths, directions, options)
+                    : measure(scene, directions, options);
   exporters::MeasureRecord record;
   record.scenario = scenario.source;
   record.sun_zenith_deg = 90.0 - scenario.sun.elevation_deg;

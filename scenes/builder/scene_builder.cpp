@@ -345,7 +345,8 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   if (scenario.featuremaps || has_cover(scenario))
     add_ground_materials(scenario, map ? &*map : nullptr, rasters, scene);
   set_ground_materials(scenario, scene);
-  scene.ground.edge_albedo = detail::edge_albedo(scene.ground, grid, scene.origin);
+  const detail::EdgeGround edge = detail::edge_ground(scene.ground, grid, scene.origin);
+  scene.ground.edge_albedo = edge.albedo;
   // With context grids the drawn ground ends at their rim, whose mean the renderer takes.
   if (scenario.terrain.context.empty())
     scene.ground.plain_height = detail::edge_height(grid, scene.origin);
@@ -353,7 +354,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.ground.materials[kSurroundings - 1].albedo = scene.ground.plain_albedo();
   set_spectral_optics(scenario, scene);
   // The plain and the surroundings continue the edge's spectrum, not only its colour.
-  scene.ground.plain_optics = detail::edge_optics(scene.ground, grid, scene.origin);
+  scene.ground.plain_optics = detail::edge_optics(scene.ground, edge);
   scene.ground.optics[kSurroundings] = scene.ground.plain_optics;
   if (scenario.terrain.periodic) detail::make_periodic(grid, scene);
   return scene;

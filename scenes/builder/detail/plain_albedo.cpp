@@ -18,50 +18,37 @@ bool edge_cell(const terrain::ElevationGrid& g, int c, int r) {
 
 }  // namespace
 
-namespace {
-
-// Calls f(material id) for every ground triangle on the grid's edge (the surroundings'
-// context triangles left out: they take the plain's own); returns how many.
-template <typename F>
-std::size_t for_each_edge_triangle(const renderer::Ground& ground,
-                                   const terrain::ElevationGrid& grid, const Vec3& origin, F f) {
+EdgeGround edge_ground(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
+                       const Vec3& origin) {
   const terrain::GeoTransform& t = grid.transform();
   const terrain::GroundMesh& mesh = ground.mesh;
-  std::size_t n = 0;
+  EdgeGround edge;
+  Vec3 sum{};
   for (std::size_t k = 0; k < mesh.triangle_count(); ++k) {
     const Vec3f a = mesh.vertices[mesh.indices[3 * k]], b = mesh.vertices[mesh.indices[3 * k + 1]],
                 c = mesh.vertices[mesh.indices[3 * k + 2]];
     const Vec3 centre = Vec3((a + b + c) / 3.0f) + origin;
     const auto col = static_cast<int>(std::floor((centre.x - t.origin_x) / t.cell_size_x));
     const auto row = static_cast<int>(std::floor((t.origin_y - centre.y) / t.cell_size_y));
-    if (!edge_cell(grid, col, row) || ground.material_id(k) == renderer::Ground::kSurroundings)
-      continue;
-    f(ground.material_id(k));
-    ++n;
+    const std::uint8_t id = ground.material_id(k);
+    if (!edge_cell(grid, col, row) || id == renderer::Ground::kSurroundings) continue;
+    sum += Vec3(ground.material(id).albedo);
+    edge.materials.push_back(id);
   }
-  return n;
-}
-
-}  // namespace
-
-Vec3f edge_albedo(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
-                  const Vec3& origin) {
-  Vec3 sum{};
-  const std::size_t n = for_each_edge_triangle(
-      ground, grid, origin, [&](std::uint8_t id) { sum += Vec3(ground.material(id).albedo); });
-  return n == 0 ? ground.albedo : Vec3f(sum / static_cast<double>(n));
+  const std::size_t n = edge.materials.size();
+  edge.albedo = n == 0 ? ground.albedo : Vec3f(sum / static_cast<double>(n));
+  return edge;
 }
 
 std::shared_ptr<const renderer::SpectralOptics> edge_optics(const renderer::Ground& ground,
-                                                            const terrain::ElevationGrid& grid,
-                                                            const Vec3& origin) {
+                                                            const EdgeGround& edge) {
   const auto spectrum = [&](std::uint8_t id) {
     const auto& o = ground.optics[id];
     return o ? o->reflectance : renderer::reflectance_spectrum(ground.material(id).albedo);
   };
   renderer::Spectrum sum;
-  const std::size_t n =
-      for_each_edge_triangle(ground, grid, origin, [&](std::uint8_t id) { sum += spectrum(id); });
+  for (const std::uint8_t id : edge.materials) sum += spectrum(id);
+  const std::size_t n = edge.materials.size();
   auto out = std::make_shared<renderer::SpectralOptics>();
   out->reflectance = n == 0 ? spectrum(0) : sum * (1.0f / static_cast<float>(n));
   return out;

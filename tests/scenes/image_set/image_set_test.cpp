@@ -19,16 +19,20 @@ namespace {
 
 using landsim::testing::TempDir;
 
-// Two frames of one 32 x 18 view of the bare volcano at 1 spp.
-Scenario two_frames() {
+// One view `width` x `height` of the bare volcano at 1 spp, and `more` after its [render].
+Scenario volcano_view(int width, int height, const std::string& more) {
   const std::string text =
       "[terrain]\nelevation = \"" +
       landsim::testing::source_file("data/terrain/volcano.asc").string() +
       "\"\n[sun]\nelevation = 30\nazimuth = 300\n[[views]]\nname = \"v\"\n"
-      "position = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, 130.0]\nwidth = 32\n"
-      "height = 18\n[render]\nspp = 1\nframes = [0.0, 1.0]\n";
+      "position = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, 130.0]\nwidth = " +
+      std::to_string(width) + "\nheight = " + std::to_string(height) + "\n[render]\nspp = 1\n" +
+      more;
   return parse_scenario(text, "set.toml", ".");
 }
+
+// Two frames of one 32 x 18 view of the bare volcano at 1 spp.
+Scenario two_frames() { return volcano_view(32, 18, "frames = [0.0, 1.0]\n"); }
 
 nlohmann::json manifest_in(const std::filesystem::path& dir) {
   return nlohmann::json::parse(landsim::testing::read_file(dir / "manifest.json"));
@@ -64,17 +68,12 @@ TEST(ImageSet, RendersEveryImageWithItsPreviewAndTheManifest) {
 // size after it (which holds the freed scenes' memory the allocator keeps), so images whose
 // draws build the same scene are estimated alike instead of growing image by image.
 TEST(ImageSet, ARandomisedSetsEstimatesDoNotGrowWithTheImagesRendered) {
-  const std::string text =
-      "[terrain]\nelevation = \"" +
-      landsim::testing::source_file("data/terrain/volcano.asc").string() +
-      "\"\n[sun]\nelevation = 30\nazimuth = 300\n[[views]]\nname = \"v\"\n"
-      "position = [500.0, 900.0, 330.0]\ntarget = [280.0, 280.0, 130.0]\nwidth = 64\n"
-      "height = 36\n[render]\nspp = 1\n[randomise]\nimages = 3\n"
-      "\"sun.elevation\" = { range = [20, 70] }\n";
   TempDir dir;
   ImageSetOptions o;
   o.out_dir = dir / "out";
-  const ImageSetResult r = render_image_set(parse_scenario(text, "set.toml", "."), o);
+  const ImageSetResult r = render_image_set(
+      volcano_view(64, 36, "[randomise]\nimages = 3\n\"sun.elevation\" = { range = [20, 70] }\n"),
+      o);
   ASSERT_EQ(r.images.size(), 3u);
   ASSERT_EQ(r.memory_estimates_bytes.size(), 3u);
   EXPECT_EQ(r.memory_estimates_bytes[1], r.memory_estimates_bytes[0]);
