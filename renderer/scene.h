@@ -16,6 +16,7 @@
 #include "core/counter_rng.h"
 #include "core/vec3.h"
 #include "renderer/camera_model.h"
+#include "renderer/materials/ground_brdf.h"
 #include "renderer/materials/ground_shading.h"
 #include "renderer/spectra/spectral_grid.h"
 #include "renderer/spectra/spectrum.h"
@@ -74,11 +75,18 @@ struct Ground {
   // Spectra by material id (soils: the measured ones, by moisture); null: the RGB upsampled.
   // The shading's variation multiplies them as it multiplies the albedo.
   std::array<std::shared_ptr<const SpectralOptics>, kGroundMaterials> optics;
+  // Reflectance models by material id (ground_brdf.h; Lambert unless the scenario's
+  // [[ground.brdf]] says otherwise; water never): the plain takes the surroundings'.
+  std::array<GroundBrdf, kGroundMaterials> brdf{};
 
   // What ground triangle `t` is made of, for every renderer and exporter alike: its material
   // id (0: the terrain's own), and the material of an id.
   std::uint8_t material_id(std::size_t t) const {
     return t < triangle_material.size() ? triangle_material[t] : std::uint8_t{0};
+  }
+  // The model of material `id`; null where it is Lambert's (the common case, no cost).
+  const GroundBrdf* brdf_of(std::uint8_t id) const {
+    return id < brdf.size() && !brdf[id].lambertian() ? &brdf[id] : nullptr;
   }
   GroundMaterial material(std::uint8_t id) const {
     return id == 0 || id > materials.size() ? GroundMaterial{albedo, false} : materials[id - 1u];

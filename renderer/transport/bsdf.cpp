@@ -30,6 +30,19 @@ Colour lambert(const SurfaceMaterial& m, const ShadingFrame& f, const Vec3f& l, 
   return (front ? reflectance : transmittance) * w;
 }
 
+// A ground model's reflection: each channel's (or bin's) reflectance times the model's
+// factor at that reflectance (RPV's rho_c may be the reflectance itself), times `w`.
+Spectrum shaped(const GroundBrdf& brdf, const BrdfShape& s, const Spectrum& reflectance, float w) {
+  Spectrum out;
+  for (int k = 0; k < kSpectrumBins; ++k)
+    out[k] = reflectance[k] * brdf_factor(brdf, s, reflectance[k]) * w;
+  return out;
+}
+Vec3f shaped(const GroundBrdf& brdf, const BrdfShape& s, const Vec3f& r, float w) {
+  const auto one = [&](float rho) { return rho * brdf_factor(brdf, s, rho) * w; };
+  return {one(r.x), one(r.y), one(r.z)};
+}
+
 }  // namespace
 
 SpectralMaterial spectral_material(const SurfaceMaterial& m) {
@@ -52,7 +65,17 @@ ObjectLobes object_lobes(const ObjectMaterial& material, const Vec3f& base) {
           std::max(material.roughness * material.roughness, kMinGlossyAlpha)};
 }
 
+// The ground model's factors for light from `l` toward the viewer, about the shading normal.
+BrdfShape Bsdf::shape(const Vec3f& l) const {
+  return brdf_shape(*m_.brdf, dot(f_.n, l), dot(f_.n, f_.wo), dot(l, f_.wo));
+}
+
 Vec3f Bsdf::eval(const Vec3f& l, bool& front) const {
+  if (m_.brdf) {
+    const float w = lambert_weight(m_, f_, l, front);
+    if (w == 0.0f || !front) return {};
+    return shaped(*m_.brdf, shape(l), m_.reflectance, w);
+  }
   if (!m_.glossy()) return lambert(m_, f_, l, front, m_.reflectance, m_.transmittance);
   front = dot(f_.n, l) > 0.0f && dot(f_.ng, l) > 0.0f;
   if (!front) return {};
@@ -64,6 +87,11 @@ Vec3f Bsdf::eval(const Vec3f& l, bool& front) const {
 }
 
 Spectrum Bsdf::eval(const SpectralMaterial& s, const Vec3f& l, bool& front) const {
+  if (m_.brdf) {
+    const float w = lambert_weight(m_, f_, l, front);
+    if (w == 0.0f || !front) return {};
+    return shaped(*m_.brdf, shape(l), s.reflectance, w);
+  }
   if (!m_.glossy()) return lambert(m_, f_, l, front, s.reflectance, s.transmittance);
   front = dot(f_.n, l) > 0.0f && dot(f_.ng, l) > 0.0f;
   if (!front) return {};
@@ -156,7 +184,11 @@ BsdfSample Bsdf::sample_lambert(const SpectralMaterial& s, const BsdfNumbers& u)
   out.kind = BsdfSample::Kind::scattered;
   out.direction = next;
   out.side = side;
-  out.factor = reflect ? s.reflectance / p_reflect : s.transmittance / (1.0f - p_reflect);
+  // Cosine sampling: f cos / pdf is pi f, the reflectance times a ground model's factor.
+  if (m_.brdf && reflect)
+    out.factor = shaped(*m_.brdf, shape(next), s.reflectance, 1.0f);
+  else
+    out.factor = reflect ? s.reflectance / p_reflect : s.transmittance / (1.0f - p_reflect);
   out.pdf = pdf(next);
   return out;
 }

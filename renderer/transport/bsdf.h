@@ -1,10 +1,10 @@
 #pragma once
-// What a surface does with light, in one place: the material (Lambertian reflection, plus
-// Lambertian transmission for leaves and grass, a Fresnel mirror for water, a GGX coat for
-// scene objects), and its BSDF at a shading point as every user takes it: `eval` (f x cos
-// toward a light: the sun and sky samples of both integrators), `pdf` (the density `sample`
-// draws with, for multiple importance sampling) and `sample` (the path tracer's next
-// direction). A new material is a new case here, and in the POV-Ray export's finish
+// What a surface does with light, in one place: the material (Lambertian reflection, or a
+// ground's RPV or Ross-Li model, plus Lambertian transmission for leaves and grass, a Fresnel
+// mirror for water, a GGX coat for scene objects), and its BSDF at a shading point as every user
+// takes it: `eval` (f x cos toward a light: the sun and sky samples of both integrators), `pdf`
+// (the density `sample` draws with, for multiple importance sampling) and `sample` (the path
+// tracer's next direction). A new material is a new case here, and in the POV-Ray export's finish
 // (`object_lobes` is the coat both read).
 #include "core/vec3.h"
 #include "renderer/scene.h"
@@ -23,6 +23,9 @@ struct SurfaceMaterial {
   // or vigour that multiplied the colours). Null: the colours upsampled.
   const SpectralOptics* optics = nullptr;
   Vec3f optics_factor{1.0f, 1.0f, 1.0f};
+  // A ground's reflectance model (RPV, Ross-Li) shaping the reflection; null: Lambert's.
+  // Only on opaque, coatless surfaces.
+  const GroundBrdf* brdf = nullptr;
   bool two_sided() const { return max_component(transmittance) > 0.0f; }
   bool glossy() const { return max_component(specular) > 0.0f; }
 };
@@ -86,6 +89,7 @@ class Bsdf {
   float coat_probability() const;
   BsdfSample sample_glossy(const SpectralMaterial& s, const BsdfNumbers& u) const;
   BsdfSample sample_lambert(const SpectralMaterial& s, const BsdfNumbers& u) const;
+  BrdfShape shape(const Vec3f& l) const;
 
   const SurfaceMaterial& m_;
   ShadingFrame f_;

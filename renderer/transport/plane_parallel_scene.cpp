@@ -17,6 +17,11 @@ Scene plane_parallel_scene(const Scene& scene, float ground_height) {
   const Vec3f albedo = scene.ground.plain_albedo();
   pp.ground.albedo = albedo;
   pp.ground.edge_albedo = albedo;
+  // The plain's spectrum and reflectance model, as the scene's plain reflects.
+  pp.ground.plain_optics = scene.ground.plain_optics;
+  pp.ground.optics[0] = scene.ground.plain_optics;
+  pp.ground.brdf[0] = pp.ground.brdf[Ground::kSurroundings] =
+      scene.ground.brdf[Ground::kSurroundings];
   pp.ground.plain_height = ground_height;
   const float g = ground_height;
   pp.ground.mesh.vertices = {{-1, -1, g}, {1, -1, g}, {1, 1, g}, {-1, 1, g}};

@@ -52,12 +52,14 @@ SurfaceMaterial surface_material(const Scene& scene, const Hit& hit, const Shadi
     SurfaceMaterial m{scene.ground.plain_albedo(), {}};
     m.optics = scene.ground.plain_optics.get();
     m.optics_factor = {1.0f, 1.0f, 1.0f};
+    m.brdf = scene.ground.brdf_of(Ground::kSurroundings);
     return m;
   }
   if (hit.prototype < 0) {
     const ShadedGround g = shade_ground(scene.ground, scene.ground.material_id(hit.primitive), p,
                                         normalize(Vec3(hit.shading_normal)), scene.sun.direction);
     SurfaceMaterial m{g.albedo, {}, g.water};
+    if (!g.water) m.brdf = scene.ground.brdf_of(static_cast<std::uint8_t>(g.material));
     m.optics = scene.ground.optics[static_cast<std::size_t>(g.material)].get();
     if (m.optics) {
       // What the shading did to the material's own albedo, applied to its spectrum.

@@ -21,6 +21,7 @@
 #include "scenes/builder/detail/camera_check.h"
 #include "scenes/builder/detail/context_terrain.h"
 #include "scenes/builder/detail/grass_cover.h"
+#include "scenes/builder/detail/ground_models.h"
 #include "scenes/builder/detail/leaf_cloud.h"
 #include "scenes/builder/detail/periodic_cell.h"
 #include "scenes/builder/detail/plain_albedo.h"
@@ -356,6 +357,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   // The plain and the surroundings continue the edge's spectrum, not only its colour.
   scene.ground.plain_optics = detail::edge_optics(scene.ground, edge);
   scene.ground.optics[kSurroundings] = scene.ground.plain_optics;
+  detail::set_ground_models(scenario, edge, scene);
   if (scenario.terrain.periodic) detail::make_periodic(grid, scene);
   return scene;
 }

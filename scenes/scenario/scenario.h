@@ -148,6 +148,11 @@ struct GroundMaterials {
   renderer::GroundShading shading = scenario_ground_shading();
   std::array<std::string, renderer::kGroundMaterials> texture_files;
   std::array<std::string, renderer::kGroundMaterials> texture_locations;  // "file:line:col"
+  // Reflectance models by material id ([[ground.brdf]]; renderer/materials/ground_brdf.h),
+  // where each was given ("file:line:col" of its table; empty: none, Lambert's), for the
+  // scene builder's energy check and the plain's model.
+  std::array<renderer::GroundBrdf, renderer::kGroundMaterials> brdf{};
+  std::array<std::string, renderer::kGroundMaterials> brdf_locations;
   // Detail below the grid's cells (terrain/surface_detail.h): off by default; per material
   // id the relief's amplitude (metres) and roughness.
   bool detail = false;

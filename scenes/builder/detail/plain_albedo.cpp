@@ -1,5 +1,7 @@
 #include "scenes/builder/detail/plain_albedo.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "renderer/spectra/spectral_colour.h"
@@ -37,6 +39,10 @@ EdgeGround edge_ground(const renderer::Ground& ground, const terrain::ElevationG
   }
   const std::size_t n = edge.materials.size();
   edge.albedo = n == 0 ? ground.albedo : Vec3f(sum / static_cast<double>(n));
+  std::array<std::size_t, renderer::kGroundMaterials> count{};
+  for (const std::uint8_t id : edge.materials) ++count[id];
+  edge.commonest =
+      static_cast<std::uint8_t>(std::max_element(count.begin(), count.end()) - count.begin());
   return edge;
 }
 

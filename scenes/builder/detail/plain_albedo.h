@@ -19,6 +19,9 @@ namespace landsim::scenes::detail {
 struct EdgeGround {
   Vec3f albedo;  // the terrain's albedo where the edge has no ground
   std::vector<std::uint8_t> materials;
+  // The material most of the edge is (0, the terrain's own, where it has no ground): whose
+  // reflectance model the plain continues unless the scenario gives the surroundings one.
+  std::uint8_t commonest = 0;
 };
 EdgeGround edge_ground(const renderer::Ground& ground, const terrain::ElevationGrid& grid,
                        const Vec3& origin);

@@ -105,6 +105,58 @@ void read_textures(TableReader& r, const std::string& base_dir, GroundMaterials&
   }
 }
 
+// One [[ground.brdf]] table: a model and its parameters, on the materials it names (all
+// but water by default); later tables override earlier ones on the materials they share.
+void read_brdf(TableReader& r, GroundMaterials& g) {
+  renderer::GroundBrdf b;
+  const std::string model = r.choice("model", {"lambert", "rpv", "ross-li"});
+  const auto refuse = [&](std::initializer_list<const char*> keys, const std::string& why) {
+    for (const char* k : keys)
+      if (r.has(k)) r.fail(k, why);
+  };
+  if (model == "rpv") {
+    b.model = renderer::GroundBrdf::Model::rpv;
+    b.k = static_cast<float>(r.number("k", Range{0.0, 3.0, true}, 1.0));
+    b.asymmetry = static_cast<float>(r.number("asymmetry", Range{-1.0, 1.0, true, true}, 0.0));
+    if (const auto c = r.optional_number("hot_spot", kUnit)) b.hot_spot = static_cast<float>(*c);
+    refuse({"volumetric", "geometric"},
+           "a Ross-Li weight; model = \"rpv\" takes k, asymmetry "
+           "and hot_spot");
+  } else if (model == "ross-li") {
+    b.model = renderer::GroundBrdf::Model::ross_li;
+    const Range weight{-100.0, 100.0};
+    b.volumetric = static_cast<float>(r.number("volumetric", weight, 0.0));
+    b.geometric = static_cast<float>(r.number("geometric", weight, 0.0));
+    refuse({"k", "asymmetry", "hot_spot"},
+           "an RPV parameter; model = \"ross-li\" takes volumetric and geometric");
+  } else {
+    refuse({"k", "asymmetry", "hot_spot", "volumetric", "geometric"},
+           "model = \"lambert\" has no parameters");
+  }
+  std::uint16_t on = 0b111111011;  // all but water
+  if (const toml::node* n =
+          r.value("on", "an array of ground material names", "every material but water")) {
+    const toml::array* a = n->as_array();
+    if (a == nullptr) r.fail_at(*n, "on", "expected an array of ground material names");
+    on = 0;
+    for (const toml::node& m : *a)
+      for (int id : ground_ids(r, m, "on")) {
+        if (id == 2)
+          r.fail_at(m, "on",
+                    "water reflects as a Fresnel mirror over a dark body; a "
+                    "reflectance model does not apply to it");
+        on |= static_cast<std::uint16_t>(1u << id);
+      }
+  }
+  const std::string where = r.location(nullptr);
+  for (std::size_t id = 0; id < g.brdf.size(); ++id)
+    if (on & (1u << id)) {
+      g.brdf[id] = b;
+      g.brdf_locations[id] = where;
+    }
+  r.finish();
+}
+
 }  // namespace
 
 GroundMaterials read_ground(const toml::table& root, const std::string& file,
@@ -126,6 +178,7 @@ GroundMaterials read_ground(const toml::table& root, const std::string& file,
   if (const auto sc = r.optional_numbers("variation_scales", 2, kPositive))
     g.shading.scales = {(*sc)[0], (*sc)[1]};
   for (TableReader& rule : r.tables("rules")) g.shading.rules.push_back(read_rule(rule));
+  for (TableReader& brdf : r.tables("brdf")) read_brdf(brdf, g);
   read_textures(r, base_dir, g);
   g.shading.texture_size = r.number("texture_size", kPositive, g.shading.texture_size);
   g.detail = r.boolean("detail", g.detail);

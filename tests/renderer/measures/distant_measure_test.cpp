@@ -10,6 +10,7 @@
 
 #include "core/counter_rng.h"
 #include "renderer/atmosphere/sky.h"
+#include "tests/renderer/materials/brdf_reference.h"
 #include "tests/renderer/measures/canopy_cells.h"
 
 namespace landsim::renderer {
@@ -29,6 +30,38 @@ TEST(DistantMeasure, ALambertianSoilHasItsAlbedoForBrfInEveryDirection) {
   for (const DistantResult& r :
        measure_distant(s, {{0.0, 0.0}, {40.0, 0.0}, {60.0, 180.0}, {75.0, 90.0}}, samples(512)))
     EXPECT_NEAR(r.brf.mean, 0.3, 2e-3) << r.direction.zenith_deg << " " << r.direction.azimuth_deg;
+}
+
+// docs/GROUND.md "Reflectance models": a bare cell's BRF is its ground model's own, in every
+// direction (the sun alone, no sky: each path one reflection), against the models as their
+// papers print them.
+TEST(DistantMeasure, ABareCellsBrfIsItsGroundModelsInEveryDirection) {
+  Scene s = bare_cell(0.2, 35.0, 120.0);
+  s.sun.angular_radius = 0.0;  // collimated, as the formulas' sun
+  std::vector<DistantDirection> views;
+  for (int i = 0; i < 20; ++i) views.push_back({3.5 * i + 2.0, 120.0 + 37.0 * i});
+  GroundBrdf rpv;
+  rpv.model = GroundBrdf::Model::rpv;
+  rpv.k = 0.8f;
+  rpv.asymmetry = -0.15f;
+  rpv.hot_spot = 0.05f;
+  GroundBrdf ross;
+  ross.model = GroundBrdf::Model::ross_li;
+  ross.volumetric = 0.4f;
+  ross.geometric = 0.1f;
+  const double sun = 35.0 * kPi / 180.0;
+  for (const GroundBrdf& b : {rpv, ross}) {
+    s.ground.brdf[0] = b;
+    for (const DistantResult& r : measure_distant(s, views, samples(256))) {
+      const double view = r.direction.zenith_deg * kPi / 180.0;
+      const double phi = (r.direction.azimuth_deg - 120.0) * kPi / 180.0;
+      const double want = b.model == GroundBrdf::Model::rpv
+                              ? landsim::testing::rahman_brf(0.2, 0.8, -0.15, 0.05, sun, view, phi)
+                              : landsim::testing::ross_li_brf(0.2, 0.08, 0.02, sun, view, phi);
+      EXPECT_NEAR(r.brf.mean, want, 3.0 * r.brf.standard_error + 2e-4 * want)
+          << r.direction.zenith_deg << " " << r.direction.azimuth_deg;
+    }
+  }
 }
 
 // At the bottom of the one atmosphere a Lambertian soil's HDRF and BHR are its albedo: the
