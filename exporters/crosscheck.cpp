@@ -498,6 +498,8 @@ static CrosscheckReport run_crosscheck(const scenes::Scenario& scenario,
   comparable.settings.spp = o.spp;
   // POV-Ray draws every tree at full detail: so does the comparable render.
   comparable.settings.degradation = false;
+  // POV-Ray's ground is Lambertian (export_pov): so is the comparable render's.
+  comparable.ground.brdf.fill({});
   renderer::RenderOptions ro;
   ro.threads = o.threads;
   ro.centre_first_sample = true;

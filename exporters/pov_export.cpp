@@ -225,6 +225,13 @@ std::string sanitize_for_pov(const std::string& text) {
 void export_pov(const renderer::Scene& scene, const renderer::View& view,
                 const std::filesystem::path& dir, const PovExportOptions& o) {
   std::filesystem::create_directories(dir);
+  for (std::uint8_t id = 0; id < renderer::kGroundMaterials; ++id)
+    if (scene.ground.brdf_of(id) != nullptr) {
+      spdlog::warn(
+          "export: POV-Ray has no RPV or Ross-Li reflection; the ground is exported Lambertian "
+          "at each material's reflectance (the model's isotropic parameter; docs/GROUND.md)");
+      break;
+    }
   {
     AtomicFile inc(dir / "meshes.inc");
     {

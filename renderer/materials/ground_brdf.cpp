@@ -9,9 +9,13 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 // The zenith cosines the models are evaluated at, at least: both are singular at grazing
-// (RPV's Minnaert term below k = 1, the kernels' secants), and a shading normal can put a
-// direction just below its horizon.
+// (the kernels' secants), and a shading normal can put a direction just below its horizon.
 constexpr float kMinCos = 1e-3f;
+// RPV's Minnaert term takes no zenith beyond 85 degrees (docs/GROUND.md "Reflectance models"):
+// below k = 1 it grows without bound toward the horizon, and with it the light a surface lit
+// there would reflect (for every k < 1 more than it receives, near enough to grazing); the
+// model is fitted to measurements well inside that (RAMI's views reach 75 degrees).
+constexpr float kMinnaertMinCos = 0.0871557f;  // cos 85 degrees
 // The hemisphere's quadrature: midpoints in the cosine of the view zenith and in the azimuth
 // over the half the incidence plane mirrors.
 constexpr int kRings = 256;
@@ -40,7 +44,8 @@ PairGeometry pair_geometry(float cos_i, float cos_o, float cos_phase) {
 // Henyey-Greenstein F with the phase angle's cosine (Theta < 0 scatters back), and the
 // hot-spot term's 1 / (1 + G), G the distance between the two directions' tangents.
 BrdfShape rpv(const GroundBrdf& m, const PairGeometry& g) {
-  const float minnaert = std::pow(g.ci * g.co * (g.ci + g.co), m.k - 1.0f);
+  const float ci = std::max(g.ci, kMinnaertMinCos), co = std::max(g.co, kMinnaertMinCos);
+  const float minnaert = std::pow(ci * co * (ci + co), m.k - 1.0f);
   const float t = m.asymmetry;
   const float hg = (1.0f - t * t) / std::pow(1.0f + t * t + 2.0f * t * g.cp, 1.5f);
   const float big_g = std::sqrt(std::max(0.0f, g.tan2_i + g.tan2_o - 2.0f * g.tan_cos));

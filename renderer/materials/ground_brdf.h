@@ -39,7 +39,8 @@ struct BrdfShape {
 };
 
 // cos_i, cos_o: the cosines of the two directions' zeniths (clamped away from 0: the models
-// are singular at grazing); cos_phase: the cosine of the angle between them.
+// are singular at grazing; RPV's Minnaert term takes none beyond 85 degrees, where it would
+// reflect more light than arrives); cos_phase: the cosine of the angle between them.
 BrdfShape brdf_shape(const GroundBrdf& brdf, float cos_i, float cos_o, float cos_phase);
 
 // pi f / rho at reflectance `rho`: never negative (Ross-Li's kernels can dip below zero far

@@ -82,6 +82,9 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "detail_roughness = 0.6\nsoil_moisture = 0.4\n"
          "[[ground.rules]]\nmeasure = \"slope\"\nabove = 30.0\nbelow = 80.0\nsoftness = 3.0\n"
          "on = [\"terrain\", \"grass\"]\nbecomes = \"rock\"\ntint = [1.1, 1.0, 0.9]\n\n"
+         "[[ground.brdf]]\nmodel = \"rpv\"\nk = 0.9\nasymmetry = -0.1\nhot_spot = 0.05\n"
+         "[[ground.brdf]]\nmodel = \"ross-li\"\nvolumetric = 0.3\ngeometric = 0.05\n"
+         "on = [\"rock\", \"road\"]\n\n"
          "[wind]\nspeed = 4.0\ngust = 2.0\ndirection = 200.0\ngust_scale = 40.0\nphase_groups = "
          "2\n\n"
          "[sun]\ndate = 2026-06-21\ntime = 13:00:00\nutc_offset = 12.0\nlatitude = "
@@ -191,6 +194,15 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_EQ(sh.rules[0].softness, 3.0);
   EXPECT_EQ(sh.rules[0].on, (1u << 0) | (1u << 5) | (1u << 6) | (1u << 7));
   EXPECT_EQ(sh.rules[0].becomes, 3);
+  // [[ground.brdf]]: RPV on every material but water, Ross-Li over it on rock and road.
+  EXPECT_EQ(s.ground.brdf[4].model, renderer::GroundBrdf::Model::rpv);
+  EXPECT_FLOAT_EQ(s.ground.brdf[4].k, 0.9f);
+  EXPECT_FLOAT_EQ(s.ground.brdf[4].asymmetry, -0.1f);
+  EXPECT_FLOAT_EQ(s.ground.brdf[4].hot_spot, 0.05f);
+  EXPECT_EQ(s.ground.brdf[3].model, renderer::GroundBrdf::Model::ross_li);
+  EXPECT_FLOAT_EQ(s.ground.brdf[1].volumetric, 0.3f);
+  EXPECT_FLOAT_EQ(s.ground.brdf[1].geometric, 0.05f);
+  EXPECT_EQ(s.ground.brdf[2].model, renderer::GroundBrdf::Model::lambert);
   EXPECT_FLOAT_EQ(sh.rules[0].tint.x, 1.1f);
   EXPECT_TRUE(s.ground.detail);
   EXPECT_DOUBLE_EQ(s.ground.soil_moisture, 0.4);
