@@ -4,6 +4,7 @@
 #include <gdal.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <regex>
 #include <set>
 
@@ -446,6 +447,22 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
     EXPECT_TRUE(load_scenario(source_file(scene)).haze.column.has_value()) << scene;
     text += landsim::testing::read_file(source_file(scene));
   }
+  // RAMI4ATM's RPV and Ross-Li cases (docs/VALIDATION.md): each loads with the surface its
+  // name says, on the terrain (a cell's soil) and every other material but water.
+  int surfaces = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source_file("scenes/rami4atm"))) {
+    const std::string name = entry.path().stem().string();
+    const bool rpv = name.find("_rpv_") != std::string::npos;
+    if (!rpv && name.find("_rli_") == std::string::npos) continue;
+    const Scenario r = load_scenario(entry.path());
+    EXPECT_EQ(r.ground.brdf[0].model, rpv ? renderer::GroundBrdf::Model::rpv
+                                          : renderer::GroundBrdf::Model::ross_li)
+        << name;
+    EXPECT_EQ(r.ground.brdf[8].model, r.ground.brdf[0].model) << name;
+    if (rpv) EXPECT_FLOAT_EQ(r.ground.brdf[0].k, 0.95f) << name;
+    ++surfaces;
+  }
+  EXPECT_EQ(surfaces, 18);
   const std::string column = terrain + views +
                              "[atmosphere]\nozone_column = 300\n[atmosphere.aerosol]\n"
                              "optical_depth = 0.1\ntype = \"continental-average\"\n"
