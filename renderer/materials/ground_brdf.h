@@ -26,6 +26,12 @@ struct GroundBrdf {
   // to the isotropic one, f_vol / f_iso and f_geo / f_iso.
   float volumetric = 0.0f;
   float geometric = 0.0f;
+  // The white-sky scaling (normalise_to_white_sky): the model's factor is divided by
+  // white_a + white_ab x (1 - rho_c), its white-sky albedo over rho, so that the material's
+  // reflectance is the surface's albedo under a uniform sky; 1 and 0: unscaled, the
+  // reflectance is the model's isotropic parameter.
+  float white_a = 1.0f;
+  float white_ab = 0.0f;
   bool lambertian() const { return model == Model::lambert; }
 };
 
@@ -44,12 +50,21 @@ struct BrdfShape {
 BrdfShape brdf_shape(const GroundBrdf& brdf, float cos_i, float cos_o, float cos_phase);
 
 // pi f / rho at reflectance `rho`: never negative (Ross-Li's kernels can dip below zero far
-// from where they were fitted; the light a surface reflects cannot).
+// from where they were fitted; the light a surface reflects cannot), and over the white-sky
+// scaling where the model has one.
 inline float brdf_factor(const GroundBrdf& brdf, const BrdfShape& s, float rho) {
   const float rho_c = brdf.hot_spot < 0.0f ? rho : brdf.hot_spot;
   const float f = s.a * (1.0f + s.b * (1.0f - rho_c));
-  return f > 0.0f ? f : 0.0f;
+  return f > 0.0f ? f / (brdf.white_a + brdf.white_ab * (1.0f - rho_c)) : 0.0f;
 }
+
+// Scales `brdf` so that at every reflectance its white-sky (bihemispherical) albedo is that
+// reflectance: the angular shape kept, the brightness the material's.
+void normalise_to_white_sky(GroundBrdf& brdf);
+
+// The white-sky albedo (the directional-hemispherical reflectance averaged over incidence,
+// weighted by its cosine) at reflectance `rho`.
+double white_sky_albedo(const GroundBrdf& brdf, double rho);
 
 // The directional-hemispherical reflectance under a collimated light at incidence cos_i of
 // the model at reflectance `rho` (the black-sky albedo), by quadrature over the hemisphere.

@@ -161,12 +161,18 @@ std::array<double, kShares> follow(const Setting& c, const Vec3f& down, const Co
     const SpectralMaterial s = spectral_material(m);
     if (hit->object == ObjectClass::ground)
       out[event == 0 ? direct : diffuse] += weigh(throughput, c.w);
-    // What this surface keeps of what arrives: all but its reflectance and transmittance.
-    const Spectrum kept = throughput * (Spectrum::constant(1.0f) - s.reflectance - s.transmittance);
-    out[absorber(hit->object)] += weigh(kept, c.w);
     const Bsdf bsdf(m, v.frame());
     const std::array<float, 2> u = rng.uniform2(dim);
     const BsdfSample next = bsdf.sample(s, ray.direction, 0.0f, {1.0f, u[0], u[1]});
+    // What this surface keeps of what arrives: all but its reflectance and transmittance. A
+    // ground model reflects by the light's angle: all but what this path carries on (on
+    // average the model's directional-hemispherical reflectance; path by path the shares
+    // still close).
+    const Spectrum carried =
+        next.kind == BsdfSample::Kind::scattered ? next.factor / next.divisor : Spectrum{};
+    const Spectrum kept = throughput * (Spectrum::constant(1.0f) -
+                                        (m.brdf ? carried : s.reflectance + s.transmittance));
+    out[absorber(hit->object)] += weigh(kept, c.w);
     if (next.kind != BsdfSample::Kind::scattered) return out;
     throughput = throughput * next.factor / next.divisor;
     if (!survives(throughput, c.w, rng.uniform(dim + 2))) return out;

@@ -153,6 +153,9 @@ struct GroundMaterials {
   // scene builder's energy check and the plain's model.
   std::array<renderer::GroundBrdf, renderer::kGroundMaterials> brdf{};
   std::array<std::string, renderer::kGroundMaterials> brdf_locations;
+  // Whether the material's reflectance is the model's white-sky albedo (the scene builder
+  // scales the model to it) or its isotropic parameter.
+  std::array<bool, renderer::kGroundMaterials> brdf_white_sky{};
   // Detail below the grid's cells (terrain/surface_detail.h): off by default; per material
   // id the relief's amplitude (metres) and roughness.
   bool detail = false;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "core/input_error.h"
@@ -39,15 +40,51 @@ void check_energy(const Scenario& s, const renderer::Ground& ground, std::uint8_
       peak.zenith_deg));
 }
 
+// The materials the scene's ground shows: its triangles' (the terrain's own where none is
+// set), those rules turn them into, and the surroundings (the plain).
+std::array<bool, renderer::kGroundMaterials> used_materials(const renderer::Ground& ground) {
+  std::array<bool, renderer::kGroundMaterials> used{};
+  used[0] = ground.triangle_material.empty();
+  for (const std::uint8_t id : ground.triangle_material) used[id] = true;
+  for (const renderer::GroundRule& r : ground.shading.rules)
+    if (r.becomes >= 0) used[static_cast<std::size_t>(r.becomes)] = true;
+  used[renderer::Ground::kSurroundings] = true;
+  return used;
+}
+
+// Each model whose material's reflectance is its white-sky albedo, scaled to it (once per
+// distinct model: the quadrature takes some 30 ms).
+void scale_to_white_sky(const Scenario& s, renderer::Ground& ground) {
+  const auto same = [](const renderer::GroundBrdf& a, const renderer::GroundBrdf& b) {
+    return a.model == b.model && a.k == b.k && a.asymmetry == b.asymmetry &&
+           a.hot_spot == b.hot_spot && a.volumetric == b.volumetric && a.geometric == b.geometric;
+  };
+  for (std::size_t id = 0; id < ground.brdf.size(); ++id) {
+    if (!s.ground.brdf_white_sky[id]) continue;
+    std::size_t earlier = 0;
+    while (earlier < id &&
+           !(s.ground.brdf_white_sky[earlier] && same(s.ground.brdf[earlier], s.ground.brdf[id])))
+      ++earlier;
+    if (earlier < id)
+      ground.brdf[id] = ground.brdf[earlier];
+    else
+      renderer::normalise_to_white_sky(ground.brdf[id]);
+  }
+}
+
 }  // namespace
 
 void set_ground_models(const Scenario& s, const EdgeGround& edge, renderer::Scene& scene) {
   renderer::Ground& ground = scene.ground;
   ground.brdf = s.ground.brdf;
+  scale_to_white_sky(s, ground);
   constexpr auto kPlain = renderer::Ground::kSurroundings;
   if (s.ground.brdf_locations[kPlain].empty() && edge.commonest != 2)
     ground.brdf[kPlain] = ground.brdf[edge.commonest];
-  for (std::uint8_t id = 0; id < renderer::kGroundMaterials; ++id) check_energy(s, ground, id);
+  // Only what the ground shows: a table for every material must not fail on one it lacks.
+  const auto used = used_materials(ground);
+  for (std::uint8_t id = 0; id < renderer::kGroundMaterials; ++id)
+    if (used[id]) check_energy(s, ground, id);
 }
 
 }  // namespace landsim::scenes::detail

@@ -4,7 +4,7 @@
 // them, else that of the material most of the grid's edge is, so the plain continues the
 // ground as its albedo and spectrum do), and the energy check: a model whose
 // directional-hemispherical reflectance at the material's own reflectance exceeds 1 at any
-// incidence is refused, naming its table.
+// incidence is refused, naming its table (for the materials the ground shows).
 #include "renderer/scene.h"
 #include "scenes/builder/detail/plain_albedo.h"
 #include "scenes/scenario/scenario.h"

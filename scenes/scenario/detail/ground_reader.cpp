@@ -133,6 +133,10 @@ void read_brdf(TableReader& r, GroundMaterials& g) {
     refuse({"k", "asymmetry", "hot_spot", "volumetric", "geometric"},
            "model = \"lambert\" has no parameters");
   }
+  const bool white_sky = !b.lambertian() && r.choice("reflectance", {"white-sky", "isotropic"},
+                                                     "white-sky") == "white-sky";
+  if (b.lambertian() && r.has("reflectance"))
+    r.fail("reflectance", "model = \"lambert\" reflects its reflectance whatever it stands for");
   std::uint16_t on = 0b111111011;  // all but water
   if (const toml::node* n =
           r.value("on", "an array of ground material names", "every material but water")) {
@@ -152,6 +156,7 @@ void read_brdf(TableReader& r, GroundMaterials& g) {
   for (std::size_t id = 0; id < g.brdf.size(); ++id)
     if (on & (1u << id)) {
       g.brdf[id] = b;
+      g.brdf_white_sky[id] = white_sky;
       g.brdf_locations[id] = where;
     }
   r.finish();

@@ -31,6 +31,39 @@ Scene hazy(Scene s) {
   return s;
 }
 
+// docs/GROUND.md "Reflectance models": a bare cell of a ground model reflects, traced forward
+// from the light, the directional-hemispherical reflectance under the sun and the white-sky
+// albedo under an isotropic sky that the model's quadrature gives; scaled to the white sky, the
+// latter is the material's reflectance.
+TEST(EnergyBudget, AGroundModelReflectsItsDirectionalAndWhiteSkyAlbedo) {
+  GroundBrdf rpv;
+  rpv.model = GroundBrdf::Model::rpv;
+  rpv.k = 0.75f;
+  rpv.asymmetry = -0.25f;  // rho_c = rho_0: about twice rho_0 reflected, unscaled
+  GroundBrdf ross;
+  ross.model = GroundBrdf::Model::ross_li;
+  ross.volumetric = 0.5f;
+  ross.geometric = 0.08f;
+  for (GroundBrdf b : {rpv, ross})
+    for (const bool scaled : {false, true}) {
+      if (scaled) normalise_to_white_sky(b);
+      Scene s = bare_cell(0.3, 40.0, 0.0);
+      s.ground.brdf[0] = b;
+      const EnergyBudget sun = measure_energy(s, paths(20000));
+      EXPECT_NEAR(sun.reflected.mean, directional_reflectance(b, 0.3, std::cos(40.0 * kPi / 180.0)),
+                  4.0 * sun.reflected.standard_error)
+          << static_cast<int>(b.model) << " scaled " << scaled;
+      EnergyOptions o = paths(40000);
+      o.illumination = Illumination::isotropic;
+      const EnergyBudget sky = measure_energy(s, o);
+      const double want = scaled ? 0.3 : white_sky_albedo(b, 0.3);
+      EXPECT_NEAR(sky.reflected.mean, want, 4.0 * sky.reflected.standard_error)
+          << static_cast<int>(b.model) << " scaled " << scaled;
+      if (!scaled && b.model == GroundBrdf::Model::rpv) EXPECT_GT(want, 0.5);
+      EXPECT_NEAR(total(sky), 1.0, 1e-5);  // closes path by path (float sums)
+    }
+}
+
 TEST(EnergyBudget, ABareSoilReflectsItsAlbedoAndKeepsTheRest) {
   const EnergyBudget b = measure_energy(bare_cell(0.3, 40.0, 0.0), paths(20000));
   // What the soil keeps is counted where the light arrives; what it reflects leaves, on every

@@ -85,6 +85,7 @@ std::string full_text(const TempDir& dir, const std::string& vegetation_keys) {
          "on = [\"terrain\", \"grass\"]\nbecomes = \"rock\"\ntint = [1.1, 1.0, 0.9]\n\n"
          "[[ground.brdf]]\nmodel = \"rpv\"\nk = 0.9\nasymmetry = -0.1\nhot_spot = 0.05\n"
          "[[ground.brdf]]\nmodel = \"ross-li\"\nvolumetric = 0.3\ngeometric = 0.05\n"
+         "reflectance = \"isotropic\"\n"
          "on = [\"rock\", \"road\"]\n\n"
          "[wind]\nspeed = 4.0\ngust = 2.0\ndirection = 200.0\ngust_scale = 40.0\nphase_groups = "
          "2\n\n"
@@ -204,6 +205,8 @@ TEST(FullScenario, LoadsEveryKey) {
   EXPECT_FLOAT_EQ(s.ground.brdf[1].volumetric, 0.3f);
   EXPECT_FLOAT_EQ(s.ground.brdf[1].geometric, 0.05f);
   EXPECT_EQ(s.ground.brdf[2].model, renderer::GroundBrdf::Model::lambert);
+  EXPECT_TRUE(s.ground.brdf_white_sky[4]);
+  EXPECT_FALSE(s.ground.brdf_white_sky[3]);
   EXPECT_FLOAT_EQ(sh.rules[0].tint.x, 1.1f);
   EXPECT_TRUE(s.ground.detail);
   EXPECT_DOUBLE_EQ(s.ground.soil_moisture, 0.4);
@@ -455,11 +458,12 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
     const bool rpv = name.find("_rpv_") != std::string::npos;
     if (!rpv && name.find("_rli_") == std::string::npos) continue;
     const Scenario r = load_scenario(entry.path());
-    EXPECT_EQ(r.ground.brdf[0].model, rpv ? renderer::GroundBrdf::Model::rpv
-                                          : renderer::GroundBrdf::Model::ross_li)
+    EXPECT_EQ(r.ground.brdf[0].model,
+              rpv ? renderer::GroundBrdf::Model::rpv : renderer::GroundBrdf::Model::ross_li)
         << name;
     EXPECT_EQ(r.ground.brdf[8].model, r.ground.brdf[0].model) << name;
     if (rpv) EXPECT_FLOAT_EQ(r.ground.brdf[0].k, 0.95f) << name;
+    EXPECT_FALSE(r.ground.brdf_white_sky[0]) << name;  // the albedo is rho_0 or f_iso
     ++surfaces;
   }
   EXPECT_EQ(surfaces, 18);

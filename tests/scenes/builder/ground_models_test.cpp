@@ -53,6 +53,19 @@ TEST(GroundModels, OneTableShapesEveryMaterialButWaterAndLaterTablesOverride) {
   EXPECT_FLOAT_EQ(s.ground.brdf[3].geometric, 0.05f);
   EXPECT_EQ(s.ground.brdf_of(2), nullptr);
   EXPECT_NE(s.ground.brdf_of(0), nullptr);
+  // By default the material's reflectance is the white-sky albedo: the model scaled to it.
+  EXPECT_NEAR(renderer::white_sky_albedo(s.ground.brdf[0], 0.25), 0.25, 1e-4);
+  EXPECT_NEAR(renderer::white_sky_albedo(s.ground.brdf[3], 0.25), 0.25, 1e-4);
+}
+
+TEST(GroundModels, AnIsotropicReflectanceIsTheModelsOwnParameter) {
+  const renderer::Scene s = build(base() +
+                                  "[[ground.brdf]]\nmodel = \"rpv\"\nk = 0.9\nasymmetry = -0.1\n"
+                                  "reflectance = \"isotropic\"\n");
+  EXPECT_EQ(s.ground.brdf[0].white_a, 1.0f);
+  EXPECT_EQ(s.ground.brdf[0].white_ab, 0.0f);
+  // RPV with rho_c = rho_0 reflects well above rho_0 overall: its hot-spot term is broad.
+  EXPECT_GT(renderer::white_sky_albedo(s.ground.brdf[0], 0.2), 0.3);
 }
 
 TEST(GroundModels, ThePlainContinuesTheEdgesModelUnlessTheSurroundingsAreNamed) {
@@ -82,6 +95,9 @@ TEST(GroundModels, RefusesWaterOtherModelsKeysAndMoreLightThanArrives) {
   EXPECT_NE(refusal(b + "[[ground.brdf]]\nmodel = \"rpv\"\nvolumetric = 0.1\n")
                 .find("[ground.brdf[0]] volumetric: a Ross-Li weight"),
             std::string::npos);
+  EXPECT_NE(refusal(b + "[[ground.brdf]]\nmodel = \"lambert\"\nreflectance = \"isotropic\"\n")
+                .find("[ground.brdf[0]] reflectance"),
+            std::string::npos);
   EXPECT_NE(refusal(b + "[[ground.brdf]]\nmodel = \"hapke\"\n").find("[ground.brdf[0]] model"),
             std::string::npos);
   EXPECT_NE(refusal(b + "[[ground.brdf]]\nmodel = \"rpv\"\nasymmetry = 1.0\n")
@@ -94,6 +110,11 @@ TEST(GroundModels, RefusesWaterOtherModelsKeysAndMoreLightThanArrives) {
   EXPECT_NE(bright.find("s.toml:"), std::string::npos) << bright;
   EXPECT_NE(bright.find("[[ground.brdf]] on terrain"), std::string::npos) << bright;
   EXPECT_NE(bright.find("more than it receives"), std::string::npos) << bright;
+  // The same model on rock, which this ground does not show, refuses nothing.
+  EXPECT_EQ(refusal(base("[0.9, 0.9, 0.9]") +
+                    "[[ground.brdf]]\nmodel = \"rpv\"\nk = 0.3\nhot_spot = 0.0\n"
+                    "on = [\"rock\"]\n"),
+            "accepted");
   // A milder bowl on a dark soil is fine.
   EXPECT_EQ(refusal(base("[0.1, 0.1, 0.1]") +
                     "[[ground.brdf]]\nmodel = \"rpv\"\nk = 0.7\nhot_spot = 0.0\n"
