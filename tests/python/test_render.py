@@ -95,15 +95,20 @@ def test_an_exception_in_progress_stops_the_render(small_default):
     class Enough(Exception):
         pass
 
+    reports = []
+
     def stop(image, fraction):
+        reports.append(fraction)
         raise Enough()
 
-    start = time.monotonic()
     with pytest.raises(Enough):
         landsim.render(small_default.set("render.spp", 1536), width=320, progress=stop)
     # The whole render would take minutes (320 x 180 x 1536 samples: 160 s on the 2-core VM);
-    # the first report comes after 5% of the tiles and the stop within a tile of it.
-    assert time.monotonic() - start < 40
+    # the first report comes after 5% of the tiles, and a render that went on would report
+    # again (and raise again): one early report is the render stopped there, whatever the
+    # machine's speed.
+    assert len(reports) == 1
+    assert reports[0] < 0.5
 
 
 def test_ctrl_c_cancels_a_set_cleanly_and_resume_finishes_it(tmp_path, small_default):
@@ -111,12 +116,11 @@ def test_ctrl_c_cancels_a_set_cleanly_and_resume_finishes_it(tmp_path, small_def
         "views.0.height", 180)
     timer = threading.Timer(1.0, _thread.interrupt_main)
     timer.start()
-    start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
         landsim.render_set(slow, tmp_path)
     timer.cancel()
-    # The whole render would take minutes; the stop comes within a tile (about a second).
-    assert time.monotonic() - start < 60
+    # The whole render would take minutes; a render that ignored the interrupt and finished
+    # would have written its manifest before Python raised it.
     assert not (tmp_path / "manifest.json").exists()
     assert not (tmp_path / "crater.exr").exists()
     # The same set, quick, renders into the folder afterwards.
