@@ -293,6 +293,9 @@ struct RenderSettings {
   // transmittance, surface radiance, direct and diffuse irradiance; each sample traces one
   // more path for the diffuse irradiance.
   bool atmosphere_layers = false;
+  // Illumination truth per pixel (renderer/output/illumination_layers.h): sunlit and the
+  // sky-view factor; one shadow ray and a few sky rays more at each sample's first surface.
+  bool illumination_layers = false;
 };
 
 // One unique tree (a species variant), stored once and instanced many times.

@@ -4,6 +4,7 @@
 #include <array>
 #include <numbers>
 
+#include "renderer/output/illumination_layers.h"
 #include "renderer/output/image_output.h"
 #include "renderer/scene.h"
 #include "renderer/spectra/spectral_colour.h"
@@ -12,7 +13,7 @@
 namespace landsim::renderer {
 namespace {
 
-static_assert(kMaxLayers == kMaxBands + kAtmosphereParts * (3 + kMaxBands),
+static_assert(kMaxLayers == kMaxBands + kAtmosphereParts * (3 + kMaxBands) + kIlluminationLayers,
               "a sample's planes (renderer/transport/integrator.h) hold every part");
 
 constexpr std::array<const char*, kAtmosphereParts> kPartNames = {"path", "transmittance",

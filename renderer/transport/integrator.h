@@ -27,9 +27,10 @@ struct FirstHit {
 // Sensor bands a sample is also measured in (renderer/scene.h SpectralBand); at most this
 // many per image set.
 inline constexpr int kMaxBands = 8;
-// The film planes a sample fills beyond RGB: the bands, and with the atmosphere's parts
-// (renderer/output/atmosphere_layers.h) five parts of RGB and every band.
-inline constexpr int kMaxLayers = kMaxBands + 5 * (3 + kMaxBands);
+// The film planes a sample fills beyond RGB: the bands, with the atmosphere's parts
+// (renderer/output/atmosphere_layers.h) five parts of RGB and every band, and with the
+// illumination truth (renderer/output/illumination_layers.h) three planes.
+inline constexpr int kMaxLayers = kMaxBands + 5 * (3 + kMaxBands) + 3;
 
 struct PathSample {
   Vec3f radiance;  // linear Rec. 709, Y in cd/m2

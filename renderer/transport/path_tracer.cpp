@@ -2,6 +2,7 @@
 
 #include "renderer/atmosphere/single_scattered_sky.h"
 
+#include "renderer/output/illumination_layers.h"
 #include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/detail/sample_dimensions.h"
 #include "renderer/transport/glossy.h"
@@ -84,6 +85,20 @@ bool PathTracer::wants_table(const Scene& scene) {
          scene.haze.scattering == HazeScattering::table && scene.settings.max_bounces != 0;
 }
 
+namespace {
+
+// The film plane the illumination truth starts at: after the bands and the atmosphere's parts.
+int illumination_plane(const Scene& scene) {
+  if (!scene.settings.illumination_layers) return -1;
+  const int bands = std::min(static_cast<int>(scene.bands.size()), kMaxBands);
+  return bands + (scene.settings.atmosphere_layers ? kAtmosphereParts * (3 + bands) : 0);
+}
+
+// Sky rays per sample for the sky-view factor: about 64 a pixel over its samples.
+constexpr int kSkyViewRaysPerPixel = 64;
+
+}  // namespace
+
 bool PathTracer::wants_radiance_model(const Scene& scene) {
   return scene.sky.model == SkyKind::atmosphere && scene.haze.enabled && scene.haze.column &&
          scene.haze.scattering == HazeScattering::paths && scene.haze.control_variate &&
@@ -106,6 +121,7 @@ PathTracer::PathTracer(const Scene& scene, const EmbreeScene& embree,
       seen_bins_(seen_bins(scene)),
       bounce_limit_(scene.settings.max_bounces < 0 ? kSafetyBounces : scene.settings.max_bounces),
       atmosphere_(scene.sky.model == SkyKind::atmosphere && medium_.enabled()),
+      illumination_plane_(illumination_plane(scene)),
       ground_below_(plain_.present || scene.periodic.has_value()),
       table_(!wants_table(scene) ? nullptr
              : table             ? std::move(table)
@@ -385,6 +401,37 @@ Spectrum PathTracer::radiance(const Ray& camera_ray, const CounterRng& rng, std:
   return radiance;
 }
 
+void PathTracer::illumination_at(const ShadingPoint& v, const SurfaceMaterial& m,
+                                 const CounterRng& rng, std::uint32_t mask, PathSample& out) const {
+  float* planes = out.bands.data() + illumination_plane_;
+  planes[static_cast<int>(IlluminationLayer::surface)] = 1.0f;
+  // Sunlit: the sun's centre open from the side it shines on, which must be the side seen or,
+  // for leaves and grass (lit through), either.
+  const Vec3f& sun = sun_direction_;
+  const bool front = dot(v.n, sun) > 0.0f && dot(v.ng, sun) > 0.0f;
+  const bool through = m.two_sided() && dot(v.ng, sun) < 0.0f;
+  if (front || through) {
+    ++out.rays;
+    if (!occluded({offset_point(v, front ? v.ng : -v.ng), sun}, mask))
+      planes[static_cast<int>(IlluminationLayer::sunlit)] = 1.0f;
+  }
+  // Sky view: cosine-distributed directions about the normal seen, stratified over the
+  // pixel's samples by their Sobol points; a direction reaches the sky above the horizon.
+  const int rays = std::max(1, kSkyViewRaysPerPixel / std::max(1, scene_.settings.spp));
+  const Vec3f origin = offset_point(v, v.ng);
+  int open = 0;
+  for (int k = 0; k < rays; ++k) {
+    const std::array<float, 2> u =
+        rng.uniform2(kIlluminationDimensions + 2 * static_cast<std::uint32_t>(k));
+    const Vec3f d = sample_cosine(v.n, u[0], u[1]);
+    if (!(dot(v.ng, d) > 0.0f) || !(d.z > 0.0f)) continue;
+    ++out.rays;
+    if (!occluded({origin, d}, mask)) ++open;
+  }
+  planes[static_cast<int>(IlluminationLayer::sky_view)] =
+      static_cast<float>(open) / static_cast<float>(rays);
+}
+
 void PathTracer::irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const SunRay& sun,
                                const CounterRng& rng, std::uint32_t mask, PathSample& out,
                                AtmosphereSample& parts) const {
@@ -539,6 +586,7 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     Spectrum direct = sun_light(v, bsdf, sm, sun[0], sun[1], seen, sun_roulette, out.rays, sun_ray);
     const bool sunlit = sun_ray.open;
     if (parts != nullptr && first) irradiance_at(v, ray.direction, sun_ray, rng, mask, out, *parts);
+    if (illumination_plane_ >= 0 && first) illumination_at(v, m, rng, mask, out);
     // Where the sun finds the first vertex open, the sky most likely does too: its skylight
     // is the closed-form model's plus the Monte Carlo estimate of what differs (the choice
     // depends on the sun's ray alone, not on the sky's samples: unbiased). Not for leaves and

@@ -107,6 +107,14 @@ class PathTracer : public Integrator {
   // The direct and diffuse irradiance on the side of `v` facing the camera ray `incoming`: the
   // sun along the vertex's own sun ray `sun` (its shadow ray reused where sun_light traced it
   // from that side), the rest by one path from a cosine-distributed direction.
+  // Illumination truth at the camera path's first surface (renderer/output/
+  // illumination_layers.h), written to out.bands from illumination_plane_: whether the sun's
+  // centre lights it, and the share of cosine-distributed directions about its normal that
+  // reach the sky.
+  void illumination_at(const ShadingPoint& v, const SurfaceMaterial& m, const CounterRng& rng,
+                       std::uint32_t mask, PathSample& out) const;
+  // Its random numbers: above the diffuse irradiance path's (kIrradianceDimensions + a path).
+  static constexpr std::uint32_t kIlluminationDimensions = (1u << 31) + (1u << 30);
   void irradiance_at(const ShadingPoint& v, const Vec3f& incoming, const SunRay& sun,
                      const CounterRng& rng, std::uint32_t mask, PathSample& out,
                      AtmosphereSample& parts) const;
@@ -205,6 +213,8 @@ class PathTracer : public Integrator {
   BinSet seen_;            // the same as indices
   int bounce_limit_;
   bool atmosphere_ = false;  // SkyKind::atmosphere: the sky is the medium's light
+  // The first film plane of the illumination truth; -1: not asked for.
+  int illumination_plane_ = -1;
   // Every ray below the horizon meets the ground (the plain, or a periodic cell's ground): no
   // sky is seen below it.
   bool ground_below_ = false;

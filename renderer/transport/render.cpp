@@ -17,6 +17,7 @@
 #include "renderer/acceleration/stochastic_lod.h"
 #include "renderer/camera.h"
 #include "renderer/output/atmosphere_layers.h"
+#include "renderer/output/illumination_layers.h"
 #include "renderer/output/image_output.h"
 #include "renderer/spectra/colour_matching.h"
 #include "renderer/transport/comparable_tracer.h"
@@ -356,6 +357,8 @@ Film make_film(const Scene& scene, const View& view) {
   for (const SpectralBand& b : scene.bands) names.push_back(b.name);
   if (scene.settings.atmosphere_layers)
     for (std::string& name : atmosphere_layer_names(scene.bands)) names.push_back(std::move(name));
+  if (scene.settings.illumination_layers)
+    for (std::string& name : illumination_layer_names()) names.push_back(std::move(name));
   return Film(view.width, view.height, std::move(names));
 }
 

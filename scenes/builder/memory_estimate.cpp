@@ -21,6 +21,7 @@
 #include "renderer/acceleration/memory_model.h"
 #include "renderer/materials/grass_patch.h"
 #include "renderer/output/atmosphere_layers.h"
+#include "renderer/output/illumination_layers.h"
 #include "renderer/output/image_io.h"
 #include "scenes/builder/detail/camera_check.h"
 #include "scenes/builder/detail/context_terrain.h"
@@ -274,9 +275,10 @@ static double film_pixel_bytes(const Scenario& s) {
   const double atmosphere = s.render.atmosphere_layers
                                 ? (renderer::kAtmosphereParts + 1.0) * (3.0 + bands + channels)
                                 : 0.0;
+  const double illumination = s.render.illumination_layers ? renderer::kIlluminationLayers : 0.0;
   const double sensor = channels > 0.0 ? channels * (4.0 + 2.0) + 2.0 * 8.0 * 1.2 : 0.0;
-  return mm::kFilmPixel + mm::kFilmBandPixel * (bands + channels + reflectance + atmosphere) +
-         sensor;
+  return mm::kFilmPixel +
+         mm::kFilmBandPixel * (bands + channels + reflectance + atmosphere + illumination) + sensor;
 }
 
 MemoryEstimate estimate_memory(const Scenario& s, VariantCache* keep,

@@ -323,6 +323,7 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.exposure_ev100 = scenario.render.exposure_ev100;
   scene.settings.degradation = scenario.render.degradation;
   scene.settings.atmosphere_layers = scenario.render.atmosphere_layers;
+  scene.settings.illumination_layers = scenario.render.illumination_layers;
   for (const BandSettings& b : scenario.bands)
     scene.bands.push_back(renderer::sensor_band(b.name, b.response));
   // The sensor's channels, in photons (docs/SENSOR.md), after the bands.

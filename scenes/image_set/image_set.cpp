@@ -15,6 +15,7 @@
 #include "renderer/camera.h"
 #include "renderer/output/atmosphere_layers.h"
 #include "renderer/output/exposure.h"
+#include "renderer/output/illumination_layers.h"
 #include "renderer/output/image_io.h"
 #include "renderer/output/image_output.h"
 #include "renderer/output/object_truth.h"
@@ -185,6 +186,7 @@ nlohmann::json add_light_and_sensor(const SetRun& run, const renderer::Scene& sc
   if (run.scenario.render.reflectance) renderer::add_reflectance(film, irradiance);
   if (run.scenario.render.atmosphere_layers)
     renderer::finish_atmosphere_layers(film, static_cast<int>(scene.bands.size()));
+  if (run.scenario.render.illumination_layers) renderer::finish_illumination_layers(film);
   const std::optional<renderer::SensorModel>& sensor = run.scenario.views[image.view].sensor;
   if (sensor && run.writes_files()) {
     const renderer::View& view = scene.views[image.view];

@@ -90,6 +90,9 @@ struct RenderSection {
   // path radiance, transmittance, surface radiance, direct and diffuse irradiance and the
   // surface's reflectance factor, for RGB, every band and channel.
   bool atmosphere_layers = false;
+  // Illumination truth per pixel (docs/OUTPUTS.md "Illumination truth"): sunlit and the
+  // sky-view factor.
+  bool illumination_layers = false;
 };
 
 struct WindSettings {

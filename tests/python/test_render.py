@@ -161,3 +161,19 @@ def test_a_file_that_is_not_a_landsim_image_is_refused_by_name(tmp_path):
     with pytest.raises(landsim.ScenarioError) as e:
         landsim.read_image_set(tmp_path)
     assert "manifest.json" in str(e.value)
+
+
+def test_illumination_truth_marks_shade_and_sky(small_default):
+    # docs/OUTPUTS.md "Illumination truth": the default scene's low sun leaves shade behind its
+    # trees and slopes; the sky's pixels hold no surface.
+    image = landsim.render(small_default.copy().set("render.illumination_layers", True))
+    sunlit = image.layers["illumination.sunlit"]
+    sky_view = image.layers["illumination.sky_view"]
+    surface = image.layers["illumination.surface"]
+    seen = surface > 0
+    assert seen.any() and (~seen).any()
+    assert np.isnan(sunlit[~seen]).all() and np.isnan(sky_view[~seen]).all()
+    assert ((sunlit[seen] >= 0) & (sunlit[seen] <= 1)).all()
+    assert ((sky_view[seen] >= 0) & (sky_view[seen] <= 1)).all()
+    assert (sunlit[seen] == 0).any() and (sunlit[seen] == 1).any()
+    assert (sky_view[seen] < 0.9).any()

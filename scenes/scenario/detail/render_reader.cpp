@@ -84,6 +84,7 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.max_memory = r.byte_size("max_memory");
   s.reflectance = r.boolean("reflectance", s.reflectance);
   s.atmosphere_layers = r.boolean("atmosphere_layers", s.atmosphere_layers);
+  s.illumination_layers = r.boolean("illumination_layers", s.illumination_layers);
   read_formats(r, s);
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");

@@ -375,7 +375,7 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "\"\n[sun]\nelevation = 30\nazimuth = 200\n"
       "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\ntarget = [300.0, 400.0, 150.0]\n"
       "sensor = { exposure_time = 0.002 }\n[render]\nreflectance = true\n"
-      "atmosphere_layers = true\nnoise_threshold = "
+      "atmosphere_layers = true\nillumination_layers = true\nnoise_threshold = "
       "0.05\nmin_spp = 8\n";
   const std::string sensor = sensor_view +
                              "[sensor]\nchannels = \"xyz\"\nquantum_efficiency = 0.5\n"
@@ -386,6 +386,7 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
                              "natural_vignetting = true\nlens_vignetting = [-0.1, 0.0, 0.0]\n";
   const Scenario with_sensor = load_scenario(f.dir.write("sensor.toml", sensor));
   EXPECT_DOUBLE_EQ(*with_sensor.views[0].sensor->exposure_time_s, 0.002);
+  EXPECT_TRUE(with_sensor.render.illumination_layers);
   EXPECT_EQ(with_sensor.views[0].sensor->black_level_dn, 64);
   EXPECT_TRUE(with_sensor.views[0].sensor->vignetting.natural);
   EXPECT_TRUE(with_sensor.render.atmosphere_layers);
