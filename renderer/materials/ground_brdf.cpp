@@ -113,33 +113,7 @@ namespace {
 // Incidences of the white-sky average: midpoints in the cosine, weight 2 mu dmu.
 constexpr int kIncidences = 48;
 
-// The white-sky means of the factor's two parts, a (clamped at zero) and a x b, over rho
-// (rho_c drops out: the model unscaled, at rho_c = 1 the b part vanishes).
-void white_sky_parts(const GroundBrdf& brdf, double& mean_a, double& mean_ab) {
-  GroundBrdf raw = brdf;
-  raw.white_a = 1.0f;
-  raw.white_ab = 0.0f;
-  raw.hot_spot = 1.0f;  // factor = a
-  GroundBrdf ab = raw;
-  ab.hot_spot = 0.0f;  // factor = a (1 + b)
-  mean_a = mean_ab = 0.0;
-  for (int i = 0; i < kIncidences; ++i) {
-    const double mu = (i + 0.5) / kIncidences;
-    const double a = directional_reflectance(raw, 1.0, mu);
-    mean_a += 2.0 * mu * a / kIncidences;
-    mean_ab += 2.0 * mu * (directional_reflectance(ab, 1.0, mu) - a) / kIncidences;
-  }
-}
-
 }  // namespace
-
-void normalise_to_white_sky(GroundBrdf& brdf) {
-  if (brdf.lambertian()) return;
-  double a = 0.0, ab = 0.0;
-  white_sky_parts(brdf, a, ab);
-  brdf.white_a = static_cast<float>(a);
-  brdf.white_ab = static_cast<float>(ab);
-}
 
 double white_sky_albedo(const GroundBrdf& brdf, double rho) {
   double sum = 0.0;
@@ -148,6 +122,21 @@ double white_sky_albedo(const GroundBrdf& brdf, double rho) {
     sum += 2.0 * mu * directional_reflectance(brdf, rho, mu) / kIncidences;
   }
   return sum;
+}
+
+// The white-sky means of the factor's two parts, a (clamped at zero) and a x b, taken from
+// the unscaled model at rho = 1 with rho_c = 1 (the b part vanishes) and rho_c = 0.
+void normalise_to_white_sky(GroundBrdf& brdf) {
+  if (brdf.lambertian()) return;
+  GroundBrdf raw = brdf;
+  raw.white_a = 1.0f;
+  raw.white_ab = 0.0f;
+  raw.hot_spot = 1.0f;  // factor = a
+  GroundBrdf ab = raw;
+  ab.hot_spot = 0.0f;  // factor = a (1 + b)
+  const double mean_a = white_sky_albedo(raw, 1.0);
+  brdf.white_a = static_cast<float>(mean_a);
+  brdf.white_ab = static_cast<float>(white_sky_albedo(ab, 1.0) - mean_a);
 }
 
 PeakReflectance peak_reflectance(const GroundBrdf& brdf, double rho) {

@@ -33,6 +33,7 @@ struct GroundBrdf {
   float white_a = 1.0f;
   float white_ab = 0.0f;
   bool lambertian() const { return model == Model::lambert; }
+  bool operator==(const GroundBrdf&) const = default;
 };
 
 // The model's angular factors for one pair of directions: the BRDF at reflectance rho is

@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "renderer/output/atmosphere_layers.h"
+
 namespace landsim::renderer {
 namespace {
 
@@ -18,6 +20,11 @@ int plane_of(const Film& film, const std::string& name) {
 
 std::vector<std::string> illumination_layer_names() {
   return {"illumination.sunlit", "illumination.sky_view", "illumination.surface"};
+}
+
+int illumination_layer(IlluminationLayer layer, int band_count, bool atmosphere_layers) {
+  const int atmosphere = atmosphere_layers ? kAtmosphereParts * (3 + band_count) : 0;
+  return band_count + atmosphere + static_cast<int>(layer);
 }
 
 void finish_illumination_layers(Film& film) {

@@ -19,6 +19,9 @@ inline constexpr int kIlluminationLayers = 3;
 // The planes' names, in film order: "illumination.sunlit", "illumination.sky_view", and
 // "illumination.surface" (the share of the pixel's samples that met a surface).
 std::vector<std::string> illumination_layer_names();
+// The film plane of `layer`: after the scene's `band_count` bands and, with
+// `atmosphere_layers`, the atmosphere's parts (make_film's order).
+int illumination_layer(IlluminationLayer layer, int band_count, bool atmosphere_layers);
 
 // After the samples: sunlit and sky_view over the surface share (NaN where no sample met a
 // surface). The film must hold the three planes.

@@ -21,15 +21,6 @@ float lambert_weight(const SurfaceMaterial& m, const ShadingFrame& f, const Vec3
   return front || back ? std::abs(cos_n) / kPi : 0.0f;
 }
 
-// Lambertian reflection or transmission toward `l` in RGB or per wavelength bin.
-template <class Colour>
-Colour lambert(const SurfaceMaterial& m, const ShadingFrame& f, const Vec3f& l, bool& front,
-               const Colour& reflectance, const Colour& transmittance) {
-  const float w = lambert_weight(m, f, l, front);
-  if (w == 0.0f) return {};
-  return (front ? reflectance : transmittance) * w;
-}
-
 // A ground model's reflection: each channel's (or bin's) reflectance times the model's
 // factor at that reflectance (RPV's rho_c may be the reflectance itself), times `w`.
 Spectrum shaped(const GroundBrdf& brdf, const BrdfShape& s, const Spectrum& reflectance, float w) {
@@ -41,6 +32,22 @@ Spectrum shaped(const GroundBrdf& brdf, const BrdfShape& s, const Spectrum& refl
 Vec3f shaped(const GroundBrdf& brdf, const BrdfShape& s, const Vec3f& r, float w) {
   const auto one = [&](float rho) { return rho * brdf_factor(brdf, s, rho) * w; };
   return {one(r.x), one(r.y), one(r.z)};
+}
+
+// A ground model's factors for light from `l` toward the viewer, about the shading normal.
+BrdfShape ground_shape(const GroundBrdf& brdf, const ShadingFrame& f, const Vec3f& l) {
+  return brdf_shape(brdf, dot(f.n, l), dot(f.n, f.wo), dot(l, f.wo));
+}
+
+// Lambertian reflection or transmission toward `l` in RGB or per wavelength bin; a ground
+// model (RPV, Ross-Li) shapes the reflection.
+template <class Colour>
+Colour lambert(const SurfaceMaterial& m, const ShadingFrame& f, const Vec3f& l, bool& front,
+               const Colour& reflectance, const Colour& transmittance) {
+  const float w = lambert_weight(m, f, l, front);
+  if (w == 0.0f) return {};
+  if (!front) return transmittance * w;
+  return m.brdf ? shaped(*m.brdf, ground_shape(*m.brdf, f, l), reflectance, w) : reflectance * w;
 }
 
 }  // namespace
@@ -65,17 +72,7 @@ ObjectLobes object_lobes(const ObjectMaterial& material, const Vec3f& base) {
           std::max(material.roughness * material.roughness, kMinGlossyAlpha)};
 }
 
-// The ground model's factors for light from `l` toward the viewer, about the shading normal.
-BrdfShape Bsdf::shape(const Vec3f& l) const {
-  return brdf_shape(*m_.brdf, dot(f_.n, l), dot(f_.n, f_.wo), dot(l, f_.wo));
-}
-
 Vec3f Bsdf::eval(const Vec3f& l, bool& front) const {
-  if (m_.brdf) {
-    const float w = lambert_weight(m_, f_, l, front);
-    if (w == 0.0f || !front) return {};
-    return shaped(*m_.brdf, shape(l), m_.reflectance, w);
-  }
   if (!m_.glossy()) return lambert(m_, f_, l, front, m_.reflectance, m_.transmittance);
   front = dot(f_.n, l) > 0.0f && dot(f_.ng, l) > 0.0f;
   if (!front) return {};
@@ -87,11 +84,6 @@ Vec3f Bsdf::eval(const Vec3f& l, bool& front) const {
 }
 
 Spectrum Bsdf::eval(const SpectralMaterial& s, const Vec3f& l, bool& front) const {
-  if (m_.brdf) {
-    const float w = lambert_weight(m_, f_, l, front);
-    if (w == 0.0f || !front) return {};
-    return shaped(*m_.brdf, shape(l), s.reflectance, w);
-  }
   if (!m_.glossy()) return lambert(m_, f_, l, front, s.reflectance, s.transmittance);
   front = dot(f_.n, l) > 0.0f && dot(f_.ng, l) > 0.0f;
   if (!front) return {};
@@ -186,7 +178,7 @@ BsdfSample Bsdf::sample_lambert(const SpectralMaterial& s, const BsdfNumbers& u)
   out.side = side;
   // Cosine sampling: f cos / pdf is pi f, the reflectance times a ground model's factor.
   if (m_.brdf && reflect)
-    out.factor = shaped(*m_.brdf, shape(next), s.reflectance, 1.0f);
+    out.factor = shaped(*m_.brdf, ground_shape(*m_.brdf, f_, next), s.reflectance, 1.0f);
   else
     out.factor = reflect ? s.reflectance / p_reflect : s.transmittance / (1.0f - p_reflect);
   out.pdf = pdf(next);

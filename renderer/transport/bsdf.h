@@ -89,7 +89,6 @@ class Bsdf {
   float coat_probability() const;
   BsdfSample sample_glossy(const SpectralMaterial& s, const BsdfNumbers& u) const;
   BsdfSample sample_lambert(const SpectralMaterial& s, const BsdfNumbers& u) const;
-  BrdfShape shape(const Vec3f& l) const;
 
   const SurfaceMaterial& m_;
   ShadingFrame f_;

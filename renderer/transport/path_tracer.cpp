@@ -87,11 +87,12 @@ bool PathTracer::wants_table(const Scene& scene) {
 
 namespace {
 
-// The film plane the illumination truth starts at: after the bands and the atmosphere's parts.
+// The film plane the illumination truth starts at; -1: not asked for.
 int illumination_plane(const Scene& scene) {
   if (!scene.settings.illumination_layers) return -1;
-  const int bands = std::min(static_cast<int>(scene.bands.size()), kMaxBands);
-  return bands + (scene.settings.atmosphere_layers ? kAtmosphereParts * (3 + bands) : 0);
+  return illumination_layer(IlluminationLayer::sunlit,
+                            std::min(static_cast<int>(scene.bands.size()), kMaxBands),
+                            scene.settings.atmosphere_layers);
 }
 
 // Sky rays per sample for the sky-view factor: about 64 a pixel over its samples.

@@ -55,15 +55,11 @@ std::array<bool, renderer::kGroundMaterials> used_materials(const renderer::Grou
 // Each model whose material's reflectance is its white-sky albedo, scaled to it (once per
 // distinct model: the quadrature takes some 30 ms).
 void scale_to_white_sky(const Scenario& s, renderer::Ground& ground) {
-  const auto same = [](const renderer::GroundBrdf& a, const renderer::GroundBrdf& b) {
-    return a.model == b.model && a.k == b.k && a.asymmetry == b.asymmetry &&
-           a.hot_spot == b.hot_spot && a.volumetric == b.volumetric && a.geometric == b.geometric;
-  };
   for (std::size_t id = 0; id < ground.brdf.size(); ++id) {
     if (!s.ground.brdf_white_sky[id]) continue;
     std::size_t earlier = 0;
     while (earlier < id &&
-           !(s.ground.brdf_white_sky[earlier] && same(s.ground.brdf[earlier], s.ground.brdf[id])))
+           !(s.ground.brdf_white_sky[earlier] && s.ground.brdf[earlier] == s.ground.brdf[id]))
       ++earlier;
     if (earlier < id)
       ground.brdf[id] = ground.brdf[earlier];

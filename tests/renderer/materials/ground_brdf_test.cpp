@@ -226,8 +226,8 @@ TEST(GroundBrdf, ASampledDirectionWeighsItsBrdfOverItsDensity) {
   const Vec3f up{0.0f, 0.0f, 1.0f};
   const Bsdf bsdf(m, {up, up, direction(50.0, 90.0)});
   for (int i = 0; i < 16; ++i) {
-    const BsdfSample out =
-        bsdf.sample(s, -direction(50.0, 90.0), 0.0f, {0.0f, (i + 0.5f) / 16.0f, 0.37f});
+    const BsdfSample out = bsdf.sample(s, -direction(50.0, 90.0), 0.0f,
+                                       {0.0f, (static_cast<float>(i) + 0.5f) / 16.0f, 0.37f});
     ASSERT_EQ(out.kind, BsdfSample::Kind::scattered);
     bool front = false;
     const Spectrum f = bsdf.eval(s, out.direction, front);

@@ -59,7 +59,9 @@ TEST(EnergyBudget, AGroundModelReflectsItsDirectionalAndWhiteSkyAlbedo) {
       const double want = scaled ? 0.3 : white_sky_albedo(b, 0.3);
       EXPECT_NEAR(sky.reflected.mean, want, 4.0 * sky.reflected.standard_error)
           << static_cast<int>(b.model) << " scaled " << scaled;
-      if (!scaled && b.model == GroundBrdf::Model::rpv) EXPECT_GT(want, 0.5);
+      if (!scaled && b.model == GroundBrdf::Model::rpv) {
+        EXPECT_GT(want, 0.5);
+      }
       EXPECT_NEAR(total(sky), 1.0, 1e-5);  // closes path by path (float sums)
     }
 }

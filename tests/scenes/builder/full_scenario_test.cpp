@@ -463,7 +463,9 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
               rpv ? renderer::GroundBrdf::Model::rpv : renderer::GroundBrdf::Model::ross_li)
         << name;
     EXPECT_EQ(r.ground.brdf[8].model, r.ground.brdf[0].model) << name;
-    if (rpv) EXPECT_FLOAT_EQ(r.ground.brdf[0].k, 0.95f) << name;
+    if (rpv) {
+      EXPECT_FLOAT_EQ(r.ground.brdf[0].k, 0.95f) << name;
+    }
     EXPECT_FALSE(r.ground.brdf_white_sky[0]) << name;  // the albedo is rho_0 or f_iso
     ++surfaces;
   }

@@ -5,6 +5,7 @@
 
 #include "core/input_error.h"
 #include "scenes/scenario/scenario.h"
+#include "tests/support/input_error_of.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -26,12 +27,7 @@ Scenario load(const std::string& text) {
 }
 
 std::string error_of(const std::string& text) {
-  try {
-    load(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return landsim::testing::input_error_of([&] { load(text); });
 }
 
 TEST(AtmosphereReader, ReadsTheMoleculesAndTheAerosolLayer) {

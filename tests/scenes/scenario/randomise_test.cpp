@@ -12,6 +12,7 @@
 
 #include "core/input_error.h"
 #include "scenes/image_set/image_set.h"
+#include "tests/support/input_error_of.h"
 #include "tests/support/rendered_set.h"
 #include "tests/support/temp_dir.h"
 
@@ -32,12 +33,7 @@ Scenario with(const std::string& randomise) {
 }
 
 std::string refusal(const std::string& randomise) {
-  try {
-    with(randomise);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return landsim::testing::input_error_of([&] { with(randomise); });
 }
 
 // The value after '=' of the draw for `key`.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "tests/support/input_error_of.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -25,12 +26,7 @@ Scenario with(const std::vector<std::string>& sets) {
 }
 
 std::string refusal(const std::vector<std::string>& sets) {
-  try {
-    with(sets);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return landsim::testing::input_error_of([&] { with(sets); });
 }
 
 TEST(ScenarioOverrides, SetKeysWinOverTheFileAndCreateTables) {

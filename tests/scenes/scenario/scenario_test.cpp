@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
+#include "tests/support/input_error_of.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -38,12 +39,7 @@ std::string error_of(const std::string& text, std::string* file_out = nullptr) {
   TempDir dir;
   const auto file = dir.write("scene.toml", text);
   if (file_out) *file_out = file.string();
-  try {
-    load_scenario(file);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return landsim::testing::input_error_of([&] { load_scenario(file); });
 }
 
 TEST(Scenario, LoadsEveryKey) {
@@ -180,9 +176,9 @@ TEST(Scenario, SkyModelsAndTheirTurbidityRanges) {
   EXPECT_NE(error_of(scenario_text() + "\n[sky]\nmodel = \"perez\"").find("hosek-wilkie"),
             std::string::npos);
   // The gradient's colours: equal, a uniform sky (DISORT's isotropic light); only for it.
-  const renderer::Sky uniform =
-      sky("u.toml", "model = \"gradient\"\nzenith_radiance = [5, 5, 5]\n"
-                    "horizon_radiance = [5, 5, 5]");
+  const renderer::Sky uniform = sky("u.toml",
+                                    "model = \"gradient\"\nzenith_radiance = [5, 5, 5]\n"
+                                    "horizon_radiance = [5, 5, 5]");
   EXPECT_EQ(uniform.zenith_radiance, (Vec3f{5.0f, 5.0f, 5.0f}));
   EXPECT_EQ(uniform.horizon_radiance, (Vec3f{5.0f, 5.0f, 5.0f}));
   const std::string only = error_of(scenario_text() + "\n[sky]\nzenith_radiance = [5, 5, 5]");
