@@ -296,6 +296,12 @@ struct RenderSettings {
   // Illumination truth per pixel (renderer/output/illumination_layers.h): sunlit and the
   // sky-view factor; one shadow ray and a few sky rays more at each sample's first surface.
   bool illumination_layers = false;
+  // Guided paths (renderer/guiding/; docs/PERFORMANCE.md "Guided paths"): training passes
+  // learn where each region's light comes from, and the render's diffuse vertices sample
+  // there as well as by their BSDF. `guiding_training`: the training passes' samples as a
+  // share of the render's (spp x pixels); their image is not kept.
+  bool guiding = false;
+  double guiding_training = 0.125;
 };
 
 // One unique tree (a species variant), stored once and instanced many times.

@@ -79,6 +79,8 @@ class Bsdf {
   float pdf(const Vec3f& dir) const;
   // The water's Fresnel reflectance for a ray arriving along `direction` (0 elsewhere).
   float fresnel(const Vec3f& direction) const;
+  // The geometric normal on the viewer's side (a sampled direction's origin offset).
+  const Vec3f& geometric_normal() const { return f_.ng; }
   // The next direction of a path that arrived along `incoming`: the water's mirror with
   // probability `fresnel`, else the coat or the base (glossy) or reflection or transmission
   // (in proportion to their strength), cosine-weighted.

@@ -207,11 +207,12 @@ Spectrum PathTracer::sun_light(const ShadingPoint& v, const Bsdf& bsdf, const Sp
 Spectrum PathTracer::sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s,
                                float u1, float u2, const Spectrum& throughput,
                                const ShadowRoulette& r, const SkyControl* control,
-                               const SkyPoint* point, std::uint32_t& rays) const {
+                               const SkyPoint* point, const DirectionalTree* tree,
+                               std::uint32_t& rays) const {
   float pdf = 0.0f;
   const Vec3f l = sample_sky(u1, u2, pdf);
   if (pdf <= 0.0f) return {};
-  const float w = power_heuristic(pdf, bsdf.pdf(l)) / pdf;
+  const float w = power_heuristic(pdf, scatter_pdf(bsdf, tree, l)) / pdf;
   const Spectrum model = control ? control_integrand(*control, l) * w : Spectrum{};
   const Spectrum dark = Spectrum{} - model;  // what the estimate is where no sky arrives
   bool front = false;
@@ -383,14 +384,23 @@ PathSample PathTracer::trace(const Ray& camera_ray, const CounterRng& rng,
 Spectrum PathTracer::radiance(const Ray& camera_ray, const CounterRng& rng, std::uint32_t mask,
                               bool sun_disc, PathSample& out, bool sky_single_scattering,
                               AtmosphereSample* parts) const {
-  out.first.depth = kInfinity;
-  Spectrum radiance;
+  return gather(camera_state(camera_ray, sky_single_scattering), rng, mask, sun_disc, out, parts);
+}
+
+PathTracer::PathState PathTracer::camera_state(const Ray& camera_ray, bool sky_single_scattering) {
   PathState camera;
   camera.ray = camera_ray;
   camera.throughput = Spectrum::constant(1.0f);
   // Without the sky's single scattering on the first segment, if it leaves into the sky: as
   // if a vertex had taken it by next-event estimation with a density of its own of zero.
   camera.sky_taken = sky_single_scattering ? PathState::SkyTaken::no : PathState::SkyTaken::whole;
+  return camera;
+}
+
+Spectrum PathTracer::gather(const PathState& camera, const CounterRng& rng, std::uint32_t mask,
+                            bool sun_disc, PathSample& out, AtmosphereSample* parts) const {
+  out.first.depth = kInfinity;
+  Spectrum radiance;
   std::optional<PathState> branch;
   follow(camera, rng, mask, sun_disc, out, radiance, &branch, parts);
   // What the camera path added from its first vertex on (or the sky beyond the air) is the
@@ -470,6 +480,82 @@ void PathTracer::irradiance_at(const ShadingPoint& v, const Vec3f& incoming, con
 void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
                         PathSample& out, Spectrum& radiance, std::optional<PathState>* branch,
                         AtmosphereSample* parts) const {
+  if (path.records == nullptr) {
+    follow_path(path, rng, mask, sun_disc, out, radiance, branch, parts, nullptr);
+    return;
+  }
+  Trail trail;
+  std::vector<GuideRecord>& records = *path.records;
+  follow_path(std::move(path), rng, mask, sun_disc, out, radiance, branch, parts, &trail);
+  record(trail, radiance, records);
+}
+
+void PathTracer::record(const Trail& trail, const Spectrum& radiance,
+                        std::vector<GuideRecord>& out) const {
+  for (int k = 0; k < trail.length; ++k) {
+    const TrailVertex& t = trail.vertex[static_cast<std::size_t>(k)];
+    // What came back along the vertex's direction, per unit throughput, weighed over the
+    // bins an output sees; a control variate's negative remainder learns nothing.
+    const float carried = dot(t.throughput, seen_bins_);
+    if (!(carried > 0.0f)) continue;
+    const float incident = dot(radiance - t.gathered + t.unweighted_sky, seen_bins_) / carried;
+    out.push_back({t.position, t.direction, std::max(0.0f, incident) / t.pdf});
+  }
+}
+
+const DirectionalTree* PathTracer::guide_at(const SurfaceMaterial& m, const Vec3f& p) const {
+  return guide_ && !m.water ? guide_->at(p) : nullptr;
+}
+
+float PathTracer::scatter_pdf(const Bsdf& bsdf, const DirectionalTree* tree, const Vec3f& l) {
+  if (tree == nullptr) return bsdf.pdf(l);
+  return kBsdfShare * bsdf.pdf(l) + (1.0f - kBsdfShare) * tree->pdf(l);
+}
+
+BsdfSample PathTracer::scatter(const Bsdf& bsdf, const DirectionalTree* tree,
+                               const SpectralMaterial& s, const Vec3f& incoming, float fresnel,
+                               const BsdfNumbers& u, float u_strategy) const {
+  if (tree == nullptr) return bsdf.sample(s, incoming, fresnel, u);
+  Vec3f d;
+  if (u_strategy < kBsdfShare) {
+    const BsdfSample drawn = bsdf.sample(s, incoming, fresnel, u);
+    if (drawn.kind != BsdfSample::Kind::scattered) return drawn;
+    d = drawn.direction;
+  } else {
+    float ignored = 0.0f;
+    d = tree->sample(u.choice, u.direction, ignored);
+  }
+  // Either strategy's direction is weighed by the mixture's density, both densities
+  // evaluated at it (one-sample MIS with the balance heuristic).
+  const float pdf = scatter_pdf(bsdf, tree, d);
+  bool front = false;
+  const Spectrum f = bsdf.eval(s, d, front);
+  if (!(pdf > 0.0f) || max_component(f) <= 0.0f) return {};
+  BsdfSample out;
+  out.kind = BsdfSample::Kind::scattered;
+  out.direction = d;
+  out.side = front ? bsdf.geometric_normal() : -bsdf.geometric_normal();
+  out.factor = f;
+  out.divisor = pdf;
+  out.pdf = pdf;
+  return out;
+}
+
+PathSample PathTracer::train(const Ray& camera_ray, const CounterRng& rng, std::uint32_t mask,
+                             std::vector<GuideRecord>& records) const {
+  PathSample out;
+  PathState camera = camera_state(camera_ray, true);
+  camera.records = &records;
+  finish(out, gather(camera, rng, mask, true, out, nullptr));
+  return out;
+}
+
+void PathTracer::follow_path(PathState path, const CounterRng& rng, std::uint32_t mask,
+                             bool sun_disc, PathSample& out, Spectrum& radiance,
+                             std::optional<PathState>* branch, AtmosphereSample* parts,
+                             Trail* trail) const {
+  // The trail's vertex whose direction the current ray is (-1: none, or a haze point turned it).
+  int trail_ray = -1;
   Ray& ray = path.ray;
   Spectrum& throughput = path.throughput;
   float& last_pdf = path.last_pdf;           // pdf of the direction being traced (MIS)
@@ -537,6 +623,7 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
               *branch = next;
             } else {
               path = next;
+              trail_ray = -1;
               --bounce;  // the loop's increment: `next` already counts this vertex
               continue;
             }
@@ -557,7 +644,11 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     if (!hit) {
       // The sky, the haze's light and the aureole are one light (surface_sky), sampled as one.
       const float w = last_specular ? 1.0f : power_heuristic(last_pdf, sky_pdf(ray.direction));
-      radiance += (throughput * sky_.spectral_radiance(ray.direction) + haze_sky) * w;
+      const Spectrum sky = throughput * sky_.spectral_radiance(ray.direction) + haze_sky;
+      radiance += sky * w;
+      // A training vertex learns the whole sky its ray met: where the gaps in a crown are.
+      if (trail_ray >= 0)
+        trail->vertex[static_cast<std::size_t>(trail_ray)].unweighted_sky = sky * (1.0f - w);
       // The sun's disc is seen only along specular paths: every diffuse vertex already took
       // it by next-event estimation.
       if (last_specular && sun_disc)
@@ -568,6 +659,7 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     const SurfaceMaterial m = surface_material(scene_, *hit, v);
     const SpectralMaterial sm = spectral_material(m);
     const Bsdf bsdf(m, v.frame());
+    const DirectionalTree* tree = guide_at(m, v.p);
     if (bounce == 0 && path.dimension_offset == 0) out.first = first_hit(scene_, *hit, v, m);
     const float fresnel = bsdf.fresnel(ray.direction);
     // The roulette sees what reaches the pixel: the throughput and the water's share.
@@ -607,15 +699,17 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
     if (sky_nee)
       point = SkyPoint{rng.uniform2(dim + kSkyPoint), rng.uniform2(dim + kSkySun0), v.mask};
     if (!atmosphere_ || sky_nee)
-      direct += sky_light(v, bsdf, sm, sky[0], sky[1], seen, sky_roulette,
-                          controlled ? &control : nullptr, point ? &*point : nullptr, out.rays);
+      direct +=
+          sky_light(v, bsdf, sm, sky[0], sky[1], seen, sky_roulette,
+                    controlled ? &control : nullptr, point ? &*point : nullptr, tree, out.rays);
     radiance += seen * direct;
 
     // The mirror's number only where there is a mirror (water): a number costs a hash.
     const std::array<float, 2> lobe = rng.uniform2(dim + kChoice);  // choice, direction
     const BsdfSample next =
-        bsdf.sample(sm, ray.direction, fresnel,
-                    {fresnel > 0.0f ? rng.uniform(dim + kFresnel) : 1.0f, lobe[0], lobe[1]});
+        scatter(bsdf, tree, sm, ray.direction, fresnel,
+                {fresnel > 0.0f ? rng.uniform(dim + kFresnel) : 1.0f, lobe[0], lobe[1]},
+                tree ? rng.uniform(dim + kGuide) : 0.0f);
     if (next.kind == BsdfSample::Kind::absorbed) break;
     ray = {offset_point(v, next.side), next.direction};
     last_specular = next.kind == BsdfSample::Kind::mirror;
@@ -629,6 +723,12 @@ void PathTracer::follow(PathState path, const CounterRng& rng, std::uint32_t mas
                                 (power_heuristic(next.pdf, sky_pdf(next.direction)) / next.pdf);
     throughput = throughput * next.factor / next.divisor;
     last_pdf = next.pdf;
+    trail_ray = -1;
+    if (trail != nullptr && trail->length < kTrailLength) {
+      trail_ray = trail->length++;
+      trail->vertex[static_cast<std::size_t>(trail_ray)] = {v.p,        next.direction, next.pdf,
+                                                            throughput, radiance,       {}};
+    }
     if (!survives(throughput, bounce, rng.uniform(dim + kRoulette))) break;
   }
 }

@@ -10,9 +10,11 @@
 // Paths end by Russian roulette on their spectral throughput alone (docs/ATMOSPHERE.md
 // "Paths"); shadow rays after the first vertex are rouletted by their contribution
 // (renderer/transport/shadow_roulette.h).
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/counter_rng.h"
 #include "renderer/acceleration/embree_scene.h"
@@ -21,6 +23,7 @@
 #include "renderer/atmosphere/sky.h"
 #include "renderer/atmosphere/sky_irradiance.h"
 #include "renderer/camera.h"
+#include "renderer/guiding/guiding_field.h"
 #include "renderer/output/atmosphere_layers.h"
 #include "renderer/transport/integrator.h"
 #include "renderer/transport/medium_segment.h"
@@ -65,6 +68,19 @@ class PathTracer : public Integrator {
                     PathSample& out, bool sky_single_scattering = true,
                     AtmosphereSample* parts = nullptr) const;
 
+  // Guided paths (renderer/guiding/guiding_field.h; docs/PERFORMANCE.md "Guided paths"): with
+  // a field, a diffuse surface vertex draws its next direction from the field's directional
+  // tree there or from its BSDF (kBsdfShare of the time), weighed by the mixture's density.
+  // Null: the BSDF alone. Set between passes, never while paths are traced.
+  void guide_by(std::shared_ptr<const GuidingField> field) { guide_ = std::move(field); }
+  // The share of guided vertices that sample their BSDF. The paper's fixed 0.5 gave more noise
+  // than 0.7 on every scene measured (docs/PERFORMANCE.md "Guided paths").
+  static constexpr float kBsdfShare = 0.7f;
+  // A training sample: trace() that also appends, for every diffuse surface vertex of its
+  // paths, what came back along the direction it left in (renderer/guiding/guiding_field.h).
+  PathSample train(const Ray& camera_ray, const CounterRng& rng, std::uint32_t mask,
+                   std::vector<GuideRecord>& records) const;
+
   const SkyModel& sky() const { return sky_; }
   const Medium& medium() const { return medium_; }
 
@@ -84,6 +100,27 @@ class PathTracer : public Integrator {
     SkyTaken sky_taken = SkyTaken::no;
     int bounce = 0;
     std::uint32_t dimension_offset = 0;
+    // Training: where the path's vertices' records go (null: not recorded).
+    std::vector<GuideRecord>* records = nullptr;
+  };
+  // A training path's surface vertices, up to kTrailLength: where each left from, in which
+  // direction with which density, the throughput after it and the radiance the path had
+  // gathered by then (what came back along its direction is the rest, over that throughput).
+  struct TrailVertex {
+    Vec3f position, direction;
+    float pdf = 0.0f;
+    Spectrum throughput, gathered;
+    Spectrum unweighted_sky;  // the sky its own ray met, less the share MIS gave it
+  };
+  static constexpr int kTrailLength = 16;
+  // A camera ray's path state; `sky_single_scattering` as radiance()'s.
+  static PathState camera_state(const Ray& camera_ray, bool sky_single_scattering);
+  // The camera path and its branch from the haze: radiance()'s work.
+  Spectrum gather(const PathState& camera, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
+                  PathSample& out, AtmosphereSample* parts) const;
+  struct Trail {
+    std::array<TrailVertex, kTrailLength> vertex;
+    int length = 0;
   };
   // The sun's shadow ray at a surface vertex, as sun_light traced it: its direction, whether
   // it was traced from the side the vertex was seen from (`front`), whether it found the sun,
@@ -104,6 +141,23 @@ class PathTracer : public Integrator {
   void follow(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
               PathSample& out, Spectrum& radiance, std::optional<PathState>* branch,
               AtmosphereSample* parts = nullptr) const;
+  // follow's loop; `trail` (training) gathers the surface vertices.
+  void follow_path(PathState path, const CounterRng& rng, std::uint32_t mask, bool sun_disc,
+                   PathSample& out, Spectrum& radiance, std::optional<PathState>* branch,
+                   AtmosphereSample* parts, Trail* trail) const;
+  // The trail's records, `radiance` being the path's at its end.
+  void record(const Trail& trail, const Spectrum& radiance, std::vector<GuideRecord>& out) const;
+  // The directional tree guiding a vertex of material `m` at `p`; null: the BSDF alone
+  // (no field, nothing learned there, or a mirror's water).
+  const DirectionalTree* guide_at(const SurfaceMaterial& m, const Vec3f& p) const;
+  // The density the vertex draws its next direction `l` with: its BSDF's, or the mixture of
+  // the BSDF's and the tree's (what the sky's MIS weighs against).
+  static float scatter_pdf(const Bsdf& bsdf, const DirectionalTree* tree, const Vec3f& l);
+  // The vertex's next direction: Bsdf::sample, or with a tree, the mixture's draw weighed by
+  // f cos over the mixture's density (one-sample MIS, Müller et al. 2017 section 4).
+  BsdfSample scatter(const Bsdf& bsdf, const DirectionalTree* tree, const SpectralMaterial& s,
+                     const Vec3f& incoming, float fresnel, const BsdfNumbers& u,
+                     float u_strategy) const;
   // The direct and diffuse irradiance on the side of `v` facing the camera ray `incoming`: the
   // sun along the vertex's own sun ray `sun` (its shadow ray reused where sun_light traced it
   // from that side), the rest by one path from a cosine-distributed direction.
@@ -151,7 +205,8 @@ class PathTracer : public Integrator {
   };
   Spectrum sky_light(const ShadingPoint& v, const Bsdf& bsdf, const SpectralMaterial& s, float u1,
                      float u2, const Spectrum& throughput, const ShadowRoulette& r,
-                     const SkyControl* control, const SkyPoint* point, std::uint32_t& rays) const;
+                     const SkyControl* control, const SkyPoint* point, const DirectionalTree* tree,
+                     std::uint32_t& rays) const;
   // The one atmosphere's single scattering along the sky ray from `origin` toward `l`: one
   // point drawn on it, the sun by a shadow ray from there.
   Spectrum atmosphere_sky(const Vec3f& origin, const Vec3f& l, const SkyPoint& point,
@@ -230,6 +285,8 @@ class PathTracer : public Integrator {
   // The sky surfaces see (surface_sky from the plain's height), cell by cell: the control
   // variate of open surfaces' skylight. Null where the sky is dark.
   std::optional<SkyIrradiance> sky_model_;
+  // Guided paths' field; null: unguided.
+  std::shared_ptr<const GuidingField> guide_;
 };
 
 }  // namespace landsim::renderer

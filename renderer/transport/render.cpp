@@ -22,6 +22,7 @@
 #include "renderer/spectra/colour_matching.h"
 #include "renderer/transport/comparable_tracer.h"
 #include "renderer/transport/detail/sample_dimensions.h"
+#include "renderer/transport/guide_training.h"
 #include "renderer/transport/path_tracer.h"
 #include "renderer/transport/radiance_model.h"
 #include "renderer/transport/scattering_table.h"
@@ -254,8 +255,17 @@ ViewRenderer::ViewRenderer(const Renderer& renderer, const View& view, const Ren
       renderer.haze_table_ = ScatteringTable::build(scene_);
     if (PathTracer::wants_radiance_model(scene_) && !renderer.radiance_model_)
       renderer.radiance_model_ = RadianceModel::build(scene_);
-    state_->tracer = std::make_unique<PathTracer>(scene_, embree, renderer.haze_table_,
-                                                  renderer.radiance_model_);
+    auto tracer = std::make_unique<PathTracer>(scene_, embree, renderer.haze_table_,
+                                               renderer.radiance_model_);
+    if (scene_.settings.guiding) {
+      GuideTrainingStats trained;
+      train_guiding(*tracer, state_->camera, view, scene_.settings, options.threads, &trained);
+      spdlog::info(
+          "guided paths: {} training paths ({} rays, {:.1f} s) learned {} regions, {} "
+          "directional nodes",
+          trained.paths, trained.rays, trained.seconds, trained.regions, trained.directional_nodes);
+    }
+    state_->tracer = std::move(tracer);
   }
   const int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
   state_->arena = std::make_unique<tbb::task_arena>(threads);

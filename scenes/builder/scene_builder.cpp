@@ -324,6 +324,8 @@ renderer::Scene build_scene(const Scenario& scenario, double time, VariantCache*
   scene.settings.degradation = scenario.render.degradation;
   scene.settings.atmosphere_layers = scenario.render.atmosphere_layers;
   scene.settings.illumination_layers = scenario.render.illumination_layers;
+  scene.settings.guiding = scenario.render.guiding;
+  scene.settings.guiding_training = scenario.render.guiding_training;
   for (const BandSettings& b : scenario.bands)
     scene.bands.push_back(renderer::sensor_band(b.name, b.response));
   // The sensor's channels, in photons (docs/SENSOR.md), after the bands.

@@ -93,6 +93,9 @@ struct RenderSection {
   // Illumination truth per pixel (docs/OUTPUTS.md "Illumination truth"): sunlit and the
   // sky-view factor.
   bool illumination_layers = false;
+  // Guided paths (docs/PERFORMANCE.md "Guided paths") and their training's share of samples.
+  bool guiding = renderer::RenderSettings{}.guiding;
+  double guiding_training = renderer::RenderSettings{}.guiding_training;
 };
 
 struct WindSettings {

@@ -34,6 +34,7 @@ enum Dim : std::uint32_t {
   kHazeContinue,  // whether the path goes on from the haze point or through to the surface
   kRoulette,
   kFresnel,  // a surface's mirror choice, or which haze component scatters
+  kGuide,    // guided paths: the guiding tree's direction or the BSDF's
   // The one atmosphere's sky at a surface: the scattering point on the sky ray (bin,
   // distance) and the sun's direction from it.
   kSkyPoint = 20,

@@ -188,6 +188,8 @@ nlohmann::json settings_json(const Scenario& s, const renderer::Scene& scene) {
         {"max_bounces", s.render.max_bounces},
         {"season", kSeasons[static_cast<int>(s.render.season)]},
         {"degradation", s.render.degradation},
+        {"guiding", s.render.guiding},
+        {"guiding_training", s.render.guiding_training},
         {"quality", s.render.quality},
         {"exposure_ev100", s.render.exposure_ev100 ? nlohmann::json(*s.render.exposure_ev100)
                                                    : nlohmann::json("auto")}}}};

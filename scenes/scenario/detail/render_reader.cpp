@@ -85,6 +85,8 @@ RenderSection read_render(const toml::table& t, const std::string& file) {
   s.reflectance = r.boolean("reflectance", s.reflectance);
   s.atmosphere_layers = r.boolean("atmosphere_layers", s.atmosphere_layers);
   s.illumination_layers = r.boolean("illumination_layers", s.illumination_layers);
+  s.guiding = r.boolean("guiding", s.guiding);
+  s.guiding_training = r.number("guiding_training", Range{0.01, 1.0}, s.guiding_training);
   read_formats(r, s);
   if (r.has("frames")) {
     const toml::node* n = t.get("frames");

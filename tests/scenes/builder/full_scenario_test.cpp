@@ -376,7 +376,7 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
       "[[views]]\nname = \"v\"\nposition = [300.0, 100.0, 300.0]\ntarget = [300.0, 400.0, 150.0]\n"
       "sensor = { exposure_time = 0.002 }\n[render]\nreflectance = true\n"
       "atmosphere_layers = true\nillumination_layers = true\nnoise_threshold = "
-      "0.05\nmin_spp = 8\n";
+      "0.05\nmin_spp = 8\nguiding = true\nguiding_training = 0.2\n";
   const std::string sensor = sensor_view +
                              "[sensor]\nchannels = \"xyz\"\nquantum_efficiency = 0.5\n"
                              "pixel_pitch = 4.0\nexposure_time = \"auto\"\nf_number = 5.6\n"
@@ -387,6 +387,8 @@ TEST(FullScenario, EveryDocumentedKeyIsExercised) {
   const Scenario with_sensor = load_scenario(f.dir.write("sensor.toml", sensor));
   EXPECT_DOUBLE_EQ(*with_sensor.views[0].sensor->exposure_time_s, 0.002);
   EXPECT_TRUE(with_sensor.render.illumination_layers);
+  EXPECT_TRUE(with_sensor.render.guiding);
+  EXPECT_DOUBLE_EQ(with_sensor.render.guiding_training, 0.2);
   EXPECT_EQ(with_sensor.views[0].sensor->black_level_dn, 64);
   EXPECT_TRUE(with_sensor.views[0].sensor->vignetting.natural);
   EXPECT_TRUE(with_sensor.render.atmosphere_layers);

@@ -184,6 +184,16 @@ TEST(SceneBuilder, AdaptiveSamplingKeys) {
   refused("min_spp = 4\n", "give noise_threshold");
   refused("spp = 16\nnoise_threshold = 0.1\nmin_spp = 32\n", "min_spp");
   refused("noise_threshold = 2\n", "noise_threshold");
+  // Guided paths: the setting reaches the renderer; a training share beyond the render's
+  // samples, or none, is refused at its key.
+  const renderer::Scene guided =
+      build_scene(parse_scenario(text("guiding = true\nguiding_training = 0.25\n"), "g.toml", "."));
+  EXPECT_TRUE(guided.settings.guiding);
+  EXPECT_DOUBLE_EQ(guided.settings.guiding_training, 0.25);
+  EXPECT_FALSE(build_scene(parse_scenario(text("spp = 8\n"), "h.toml", ".")).settings.guiding);
+  refused("guiding_training = 2\n", "guiding_training");
+  refused("guiding_training = 0\n", "guiding_training");
+  refused("guiding = 1\n", "guiding");
 }
 
 }  // namespace
