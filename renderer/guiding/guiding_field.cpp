@@ -10,7 +10,6 @@ namespace {
 constexpr int kMaxDepth = 64;
 constexpr float kLeastExtent = 0.01f;  // metres
 
-float axis_of(const Vec3f& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
 void set_axis(Vec3f& v, int axis, float value) {
   (axis == 0 ? v.x : axis == 1 ? v.y : v.z) = value;
 }
@@ -33,13 +32,13 @@ std::uint32_t GuidingField::build(std::vector<GuideRecord>& records, std::size_t
   nodes_.emplace_back();
   const Vec3f extent = hi - lo;
   const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
-  const float size = axis_of(extent, axis);
+  const float size = extent[axis];
   if (last - first > kRecordsPerRegion && depth < kMaxDepth && size > kLeastExtent) {
-    const float split = axis_of(lo, axis) + 0.5f * size;
+    const float split = lo[axis] + 0.5f * size;
     const auto middle =
         std::partition(records.begin() + static_cast<std::ptrdiff_t>(first),
                        records.begin() + static_cast<std::ptrdiff_t>(last),
-                       [&](const GuideRecord& r) { return axis_of(r.position, axis) < split; });
+                       [&](const GuideRecord& r) { return r.position[axis] < split; });
     const auto mid = static_cast<std::size_t>(middle - records.begin());
     Vec3f below_hi = hi, above_lo = lo;
     set_axis(below_hi, axis, split);
@@ -71,7 +70,7 @@ const DirectionalTree* GuidingField::at(const Vec3f& p) const {
   std::uint32_t node = 0;
   while (nodes_[node].axis >= 0) {
     const Node& n = nodes_[node];
-    node = n.child[axis_of(p, n.axis) < n.split ? 0 : 1];
+    node = n.child[p[n.axis] < n.split ? 0 : 1];
   }
   const std::int32_t tree = nodes_[node].tree;
   return tree < 0 ? nullptr : &trees_[static_cast<std::size_t>(tree)];

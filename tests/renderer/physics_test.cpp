@@ -315,9 +315,7 @@ TEST(Physics, KilledAndResumedEqualsUninterrupted) {
   RenderStats stats;
   const Film resumed = Renderer(s).render(v, second, &stats);
   EXPECT_FALSE(std::filesystem::exists(first.checkpoint));  // removed when complete
-  EXPECT_EQ(std::memcmp(whole.rgb_data().data(), resumed.rgb_data().data(),
-                        whole.rgb_data().size() * sizeof(float)),
-            0);
+  EXPECT_TRUE(test::same_rgb_bits(whole, resumed));
   EXPECT_EQ(whole.object_data(), resumed.object_data());
   EXPECT_EQ(whole.depth_data(), resumed.depth_data());
   // A checkpoint of another render is not used.

@@ -6,8 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
-#include "core/input_error.h"
+#include "tests/support/input_error_of.h"
 #include "tests/trees/self_organizing/test_species.h"
 #include "trees/self_organizing/generator.h"
 #include "trees/self_organizing/simulation.h"
@@ -162,12 +163,7 @@ TEST(Bending, PointsNameAPathUpToTheEndWhateverTheTree) {
 // The InputError `grow_it` throws, or "" when it throws none.
 template <typename Grow>
 std::string refusal(Grow&& grow_it) {
-  try {
-    grow_it();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return landsim::testing::input_error_of(std::forward<Grow>(grow_it));
 }
 
 // A cut with nothing to cut (before the first step's growth there is only the seedling's
