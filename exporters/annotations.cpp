@@ -3,13 +3,15 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "exporters/detail/annotation_set.h"
+#include "exporters/detail/oriented_annotations.h"
+#include "exporters/detail/voc_annotations.h"
 #include "renderer/output/image_output.h"
 #include "scenes/image_set/image_set.h"
 
@@ -17,6 +19,7 @@ namespace landsim::exporters {
 namespace {
 
 using nlohmann::json;
+using namespace detail;
 
 // The set's manifest, which must carry the legend annotations name their classes from.
 json read_annotated_manifest(const std::filesystem::path& set) {
@@ -26,96 +29,6 @@ json read_annotated_manifest(const std::filesystem::path& set) {
                      ": a landsim manifest without a legend (render the set again with this "
                      "version)");
   return j;
-}
-
-// A tree in an image: its instance id's pixels (first samples), their box and its species.
-struct TreeSeen {
-  std::uint32_t species = 0;
-  std::size_t pixels = 0;
-  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
-};
-std::map<std::uint32_t, TreeSeen> trees_in(const renderer::Film& film) {
-  std::map<std::uint32_t, TreeSeen> out;
-  for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x) {
-      const std::uint32_t id = film.instance(x, y);
-      if (id == renderer::kNoId) continue;
-      TreeSeen& t = out[id];
-      t.species = film.species(x, y);
-      ++t.pixels;
-      t.x0 = std::min(t.x0, x), t.y0 = std::min(t.y0, y);
-      t.x1 = std::max(t.x1, x), t.y1 = std::max(t.y1, y);
-    }
-  return out;
-}
-
-std::string species_name(const json& legend, std::uint32_t species) {
-  return legend.at("species").at("values").at(species).at("name").get<std::string>();
-}
-
-// The class of each target id: its mesh file's stem.
-std::map<std::uint32_t, std::string> classes(const json& legend) {
-  std::map<std::uint32_t, std::string> out;
-  for (const json& v : legend.at("target").at("values"))
-    out[v.at("id").get<std::uint32_t>()] =
-        std::filesystem::path(v.at("file").get<std::string>()).stem().string();
-  return out;
-}
-
-// The classes of a set, each once, in order: the objects' (their mesh stems), then with
-// trees the species'.
-struct ClassName {
-  std::string name;
-  const char* supercategory;
-};
-std::vector<ClassName> class_names(const json& m,
-                                   const std::map<std::uint32_t, std::string>& objects,
-                                   bool trees) {
-  std::vector<ClassName> out;
-  const auto add = [&](const std::string& name, const char* super) {
-    for (const ClassName& c : out)
-      if (c.name == name) return;
-    out.push_back({name, super});
-  };
-  for (const auto& [id, name] : objects) add(name, "object");
-  for (const json& image : m.at("images"))  // classes drawn per image ([randomise])
-    for (const json& o : image.value("objects", json::array()))
-      if (o.contains("class")) add(o.at("class").get<std::string>(), "object");
-  if (trees)
-    for (const json& sp : m.at("legend").at("species").at("values"))
-      add(sp.at("name").get<std::string>(), "tree");
-  return out;
-}
-
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  AtomicFile out(path);
-  {
-    std::ofstream f(out.temp_path(), std::ios::binary);
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + path.string());
-  }
-  out.commit();
-}
-
-// An object's class: its truth's (the mesh it was drawn with in that image), or the legend's
-// for sets rendered before objects carried one.
-std::string class_of(const json& o, const std::map<std::uint32_t, std::string>& legend) {
-  if (o.contains("class")) return o.at("class").get<std::string>();
-  return legend.at(o.at("target").get<std::uint32_t>());
-}
-
-// An object of an image worth annotating: in the manifest's truth with enough pixels.
-bool annotated(const json& o, const AnnotationOptions& options) {
-  return !o.at("bbox").is_null() && o.at("visible_pixels").get<std::size_t>() >= options.min_pixels;
-}
-
-std::string stem_of(const json& image) {
-  return std::filesystem::path(image.at("path").get<std::string>()).stem().string();
-}
-
-// KITTI's occlusion level from the visible fraction: 0 fully visible, 1 partly, 2 largely.
-int occlusion_level(double visible_fraction) {
-  return visible_fraction >= 0.9 ? 0 : visible_fraction >= 0.5 ? 1 : 2;
 }
 
 std::string kitti_line(const json& o, const std::string& type) {
@@ -225,18 +138,6 @@ json coco_box(const json& b) {
   return {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
 }
 
-// The image COCO's file_name names: the preview, the EXR, or the digital-number image.
-json image_file(const json& image, const std::filesystem::path& set,
-                const AnnotationOptions& options) {
-  if (options.image == AnnotationOptions::Image::exr) return image.at("path");
-  if (options.image == AnnotationOptions::Image::preview) return image.at("preview");
-  if (!image.contains("sensor") || !image.at("sensor").contains("path"))
-    throw InputError((set / "manifest.json").string() + ": image " +
-                     image.at("path").get<std::string>() +
-                     " has no digital-number image (render the set with a [sensor])");
-  return image.at("sensor").at("path");
-}
-
 void write_coco(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
                 const AnnotationOptions& options, AnnotationSummary& summary) {
   const auto names = classes(m.at("legend"));
@@ -258,15 +159,8 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
                       {"height", film.height()}});
     for (const json& o : image.value("objects", json::array())) {
       if (!annotated(o, options)) continue;
-      const auto target = o.at("target").get<std::uint32_t>();
-      std::vector<std::uint8_t> mask(film.pixel_count());
-      std::size_t area = 0;
-      for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x)
-          if (film.target(x, y) == target) {
-            mask[static_cast<std::size_t>(y) * film.width() + x] = 1;
-            ++area;
-          }
+      const auto mask = target_mask(film, o.at("target").get<std::uint32_t>());
+      const auto area = static_cast<std::size_t>(std::count(mask.begin(), mask.end(), 1));
       annotations.push_back({{"id", annotations.size() + 1},
                              {"image_id", image_id},
                              {"category_id", category.at(class_of(o, names))},
@@ -291,10 +185,7 @@ void write_coco(const json& m, const std::filesystem::path& set, const std::file
     if (options.trees)
       for (const auto& [id, t] : trees_in(film)) {
         if (t.pixels < options.min_pixels) continue;
-        std::vector<std::uint8_t> mask(film.pixel_count());
-        for (int y = t.y0; y <= t.y1; ++y)
-          for (int x = t.x0; x <= t.x1; ++x)
-            mask[static_cast<std::size_t>(y) * film.width() + x] = film.instance(x, y) == id;
+        const auto mask = instance_mask(film, id);
         annotations.push_back(
             {{"id", annotations.size() + 1},
              {"image_id", image_id},
@@ -354,6 +245,15 @@ AnnotationSummary write_annotations(const std::filesystem::path& set,
       case AnnotationFormat::yolo:
         write_yolo(m, set, out, options, summary);
         break;
+      case AnnotationFormat::yolo_obb:
+        write_yolo_obb(m, set, out, options, summary);
+        break;
+      case AnnotationFormat::dota:
+        write_dota(m, set, out, options, summary);
+        break;
+      case AnnotationFormat::voc:
+        write_voc(m, set, out, options, summary);
+        break;
     }
   } catch (const json::exception& e) {
     // A key missing or of another type: an edited manifest, or one of an older version.
@@ -362,8 +262,9 @@ AnnotationSummary write_annotations(const std::filesystem::path& set,
                      "version): " +
                      e.what());
   } catch (const std::out_of_range& e) {
-    throw InputError((set / "manifest.json").string() +
-                     ": an id its legend does not name: " + e.what());
+    throw InputError(
+        (set / "manifest.json").string() +
+        ": an id its legend does not name, or a mask larger than its image: " + e.what());
   }
   return summary;
 }

@@ -2,8 +2,9 @@
 // Annotations for machine-learning tools from an image set written by `landsim render`
 // (docs/OUTPUTS.md "Annotations"): COCO (one JSON with categories, boxes and RLE masks from
 // the target layer), KITTI (label_2 with 2D and 3D boxes, truncation and occlusion levels;
-// calib with P2 from the camera's K) and YOLO (normalised boxes and classes.txt). The
-// objects' class is the stem of their mesh file (car.obj: "car").
+// calib with P2 from the camera's K), YOLO (normalised boxes and classes.txt), and for aerial
+// views the oriented boxes of DOTA and YOLO-OBB, and Pascal VOC's XML. The objects' class is
+// the stem of their mesh file (car.obj: "car").
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -12,18 +13,19 @@
 
 namespace landsim::exporters {
 
-enum class AnnotationFormat { coco, kitti, yolo };
+enum class AnnotationFormat { coco, kitti, yolo, yolo_obb, dota, voc };
 
 struct AnnotationOptions {
   AnnotationFormat format = AnnotationFormat::coco;
   // Objects covering fewer visible pixels (coverage > 0) are left out.
   std::size_t min_pixels = 1;
-  // COCO and YOLO: each tree (the instance layer) too, its species its category.
+  // Every format but KITTI: each tree (the instance layer) too, its species its category.
   bool trees = false;
-  // YOLO: boxes of the unoccluded footprint (amodal) instead of the visible pixels. (COCO
-  // carries both: `bbox` and `amodal_bbox`, with `amodal_segmentation`.)
+  // YOLO, YOLO-OBB, DOTA, VOC: boxes of the unoccluded footprint (amodal) instead of the
+  // visible pixels. (COCO carries both: `bbox` and `amodal_bbox`, `amodal_segmentation`.)
   bool amodal = false;
-  // COCO's `file_name`: the preview PNG, the EXR, or the sensor's digital-number image.
+  // COCO's `file_name` and VOC's `filename`: the preview PNG, the EXR, or the sensor's
+  // digital-number image.
   enum class Image { preview, exr, dn } image = Image::preview;
 };
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <pugixml.hpp>
 
 #include <fstream>
 #include <map>
@@ -203,6 +204,150 @@ TEST(Annotations, YoloListsEveryObjectWithCoverage) {
   EXPECT_EQ(landsim::testing::read_file(dir / "yolo" / "classes.txt"), "car\ntruck\n");
 }
 
+// DOTA's labelTxt read as its devkit reads it (lines of at least 9 fields: four corners,
+// category, difficult; the imagesource and gsd lines skipped).
+struct DotaLine {
+  double x[4], y[4];
+  std::string category;
+  int difficult = 0;
+};
+std::vector<DotaLine> read_dota(const std::filesystem::path& path) {
+  std::vector<DotaLine> out;
+  std::istringstream text(landsim::testing::read_file(path));
+  for (std::string line; std::getline(text, line);) {
+    std::istringstream f(line);
+    std::vector<std::string> fields;
+    for (std::string w; f >> w;) fields.push_back(w);
+    if (fields.size() < 9) continue;
+    DotaLine d;
+    for (int i = 0; i < 4; ++i)
+      d.x[i] = std::stod(fields[2 * i]), d.y[i] = std::stod(fields[2 * i + 1]);
+    d.category = fields[8];
+    if (fields.size() > 9) d.difficult = std::stoi(fields[9]);
+    out.push_back(d);
+  }
+  return out;
+}
+
+// Inside the quadrilateral (corners clockwise as seen, y down), with `slack` pixels.
+bool inside(const DotaLine& d, double x, double y, double slack) {
+  for (int i = 0; i < 4; ++i) {
+    const double ex = d.x[(i + 1) % 4] - d.x[i], ey = d.y[(i + 1) % 4] - d.y[i];
+    if ((ex * (y - d.y[i]) - ey * (x - d.x[i])) / std::hypot(ex, ey) < -slack) return false;
+  }
+  return true;
+}
+
+// Each object's oriented box holds all its target pixels, is no larger than its axis-aligned
+// box, runs clockwise, and starts at the side its front faces (its box's front face centre
+// projected through K); YOLO-OBB's corners are DOTA's over the image size.
+TEST(Annotations, OrientedBoxesHoldTheTargetLayerFromTheHead) {
+  TempDir dir;
+  const auto set = rendered_set(dir);
+  AnnotationOptions o;
+  o.format = AnnotationFormat::dota;
+  EXPECT_EQ(write_annotations(set, dir / "dota", o).objects, 2u);
+  o.format = AnnotationFormat::yolo_obb;
+  write_annotations(set, dir / "obb", o);
+  const nlohmann::json image = load(set / "manifest.json")["images"][0];
+  const renderer::Film film = renderer::read_exr(set / "v.exr");
+  const std::vector<DotaLine> dota = read_dota(dir / "dota" / "labelTxt" / "v.txt");
+  ASSERT_EQ(dota.size(), 2u);
+  EXPECT_EQ(landsim::testing::read_file(dir / "dota" / "labelTxt" / "v.txt").substr(0, 29),
+            "imagesource:landsim\ngsd:null\n");
+  std::istringstream obb(landsim::testing::read_file(dir / "obb" / "labels" / "v.txt"));
+  const auto& K = image["camera"]["K"];
+  for (std::size_t i = 0; i < dota.size(); ++i) {
+    const DotaLine& d = dota[i];
+    const nlohmann::json& object = image["objects"][i];
+    EXPECT_EQ(d.category, object["class"]);
+    const auto target = object["target"].get<std::uint32_t>();
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x)
+        if (film.target(x, y) == target)
+          for (int c = 0; c < 4; ++c)
+            ASSERT_TRUE(inside(d, x + (c & 1), y + (c >> 1), 1e-2)) << d.category << x << "," << y;
+    double area2 = 0.0;
+    for (int k = 0; k < 4; ++k) area2 += d.x[k] * d.y[(k + 1) % 4] - d.x[(k + 1) % 4] * d.y[k];
+    EXPECT_GT(area2, 0.0);  // clockwise as seen
+    const auto& b = object["bbox"];
+    EXPECT_LE(0.5 * area2, (b["x1"].get<double>() - b["x0"].get<double>() + 1.0) *
+                                   (b["y1"].get<double>() - b["y0"].get<double>() + 1.0) +
+                               0.1);
+    // The front face's centre (the box's second axis, half its length out) in the image.
+    const auto& r = object["box3d"]["rotation_camera"];
+    const auto c = object["box3d"]["centre_camera"].get<std::vector<double>>();
+    const double half = 0.5 * object["box3d"]["size_m"][1].get<double>();
+    double f[3];
+    for (int k = 0; k < 3; ++k) f[k] = c[k] + half * r[k][1].get<double>();
+    const double u0 = K[0][0].get<double>() * c[0] / c[2] + K[0][2].get<double>();
+    const double v0 = K[1][1].get<double>() * c[1] / c[2] + K[1][2].get<double>();
+    const double u1 = K[0][0].get<double>() * f[0] / f[2] + K[0][2].get<double>();
+    const double v1 = K[1][1].get<double>() * f[1] / f[2] + K[1][2].get<double>();
+    int facing = -1;
+    double best = -1e30;
+    for (int k = 0; k < 4; ++k) {
+      const double mx = 0.5 * (d.x[k] + d.x[(k + 1) % 4]), my = 0.5 * (d.y[k] + d.y[(k + 1) % 4]);
+      const double along = (mx - u0) * (u1 - u0) + (my - v0) * (v1 - v0);
+      if (along > best) best = along, facing = k;
+    }
+    EXPECT_EQ(facing, 0) << d.category;
+    int cls;
+    double p[8];
+    std::string line;
+    ASSERT_TRUE(std::getline(obb, line));
+    ASSERT_EQ(std::sscanf(line.c_str(), "%d %lf %lf %lf %lf %lf %lf %lf %lf", &cls, p, p + 1, p + 2,
+                          p + 3, p + 4, p + 5, p + 6, p + 7),
+              9);
+    EXPECT_EQ(cls, static_cast<int>(i));  // classes.txt: car, truck
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_NEAR(p[2 * k] * film.width(), d.x[k], 0.01);
+      EXPECT_NEAR(p[2 * k + 1] * film.height(), d.y[k], 0.01);
+    }
+  }
+  EXPECT_EQ(landsim::testing::read_file(dir / "obb" / "classes.txt"), "car\ntruck\n");
+}
+
+// Pascal VOC's XML as its devkit reads it: the image's size and file, each object's name and
+// bndbox the target layer's extent numbered from 1, the set listed in trainval.txt.
+TEST(Annotations, VocBoxesAreTheTargetLayersExtentFromOne) {
+  TempDir dir;
+  const auto set = rendered_set(dir);
+  AnnotationOptions o;
+  o.format = AnnotationFormat::voc;
+  EXPECT_EQ(write_annotations(set, dir / "voc", o).objects, 2u);
+  EXPECT_EQ(landsim::testing::read_file(dir / "voc" / "ImageSets" / "Main" / "trainval.txt"),
+            "v\n");
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file((dir / "voc" / "Annotations" / "v.xml").c_str()));
+  const pugi::xml_node a = doc.child("annotation");
+  EXPECT_STREQ(a.child_value("filename"), "v.png");
+  EXPECT_EQ(a.child("size").child("width").text().as_int(), 96);
+  EXPECT_EQ(a.child("size").child("height").text().as_int(), 64);
+  const renderer::Film film = renderer::read_exr(set / "v.exr");
+  int n = 0;
+  for (const pugi::xml_node obj : a.children("object")) {
+    const std::string name = obj.child_value("name");
+    const std::uint32_t target = name == "car" ? 1 : 2;
+    Extent e;
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x)
+        if (film.target(x, y) == target) {
+          e.x0 = std::min(e.x0, x), e.x1 = std::max(e.x1, x);
+          e.y0 = std::min(e.y0, y), e.y1 = std::max(e.y1, y);
+        }
+    const pugi::xml_node b = obj.child("bndbox");
+    EXPECT_EQ(b.child("xmin").text().as_int(), e.x0 + 1) << name;
+    EXPECT_EQ(b.child("ymin").text().as_int(), e.y0 + 1) << name;
+    EXPECT_EQ(b.child("xmax").text().as_int(), e.x1 + 1) << name;
+    EXPECT_EQ(b.child("ymax").text().as_int(), e.y1 + 1) << name;
+    EXPECT_TRUE(obj.child("difficult"));
+    EXPECT_TRUE(obj.child("truncated"));
+    ++n;
+  }
+  EXPECT_EQ(n, 2);
+}
+
 // With --trees, every tree seen is a COCO annotation of its species' category whose mask is
 // its instance's pixels.
 TEST(Annotations, TreesAreInstancesOfTheirSpecies) {
@@ -258,7 +403,8 @@ TEST(Annotations, AnEditedManifestIsRefusedByName) {
   m["images"][0]["objects"][1].erase("class");  // so its class is looked up there
   std::ofstream(set / "manifest.json") << m.dump();
   for (const AnnotationFormat f :
-       {AnnotationFormat::coco, AnnotationFormat::kitti, AnnotationFormat::yolo}) {
+       {AnnotationFormat::coco, AnnotationFormat::kitti, AnnotationFormat::yolo,
+        AnnotationFormat::yolo_obb, AnnotationFormat::dota, AnnotationFormat::voc}) {
     AnnotationOptions o;
     o.format = f;
     try {
