@@ -18,7 +18,9 @@ static_assert(kMaxLayers == kMaxBands + kAtmosphereParts * (3 + kMaxBands) + kIl
 
 constexpr std::array<const char*, kAtmosphereParts> kPartNames = {"path", "transmittance",
                                                                   "surface", "direct", "diffuse"};
-constexpr std::array<const char*, 3> kRgb = {"R", "G", "B"};
+// Colour in CIE X, Y, Z: the parts are divided by one another (transmittance, reflectance),
+// which Rec. 709's R, G, B, negative for saturated colours, would take below zero.
+constexpr std::array<const char*, 3> kXyz = {"X", "Y", "Z"};
 constexpr const char* kSurfacePrefix = "atmosphere.surface.";
 constexpr const char* kReflectancePrefix = "atmosphere.reflectance.";
 
@@ -34,7 +36,7 @@ std::vector<std::string> atmosphere_layer_names(const std::vector<SpectralBand>&
   std::vector<std::string> names;
   for (const char* part : kPartNames) {
     const std::string prefix = std::string("atmosphere.") + part + ".";
-    for (const char* c : kRgb) names.push_back(prefix + c);
+    for (const char* c : kXyz) names.push_back(prefix + c);
     for (const SpectralBand& b : bands) names.push_back(prefix + band_layer(b.name));
   }
   return names;
@@ -48,14 +50,14 @@ void atmosphere_layer_values(const AtmosphereSample& s, const std::vector<Spectr
                              float* layers) {
   const auto n = static_cast<int>(bands.size());
   // The transmittance of an equal-energy spectrum in each channel and band.
-  static const Vec3f white = spectrum_to_rgb(Spectrum::constant(1.0f));
+  static const Vec3f white = spectrum_to_xyz(Spectrum::constant(1.0f));
   for (int part = 0; part < kAtmosphereParts; ++part) {
     const Spectrum& x = part_of(s, part);
     const bool transmittance = part == static_cast<int>(AtmospherePart::transmittance);
     float* out = layers + part * (3 + n);
-    const Vec3f rgb = spectrum_to_rgb(x);
+    const Vec3f xyz = spectrum_to_xyz(x);
     for (int c = 0; c < 3; ++c)
-      out[c] = !transmittance ? rgb[c] : white[c] > 0.0f ? rgb[c] / white[c] : 0.0f;
+      out[c] = !transmittance ? xyz[c] : white[c] > 0.0f ? xyz[c] / white[c] : 0.0f;
     for (int b = 0; b < n; ++b) {
       const Spectrum& w = bands[static_cast<std::size_t>(b)].weight;
       const float sum = dot(w, x), weight = dot(w, Spectrum::constant(1.0f));
@@ -82,7 +84,9 @@ void finish_atmosphere_layers(Film& film, int band_count) {
       // The surface's light as it left the surface: what arrived over what the air let through.
       surface[i] = t[i] > 0.0f ? surface[i] / t[i] : 0.0f;
       const float e = direct[i] + diffuse[i];
-      if (e > 0.0f) r[i] = std::numbers::pi_v<float> * surface[i] / e;
+      // Held at 0 where a control variate's noise takes a pixel's estimate below (a few
+      // pixels at low samples): a reflectance factor is never negative.
+      if (e > 0.0f) r[i] = std::max(0.0f, std::numbers::pi_v<float> * surface[i] / e);
     }
     const std::string& name =
         film.band_name(atmosphere_layer(AtmospherePart::surface, c, band_count));

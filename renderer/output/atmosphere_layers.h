@@ -6,7 +6,7 @@
 // (bottom-of-atmosphere) reflectance factor; so that, pixel by pixel,
 //   apparent radiance = path radiance + transmittance x surface radiance
 // and the surface's reflectance factor is pi x surface radiance / (direct + diffuse).
-// Each part in R, G, B and in every band and channel of the scene, as film planes after the
+// Each part in CIE X, Y, Z and in every band and channel of the scene, as film planes after the
 // scene's bands.
 #include <string>
 #include <vector>
@@ -29,17 +29,18 @@ struct AtmosphereSample {
   Spectrum path, transmittance, through, direct, diffuse;
 };
 
-// The planes' names, in film order: for each part, its R, G, B, then each band's layer
-// ("atmosphere.path.R", "atmosphere.path.band.red", "atmosphere.direct.photons.nir", ...).
+// The planes' names, in film order: for each part, its X, Y, Z, then each band's layer
+// ("atmosphere.path.X", "atmosphere.path.band.red", "atmosphere.direct.photons.nir", ...).
 std::vector<std::string> atmosphere_layer_names(const std::vector<SpectralBand>& bands);
-// The film plane of `part`'s channel `channel` (0-2: R, G, B; 3 on: the scene's bands), the
+// The film plane of `part`'s channel `channel` (0-2: X, Y, Z; 3 on: the scene's bands), the
 // scene having `band_count` bands.
 int atmosphere_layer(AtmospherePart part, int channel, int band_count);
 
-// A sample's parts as the film accumulates them: RGB (radiances and irradiances by the
-// colour-matching functions, as the image's; the transmittance of an equal-energy spectrum
-// in each channel) and band integrals (the transmittance weighed by the band's response),
-// written to `layers` from atmosphere_layer(part, 0, bands.size()).
+// A sample's parts as the film accumulates them: CIE X, Y, Z (radiances and irradiances by
+// the colour-matching functions, Y in the image's units; the transmittance of an equal-energy
+// spectrum in each channel; never R, G, B, whose ratios a saturated colour takes negative) and band
+// integrals (the transmittance weighed by the band's response), written to `layers` from
+// atmosphere_layer(part, 0, bands.size()).
 void atmosphere_layer_values(const AtmosphereSample& s, const std::vector<SpectralBand>& bands,
                              float* layers);
 

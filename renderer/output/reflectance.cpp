@@ -8,18 +8,19 @@
 
 #include "renderer/atmosphere/downwelling.h"
 #include "renderer/output/image_output.h"
+#include "renderer/spectra/colour_matching.h"
 #include "renderer/spectra/spectral_colour.h"
 
 namespace landsim::renderer {
 namespace {
 
-// pi x plane / e, 0 where e is 0.
+// pi x plane / e, 0 where e is 0; at least 0 (what rounding takes below it).
 std::vector<float> reflectance_plane(std::size_t n, double e,
-                                     const std::function<float(std::size_t)>& radiance) {
+                                     const std::function<double(std::size_t)>& radiance) {
   std::vector<float> plane(n, 0.0f);
   if (e > 0.0)
     for (std::size_t i = 0; i < n; ++i)
-      plane[i] = static_cast<float>(std::numbers::pi * radiance(i) / e);
+      plane[i] = static_cast<float>(std::max(0.0, std::numbers::pi * radiance(i) / e));
   return plane;
 }
 
@@ -32,6 +33,7 @@ ImageIrradiance image_irradiance(const Scene& scene, const Film& film) {
   const Downwelling d = downwelling_irradiance(scene, out.height);
   const Spectrum total = d.total();
   out.rgb = spectrum_to_rgb(total);
+  out.xyz = spectrum_to_xyz(total);
   out.direct_rgb = spectrum_to_rgb(d.direct);
   out.diffuse_rgb = spectrum_to_rgb(d.diffuse);
   for (const SpectralBand& b : scene.bands) {
@@ -45,10 +47,12 @@ ImageIrradiance image_irradiance(const Scene& scene, const Film& film) {
 void add_reflectance(Film& film, const ImageIrradiance& e) {
   const std::size_t n = film.pixel_count();
   const std::vector<float>& rgb = film.rgb_data();
-  for (std::size_t c = 0; c < 3; ++c) {
-    std::vector<float> r = reflectance_plane(n, e.rgb[static_cast<int>(c)],
-                                             [&](std::size_t i) { return rgb[3 * i + c]; });
-    film.add_band(std::string("reflectance.") + "RGB"[c], std::move(r));
+  const auto xyz = [&](std::size_t i) {
+    return rec709_to_xyz(Vec3(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]));
+  };
+  for (int c = 0; c < 3; ++c) {
+    std::vector<float> r = reflectance_plane(n, e.xyz[c], [&](std::size_t i) { return xyz(i)[c]; });
+    film.add_band(std::string("reflectance.") + "XYZ"[c], std::move(r));
   }
   const int layers = std::min(film.band_count(), static_cast<int>(e.layers.size()));
   for (int b = 0; b < layers; ++b) {

@@ -13,8 +13,9 @@
 namespace landsim::renderer {
 
 struct ImageIrradiance {
-  double height = 0.0;  // scene frame z it is taken at
+  double height = 0.0;                 // scene frame z it is taken at
   Vec3f rgb, direct_rgb, diffuse_rgb;  // lux-scaled Rec. 709 (Y: illuminance, lux)
+  Vec3f xyz;                           // CIE 1931, lux-scaled (Y: illuminance)
   // Per scene band in order: W m-2 for radiance bands, photons s-1 m-2 for channels.
   std::vector<double> layers;
 };
@@ -22,8 +23,11 @@ struct ImageIrradiance {
 // At the height of the centre pixel's first hit (P.Z), or the haze's base where it sees sky.
 ImageIrradiance image_irradiance(const Scene& scene, const Film& film);
 
-// Adds "reflectance.R", ".G", ".B" and "reflectance.<layer>" for every band layer the film
-// holds (those of `e.layers`): pi x L / E; 0 where E is 0.
+// Adds "reflectance.X", ".Y", ".Z" (the CIE tristimulus reflectance factors: the pixel's X, Y,
+// Z from its R, G, B, over E's) and "reflectance.<layer>" for every band layer the film holds
+// (those of `e.layers`): pi x L / E; 0 where E is 0. Never negative: spectral integrals of
+// non-negative light with non-negative weights (X, Y, Z rather than R, G, B, which a saturated
+// colour takes below zero), float rounding of the R, G, B -> X, Y, Z matrix held at 0.
 void add_reflectance(Film& film, const ImageIrradiance& e);
 
 }  // namespace landsim::renderer

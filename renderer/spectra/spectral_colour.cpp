@@ -44,25 +44,43 @@ const Basis& basis() {
 
 }  // namespace
 
+namespace {
+
+// Each bin's X, Y, Z weights in lumens per watt: the functions summed at 1 nm over the bin.
+Vec3 bin_xyz(int k) {
+  Vec3 xyz{};
+  for (int i = 0; i < static_cast<int>(kBinWidth); ++i)
+    xyz += cie1931_xyz_bar(bin_start(k) + i + 0.5);
+  return xyz * kLumensPerWatt;
+}
+
+Vec3f weighted_sum(const std::array<Vec3f, kSpectrumBins>& w, const Spectrum& s) {
+  Vec3f out{};
+  for (int k = 0; k < kSpectrumBins; ++k) out += w[static_cast<std::size_t>(k)] * s[k];
+  return out;
+}
+
+}  // namespace
+
 const std::array<Vec3f, kSpectrumBins>& rgb_weights() {
   static const std::array<Vec3f, kSpectrumBins> weights = [] {
     std::array<Vec3f, kSpectrumBins> w{};
-    for (int k = 0; k < kSpectrumBins; ++k) {
-      Vec3 xyz{};
-      for (int i = 0; i < static_cast<int>(kBinWidth); ++i)
-        xyz += cie1931_xyz_bar(bin_start(k) + i + 0.5);
-      w[static_cast<std::size_t>(k)] = Vec3f(xyz_to_rec709(xyz * kLumensPerWatt));
-    }
+    for (int k = 0; k < kSpectrumBins; ++k)
+      w[static_cast<std::size_t>(k)] = Vec3f(xyz_to_rec709(bin_xyz(k)));
     return w;
   }();
   return weights;
 }
 
-Vec3f spectrum_to_rgb(const Spectrum& s) {
-  const auto& w = rgb_weights();
-  Vec3f out{};
-  for (int k = 0; k < kSpectrumBins; ++k) out += w[static_cast<std::size_t>(k)] * s[k];
-  return out;
+Vec3f spectrum_to_rgb(const Spectrum& s) { return weighted_sum(rgb_weights(), s); }
+
+Vec3f spectrum_to_xyz(const Spectrum& s) {
+  static const std::array<Vec3f, kSpectrumBins> weights = [] {
+    std::array<Vec3f, kSpectrumBins> w{};
+    for (int k = 0; k < kSpectrumBins; ++k) w[static_cast<std::size_t>(k)] = Vec3f(bin_xyz(k));
+    return w;
+  }();
+  return weighted_sum(weights, s);
 }
 
 Spectrum reflectance_spectrum(const Vec3f& rgb) {

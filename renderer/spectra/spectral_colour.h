@@ -18,6 +18,11 @@ namespace landsim::renderer {
 Vec3f spectrum_to_rgb(const Spectrum& radiance);
 // The per-bin weights spectrum_to_rgb sums (nonzero only where the functions are).
 const std::array<Vec3f, kSpectrumBins>& rgb_weights();
+// CIE 1931 X, Y, Z of a spectral radiance, scaled as spectrum_to_rgb (Y in cd/m2): what
+// ratios of light are taken in (reflectance, transmittance layers), because the CIE functions
+// are non-negative and Rec. 709's R, G, B (a mix of X, Y, Z with negative weights) are not:
+// a saturated green seen through leaves has a negative B (docs/OUTPUTS.md "Negative values").
+Vec3f spectrum_to_xyz(const Spectrum& radiance);
 
 // The reflectance spectrum of a linear Rec. 709 albedo: r B_r + g B_g + b B_b, the basis of
 // data/spectra/rgb_basis.csv (Mallett and Yuksel 2019's construction: non-negative, summing

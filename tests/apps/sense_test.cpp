@@ -61,7 +61,7 @@ TEST(CliSense, RenderWritesDigitalNumbersAndSenseReproducesThem) {
   EXPECT_TRUE(image["irradiance"]["layers"].contains("photons.R"));
   // The EXR holds the photon and reflectance layers and the sensor it was rendered with.
   Imf::InputFile exr((set / "crater.exr").c_str());
-  for (const char* layer : {"photons.R", "reflectance.R", "reflectance.photons.B", "Y.variance"})
+  for (const char* layer : {"photons.R", "reflectance.X", "reflectance.photons.B", "Y.variance"})
     EXPECT_NE(exr.header().channels().findChannel(layer), nullptr) << layer;
   EXPECT_NE(exr.header().findTypedAttribute<Imf::StringAttribute>("landsim/sensor"), nullptr);
   EXPECT_NE(exr.header().findTypedAttribute<Imf::StringAttribute>("landsim/irradiance"), nullptr);

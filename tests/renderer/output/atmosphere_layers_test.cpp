@@ -17,6 +17,8 @@
 
 #include "renderer/atmosphere/downwelling.h"
 #include "renderer/atmosphere/medium.h"
+#include "renderer/spectra/colour_matching.h"
+#include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/render.h"
 #include "tests/renderer/test_scenes.h"
 
@@ -56,13 +58,13 @@ Film finished(const Scene& s, const View& view) {
   return film;
 }
 
-TEST(AtmosphereLayers, NamesEachPartInRgbAndEveryBand) {
+TEST(AtmosphereLayers, NamesEachPartInXyzAndEveryBand) {
   const std::vector<std::string> names = atmosphere_layer_names({{"red", {}}, {"photons.nir", {}}});
   ASSERT_EQ(names.size(), 25u);
-  EXPECT_EQ(names[0], "atmosphere.path.R");
+  EXPECT_EQ(names[0], "atmosphere.path.X");
   EXPECT_EQ(names[3], "atmosphere.path.band.red");
   EXPECT_EQ(names[4], "atmosphere.path.photons.nir");
-  EXPECT_EQ(names[5], "atmosphere.transmittance.R");
+  EXPECT_EQ(names[5], "atmosphere.transmittance.X");
   EXPECT_EQ(names[24], "atmosphere.diffuse.photons.nir");
   EXPECT_EQ(atmosphere_layer(AtmospherePart::diffuse, 4, 2), 2 + 4 * 5 + 4);
 }
@@ -129,13 +131,13 @@ TEST(AtmosphereLayers, ApparentIsPathPlusTransmittanceTimesSurface) {
   double path_sum = 0.0, apparent_sum = 0.0;
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
-      const Vec3f apparent = film.rgb(x, y);
+      const Vec3 apparent = rec709_to_xyz(Vec3(film.rgb(x, y)));  // the parts are X, Y, Z
       for (int c = 0; c < 3; ++c) {
         const float path = film.band(x, y, layer(AtmospherePart::path, c));
         const float t = film.band(x, y, layer(AtmospherePart::transmittance, c));
         const float surface = film.band(x, y, layer(AtmospherePart::surface, c));
         // (a pixel's mean may be below zero at 16 samples: the control variates' noise)
-        EXPECT_NEAR(path + t * surface, apparent[c], 1e-4f * std::abs(apparent[c]) + 1e-3f)
+        EXPECT_NEAR(path + t * surface, apparent[c], 1e-4 * std::abs(apparent[c]) + 1e-3)
             << x << ", " << y << " channel " << c;
       }
       path_sum += film.band(x, y, layer(AtmospherePart::path, 1));
@@ -154,9 +156,26 @@ TEST(AtmosphereLayers, TheSkyIsAllPathRadiance) {
     for (int x = 0; x < film.width(); ++x) {
       ASSERT_FALSE(std::isfinite(film.depth(x, y)));
       EXPECT_EQ(film.band(x, y, layer(AtmospherePart::surface, 1)), 0.0f);
-      EXPECT_NEAR(film.band(x, y, layer(AtmospherePart::path, 1)), film.rgb(x, y).y,
-                  1e-4f * film.rgb(x, y).y);
+      const double luminance = rec709_to_xyz(Vec3(film.rgb(x, y))).y;  // the image's Y
+      EXPECT_NEAR(film.band(x, y, layer(AtmospherePart::path, 1)), luminance, 1e-4 * luminance);
     }
+}
+
+// Light that crossed many leaves is a saturated green, outside Rec. 709's gamut (R and B below
+// zero): the parts are in X, Y, Z, so every part and ratio of it stays at or above zero.
+TEST(AtmosphereLayers, ASaturatedGreenKeepsEveryPartNonNegative) {
+  Spectrum green = Spectrum::constant(0.0f);
+  for (int k = 0; k < kSpectrumBins; ++k)
+    if (bin_start(k) >= 520.0 && bin_start(k) < 560.0) green[k] = 1.0f;
+  ASSERT_LT(std::min(spectrum_to_rgb(green).x, spectrum_to_rgb(green).z), 0.0f);
+  AtmosphereSample sample{green * 0.1f, green * 0.9f, green * 2.0f, green, green * 0.5f};
+  std::vector<float> layers(kAtmosphereParts * 3);
+  atmosphere_layer_values(sample, {}, layers.data());
+  for (std::size_t i = 0; i < layers.size(); ++i) EXPECT_GE(layers[i], 0.0f) << i;
+  // Its transmittance lets through 0.9 of the green bins: a positive share of white in Y.
+  EXPECT_GT(layers[atmosphere_layer(AtmospherePart::transmittance, 1, 0)], 0.0f);
+  EXPECT_NEAR(layers[atmosphere_layer(AtmospherePart::path, 1, 0)], spectrum_to_xyz(green).y * 0.1f,
+              1e-3f * spectrum_to_xyz(green).y);
 }
 
 }  // namespace

@@ -8,7 +8,9 @@
 #include <numbers>
 
 #include "renderer/atmosphere/sky.h"
+#include "renderer/spectra/colour_matching.h"
 #include "renderer/spectra/sensor_band.h"
+#include "renderer/spectra/spectral_colour.h"
 #include "renderer/transport/render.h"
 #include "tests/renderer/test_scenes.h"
 
@@ -44,9 +46,45 @@ TEST(Reflectance, LambertianPanelReadsItsAlbedo) {
   EXPECT_NEAR(e.height, 0.0, 1e-3);  // the panel under the image's centre
   ASSERT_EQ(e.layers.size(), 2u);
   add_reflectance(film, e);
-  for (const char* layer : {"reflectance.R", "reflectance.G", "reflectance.B",
+  for (const char* layer : {"reflectance.X", "reflectance.Y", "reflectance.Z",
                             "reflectance.band.red", "reflectance.photons.nir"})
     EXPECT_NEAR(layer_mean(film, layer) / kAlbedo, 1.0, 0.01) << layer;
+}
+
+// A saturated green (a surface reflecting 540-560 nm only, as light that crossed many leaves
+// is): its Rec. 709 R and B are negative, its reflectance layers are the CIE tristimulus
+// reflectance factors, integrals of non-negative functions: not negative, and equal to the
+// colour-matching functions summed over the lit bins.
+TEST(Reflectance, ASaturatedGreenReadsItsTristimulusReflectanceNeverNegative) {
+  const double rho = 0.8;
+  Spectrum reflectance = Spectrum::constant(0.0f);
+  for (int k = 0; k < kSpectrumBins; ++k)
+    if (bin_start(k) >= 540.0 && bin_start(k) < 560.0) reflectance[k] = static_cast<float>(rho);
+  const Spectrum e = Spectrum::constant(1.0f);  // W m-2 nm-1 on the ground
+  const Vec3f radiance =
+      spectrum_to_rgb(reflectance * e * static_cast<float>(1.0 / std::numbers::pi));
+  ASSERT_LT(std::min(radiance.x, radiance.z), 0.0f);  // out of Rec. 709's gamut
+  Film film(2, 1);
+  for (int i = 0; i < 3; ++i) film.rgb_data()[static_cast<std::size_t>(i)] = radiance[i];
+  ImageIrradiance irradiance;
+  irradiance.rgb = spectrum_to_rgb(e);
+  irradiance.xyz = spectrum_to_xyz(e);
+  add_reflectance(film, irradiance);
+  // The tristimulus reflectance factor: sum of rho x the CIE function over the lit bins, over
+  // the CIE function's sum under the flat light.
+  Vec3 lit{}, all{};
+  for (double l = 380.5; l < 1020.0; l += 1.0) {
+    all += cie1931_xyz_bar(l);
+    if (l >= 540.0 && l < 560.0) lit += cie1931_xyz_bar(l) * rho;
+  }
+  const char* names[3] = {"reflectance.X", "reflectance.Y", "reflectance.Z"};
+  for (int c = 0; c < 3; ++c) {
+    const auto& plane = film.band_data(c);
+    EXPECT_NEAR(plane[0], lit[c] / all[c], 1e-4 + 1e-4 * lit[c] / all[c]) << names[c];
+    EXPECT_GE(plane[0], 0.0f) << names[c];
+    EXPECT_EQ(plane[1], 0.0f) << names[c];  // a black pixel: 0, not rounding below it
+  }
+  EXPECT_EQ(film.band_name(0), "reflectance.X");
 }
 
 }  // namespace

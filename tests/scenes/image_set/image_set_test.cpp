@@ -11,6 +11,7 @@
 
 #include "core/input_error.h"
 #include "renderer/output/image_output.h"
+#include "renderer/spectra/colour_matching.h"
 #include "tests/support/rendered_set.h"
 #include "tests/support/temp_dir.h"
 
@@ -259,17 +260,17 @@ TEST(ImageSet, AtmosphereLayersAreFinishedInTheImage) {
     return none;
   };
   for (const char* part : {"path", "transmittance", "surface", "direct", "diffuse", "reflectance"})
-    for (const char* c : {"R", "G", "B"}) plane(std::string("atmosphere.") + part + "." + c);
-  const std::vector<float>& path = plane("atmosphere.path.G");
-  const std::vector<float>& t = plane("atmosphere.transmittance.G");
-  const std::vector<float>& surface = plane("atmosphere.surface.G");
-  const std::vector<float>& reflectance = plane("atmosphere.reflectance.G");
+    for (const char* c : {"X", "Y", "Z"}) plane(std::string("atmosphere.") + part + "." + c);
+  const std::vector<float>& path = plane("atmosphere.path.Y");
+  const std::vector<float>& t = plane("atmosphere.transmittance.Y");
+  const std::vector<float>& surface = plane("atmosphere.surface.Y");
+  const std::vector<float>& reflectance = plane("atmosphere.reflectance.Y");
   ASSERT_EQ(path.size(), film.pixel_count());
   int ground = 0;
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
       const std::size_t i = static_cast<std::size_t>(y * film.width() + x);
-      const float apparent = film.rgb(x, y).y;
+      const auto apparent = static_cast<float>(renderer::rec709_to_xyz(Vec3(film.rgb(x, y))).y);
       EXPECT_NEAR(path[i] + t[i] * surface[i], apparent, 1e-4f * std::abs(apparent) + 1e-3f);
       if (film.object(x, y) == static_cast<std::uint8_t>(renderer::ObjectClass::ground)) {
         ++ground;
