@@ -1,6 +1,8 @@
 #pragma once
 // The ground as a triangle mesh: one vertex per cell centre, two triangles per quad of
-// valid cells, one where exactly three corners are valid; nodata cells leave holes.
+// valid cells; where a quad's cells are partly nodata or beyond the grid, each valid cell's
+// quarter of it, so that every cell with data is drawn to its own edges (the grid to its
+// extent) and nodata cells leave holes of exactly their squares (docs/GROUND.md "Nodata").
 #include <cstdint>
 #include <vector>
 

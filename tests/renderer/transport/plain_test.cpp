@@ -76,8 +76,9 @@ TEST(Plain, ItsHeightIsTheMeanOfTheMeshsRimUnlessTheSceneSaysOtherwise) {
   const PlainSurface p = plain_surface(ground);
   EXPECT_TRUE(p.present);
   EXPECT_NEAR(p.height, 40.0f, 1e-4f);
-  EXPECT_NEAR(p.min_x, 5.0f, 1e-4f);
-  EXPECT_NEAR(p.max_x, 45.0f, 1e-4f);
+  // The footprint is the raster's extent: the outer cells are drawn to their edges.
+  EXPECT_NEAR(p.min_x, 0.0f, 1e-4f);
+  EXPECT_NEAR(p.max_x, 50.0f, 1e-4f);
   ground.plain_height = 12.0f;
   EXPECT_EQ(plain_surface(ground).height, 12.0f);
   EXPECT_FALSE(plain_surface(Ground{}).present);

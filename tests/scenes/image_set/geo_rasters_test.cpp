@@ -100,7 +100,7 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
   const auto y = read(tif.ds, band_named(tif.ds, "world_y"));
   const auto z = read(tif.ds, band_named(tif.ds, "world_z"));
   const Vec3 origin = grid.centre();
-  int on_grid = 0, nodata = 0;
+  int on_grid = 0, nodata = 0, rim = 0;
   // Where the DEM has no data the map says so: NoData (NaN) in its float bands, and the
   // plain, its own class, in the object layer.
   int has_nodata = 0;
@@ -117,19 +117,20 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
         ++nodata;
         continue;
       }
-      // A valid cell on a hole's rim: no ground triangle covers its centre (they join valid
-      // centres), so the plain's lid shows there, as NoData too.
-      if (object[i] == 7.0f) {
-        EXPECT_TRUE(std::isnan(x[i])) << c << ", " << r;
-        continue;
-      }
+      // Every cell with data is ground, its rim beside a hole and the grid's edge too (the
+      // mesh draws each such cell to its own edges), never the plain or NoData.
+      EXPECT_NE(object[i], 7.0f) << c << ", " << r;
       ASSERT_FALSE(std::isnan(x[i])) << c << ", " << r;
       const double wx = x[i] + origin.x, wy = y[i] + origin.y, wz = z[i] + origin.z;
       // The pixel centre itself (the first sample goes through it on a grid map).
       EXPECT_NEAR(wx, grid.x_of_col(c), 0.01);
       EXPECT_NEAR(wy, grid.y_of_row(r), 0.01);
       const std::optional<double> ground = grid.height(wx, wy);
-      if (!ground) continue;
+      if (!ground) {  // a rim cell: its centre is a vertex of the mesh, at its own height
+        EXPECT_NEAR(wz, grid.at(c, r), 0.01) << c << ", " << r;
+        ++rim;
+        continue;
+      }
       // The ground mesh's two triangles per quad of cell centres part from the bilinear
       // surface by at most a quarter of the quad's twist.
       const int c0 = static_cast<int>(std::floor((wx - t.origin_x) / t.cell_size_x - 0.5));
@@ -141,6 +142,7 @@ TEST(GeoRasters, AGridMapOfKagweneOpensInGdalOnTheDemsCells) {
     }
   EXPECT_GT(on_grid, grid.cols() * grid.rows() / 4);
   EXPECT_GT(nodata, 0);  // the Kagwene DEM has holes
+  EXPECT_GT(rim, 100);   // and cells with data beside them
   // The id layers in a file of their own, and ENVI with its wavelengths.
   const GdalFile ids(out / "map_ids.tif");
   ASSERT_NE(ids.ds, nullptr);

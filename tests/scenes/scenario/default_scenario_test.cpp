@@ -38,7 +38,9 @@ TEST(DefaultScenario, IsTheRepositoryExampleWithTheRealVolcanoGrid) {
   EXPECT_EQ(embedded.sun.azimuth_deg, file.sun.azimuth_deg);
   const renderer::Scene a = build_scene(embedded);
   const renderer::Scene b = build_scene(file);
-  EXPECT_EQ(a.ground.mesh.triangle_count(), 2u * 60u * 86u);  // 61 x 87 cells, no nodata
+  // 61 x 87 cells, no nodata: two triangles per quad of centres, and around them the outer
+  // cells drawn to the raster's edge (a fan of 3 per side quad, 2 per corner quad).
+  EXPECT_EQ(a.ground.mesh.triangle_count(), 2u * 60u * 86u + 3u * 2u * (60u + 86u) + 4u * 2u);
   ASSERT_EQ(a.ground.mesh.vertices.size(), b.ground.mesh.vertices.size());
   EXPECT_EQ(std::memcmp(a.ground.mesh.vertices.data(), b.ground.mesh.vertices.data(),
                         a.ground.mesh.vertices.size() * sizeof(Vec3f)),
