@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "renderer/measures/measure_directions.h"
 
 namespace landsim::exporters {
 namespace {
@@ -196,6 +197,12 @@ void write_measure_netcdf(const std::filesystem::path& path, const MeasureRecord
   f.text(azimuth, "comment", "clockwise from north (+y)");
   for (const int v : {zenith, azimuth}) f.text(v, "units", "degree");
   std::string coordinates = "sensor_zenith_angle sensor_azimuth_angle";
+  const int relative = f.variable("rami_relative_azimuth_angle", NC_DOUBLE, {direction});
+  f.text(relative, "long_name",
+         "view azimuth relative to the sun's, counter-clockwise seen from above (RAMI's frame: "
+         "the sun's azimuth 0)");
+  f.text(relative, "units", "degree");
+  coordinates += " rami_relative_azimuth_angle";
   int signed_zenith = -1;
   if (!r.signed_view_zenith_deg.empty()) {
     signed_zenith = f.variable("view_zenith_principal_plane", NC_DOUBLE, {direction});
@@ -238,13 +245,16 @@ void write_measure_netcdf(const std::filesystem::path& path, const MeasureRecord
   }
   f.end_definitions();
 
-  std::vector<double> zeniths, azimuths;
+  std::vector<double> zeniths, azimuths, relatives;
   for (const renderer::DistantResult& d : r.directions) {
     zeniths.push_back(d.direction.zenith_deg);
     azimuths.push_back(d.direction.azimuth_deg);
+    relatives.push_back(
+        renderer::rami_relative_azimuth(d.direction.azimuth_deg, r.sun_azimuth_deg));
   }
   f.put(zenith, zeniths);
   f.put(azimuth, azimuths);
+  f.put(relative, relatives);
   if (signed_zenith >= 0) f.put(signed_zenith, r.signed_view_zenith_deg);
   f.put(sun_zenith, std::vector<double>{r.sun_zenith_deg});
   f.put(sun_azimuth, std::vector<double>{r.sun_azimuth_deg});

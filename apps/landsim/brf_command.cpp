@@ -15,6 +15,7 @@
 #include "exporters/measure_netcdf.h"
 #include "renderer/measures/distant_measure.h"
 #include "renderer/measures/energy_budget.h"
+#include "renderer/measures/measure_directions.h"
 #include "renderer/spectra/sensor_band.h"
 #include "scenario_input.h"
 #include "scenes/builder/scene_builder.h"
@@ -72,6 +73,8 @@ nlohmann::json result_json(const scenes::Scenario& s, const std::vector<std::str
                               {key + "_se", r.band_brf[b].standard_error}};
     nlohmann::json d = {{"zenith_deg", r.direction.zenith_deg},
                         {"azimuth_deg", r.direction.azimuth_deg},
+                        {"relative_azimuth_deg", renderer::rami_relative_azimuth(
+                                                     r.direction.azimuth_deg, s.sun.azimuth_deg)},
                         {key, r.brf.mean},
                         {key + "_se", r.brf.standard_error},
                         {"radiance", r.radiance.mean},
@@ -100,7 +103,7 @@ std::string result_csv(const nlohmann::json& j, const std::vector<std::string>& 
   std::string out =
       fmt::format("view_zenith_deg,zenith_deg,azimuth_deg,{0},{0}_se,radiance,radiance_se", key);
   for (const std::string& b : band_names) out += fmt::format(",{0}_{1},{0}_{1}_se", key, b);
-  out += "\n";
+  out += ",relative_azimuth_deg,paths\n";
   for (const auto& d : j["directions"]) {
     out += fmt::format(
         "{},{},{},{},{},{},{}", d.value("view_zenith_deg", d["zenith_deg"].get<double>()),
@@ -109,7 +112,8 @@ std::string result_csv(const nlohmann::json& j, const std::vector<std::string>& 
     for (const std::string& b : band_names)
       out += fmt::format(",{},{}", d["bands"][b][key].get<double>(),
                          d["bands"][b][key + "_se"].get<double>());
-    out += "\n";
+    out += fmt::format(",{},{}\n", d["relative_azimuth_deg"].get<double>(),
+                       d["paths"].get<std::uint64_t>());
   }
   return out;
 }
@@ -208,6 +212,41 @@ void check_wavelengths(const BrfArgs& args) {
         "(--wavelength) has none of: measure it in a run without --wavelength");
 }
 
+// The directions asked for: --direction's or --hemisphere's (in the frame named), else RAMI's
+// principal plane.
+std::vector<renderer::DistantDirection> directions_of(const BrfArgs& args,
+                                                      const scenes::Scenario& s) {
+  const bool rami = args.azimuth_frame == "rami";
+  if (!args.hemisphere.empty()) {
+    if (!args.directions.empty())
+      throw InputError("--hemisphere " + args.hemisphere +
+                       ": give either --hemisphere or --direction, not both");
+    double zenith_step = 0.0, azimuth_step = 0.0;
+    char comma = 0, rest = 0;
+    std::istringstream in(args.hemisphere);
+    if (!(in >> zenith_step >> comma >> azimuth_step) || comma != ',' || (in >> rest))
+      throw InputError("--hemisphere " + args.hemisphere +
+                       ": expected ZSTEP,ASTEP in degrees (e.g. 10,30)");
+    return renderer::hemisphere_grid(zenith_step, azimuth_step, s.sun.azimuth_deg, rami);
+  }
+  std::vector<renderer::DistantDirection> out;
+  for (const std::string& d : args.directions) {
+    renderer::DistantDirection direction = parse_direction(d);
+    if (rami)
+      direction.azimuth_deg = renderer::compass_azimuth(direction.azimuth_deg, s.sun.azimuth_deg);
+    out.push_back(direction);
+  }
+  if (out.empty()) out = renderer::principal_plane(s.sun.azimuth_deg);
+  return out;
+}
+
+// The relative standard error to trace to: --target-se's; none with --spp alone (exactly those
+// paths); else the default precision.
+double target_of(const BrfArgs& args) {
+  if (args.target_se_given) return args.target_se;
+  return args.spp_given ? 0.0 : kDefaultTargetSe;
+}
+
 }  // namespace
 
 CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
@@ -215,15 +254,27 @@ CLI::App* add_brf_command(CLI::App& app, BrfArgs& args) {
       "brf", "Measure a periodic cell as radiative-transfer codes do: its BRF seen from far away");
   cmd->add_option("scenario", args.scenario, "Scenario TOML file with [terrain] periodic = true")
       ->required();
-  cmd->add_option("--spp", args.spp, "Paths per direction (with --target-se: to start with)")
-      ->check(CLI::Range(2, 1 << 26));
+  cmd->add_option("--spp", args.spp,
+                  "Paths per direction: exactly these, or with --target-se to start with")
+      ->check(CLI::Range(2, 1 << 26))
+      ->each([&args](const std::string&) { args.spp_given = true; });
   cmd->add_option("--target-se", args.target_se,
                   "Trace each direction until the BRF's standard error is at most this fraction "
-                  "of it (e.g. 0.001), up to 2^26 paths")
-      ->check(CLI::Range(1e-5, 0.5));
+                  "of it (of 0.01 for a BRF below it), up to 2^26 paths; 0: --spp paths exactly "
+                  "(default 0.005, or 0 when --spp is given alone)")
+      ->check(CLI::Range(0.0, 0.5))
+      ->each([&args](const std::string&) { args.target_se_given = true; });
   cmd->add_option("--direction", args.directions,
                   "zenith,azimuth (degrees) towards the sensor; repeatable (default: RAMI's "
                   "principal plane, view zenith -75 to 75 every 2)");
+  cmd->add_option("--hemisphere", args.hemisphere,
+                  "ZSTEP,ASTEP: the zenith/azimuth grid DART and LESS write (zenith 0, then every "
+                  "ZSTEP below 90, each at every ASTEP of azimuth), instead of the plane");
+  cmd->add_option("--azimuth-frame", args.azimuth_frame,
+                  "compass: azimuths clockwise from north (default); rami: from the sun's azimuth, "
+                  "counter-clockwise seen from above (--direction and --hemisphere read in it)")
+      ->check(CLI::IsMember({"compass", "rami"}))
+      ->capture_default_str();
   cmd->add_option("--out", args.out, "Directory for brf.json, brf.csv and brf.nc (NetCDF-4, CF)");
   cmd->add_option("--budget-paths", args.budget_paths,
                   "Paths from the sun for the energy budget (albedo, absorption; 0: none)")
@@ -253,15 +304,13 @@ int run_brf(const BrfArgs& args) {
   // Every tree and cloud at full detail: a measure has no camera to range them from.
   scenario.render.degradation = false;
   renderer::Scene scene = scenes::build_scene(scenario);
-  std::vector<renderer::DistantDirection> directions;
-  for (const std::string& d : args.directions) directions.push_back(parse_direction(d));
-  const bool plane = directions.empty();
-  if (plane) directions = renderer::principal_plane(scenario.sun.azimuth_deg);
+  const std::vector<renderer::DistantDirection> directions = directions_of(args, scenario);
+  const bool plane = args.directions.empty() && args.hemisphere.empty();
   renderer::DistantMeasureOptions options;
   options.samples = static_cast<std::uint64_t>(args.spp);
   options.seed = scenario.render.sampling_seed.value_or(scenario.render.seed);
   options.threads = args.threads;
-  options.target_relative_error = args.target_se;
+  options.target_relative_error = target_of(args);
   const bool bottom = args.level == "boa";
   options.bottom_of_atmosphere = bottom;
   const bool monochromatic = !args.wavelengths.empty();
@@ -288,6 +337,7 @@ int run_brf(const BrfArgs& args) {
   record.bottom_of_atmosphere = bottom;
   nlohmann::json j =
       result_json(scenario, record.band_names, record.directions, args.spp, plane, bottom);
+  j["target_se"] = options.target_relative_error;
   if (monochromatic) j["wavelengths_nm"] = args.wavelengths;
   if (bottom) {
     record.bhr = measured.bhr;

@@ -243,10 +243,12 @@ std::vector<DistantResult> measure_distant(const Scene& scene,
       return options.target_band >= 0 ? r.band_brf.at(static_cast<std::size_t>(options.target_band))
                                       : r.brf;
     };
+    const auto bound = [&] {
+      return options.target_relative_error * std::max(std::abs(aimed().mean), kLeastAimedBrf);
+    };
     while (options.target_relative_error > 0.0 && sums.per_batch < cap &&
-           aimed().standard_error > options.target_relative_error * std::abs(aimed().mean)) {
-      const double ratio =
-          aimed().standard_error / (options.target_relative_error * std::abs(aimed().mean));
+           aimed().standard_error > bound()) {
+      const double ratio = aimed().standard_error / bound();
       const double needed =
           std::max(1.1 * ratio * ratio, 1.25) * static_cast<double>(sums.per_batch);
       const auto blocks = static_cast<std::uint64_t>(std::ceil(needed / kBlock));

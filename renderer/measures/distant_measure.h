@@ -40,14 +40,19 @@ struct DistantResult {
   std::uint64_t paths = 0;             // traced for it
 };
 
+// Below this BRF --target-se bounds the error absolutely: at 0.5%, to 5 x 10^-5.
+inline constexpr double kLeastAimedBrf = 0.01;
+
 struct DistantMeasureOptions {
   std::uint64_t samples = 4096;  // paths per direction (rounded up to whole batches)
   // Independently scrambled Sobol sequences the paths are drawn in (randomised quasi-Monte
   // Carlo): within one, the paths' points are stratified over the cell and every later pair
   // of dimensions; the standard error comes from the spread of the batches' means.
   int batches = 32;
-  // When above 0: more paths (at least doubling, up to max_samples) until the BRF's standard
-  // error is at most this fraction of it; `samples` is then where each direction starts.
+  // When above 0: more paths (at least a quarter more a round, up to max_samples) until the
+  // BRF's standard error is at most this fraction of it, or of kLeastAimedBrf for a darker
+  // direction (a BRF near 0 is bounded absolutely, not chased to max_samples); `samples` is
+  // then where each direction starts.
   double target_relative_error = 0.0;
   std::uint64_t max_samples = std::uint64_t{1} << 26;
   // The band whose BRF the target bounds (a monochromatic run's wavelength); -1: the

@@ -176,7 +176,7 @@ TEST(Cli, BrfMeasuresEachNamedWavelengthOnItsOwn) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = testing::read_file(out / "brf.csv");
   EXPECT_EQ(csv.rfind("view_zenith_deg,zenith_deg,azimuth_deg,brf,brf_se,radiance,radiance_se,"
-                      "brf_661nm,brf_661nm_se,brf_679nm,brf_679nm_se\n",
+                      "brf_661nm,brf_661nm_se,brf_679nm,brf_679nm_se,relative_azimuth_deg,paths\n",
                       0),
             0u)
       << csv;
@@ -205,6 +205,62 @@ TEST(Cli, BrfMeasuresEachNamedWavelengthOnItsOwn) {
   r = run("brf " + cell + " --wavelength 550 --budget-paths 1000", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--budget-paths"), std::string::npos) << r.err;
+}
+
+// Measures to a stated precision (issue 73 item 7): 0.5% by default, --spp alone exactly;
+// RAMI's azimuth frame beside the compass's; the hemisphere grid DART and LESS write.
+TEST(Cli, BrfMeasuresToAStatedPrecisionInEitherFrameAndOnAHemisphere) {
+  TempDir dir;
+  const auto cell = dir.write(
+      "cell.toml", "[terrain]\nelevation = \"" +
+                       testing::source_file("data/radiative_transfer/flat_cell.asc").string() +
+                       "\"\nperiodic = true\nalbedo = [0.3, 0.3, 0.3]\n[ground]\n"
+                       "soil_spectrum = \"flat\"\n[sun]\nelevation = 60\nazimuth = 90\n[sky]\n"
+                       "model = \"none\"\n");
+  // The grid: zenith 0, then 30 and 60 at azimuths 0, 90, 180, 270; a Lambertian soil's 0.3.
+  Result r = run("brf " + cell.string() + " --hemisphere 30,90 --budget-paths 0 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["directions"].size(), 9u);
+  std::set<std::pair<double, double>> grid;
+  for (const auto& d : j["directions"]) {
+    grid.insert({d["zenith_deg"].get<double>(), d["azimuth_deg"].get<double>()});
+    EXPECT_NEAR(d["brf"].get<double>(), 0.3, 0.01);
+    EXPECT_FALSE(d.contains("view_zenith_deg"));  // not the principal plane
+  }
+  EXPECT_TRUE(grid.count({0.0, 0.0}) && grid.count({30.0, 270.0}) && grid.count({60.0, 180.0}));
+  EXPECT_EQ(j["target_se"].get<double>(), 0.005);
+  // RAMI's frame: the sun (azimuth 90, east) at 0, counter-clockwise seen from above: 90 in
+  // it is north, the compass's 0.
+  r = run("brf " + cell.string() +
+              " --direction 30,0 --direction 30,90 --azimuth-frame rami --budget-paths 0 --json",
+          dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["directions"][0]["azimuth_deg"].get<double>(), 90.0);
+  EXPECT_EQ(j["directions"][0]["relative_azimuth_deg"].get<double>(), 0.0);
+  EXPECT_EQ(j["directions"][1]["azimuth_deg"].get<double>(), 0.0);
+  EXPECT_EQ(j["directions"][1]["relative_azimuth_deg"].get<double>(), 90.0);
+  // A direction with noise (the air's light over a black soil): traced by default until its
+  // error is 0.5% of it; --spp alone, exactly those paths.
+  const std::string air = testing::source_file("scenes/rami4atm/hom00_bla_sd2s_m03.toml").string();
+  r = run("brf " + air + " --direction 0,0 --wavelength 560 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto aimed = nlohmann::json::parse(r.out)["directions"][0];
+  const double brf = aimed["bands"]["560nm"]["brf"], se = aimed["bands"]["560nm"]["brf_se"];
+  EXPECT_LE(se, 0.005 * std::max(brf, 0.01)) << brf;
+  EXPECT_GT(aimed["paths"].get<int>(), 4096);  // 4,096 paths were not enough
+  r = run("brf " + air + " --direction 0,0 --wavelength 560 --spp 256 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["directions"][0]["paths"].get<int>(), 256);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["target_se"].get<double>(), 0.0);
+  // Refused, by name: a grid of millions, a step of nothing, both a grid and directions.
+  for (const std::string& bad : {"--hemisphere 0.1,0.1", "--hemisphere 0,30", "--hemisphere 10",
+                                 "--hemisphere 10,30 --direction 0,0"}) {
+    r = run("brf " + cell.string() + " " + bad, dir);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("--hemisphere"), std::string::npos) << bad << ": " << r.err;
+  }
 }
 
 // A periodic cell is measured without a camera (issue 71): brf takes it without [[views]];

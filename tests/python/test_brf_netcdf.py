@@ -42,6 +42,11 @@ def test_every_number_is_brf_json_s(measured):
                                   [d["view_zenith_deg"] for d in directions])
     np.testing.assert_array_equal(ds["sensor_azimuth_angle"].values,
                                   [d["azimuth_deg"] for d in directions])
+    # RAMI's frame beside the compass's: 0 on the sun's side of the plane, 180 opposite.
+    np.testing.assert_array_equal(ds["rami_relative_azimuth_angle"].values,
+                                  [d["relative_azimuth_deg"] for d in directions])
+    assert sorted(set(ds["rami_relative_azimuth_angle"].values)) == [0.0, 180.0]
+    assert "rami_relative_azimuth_angle" in ds["brf"].coords
     for share in ("albedo", "absorbed_soil", "absorbed_haze", "soil_direct", "total"):
         assert ds[share].sel(illumination="sun").item() == document["budget"][share]["mean"]
         assert ds[share].sel(illumination="isotropic").item() == \
