@@ -222,6 +222,9 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   // viewer can reproduce the PNG from the EXR.
   const double ev100 = renderer::exposure_ev100(film, scene.settings.exposure_ev100);
   meta.emplace_back("exposure_ev100", fmt::format("{:.4f}", ev100));
+  // The image's own error estimate, before derived layers are added (docs/OUTPUTS.md).
+  const nlohmann::json noise = noise_json(film, scene.settings.sampler);
+  meta.emplace_back("noise", noise.dump());
   const nlohmann::json light_and_sensor =
       add_light_and_sensor(run, scene, image, camera_model, film, meta);
   // Truth about the scene objects, in the manifest and (for resume) in the EXR.
@@ -251,6 +254,7 @@ std::optional<WrittenImage> render_image(const SetRun& run, const renderer::Scen
   if (!objects.is_null()) out.manifest["objects"] = objects;
   out.manifest.update(light_and_sensor);
   out.manifest["settings"] = settings;
+  out.manifest["noise"] = noise;
   if (s.variation > 0)
     out.manifest["randomised"] = randomised_json(s.variation - 1, s.variation_sets);
   if (run.options.keep)

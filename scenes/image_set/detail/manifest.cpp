@@ -9,6 +9,7 @@
 #include "renderer/atmosphere/medium.h"
 #include "renderer/camera.h"
 #include "renderer/output/image_io.h"
+#include "renderer/output/image_noise.h"
 #include "renderer/output/image_output.h"
 #include "renderer/spectra/colour_matching.h"
 #include "scenes/image_set/detail/legend.h"
@@ -324,6 +325,17 @@ nlohmann::json objects_json(const std::vector<renderer::ObjectTruth>& truth, con
   return out;
 }
 
+nlohmann::json noise_json(const renderer::Film& film, SampleSequence sampler) {
+  const std::optional<renderer::ImageNoise> n = renderer::image_noise(film);
+  if (!n) return nullptr;
+  return {{"relative_mse", n->relative_mse},
+          {"frame_relative_se", n->frame_relative_se},
+          {"pixel_relative_se_median", n->pixel_relative_se_median},
+          {"pixel_relative_se_p95", n->pixel_relative_se_p95},
+          {"mean_spp", n->mean_spp},
+          {"upper_bound", sampler == SampleSequence::sobol}};
+}
+
 // A JSON attribute (objects, camera) of an image already written; null when it has none.
 nlohmann::json saved_json(const std::filesystem::path& exr, const std::string& attribute) {
   for (const auto& [key, value] : renderer::read_exr_metadata(exr))
@@ -353,6 +365,7 @@ nlohmann::json saved_entry(const Scenario& s, std::size_t view, const std::strin
       manifest_entry(s.views[view], stem, frame, s.render.frames[frame], saved_json(exr, "camera"));
   if (!s.objects.empty()) entry["objects"] = saved_json(exr, "objects");
   entry["irradiance"] = saved_json(exr, "irradiance");
+  entry["noise"] = saved_json(exr, "noise");
   if (s.views[view].sensor) entry["sensor"] = saved_json(exr, "sensor");
   entry["settings"] = saved_json(exr, "settings");
   if (s.variation > 0) entry["randomised"] = randomised_json(s.variation - 1, s.variation_sets);

@@ -50,6 +50,11 @@ nlohmann::json saved_json(const std::filesystem::path& exr, const std::string& a
 // The image's irradiance as the manifest and the EXR give it (docs/SENSOR.md).
 nlohmann::json irradiance_json(const renderer::ImageIrradiance& e, const renderer::Scene& scene);
 
+// How noisy the image is, from its own samples (renderer/output/image_noise.h); null when it
+// cannot say (1 sample a pixel, a black frame). Under the Sobol sampler an upper bound (its
+// stratified samples spread more than their mean errs), which `upper_bound` says.
+nlohmann::json noise_json(const renderer::Film& film, SampleSequence sampler);
+
 // The manifest entry of an image already written, from what its EXR keeps.
 nlohmann::json saved_entry(const Scenario& s, std::size_t view, const std::string& stem,
                            std::size_t frame, const std::filesystem::path& exr);

@@ -64,6 +64,39 @@ TEST(ImageSet, RendersEveryImageWithItsPreviewAndTheManifest) {
   EXPECT_EQ(r.images[1].width, 32);
 }
 
+// Each image states its own error in the manifest (issue 72 item 3; docs/OUTPUTS.md): from
+// its samples' spread, an upper bound under the Sobol sampler, null with one sample a pixel;
+// a resumed set reads it back from the image's EXR.
+TEST(ImageSet, TheManifestStatesEachImagesOwnError) {
+  TempDir dir;
+  ImageSetOptions o;
+  o.out_dir = dir / "out";
+  Scenario s = volcano_view(24, 16, "frames = [0.0, 1.0]\n");
+  s.render.spp = 4;
+  render_image_set(s, o);
+  const nlohmann::json noise = manifest_in(o.out_dir)["images"][0]["noise"];
+  ASSERT_TRUE(noise.is_object()) << noise;
+  EXPECT_GT(noise["relative_mse"].get<double>(), 0.0);
+  EXPECT_GT(noise["pixel_relative_se_p95"].get<double>(),
+            noise["pixel_relative_se_median"].get<double>());
+  EXPECT_LT(noise["frame_relative_se"].get<double>(),
+            noise["pixel_relative_se_median"].get<double>());
+  EXPECT_EQ(noise["mean_spp"].get<double>(), 4.0);
+  EXPECT_TRUE(noise["upper_bound"].get<bool>());  // Sobol, the default
+  std::filesystem::remove(o.out_dir / "v_f0001.exr");
+  o.resume = true;
+  render_image_set(s, o);
+  EXPECT_EQ(manifest_in(o.out_dir)["images"][0]["noise"], noise);
+  o.resume = false;
+  o.out_dir = dir / "independent";
+  s.render.sampler = SampleSequence::independent;
+  render_image_set(s, o);
+  EXPECT_FALSE(manifest_in(o.out_dir)["images"][0]["noise"]["upper_bound"].get<bool>());
+  o.out_dir = dir / "one";
+  render_image_set(two_frames(), o);
+  EXPECT_TRUE(manifest_in(o.out_dir)["images"][0]["noise"].is_null());
+}
+
 // A randomised set estimates each image's scene before building it (issue 73): the program's
 // own size in those estimates is the one measured before the first scene, not the process's
 // size after it (which holds the freed scenes' memory the allocator keeps), so images whose
