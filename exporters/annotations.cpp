@@ -95,14 +95,8 @@ void write_kitti(const json& m, const std::filesystem::path& set, const std::fil
 void write_yolo(const json& m, const std::filesystem::path& set, const std::filesystem::path& out,
                 const AnnotationOptions& options, AnnotationSummary& summary) {
   const auto names = classes(m.at("legend"));
-  std::map<std::string, int> index;
-  std::string list;
-  for (const ClassName& c : class_names(m, names, options.trees)) {
-    index.emplace(c.name, static_cast<int>(index.size()));
-    list += c.name + "\n";
-  }
+  const std::map<std::string, int> index = write_yolo_classes(m, out, options.trees);
   std::filesystem::create_directories(out / "labels");
-  write_text(out / "classes.txt", list);
   for (const json& image : m.at("images")) {
     const double w = image.at("camera").at("width").get<double>(),
                  h = image.at("camera").at("height").get<double>();

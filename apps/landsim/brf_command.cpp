@@ -9,6 +9,9 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <sstream>
+#include <utility>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
@@ -23,13 +26,20 @@
 namespace landsim::app {
 namespace {
 
-// "zenith,azimuth" in degrees, each in range; InputError naming the option.
-renderer::DistantDirection parse_direction(const std::string& text) {
-  double zenith = 0.0, azimuth = 0.0;
+// "a,b": two numbers and a comma, nothing else; empty otherwise.
+std::optional<std::pair<double, double>> number_pair(const std::string& text) {
+  double a = 0.0, b = 0.0;
   char comma = 0, rest = 0;
   std::istringstream in(text);
-  if (!(in >> zenith >> comma >> azimuth) || comma != ',' || (in >> rest) ||
-      !(zenith >= 0.0 && zenith < 90.0) || !(azimuth >= 0.0 && azimuth <= 360.0))
+  if (!(in >> a >> comma >> b) || comma != ',' || (in >> rest)) return std::nullopt;
+  return std::pair{a, b};
+}
+
+// "zenith,azimuth" in degrees, each in range; InputError naming the option.
+renderer::DistantDirection parse_direction(const std::string& text) {
+  const auto pair = number_pair(text);
+  const auto [zenith, azimuth] = pair.value_or(std::pair{-1.0, -1.0});
+  if (!(zenith >= 0.0 && zenith < 90.0) || !(azimuth >= 0.0 && azimuth <= 360.0))
     throw InputError("--direction " + text +
                      ": expected zenith,azimuth in degrees (zenith 0 to below 90, azimuth 0-360)");
   return {zenith, azimuth};
@@ -221,13 +231,11 @@ std::vector<renderer::DistantDirection> directions_of(const BrfArgs& args,
     if (!args.directions.empty())
       throw InputError("--hemisphere " + args.hemisphere +
                        ": give either --hemisphere or --direction, not both");
-    double zenith_step = 0.0, azimuth_step = 0.0;
-    char comma = 0, rest = 0;
-    std::istringstream in(args.hemisphere);
-    if (!(in >> zenith_step >> comma >> azimuth_step) || comma != ',' || (in >> rest))
+    const auto steps = number_pair(args.hemisphere);
+    if (!steps)
       throw InputError("--hemisphere " + args.hemisphere +
                        ": expected ZSTEP,ASTEP in degrees (e.g. 10,30)");
-    return renderer::hemisphere_grid(zenith_step, azimuth_step, s.sun.azimuth_deg, rami);
+    return renderer::hemisphere_grid(steps->first, steps->second, s.sun.azimuth_deg, rami);
   }
   std::vector<renderer::DistantDirection> out;
   for (const std::string& d : args.directions) {

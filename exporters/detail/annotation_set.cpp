@@ -127,4 +127,17 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   out.commit();
 }
 
+std::map<std::string, int> write_yolo_classes(const json& manifest,
+                                              const std::filesystem::path& out, bool trees) {
+  std::map<std::string, int> index;
+  std::string list;
+  for (const ClassName& c : class_names(manifest, classes(manifest.at("legend")), trees)) {
+    index.emplace(c.name, static_cast<int>(index.size()));
+    list += c.name + "\n";
+  }
+  std::filesystem::create_directories(out);
+  write_text(out / "classes.txt", list);
+  return index;
+}
+
 }  // namespace landsim::exporters::detail

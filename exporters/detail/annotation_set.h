@@ -60,6 +60,11 @@ std::vector<std::uint8_t> target_mask(const renderer::Film& film, std::uint32_t 
 std::vector<std::uint8_t> footprint_mask(const json& object, int width, int height);
 std::vector<std::uint8_t> instance_mask(const renderer::Film& film, std::uint32_t instance);
 
+// YOLO's classes.txt (each class of class_names on a line) written into `out`, and each
+// class's index in it, as YOLO and YOLO-OBB labels give a class.
+std::map<std::string, int> write_yolo_classes(const json& manifest,
+                                              const std::filesystem::path& out, bool trees);
+
 void write_text(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace landsim::exporters::detail

@@ -98,14 +98,8 @@ void write_dota(const json& manifest, const std::filesystem::path& set,
 void write_yolo_obb(const json& manifest, const std::filesystem::path& set,
                     const std::filesystem::path& out, const AnnotationOptions& options,
                     AnnotationSummary& summary) {
-  std::map<std::string, int> index;
-  std::string list;
-  for (const ClassName& c : class_names(manifest, classes(manifest.at("legend")), options.trees)) {
-    index.emplace(c.name, static_cast<int>(index.size()));
-    list += c.name + "\n";
-  }
+  const std::map<std::string, int> index = write_yolo_classes(manifest, out, options.trees);
   std::filesystem::create_directories(out / "labels");
-  write_text(out / "classes.txt", list);
   for (const json& image : manifest.at("images")) {
     const double w = image.at("camera").at("width"), h = image.at("camera").at("height");
     std::string text;

@@ -14,6 +14,7 @@
 #include "renderer/transport/render.h"
 #include "tests/renderer/film_stats.h"
 #include "tests/renderer/test_scenes.h"
+#include "tests/renderer/thread_counts.h"
 #include "trees/species.h"
 
 namespace landsim::renderer {
@@ -132,11 +133,7 @@ TEST(DegradationRender, TheBlendIsTheSameInEveryRunAndThreadCount) {
   // Half way between two anchor steps (octaves where leaves are discs only), so pixels
   // dither between two levels.
   const View v = framing_view(0.5 * (step_r2(19) + step_r2(21)), 256);
-  RenderOptions one, two;
-  one.threads = 1;
-  two.threads = 2;
-  const Film a = Renderer(s).render(v, one);
-  const Film b = Renderer(s).render(v, two);
+  const auto [a, b] = test::render_on_one_and_two_threads(Renderer(s), v);
   int lower = 0, upper = 0;
   for (int y = 0; y < v.height; ++y)
     for (int x = 0; x < v.width; ++x) {

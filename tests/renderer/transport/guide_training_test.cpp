@@ -9,6 +9,7 @@
 #include "renderer/transport/render.h"
 #include "tests/renderer/film_stats.h"
 #include "tests/renderer/test_scenes.h"
+#include "tests/renderer/thread_counts.h"
 
 namespace landsim::renderer {
 namespace {
@@ -49,12 +50,7 @@ TEST(GuideTraining, LearnsAFieldFromItsShareOfTheSamples) {
 TEST(GuideTraining, AGuidedRenderIsDeterministicAndUnbiased) {
   const Scene plain = guided_ridge(false), guided = guided_ridge(true);
   const Film reference = Renderer(plain).render(plain.views[0], {});
-  const Renderer renderer(guided);
-  RenderOptions one, two;
-  one.threads = 1;
-  two.threads = 2;
-  const Film a = renderer.render(guided.views[0], one);
-  const Film b = renderer.render(guided.views[0], two);
+  const auto [a, b] = test::render_on_one_and_two_threads(Renderer(guided), guided.views[0]);
   EXPECT_TRUE(test::same_rgb_bits(a, b));
   struct Mean {
     double sum = 0.0, variance = 0.0;

@@ -9,6 +9,7 @@
 
 #include "tests/renderer/film_stats.h"
 #include "tests/renderer/test_scenes.h"
+#include "tests/renderer/thread_counts.h"
 
 namespace landsim::renderer {
 namespace {
@@ -82,13 +83,7 @@ TEST(Renderer, SlopeFacingTheSunIsBrighter) {
 
 TEST(Renderer, BitIdenticalForAnyThreadCount) {
   const Scene scene = testing::ridge_scene();
-  const Renderer renderer(scene);
-  RenderOptions one;
-  one.threads = 1;
-  RenderOptions two;
-  two.threads = 2;
-  const Film a = renderer.render(scene.views[0], one);
-  const Film b = renderer.render(scene.views[0], two);
+  const auto [a, b] = test::render_on_one_and_two_threads(Renderer(scene), scene.views[0]);
   ASSERT_EQ(a.rgb_data().size(), b.rgb_data().size());
   EXPECT_TRUE(test::same_rgb_bits(a, b));
   EXPECT_EQ(std::memcmp(a.depth_data().data(), b.depth_data().data(),
@@ -105,12 +100,7 @@ TEST(Renderer, SobolSamplesAreDeterministicAndUnbiased) {
   scene.settings.sampler = SampleSequence::independent;
   const Film independent = Renderer(scene).render(scene.views[0], {});
   scene.settings.sampler = SampleSequence::sobol;
-  const Renderer renderer(scene);
-  RenderOptions one, two;
-  one.threads = 1;
-  two.threads = 2;
-  const Film a = renderer.render(scene.views[0], one);
-  const Film b = renderer.render(scene.views[0], two);
+  const auto [a, b] = test::render_on_one_and_two_threads(Renderer(scene), scene.views[0]);
   EXPECT_TRUE(test::same_rgb_bits(a, b));
   double mean_a = 0.0, mean_i = 0.0, variance = 0.0;
   int differ = 0;
@@ -140,11 +130,7 @@ TEST(Renderer, FisheyeAndThinLensViewsAreDeterministicAndTheCircleIsBlackOutside
   lens.lens.focus_distance = 40.0;
   for (const View& v : {fisheye, lens}) {
     scene.views[0] = v;
-    const Renderer renderer(scene);
-    RenderOptions one, two;
-    one.threads = 1;
-    two.threads = 2;
-    const Film a = renderer.render(v, one), b = renderer.render(v, two);
+    const auto [a, b] = test::render_on_one_and_two_threads(Renderer(scene), v);
     EXPECT_TRUE(test::same_rgb_bits(a, b)) << v.name;
     EXPECT_EQ(a.object(12, 12), 1) << v.name;  // the ridge below
   }
@@ -276,11 +262,7 @@ TEST(Renderer, AdaptiveSamplingStopsConvergedPixels) {
   for (const std::uint32_t n : uniform.samples_data()) ASSERT_EQ(n, 64u);
   scene.settings.noise_threshold = 0.02;
   scene.settings.min_spp = 8;
-  RenderOptions one, two;
-  one.threads = 1;
-  two.threads = 2;
-  const Film a = Renderer(scene).render(scene.views[0], one);
-  const Film b = Renderer(scene).render(scene.views[0], two);
+  const auto [a, b] = test::render_on_one_and_two_threads(Renderer(scene), scene.views[0]);
   EXPECT_EQ(a.rgb_data(), b.rgb_data());
   EXPECT_EQ(a.samples_data(), b.samples_data());
   std::uint32_t fewest = 64, most = 0;

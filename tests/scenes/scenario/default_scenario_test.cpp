@@ -13,6 +13,7 @@
 #include "renderer/transport/plane_parallel_scene.h"
 #include "renderer/transport/render.h"
 #include "scenes/builder/scene_builder.h"
+#include "tests/renderer/thread_counts.h"
 #include "tests/support/temp_dir.h"
 
 namespace landsim::scenes {
@@ -140,12 +141,8 @@ TEST(DefaultScenario, SlopeFacingTheSunIsBrighterThanSlopeFacingAway) {
 
 TEST(DefaultScenario, BitIdenticalWithOneAndTwoThreads) {
   const renderer::Scene scene = small_default_scene();
-  const renderer::Renderer renderer(scene);
-  renderer::RenderOptions one, two;
-  one.threads = 1;
-  two.threads = 2;
-  const renderer::Film a = renderer.render(scene.views[0], one);
-  const renderer::Film b = renderer.render(scene.views[0], two);
+  const auto [a, b] =
+      test::render_on_one_and_two_threads(renderer::Renderer(scene), scene.views[0]);
   EXPECT_EQ(
       std::memcmp(a.rgb_data().data(), b.rgb_data().data(), a.rgb_data().size() * sizeof(float)),
       0);
